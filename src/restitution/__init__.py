@@ -1,0 +1,25 @@
+"""restitution: the coefficient of restitution of elastic disks from their vibrational modes.
+
+Reproduces and extends F. Gerl and A. Zippelius, "Coefficient of restitution for elastic disks".
+Units throughout: two-dimensional Young modulus E = 1, mass per area rho = 1, radius R = 1, so
+velocities are in units of c = sqrt(E / rho) and the disk mass is pi.
+"""
+
+__version__ = "0.1.0"
+
+from restitution.cache import get_modes  # noqa: E402
+from restitution.errors import InputError, RestitutionError  # noqa: E402
+from restitution.material import Material, MaterialError  # noqa: E402
+from restitution.modes import ModeSet, compute_modes, weyl_count  # noqa: E402
+
+__all__ = [
+    "__version__",
+    "InputError",
+    "Material",
+    "MaterialError",
+    "ModeSet",
+    "RestitutionError",
+    "compute_modes",
+    "get_modes",
+    "weyl_count",
+]

@@ -1,0 +1,53 @@
+"""Command line interface: a thin layer over the library.
+
+Every command lives in its own module of this package; this file only assembles the group and
+turns the package's own errors into one line on stderr with exit status 2.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from restitution import __version__
+from restitution.errors import RestitutionError
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="restitution")
+def cli() -> None:
+    """Coefficient of restitution of elastic disks from their vibrational modes.
+
+    Units: E = rho = R = 1 (two-dimensional constants), so speeds are in units of
+    c = sqrt(E/rho), times in R/c, and the disk mass is pi. Speeds v are the disk's speed
+    towards the wall; two identical disks approaching each other at +-v collide at relative
+    speed 2v.
+    """
+
+
+def _register() -> None:
+    from restitution.cli import modes as _modes
+
+    cli.add_command(_modes.modes)
+
+
+_register()
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Console-script entry point."""
+    try:
+        cli.main(args=argv, prog_name="restitution", standalone_mode=False)
+    except click.exceptions.Abort:
+        click.echo("aborted", err=True)
+        sys.exit(130)
+    except click.ClickException as exc:
+        exc.show()
+        sys.exit(exc.exit_code)
+    except RestitutionError as exc:
+        click.echo(f"error: {exc}", err=True)
+        sys.exit(2)
+    except KeyboardInterrupt:
+        click.echo("interrupted", err=True)
+        sys.exit(130)

@@ -1,0 +1,119 @@
+"""Result types shared by the collision solvers (modal and finite-element).
+
+Units: lengths in ``R``, times in ``R / c``, velocities in ``c``, forces in ``E`` (2D Young
+modulus times length / length), energies as fractions of the initial kinetic energy
+``(m/2) v_i^2`` unless stated otherwise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+__all__ = ["CollisionResult", "History"]
+
+
+@dataclass(frozen=True, eq=False)
+class History:
+    """Time histories of one collision, sampled every ``stride`` steps.
+
+    Attributes
+    ----------
+    t : numpy.ndarray, shape (T,)
+        Time in ``R / c``.
+    x0, v : numpy.ndarray, shape (T,)
+        Centre-of-mass position (the wall is at ``x = 0``; touching at ``x0 = -1``) and velocity
+        towards the wall, in ``R`` and ``c``.
+    force : numpy.ndarray, shape (T,)
+        Total wall force on the disk (pushing it away from the wall), in ``E``.
+    mode_energy : numpy.ndarray, shape (T, N)
+        Energy of every mode, fraction of the initial kinetic energy (empty for FEM).
+    Q : numpy.ndarray, shape (T, N)
+        Modal coordinates (empty for FEM); with the mode set they give the edge shape.
+    """
+
+    t: np.ndarray
+    x0: np.ndarray
+    v: np.ndarray
+    force: np.ndarray
+    mode_energy: np.ndarray
+    Q: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class CollisionResult:
+    """Outcome of one disk-wall collision.
+
+    Attributes
+    ----------
+    method : str
+        ``"modal"`` or ``"fem"``.
+    nu, v, alpha : float
+        Poisson number, incoming speed towards the wall (units of ``c``) and wall hardness
+        (``1 / R``) of the potential ``V = (1/alpha) int exp(alpha x(phi)) dphi``.
+    n_modes : int
+        Number of modes (0 for FEM).
+    epsilon : float
+        Coefficient of restitution ``-v_f / v_i`` of the centre of mass.
+    energy_drift : float
+        Largest relative deviation of the total energy from its initial value during the run.
+    contact_time : float
+        Time during which the centre is closer than ``R`` to the wall (``x0 > -1``), ``R / c``.
+    max_compression : float
+        Largest ``x0 + 1``, in ``R``.
+    max_force : float
+        Largest total wall force, in ``E``.
+    n_steps : int
+        Time steps taken (of the accepted run).
+    dt : float
+        Step size of the accepted run, ``R / c``.
+    wall_time_s : float
+        Wall-clock time of the computation, seconds.
+    integrator : str
+        Name of the time integrator.
+    mode_n, mode_l : numpy.ndarray of int, shape (N,)
+        Mode labels (empty for FEM).
+    mode_energy_after, mode_energy_mean, mode_energy_closest : numpy.ndarray, shape (N,)
+        Energy per mode after the collision, averaged over the contact (``x0 > -1``), and at
+        closest approach (largest ``x0``); fractions of the initial kinetic energy.
+    history : History or None
+        Time histories when requested.
+    """
+
+    method: str
+    nu: float
+    v: float
+    alpha: float
+    n_modes: int
+    epsilon: float
+    energy_drift: float
+    contact_time: float
+    max_compression: float
+    max_force: float
+    n_steps: int
+    dt: float
+    wall_time_s: float
+    integrator: str
+    mode_n: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    mode_l: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    mode_energy_after: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    mode_energy_mean: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    mode_energy_closest: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    history: History | None = None
+
+    @property
+    def energy_loss(self) -> float:
+        """``1 - epsilon^2``: the fraction of kinetic energy left in vibrations."""
+        return 1.0 - self.epsilon**2
+
+    def to_dict(self, *, modes: bool = True) -> dict:
+        """JSON-ready dictionary (histories are omitted)."""
+        d = {k: v for k, v in asdict(self).items() if k != "history" and not k.startswith("mode_")}
+        d["energy_loss"] = self.energy_loss
+        if modes:
+            d["mode_energies_after"] = [
+                {"n": int(n), "l": int(l), "energy": float(e)}
+                for n, l, e in zip(self.mode_n, self.mode_l, self.mode_energy_after, strict=True)
+            ]
+        return d
