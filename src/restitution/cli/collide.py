@@ -1,0 +1,108 @@
+"""``restitution collide``: one disk-wall collision."""
+
+from __future__ import annotations
+
+import time
+import warnings
+
+import click
+
+from restitution.cache import get_modes
+from restitution.cli._common import PLANE_HELP, dumps, material_from, positive_finite
+from restitution.errors import InputError
+
+
+def _print_summary(result, top: int = 10) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    console = Console()
+    console.print(
+        f"[bold]epsilon = {result.epsilon:.8f}[/bold]  (1 - eps^2 = {result.energy_loss:.6g})\n"
+        f"method {result.method}, nu = {result.nu}, v = {result.v} c towards the wall, "
+        f"alpha = {result.alpha}, modes = {result.n_modes}, integrator {result.integrator}\n"
+        f"contact time {result.contact_time:.5g} R/c, max compression {result.max_compression:.5g} R, "
+        f"max force {result.max_force:.5g} E, energy drift {result.energy_drift:.2e}, "
+        f"dt {result.dt:.3g}, {result.n_steps} steps, {result.wall_time_s:.2f} s"
+    )
+    if result.mode_n.size:
+        import numpy as np
+
+        table = Table(title=f"{top} modes with most energy after the collision (fraction of E0)")
+        for col in ("n", "l", "after", "mean over contact", "at closest approach"):
+            table.add_column(col, justify="right")
+        for i in np.argsort(-result.mode_energy_after)[:top]:
+            table.add_row(
+                str(result.mode_n[i]),
+                str(result.mode_l[i]),
+                f"{result.mode_energy_after[i]:.7f}",
+                f"{result.mode_energy_mean[i]:.7f}",
+                f"{result.mode_energy_closest[i]:.7f}",
+            )
+        console.print(table)
+
+
+@click.command()
+@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
+@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@click.option("--v", "v", type=float, required=True,
+              help="Speed of the disk towards the wall in units of c = sqrt(E/rho), in (0, 1). "
+                   "Two identical disks approaching each other at +-v collide like this.")
+@click.option("--alpha", type=float, default=500.0, show_default=True,
+              help="Wall hardness alpha of V = exp(alpha x)/alpha, in 1/R.")
+@click.option("--modes", "n_modes", type=int, default=1600, show_default=True,
+              help="Number of modes kept.")
+@click.option("--select", type=click.Choice(["lowest", "ranked"]), default="lowest",
+              show_default=True,
+              help="lowest: the N lowest frequencies; ranked: the N modes with most average "
+                   "energy in a preliminary run with the 2N lowest (paper, section 4).")
+@click.option("--integrator", type=click.Choice(["split4", "split", "rk4"]), default="split4",
+              show_default=True)
+@click.option("--method", type=click.Choice(["modal", "fem"]), default="modal", show_default=True,
+              help="modal: normal-mode expansion (paper); fem: independent finite elements.")
+@click.option("--mesh-refine", type=int, default=2, show_default=True,
+              help="Mesh refinement level for --method fem.")
+@click.option("--energy-tol", type=float, default=1e-6, show_default=True,
+              help="Largest accepted relative energy drift; the step is refined until met.")
+@click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
+def collide(nu, plane, v, alpha, n_modes, select, integrator, method, mesh_refine, energy_tol,
+            as_json):
+    """Head-on collision of an elastic disk with a hard wall: epsilon and where the energy goes.
+
+    Units: E = rho = R = 1; v in c, times in R/c; mode energies as fractions of the initial
+    kinetic energy.
+    """
+    material = material_from(nu, plane)
+    if not (0 < v < 1):
+        raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
+    positive_finite("--alpha", alpha)
+    positive_finite("--energy-tol", energy_tol)
+    if n_modes < 1:
+        raise InputError(f"--modes must be at least 1, got {n_modes}")
+    if v > 0.3:
+        click.echo("warning: v > 0.3 c stretches linear elasticity", err=True)
+    start = time.perf_counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        if method == "fem":
+            from restitution.fem import fem_collide
+
+            result = fem_collide(material, v, alpha, refine=mesh_refine)
+        else:
+            from restitution.collision import collide as run, rank_modes
+
+            if select == "ranked":
+                pool = get_modes(material, count=2 * n_modes)
+                ms = rank_modes(pool, n_modes, v, alpha, integrator=integrator,
+                                energy_tol=energy_tol)
+            else:
+                ms = get_modes(material, count=n_modes)
+            result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
+    wall = time.perf_counter() - start
+    if as_json:
+        d = result.to_dict()
+        d["wall_time_s"] = wall
+        d["select"] = select if method == "modal" else None
+        click.echo(dumps(d))
+    else:
+        _print_summary(result)

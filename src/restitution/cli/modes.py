@@ -1,0 +1,86 @@
+"""``restitution modes``: the eigenmode table, Fig. 2 and Fig. 3."""
+
+from __future__ import annotations
+
+import csv
+import io
+from pathlib import Path
+
+import click
+
+from restitution.cache import get_modes
+from restitution.cli._common import PLANE_HELP, dumps, material_from, write_text
+from restitution.errors import InputError
+
+_COLUMNS = ("n", "l", "omega", "kappa", "kappa_p", "A", "B", "C", "S")
+
+
+def _table(records: list[dict]) -> str:
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title="Symmetric modes of the free disk (omega in c/R; C, S edge amplitudes)")
+    for col in _COLUMNS:
+        table.add_column(col, justify="right")
+    for r in records:
+        table.add_row(*(str(r[c]) if c in ("n", "l") else f"{r[c]:.8g}" for c in _COLUMNS))
+    buf = io.StringIO()
+    Console(file=buf, width=140, force_terminal=False).print(table)
+    return buf.getvalue()
+
+
+def _csv(records: list[dict]) -> str:
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=_COLUMNS, lineterminator="\n")
+    writer.writeheader()
+    for r in records:
+        writer.writerow({c: (r[c] if c in ("n", "l") else repr(r[c])) for c in _COLUMNS})
+    return buf.getvalue()
+
+
+@click.command()
+@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
+@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@click.option("--count", type=int, default=None, help="Number of lowest modes [default: 1600].")
+@click.option("--omega-max", type=float, default=None, help="All modes below this omega (c/R).")
+@click.option(
+    "--format", "fmt", type=click.Choice(["table", "csv", "json"]), default="table",
+    show_default=True,
+)
+@click.option("--output", type=click.Path(dir_okay=False, path_type=Path), default=None,
+              help="Write the listing to FILE instead of standard output.")
+@click.option("--plot-spectrum", type=click.Path(dir_okay=False, path_type=Path), default=None,
+              help="Draw Fig. 3 (omega against n, radial and tangential type apart) to FILE.")
+@click.option("--plot-shapes", type=click.Path(dir_okay=False, path_type=Path), default=None,
+              help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.")
+def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
+    """Eigenmodes of the free elastic disk (symmetric family), sorted by frequency.
+
+    Units: E = rho = R = 1, omega in c/R. For n = 0 only the breathing modes (eq. 20); the
+    rigid translation is excluded. C = U_r(1) > 0 and S = U_phi(1) are the edge amplitudes.
+    """
+    if count is not None and omega_max is not None:
+        raise InputError("give either --count or --omega-max, not both")
+    if count is None and omega_max is None:
+        count = 1600
+    material = material_from(nu, plane)
+    ms = get_modes(material, count=count, omega_max=omega_max)
+    records = ms.as_records()
+    if fmt == "json":
+        text = dumps(records)
+    elif fmt == "csv":
+        text = _csv(records)
+    else:
+        text = _table(records)
+    write_text(text, output)
+    if plot_spectrum is not None:
+        from restitution.figures import fig03_spectrum
+
+        top = float(omega_max) if omega_max is not None else float(min(ms.omega.max(), 20.0))
+        fig03_spectrum.plot(fig03_spectrum.compute(material.nu, omega_max=top), plot_spectrum)
+        click.echo(f"wrote {plot_spectrum}", err=True)
+    if plot_shapes is not None:
+        from restitution.figures import fig02_shapes
+
+        fig02_shapes.plot(fig02_shapes.compute(material.nu), plot_shapes)
+        click.echo(f"wrote {plot_shapes}", err=True)

@@ -1,0 +1,473 @@
+"""Head-on collision of an elastic disk with a wall, in normal coordinates (paper sections 3-4).
+
+Units: ``E = rho = R = 1``; speeds in ``c``, times in ``R / c``; energies reported as fractions
+of the initial kinetic energy ``E0 = (m/2) v^2``.
+
+The disk starts undeformed with its centre at ``x0 < -1`` where the wall potential energy is
+``CONTACT_TOL * E0`` and moves towards the wall at speed ``v``. It is integrated until it moves
+away and provably cannot touch again: the rigid motion is away from the wall and even the sum of
+all modal amplitudes cannot bring the edge to where ``exp(alpha x)`` exceeds ``CONTACT_TOL``.
+
+The step is chosen automatically (see :func:`initial_step`) and the run is repeated with a
+smaller step while the relative energy drift exceeds ``energy_tol``; after ``max_refinements``
+the point fails with :class:`CollisionError`, whose message says what to change. A bound on the
+simulated time prevents hanging.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from restitution.errors import InputError, RestitutionError
+from restitution.integrators import (
+    INTEGRATORS,
+    State,
+    System,
+    initial_state,
+    mode_energies,
+    total_energy,
+)
+from restitution.modes import ModeSet
+from restitution.results import CollisionResult, History
+from restitution.wall import default_n_phi, wall_quadrature
+
+__all__ = [
+    "CONTACT_TOL",
+    "CollisionError",
+    "CollisionSettings",
+    "collide",
+    "collide_batch",
+    "initial_step",
+    "rank_modes",
+]
+
+CONTACT_TOL = 1e-12
+"""Wall potential energy at the start, and the wall force scale at the end, relative to E0."""
+
+_STOP_LOG = math.log(1.0 / CONTACT_TOL)
+
+
+class CollisionError(RestitutionError):
+    """A collision could not be integrated to the requested accuracy."""
+
+
+class _Unstable(Exception):
+    """Internal: a run's energy drift exploded; the step must shrink."""
+
+
+@dataclass(frozen=True)
+class CollisionSettings:
+    """Numerical settings of a collision run.
+
+    Attributes
+    ----------
+    integrator : {"split4", "split", "rk4"}
+        Time integrator (see :mod:`restitution.integrators`); the default ``split4`` is the
+        fourth-order symplectic composition of the exact-free-flow splitting.
+    n_phi : int or None
+        Nodes of the edge quadrature on ``[0, pi/2]``; ``None`` picks
+        :func:`restitution.wall.default_n_phi`.
+    energy_tol : float
+        Largest accepted relative energy drift ``max |H(t) - H(0)| / H(0)``.
+    dt : float or None
+        Fixed step in ``R / c``. ``None`` chooses it automatically and refines it until the
+        drift is below ``energy_tol``; a fixed step is never refined (the drift is reported).
+    max_refinements : int
+        How often the automatic step may be reduced before the run fails.
+    step_safety : float
+        Multiplies the automatic first step; smaller is more cautious.
+    record : bool
+        Keep time histories (:class:`restitution.results.History`).
+    record_interval : float
+        Time between history samples, ``R / c``.
+    max_steps : int
+        Hard bound on the number of steps of one run.
+    """
+
+    integrator: str = "split4"
+    n_phi: int | None = None
+    energy_tol: float = 1e-6
+    dt: float | None = None
+    max_refinements: int = 6
+    step_safety: float = 1.0
+    record: bool = False
+    record_interval: float = 0.02
+    max_steps: int = 2_000_000
+
+    def __post_init__(self) -> None:
+        if self.integrator not in INTEGRATORS:
+            raise InputError(
+                f"unknown integrator {self.integrator!r}; choose one of {sorted(INTEGRATORS)}"
+            )
+        if not (self.energy_tol > 0):
+            raise InputError(f"energy_tol must be positive, got {self.energy_tol}")
+        if self.dt is not None and not (self.dt > 0 and math.isfinite(self.dt)):
+            raise InputError(f"dt must be a positive number, got {self.dt}")
+
+
+def _check_inputs(v: np.ndarray, alpha: np.ndarray, modes: ModeSet) -> None:
+    if len(modes) < 1:
+        raise InputError("at least one mode is needed (use --modes >= 1)")
+    if not np.all(np.isfinite(v)) or np.any(v <= 0) or np.any(v >= 1):
+        raise InputError(
+            f"the speed v must lie in (0, 1) in units of c (the disk's speed towards the wall), "
+            f"got {v.tolist()}"
+        )
+    if not np.all(np.isfinite(alpha)) or np.any(alpha <= 0):
+        raise InputError(f"the wall hardness alpha must be positive, got {alpha.tolist()}")
+    if np.any(v > 0.3):
+        warnings.warn(
+            "v > 0.3 c: strains of order v/c stretch linear elasticity; results are a model "
+            "extrapolation",
+            stacklevel=3,
+        )
+
+
+def _start_position(alpha: np.ndarray, e0: np.ndarray, quad) -> np.ndarray:
+    """Centre position where the undeformed disk's wall energy is ``CONTACT_TOL * E0``."""
+    # V(x0) = exp(alpha (x0 + 1)) * I / alpha with I = int exp(alpha (cos phi - 1)) dphi.
+    integral = np.exp(alpha[:, None] * (quad.cos_phi[None, :] - 1.0)) @ quad.weight
+    return -1.0 + np.log(CONTACT_TOL * e0 * alpha / integral) / alpha
+
+
+def _contact_time_estimate(v: np.ndarray) -> np.ndarray:
+    """Quasistatic contact time, eq. (61) with prefactor pi (paper section 5), ``R / c``."""
+    return math.pi * np.sqrt(np.log(4.0 / v))
+
+
+# Step coefficient c of dt = c * min(1 / (alpha v), 1 / omega_max) that gives an energy drift
+# of about 1e-6, measured per integrator at nu = 0.33 (v = 0.005-0.3, alpha = 500-4000,
+# N = 400-1600); see docs/numerics.md.
+_STEP_COEFF = {"split4": 0.2, "split": 0.03, "rk4": 0.2}
+
+
+def initial_step(
+    modes: ModeSet, v: np.ndarray, alpha: np.ndarray, integrator: str, energy_tol: float
+) -> np.ndarray:
+    """First guess of the step for each collision, ``R / c``.
+
+    Two time scales limit the step. An edge point arriving at the wall with speed ``~v`` is
+    stopped within the decay length ``1/alpha`` of the exponential potential, in a time
+    ``1 / (alpha v)``; and the wall force, which depends on every mode, varies on the period
+    of the fastest mode, ``1 / omega_max``. The step is ``c`` times the smaller, with ``c``
+    calibrated per integrator for a drift of 1e-6 and scaled as ``energy_tol^(1/order)``.
+    The driver measures the actual drift and refines the step when needed.
+    """
+    order = INTEGRATORS[integrator].order
+    coeff = _STEP_COEFF[integrator] * (energy_tol / 1e-6) ** (1.0 / order)
+    w_max = float(modes.omega.max())
+    return coeff * np.minimum(1.0 / (alpha * v), 1.0 / w_max)
+
+
+def _edge_reach(system: System, state: State, e: np.ndarray, C_abs: np.ndarray) -> np.ndarray:
+    """Upper bound of the edge displacement any future free vibration can reach, ``R``."""
+    amp = np.sqrt(2.0 * e / system.mass) / system.omega
+    return amp @ C_abs
+
+
+@dataclass
+class _Track:
+    """Per-member bookkeeping while integrating (mutable, private)."""
+
+    e0: np.ndarray
+    h0: np.ndarray
+    drift: np.ndarray
+    contact: np.ndarray
+    max_comp: np.ndarray
+    max_force: np.ndarray
+    mean_e: np.ndarray
+    closest_e: np.ndarray
+
+
+def _run(
+    modes: ModeSet,
+    v: np.ndarray,
+    alpha: np.ndarray,
+    dt: float,
+    settings: CollisionSettings,
+    quad,
+    abort_drift: float | None = None,
+) -> list[dict]:
+    """Integrate a batch with one fixed step; returns one dict of raw results per member.
+
+    With ``abort_drift``, a run whose energy drift exceeds it (or overflows) stops at once with
+    :class:`_Unstable` so that the caller can retry with a smaller step.
+    """
+    integrator = INTEGRATORS[settings.integrator]
+    m = modes.mass
+    B = v.size
+    e0 = 0.5 * m * v**2
+    x_start = _start_position(alpha, e0, quad)
+    system = System(omega=modes.omega, mass=m, quad=quad, alpha=alpha)
+    state = initial_state(system, x_start, m * v)
+    t_max = float(np.max((-1.0 - x_start) / v + 20.0 * _contact_time_estimate(v) + 50.0))
+    N = len(modes)
+    track = _Track(
+        e0=e0,
+        h0=total_energy(system, state),
+        drift=np.zeros(B),
+        contact=np.zeros(B),
+        max_comp=np.full(B, -np.inf),
+        max_force=np.zeros(B),
+        mean_e=np.zeros((B, N)),
+        closest_e=np.zeros((B, N)),
+    )
+    C_abs = np.abs(modes.C) + np.abs(modes.S)
+    active = np.arange(B)  # original indices of the members still integrated
+    results: list[dict | None] = [None] * B
+    record = settings.record
+    rec_every = max(1, int(round(settings.record_interval / dt))) if record else 0
+    hist: list[list] = [[] for _ in range(B)] if record else []
+    comp_prev = state.x0 + 1.0
+    steps = 0
+    check_every = 8
+    while active.size:
+        if steps >= settings.max_steps or state.t > t_max:
+            raise CollisionError(
+                f"the disk did not separate from the wall within t = {state.t:.3g} R/c "
+                f"({steps} steps of dt = {dt:.3g}); this indicates an unstable step or an "
+                "unphysical input: reduce dt or energy_tol, or check alpha and v"
+            )
+        state = integrator.step(system, state, dt)
+        steps += 1
+        a = active
+        h = total_energy(system, state)
+        if not np.all(np.isfinite(h)):
+            if abort_drift is not None:
+                raise _Unstable()
+            raise CollisionError(
+                f"the integration overflowed at t = {state.t:.3g} with dt = {dt:.3g}; "
+                "the step is far too large for this wall hardness: reduce dt"
+            )
+        track.drift[a] = np.maximum(track.drift[a], np.abs(h - track.h0[a]) / track.h0[a])
+        if abort_drift is not None and np.any(track.drift[a] > abort_drift):
+            raise _Unstable()
+        comp = state.x0 + 1.0
+        both = (comp > 0) & (comp_prev > 0)
+        enter = (comp > 0) & (comp_prev <= 0)
+        leave = (comp <= 0) & (comp_prev > 0)
+        frac = np.where(both, 1.0, 0.0)
+        frac = np.where(enter, comp / (comp - comp_prev), frac)
+        frac = np.where(leave, comp_prev / (comp_prev - comp), frac)
+        track.contact[a] += frac * dt
+        in_contact = frac > 0
+        closer = comp > track.max_comp[a]
+        if np.any(in_contact | closer):
+            sel = np.nonzero(in_contact | closer)[0]
+            e_sel = mode_energies(system, state.take(sel))
+            ic = in_contact[sel]
+            track.mean_e[a[sel[ic]]] += (frac[sel[ic]] * dt)[:, None] * e_sel[ic]
+            cl = closer[sel]
+            track.closest_e[a[sel[cl]]] = e_sel[cl]
+        track.max_comp[a] = np.maximum(track.max_comp[a], comp)
+        track.max_force[a] = np.maximum(track.max_force[a], state.F)
+        comp_prev = comp
+        if record and steps % rec_every == 0:
+            e_all = mode_energies(system, state)
+            for i, orig in enumerate(a):
+                hist[orig].append(
+                    (state.t, state.x0[i], state.p0[i] / m, state.F[i], e_all[i], state.Q[i])
+                )
+        if steps % check_every:
+            continue
+        leaving = state.p0 < 0
+        if not np.any(leaving):
+            continue
+        e = mode_energies(system, state)
+        reach = _edge_reach(system, state, e, C_abs)
+        gap = -(state.x0 + 1.0 + reach)
+        done = leaving & (gap * system.alpha > _STOP_LOG) & (state.V < CONTACT_TOL * track.e0[a])
+        if not np.any(done):
+            continue
+        for i in np.nonzero(done)[0]:
+            orig = a[i]
+            results[orig] = {
+                "epsilon": float(-state.p0[i] / (m * v[orig])),
+                "energy_after": e[i] / e0[orig],
+                "steps": steps,
+                "t_end": state.t,
+            }
+        keep = ~done
+        active = a[keep]
+        state = state.take(np.nonzero(keep)[0])
+        system = System(omega=system.omega, mass=m, quad=quad, alpha=system.alpha[keep])
+        comp_prev = comp_prev[keep]
+    out = []
+    for i in range(B):
+        r = results[i]
+        assert r is not None
+        contact = track.contact[i]
+        r.update(
+            drift=float(track.drift[i]),
+            contact_time=float(contact),
+            max_compression=float(track.max_comp[i]),
+            max_force=float(track.max_force[i]),
+            energy_mean=track.mean_e[i] / (contact * e0[i]) if contact > 0 else track.mean_e[i],
+            energy_closest=track.closest_e[i] / e0[i],
+        )
+        if record:
+            rows = hist[i]
+            r["history"] = History(
+                t=np.array([x[0] for x in rows]),
+                x0=np.array([x[1] for x in rows]),
+                v=np.array([x[2] for x in rows]),
+                force=np.array([x[3] for x in rows]),
+                mode_energy=np.array([x[4] for x in rows]) / e0[i],
+                Q=np.array([x[5] for x in rows]),
+            )
+        out.append(r)
+    return out
+
+
+def collide_batch(
+    modes: ModeSet,
+    v,
+    alpha,
+    settings: CollisionSettings | None = None,
+    **overrides,
+) -> list[CollisionResult]:
+    """Integrate many collisions ``(v_i, alpha_i)`` on one mode set at once.
+
+    The batch shares the mode set and the step, so the wall terms are matrix-matrix products.
+
+    Parameters
+    ----------
+    modes : ModeSet
+        Modes kept in the expansion.
+    v : float or array_like, shape (B,)
+        Speeds towards the wall, units of ``c``, in (0, 1).
+    alpha : float or array_like, shape (B,)
+        Wall hardness, ``1 / R``; broadcast against ``v``.
+    settings : CollisionSettings, optional
+        Numerical settings; keyword ``overrides`` replace single fields.
+
+    Returns
+    -------
+    list of CollisionResult
+        In the order of the inputs.
+    """
+    settings = settings or CollisionSettings()
+    if overrides:
+        settings = CollisionSettings(**{**settings.__dict__, **overrides})
+    v, alpha = np.broadcast_arrays(np.atleast_1d(np.asarray(v, float)), np.atleast_1d(alpha))
+    v, alpha = v.astype(float).copy(), alpha.astype(float).copy()
+    _check_inputs(v, alpha, modes)
+    n_max = int(modes.n.max())
+    n_phi = settings.n_phi or default_n_phi(float(alpha.max()), n_max)
+    quad = wall_quadrature(modes, n_phi)
+    t_start = time.perf_counter()
+    if settings.dt is not None:
+        dts = np.full(v.size, settings.dt)
+    else:
+        dts = settings.step_safety * initial_step(
+            modes, v, alpha, settings.integrator, settings.energy_tol
+        )
+    raw: list[dict | None] = [None] * v.size
+    pending = np.arange(v.size)
+    order = INTEGRATORS[settings.integrator].order
+    for attempt in range(settings.max_refinements + 1):
+        dt = float(dts[pending].min())
+        fixed = settings.dt is not None
+        abort = None if fixed else max(100.0 * settings.energy_tol, 1e-4)
+        try:
+            got = _run(modes, v[pending], alpha[pending], dt, settings, quad, abort)
+        except _Unstable:
+            if attempt == settings.max_refinements:
+                raise CollisionError(
+                    f"the step stays unstable after {attempt} refinements (dt = {dt:.3g}) at "
+                    f"alpha up to {alpha[pending].max():.4g}; raise max_refinements or lower "
+                    "step_safety"
+                ) from None
+            dts[pending] = dt / 4.0
+            continue
+        for i, r in zip(pending, got, strict=True):
+            r["dt"] = dt
+            raw[i] = r
+        if settings.dt is not None:
+            break
+        drift = np.array([raw[i]["drift"] for i in pending])
+        bad = drift > settings.energy_tol
+        if not np.any(bad):
+            break
+        if attempt == settings.max_refinements:
+            worst = pending[bad][np.argmax(drift[bad])]
+            raise CollisionError(
+                f"energy drift {drift.max():.2e} still exceeds energy_tol = "
+                f"{settings.energy_tol:.1e} after {attempt} step refinements (dt = {dt:.3g}) "
+                f"at v = {v[worst]:.4g}, alpha = {alpha[worst]:.4g}; raise energy_tol or "
+                "max_refinements, or choose the split4 integrator"
+            )
+        # Drift of an order-p method scales like dt^p: aim at half the tolerance.
+        factor = np.clip((0.5 * settings.energy_tol / drift[bad]) ** (1.0 / order), 0.1, 0.8)
+        pending = pending[bad]
+        dts[pending] = dt * factor
+    wall = time.perf_counter() - t_start
+    results = []
+    for i in range(v.size):
+        r = raw[i]
+        results.append(
+            CollisionResult(
+                method="modal",
+                nu=modes.nu,
+                v=float(v[i]),
+                alpha=float(alpha[i]),
+                n_modes=len(modes),
+                epsilon=r["epsilon"],
+                energy_drift=r["drift"],
+                contact_time=r["contact_time"],
+                max_compression=r["max_compression"],
+                max_force=r["max_force"],
+                n_steps=int(r["steps"]),
+                dt=float(r["dt"]),
+                wall_time_s=wall / v.size,
+                integrator=settings.integrator,
+                mode_n=modes.n.copy(),
+                mode_l=modes.l.copy(),
+                mode_energy_after=r["energy_after"],
+                mode_energy_mean=r["energy_mean"],
+                mode_energy_closest=r["energy_closest"],
+                history=r.get("history"),
+            )
+        )
+    return results
+
+
+def collide(
+    modes: ModeSet,
+    v: float,
+    alpha: float,
+    settings: CollisionSettings | None = None,
+    **overrides,
+) -> CollisionResult:
+    """One collision of the disk with the wall (see :func:`collide_batch` for parameters).
+
+    Examples
+    --------
+    >>> from restitution import get_modes
+    >>> r = collide(get_modes(0.33, count=40), v=0.1, alpha=500)
+    >>> 0.9 < r.epsilon < 1.0
+    True
+    """
+    return collide_batch(modes, [v], [alpha], settings, **overrides)[0]
+
+
+def rank_modes(
+    pool: ModeSet,
+    count: int,
+    v: float,
+    alpha: float,
+    settings: CollisionSettings | None = None,
+    **overrides,
+) -> ModeSet:
+    """The paper's mode selection: the ``count`` modes of ``pool`` with the largest average
+    energy during the contact of a preliminary run with the whole pool (section 4)."""
+    if count > len(pool):
+        raise InputError(f"cannot rank {count} modes out of a pool of {len(pool)}")
+    pre = collide(pool, v, alpha, settings, **overrides)
+    top = np.argsort(-pre.mode_energy_mean, kind="stable")[:count]
+    return pool.take(np.sort(top))
