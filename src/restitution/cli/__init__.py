@@ -27,9 +27,13 @@ def cli() -> None:
 
 
 def _register() -> None:
+    from restitution.cli import collide as _collide
     from restitution.cli import modes as _modes
+    from restitution.cli import quasistatic as _quasistatic
 
     cli.add_command(_modes.modes)
+    cli.add_command(_collide.collide)
+    cli.add_command(_quasistatic.quasistatic)
 
 
 _register()

@@ -1,0 +1,114 @@
+"""``restitution quasistatic``: the quasistatic limit of paper section 5 at one speed."""
+
+from __future__ import annotations
+
+import math
+
+import click
+
+from restitution.cli._common import PLANE_HELP, dumps, material_from, positive_finite
+from restitution.errors import InputError
+from restitution.hertz import LAWS, contact_law, contact_time_rate, quasistatic_collision
+
+
+def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 400) -> dict:
+    """Everything the command reports, as a JSON-ready dict (units in the key names' docs)."""
+    from restitution.cache import get_modes
+    from restitution.rayleigh import rayleigh_energy
+
+    hl = contact_law(nu, law)
+    q = quasistatic_collision(hl, v)
+    modes = get_modes(nu, count=n_modes)
+    ray = rayleigh_energy(modes, v, hl)
+    n, l, share = ray.dominant
+    return {
+        "nu": nu,
+        "v": v,
+        "law": law,
+        "law_constant": hl.constant,
+        "max_compression": float(q.max_compression[0]),
+        "max_force": float(q.max_force[0]),
+        "contact_time": float(q.contact_time[0]),
+        "harmonic_ratio": float(q.harmonic_ratio[0]),
+        "harmonic_ratio_leading_order": float(1.0 + contact_time_rate(hl, q.max_compression)[0]),
+        "eq61_max_compression": float(q.estimate_max_compression[0]),
+        "eq61_contact_time": float(q.estimate_contact_time[0]),
+        "law_max_force": hl.max_force,
+        "law_max_compression": hl.max_compression,
+        "law_max_speed": hl.max_speed(),
+        "rayleigh_energy_fraction": ray.energy_fraction,
+        "rayleigh_quadrupole_fraction": ray.fraction_of(2, 0),
+        "rayleigh_dominant_mode": [n, l],
+        "rayleigh_dominant_share": share,
+        "rayleigh_n_modes": len(modes),
+        "units": "E = rho = R = 1: lengths R, times R/c, forces E R, speeds c; "
+        "energy fractions of (m/2) v^2",
+    }
+
+
+@click.command()
+@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
+@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@click.option(
+    "--v",
+    "v",
+    type=float,
+    required=True,
+    help="Speed of the disk towards the wall in units of c = sqrt(E/rho). Two identical disks "
+    "approaching each other at +-v collide like this (relative speed 2v).",
+)
+@click.option(
+    "--law",
+    type=click.Choice(LAWS),
+    default="paper",
+    show_default=True,
+    help="2D Hertz law: paper = eq. (57) as printed (c = -1-nu); diameter = eq. (56) "
+    "integrated correctly (c = -1); centre = approach of the centre of mass "
+    "(c = -1-2/pi-nu/4), see docs/quasistatic.md.",
+)
+@click.option(
+    "--modes",
+    "n_modes",
+    type=int,
+    default=400,
+    show_default=True,
+    help="Lowest modes driven in Rayleigh's approach (the paper's Fig. 12 uses 1800).",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON instead of text.")
+def quasistatic(nu, plane, v, law, n_modes, as_json):
+    """Quasistatic collision (2D Hertz law) and Rayleigh's energy estimate at speed V.
+
+    Reports the maximal compression, the contact time and the eq. (61) estimates, and the
+    fraction of the kinetic energy left in the modes when the quasistatic force drives them
+    at the contact point (paper section 5).
+    """
+    positive_finite("--v", v)
+    if n_modes < 1:
+        raise InputError(f"--modes must be at least 1, got {n_modes}")
+    material = material_from(nu, plane)
+    out = quasistatic_summary(material.nu, v, law, n_modes)
+    if as_json:
+        click.echo(dumps(out))
+        return
+    click.echo(
+        f"quasistatic collision, nu = {out['nu']:g}, v = {v:g} c towards the wall, "
+        f"law '{law}' (c = {out['law_constant']:.6g})\n"
+        f"  max compression  {out['max_compression']:.6g} R   (eq. 61: "
+        f"{out['eq61_max_compression']:.6g})\n"
+        f"  contact time     {out['contact_time']:.6g} R/c (eq. 61: "
+        f"{out['eq61_contact_time']:.6g}); v tau / (pi delta_max) = "
+        f"{out['harmonic_ratio']:.6f}\n"
+        f"  max force        {out['max_force']:.6g} E R\n"
+        f"  Rayleigh: energy left in {out['rayleigh_n_modes']} modes = "
+        f"{out['rayleigh_energy_fraction']:.6g} of (m/2) v^2, "
+        f"{100 * out['rayleigh_dominant_share']:.1f}% in mode "
+        f"(n={out['rayleigh_dominant_mode'][0]}, l={out['rayleigh_dominant_mode'][1]})"
+    )
+    if out["rayleigh_energy_fraction"] > 0.1:
+        click.echo(
+            "  note: a fraction this large is outside the first-order validity of Rayleigh's "
+            "approach",
+            err=True,
+        )
+    if not math.isfinite(out["contact_time"]):
+        raise InputError("contact time is not finite; use a smaller --v")

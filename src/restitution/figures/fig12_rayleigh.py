@@ -1,0 +1,113 @@
+"""Fig. 12: energy left in the modes after a slow collision, Rayleigh's approach.
+
+Units: speeds in ``c``; energies as fractions of the initial kinetic energy ``(m/2) v^2``.
+
+The curve is :func:`restitution.rayleigh.rayleigh_energy` (the paper: the lowest 1800 modes,
+eq. 57 as printed) for all modes and for the quadrupole ``(n = 2, l = 0)`` alone; when given,
+the dynamic energy losses ``1 - epsilon^2`` extrapolated to a hard wall and infinitely many
+modes (section 4) as points.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from restitution.cache import get_modes
+from restitution.hertz import contact_law
+from restitution.rayleigh import rayleigh_energy
+
+__all__ = ["Fig12Data", "compute", "plot"]
+
+
+@dataclass(frozen=True)
+class Fig12Data:
+    """Numbers of Fig. 12.
+
+    Attributes
+    ----------
+    nu : float
+    law : str
+        Contact law of the quasistatic force.
+    n_modes : int
+    v : numpy.ndarray, shape (K,)
+        Speeds, ``c``.
+    total, quadrupole : numpy.ndarray, shape (K,)
+        Energy fraction in all modes and in ``(2, 0)``.
+    dynamic_v, dynamic_loss : numpy.ndarray, shape (J,)
+        Extrapolated dynamic ``1 - epsilon^2`` (may be empty).
+    """
+
+    nu: float
+    law: str
+    n_modes: int
+    v: np.ndarray
+    total: np.ndarray
+    quadrupole: np.ndarray
+    dynamic_v: np.ndarray
+    dynamic_loss: np.ndarray
+
+
+def compute(
+    nu: float = 0.33,
+    *,
+    n_modes: int = 1800,
+    law: str = "paper",
+    v_min: float = 1e-5,
+    v_max: float = 0.1,
+    n_v: int = 61,
+    dynamic: tuple[Sequence[float], Sequence[float]] | None = None,
+) -> Fig12Data:
+    """Compute Fig. 12 on ``n_v`` log-spaced speeds in ``[v_min, v_max]``.
+
+    Parameters
+    ----------
+    nu : float
+    n_modes : int
+        Lowest modes driven (the paper: 1800).
+    law : {"paper", "centre", "diameter"}
+        Contact law for the quasistatic force.
+    v_min, v_max : float
+        Speed range, ``c`` (``v_max`` below the law's largest speed).
+    n_v : int
+    dynamic : (v, loss), optional
+        Extrapolated dynamic energy losses, e.g. from the sweeps of section 4.
+    """
+    modes = get_modes(nu, count=n_modes)
+    hl = contact_law(nu, law)
+    v = np.geomspace(v_min, min(v_max, 0.999 * hl.max_speed()), n_v)
+    res = [rayleigh_energy(modes, float(s), hl) for s in v]
+    dv, dl = (np.empty(0), np.empty(0)) if dynamic is None else map(np.asarray, dynamic)
+    return Fig12Data(
+        nu=float(nu),
+        law=law,
+        n_modes=int(n_modes),
+        v=v,
+        total=np.array([r.energy_fraction for r in res]),
+        quadrupole=np.array([r.fraction_of(2, 0) for r in res]),
+        dynamic_v=np.asarray(dv, float),
+        dynamic_loss=np.asarray(dl, float),
+    )
+
+
+def plot(data: Fig12Data, path) -> None:
+    """Draw Fig. 12 into ``path``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.0, 4.5))
+    ax.loglog(data.v, data.total, "k-", label=f"Rayleigh, {data.n_modes} modes")
+    ax.loglog(data.v, data.quadrupole, "--", color="tab:blue", label="Rayleigh, (n=2, l=0) only")
+    if data.dynamic_v.size:
+        ax.loglog(data.dynamic_v, data.dynamic_loss, "D", mfc="none", label="dynamic, extrapolated")
+    ax.set_xlabel(r"$v_i$  [$c$]")
+    ax.set_ylabel(r"energy in modes / $(m/2) v_i^2$")
+    ax.set_title(rf"Rayleigh's estimate, $\nu$ = {data.nu:g} (law: {data.law})")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=150)
+    plt.close(fig)

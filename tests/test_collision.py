@@ -1,0 +1,166 @@
+"""Disk-wall collision: conservation, reversibility, convergence orders, DOP853, limits."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from restitution import get_modes
+from restitution.collision import CollisionError, collide, collide_batch
+from restitution.integrators import INTEGRATORS, System, initial_state, total_energy
+from restitution.reference import collide_dop853
+from restitution.wall import wall_quadrature
+
+V, ALPHA = 0.1, 500.0
+
+
+@pytest.fixture(scope="module")
+def small():
+    return get_modes(0.33, count=24)
+
+
+@pytest.fixture(scope="module")
+def medium():
+    return get_modes(0.33, count=120)
+
+
+def test_energy_conservation_and_bookkeeping(medium):
+    r = collide(medium, V, ALPHA, energy_tol=1e-7)
+    assert r.energy_drift < 1e-7
+    # Whatever the translation lost sits in the modes after the collision.
+    assert_allclose(r.mode_energy_after.sum(), 1.0 - r.epsilon**2, atol=2e-7)
+    assert 0.0 < r.epsilon < 1.0
+    assert r.contact_time > 0 and r.max_compression > 0 and r.max_force > 0
+
+
+def test_time_reversibility(small):
+    # The symplectic splittings are symmetric: stepping back with flipped momenta retraces
+    # the trajectory to round-off, also through the stiff contact.
+    quad = wall_quadrature(small, 300)
+    system = System(omega=small.omega, mass=small.mass, quad=quad, alpha=np.array([ALPHA]))
+    s0 = initial_state(system, np.array([-1.01]), np.array([small.mass * V]))
+    for name in ("split", "split4"):
+        integ = INTEGRATORS[name]
+        s = s0
+        for _ in range(400):  # well into the contact (0.4 + 0.1 R/c of compression)
+            s = integ.step(system, s, 0.005)
+        assert s.x0[0] > -1.0
+        back = replace(s, p0=-s.p0, P=-s.P, f=s.f, F=s.F)
+        for _ in range(400):
+            back = integ.step(system, back, 0.005)
+        assert_allclose(back.x0, s0.x0, atol=1e-11)
+        assert_allclose(-back.p0, s0.p0, atol=1e-11)
+        assert_allclose(back.Q, s0.Q, atol=1e-11)
+        assert_allclose(-back.P, s0.P, atol=1e-11)
+
+
+def _state_at(system, s0, integ, t_end, n):
+    s = s0
+    for _ in range(n):
+        s = integ.step(system, s, t_end / n)
+    return np.concatenate([s.x0, s.p0, s.Q.ravel(), s.P.ravel()])
+
+
+@pytest.mark.parametrize("name", ["split", "split4", "rk4"])
+def test_convergence_order(small, name):
+    # Fitted order of the state error at a fixed time deep in the contact matches the declared
+    # order (reference: the same integrator at a 4x finer step than the finest used).
+    integ = INTEGRATORS[name]
+    quad = wall_quadrature(small, 300)
+    system = System(omega=small.omega, mass=small.mass, quad=quad, alpha=np.array([ALPHA]))
+    s0 = initial_state(system, np.array([-1.01]), np.array([small.mass * V]))
+    t_end = 2.0  # 0.1 R/c to contact, then 1.9 R/c of compression
+    counts = np.array([100, 200, 400, 800]) * (4 if name == "split" else 1)
+    ref = _state_at(system, s0, integ, t_end, 4 * counts[-1])
+    errors = [np.max(np.abs(_state_at(system, s0, integ, t_end, n) - ref)) for n in counts]
+    slope = -np.polyfit(np.log(counts), np.log(errors), 1)[0]
+    assert abs(slope - integ.order) < 0.3, (name, slope, errors)
+
+
+def test_epsilon_converges_at_least_at_declared_order(small):
+    # epsilon is a scattering quantity; for rk4 it converges even faster (about dt^6, see
+    # docs/numerics.md), for the symmetric splittings exactly at their order.
+    for name, dts in (("split", [0.004, 0.002, 0.001]), ("split4", [0.008, 0.004, 0.002]),
+                      ("rk4", [0.008, 0.004, 0.002])):
+        eps = [collide(small, V, ALPHA, integrator=name, dt=dt).epsilon for dt in dts]
+        d = np.abs(np.diff(eps))
+        assert np.log2(d[0] / d[1]) > INTEGRATORS[name].order - 0.3, (name, d)
+
+
+def test_agrees_with_dop853(small):
+    ref = collide_dop853(small, V, ALPHA, rtol=1e-11, atol=1e-13)
+    r = collide(small, V, ALPHA, energy_tol=1e-9)
+    assert ref["energy_drift"] < 1e-8
+    assert_allclose(r.epsilon, ref["epsilon"], atol=2e-7)
+    assert_allclose(r.mode_energy_after, ref["energy_after"], atol=2e-7)
+
+
+def test_rigid_limits(small):
+    # Modes that do not touch the edge (C = S = 0) cannot take energy: epsilon = 1 exactly.
+    ghost = replace(small, C=np.zeros(len(small)), S=np.zeros(len(small)))
+    assert_allclose(collide(ghost, V, ALPHA).epsilon, 1.0, atol=1e-9)
+    # Stiffening every mode drives the energy loss to zero. The wall force rises within
+    # ~1/(alpha v) = 0.02 R/c, so its spectrum reaches omega ~ 50: the loss vanishes only once
+    # the lowest mode lies well above that (k = 100 puts it at omega = 144).
+    losses = []
+    for k in (1.0, 10.0, 100.0):
+        stiff = replace(small, omega=small.omega * k)
+        losses.append(collide(stiff, V, ALPHA).energy_loss)
+    assert losses[0] > losses[1] > losses[2]
+    assert losses[2] < 1e-4 * losses[0]
+
+
+def test_more_modes_bring_epsilon_closer_to_one():
+    # Paper, section 4: at fixed alpha, more modes make the collision effectively softer.
+    eps = [collide(get_modes(0.33, count=n), V, ALPHA, energy_tol=1e-6).epsilon
+           for n in (25, 50, 100, 200)]
+    assert all(b > a for a, b in zip(eps, eps[1:], strict=False)), eps
+
+
+def test_phi_quadrature_converges(medium):
+    eps = [collide(medium, V, ALPHA, n_phi=n, dt=0.004).epsilon for n in (200, 400, 800, 1600)]
+    diffs = np.abs(np.diff(eps))
+    assert diffs[-1] < 1e-9
+    assert diffs[1] <= diffs[0] + 1e-12
+
+
+def test_too_large_step_is_caught(small):
+    # A fixed step far above the 1/(alpha v) scale at a hard wall either fails loudly or
+    # reports a large drift; the automatic step refines itself below the tolerance.
+    try:
+        bad = collide(small, V, 4000.0, dt=0.02)
+        assert bad.energy_drift > 1e-3
+    except CollisionError as exc:
+        assert "dt" in str(exc)
+    good = collide(small, V, 4000.0, energy_tol=1e-6)
+    assert good.energy_drift < 1e-6
+
+
+def test_batch_matches_single(small):
+    vs = np.array([0.02, 0.1, 0.25])
+    batch = collide_batch(small, vs, ALPHA, dt=0.002)
+    for v, rb in zip(vs, batch, strict=True):
+        rs = collide(small, v, ALPHA, dt=0.002)
+        assert_allclose(rb.epsilon, rs.epsilon, rtol=0, atol=1e-12)
+        assert_allclose(rb.mode_energy_after, rs.mode_energy_after, atol=1e-12)
+
+
+def test_history_and_closest_approach(small):
+    r = collide(small, V, ALPHA, record=True, record_interval=0.01)
+    h = r.history
+    assert h is not None and h.t.size > 100
+    # x0 peaks at the maximal compression; the wall force vanishes before and after.
+    assert_allclose(h.x0.max() + 1.0, r.max_compression, atol=2e-3)
+    assert h.force[0] < 1e-8 and h.force[-1] < 1e-8
+    assert h.v[-1] < 0 and h.v[0] == pytest.approx(V)
+
+
+def test_bad_inputs(small):
+    from restitution.errors import InputError
+
+    for v, a in [(0.0, 500.0), (1.0, 500.0), (float("nan"), 500.0), (0.1, 0.0), (0.1, -1.0)]:
+        with pytest.raises(InputError):
+            collide(small, v, a)
+    with pytest.warns(UserWarning, match="linear elasticity"):
+        collide(small, 0.35, 100.0, energy_tol=1e-4)
