@@ -8,18 +8,25 @@ velocities are in units of c = sqrt(E / rho) and the disk mass is pi.
 __version__ = "0.1.0"
 
 from restitution.cache import get_modes  # noqa: E402
+from restitution.collision import CollisionSettings, collide, collide_batch  # noqa: E402
 from restitution.errors import InputError, RestitutionError  # noqa: E402
+from restitution.law import EpsilonLaw, law  # noqa: E402
 from restitution.material import Material, MaterialError  # noqa: E402
 from restitution.modes import ModeSet, compute_modes, weyl_count  # noqa: E402
 
 __all__ = [
     "__version__",
+    "CollisionSettings",
+    "EpsilonLaw",
     "InputError",
     "Material",
     "MaterialError",
     "ModeSet",
     "RestitutionError",
+    "collide",
+    "collide_batch",
     "compute_modes",
     "get_modes",
+    "law",
     "weyl_count",
 ]

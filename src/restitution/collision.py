@@ -324,6 +324,51 @@ def _run(
     return out
 
 
+def _step_groups(index: np.ndarray, dts: np.ndarray, ratio: float = 1.5) -> list[np.ndarray]:
+    """Split batch members into groups whose steps differ by at most ``ratio``."""
+    order = index[np.argsort(dts[index], kind="stable")]
+    groups, current = [], [order[0]] if order.size else []
+    for i in order[1:]:
+        if dts[i] <= ratio * dts[current[0]]:
+            current.append(i)
+        else:
+            groups.append(np.array(current))
+            current = [i]
+    if current:
+        groups.append(np.array(current))
+    return groups
+
+
+def _attempt(modes, v, alpha, dts, group, settings, quad, raw, attempt) -> list[int]:
+    """Run one group with its smallest step; store results; return members to redo."""
+    dt = float(dts[group].min())
+    fixed = settings.dt is not None
+    abort = None if fixed else max(100.0 * settings.energy_tol, 1e-4)
+    try:
+        got = _run(modes, v[group], alpha[group], dt, settings, quad, abort)
+    except _Unstable:
+        if attempt == settings.max_refinements:
+            raise CollisionError(
+                f"the step stays unstable after {attempt} refinements (dt = {dt:.3g}) at "
+                f"alpha up to {alpha[group].max():.4g}; raise max_refinements or lower "
+                "step_safety"
+            ) from None
+        dts[group] = dt / 4.0
+        return list(group)
+    for i, r in zip(group, got, strict=True):
+        r["dt"] = dt
+        raw[i] = r
+    if fixed:
+        return []
+    order = INTEGRATORS[settings.integrator].order
+    drift = np.array([r["drift"] for r in got])
+    bad = drift > settings.energy_tol
+    # Drift of an order-p method scales like dt^p: aim at half the tolerance.
+    factor = np.clip((0.5 * settings.energy_tol / drift[bad]) ** (1.0 / order), 0.1, 0.8)
+    dts[group[bad]] = dt * factor
+    return list(group[bad])
+
+
 def collide_batch(
     modes: ModeSet,
     v,
@@ -369,43 +414,21 @@ def collide_batch(
         )
     raw: list[dict | None] = [None] * v.size
     pending = np.arange(v.size)
-    order = INTEGRATORS[settings.integrator].order
     for attempt in range(settings.max_refinements + 1):
-        dt = float(dts[pending].min())
-        fixed = settings.dt is not None
-        abort = None if fixed else max(100.0 * settings.energy_tol, 1e-4)
-        try:
-            got = _run(modes, v[pending], alpha[pending], dt, settings, quad, abort)
-        except _Unstable:
-            if attempt == settings.max_refinements:
-                raise CollisionError(
-                    f"the step stays unstable after {attempt} refinements (dt = {dt:.3g}) at "
-                    f"alpha up to {alpha[pending].max():.4g}; raise max_refinements or lower "
-                    "step_safety"
-                ) from None
-            dts[pending] = dt / 4.0
-            continue
-        for i, r in zip(pending, got, strict=True):
-            r["dt"] = dt
-            raw[i] = r
-        if settings.dt is not None:
+        failed = []
+        for group in _step_groups(pending, dts):
+            failed.extend(_attempt(modes, v, alpha, dts, group, settings, quad, raw, attempt))
+        pending = np.array(sorted(failed), dtype=int)
+        if pending.size == 0:
             break
-        drift = np.array([raw[i]["drift"] for i in pending])
-        bad = drift > settings.energy_tol
-        if not np.any(bad):
-            break
-        if attempt == settings.max_refinements:
-            worst = pending[bad][np.argmax(drift[bad])]
-            raise CollisionError(
-                f"energy drift {drift.max():.2e} still exceeds energy_tol = "
-                f"{settings.energy_tol:.1e} after {attempt} step refinements (dt = {dt:.3g}) "
-                f"at v = {v[worst]:.4g}, alpha = {alpha[worst]:.4g}; raise energy_tol or "
-                "max_refinements, or choose the split4 integrator"
-            )
-        # Drift of an order-p method scales like dt^p: aim at half the tolerance.
-        factor = np.clip((0.5 * settings.energy_tol / drift[bad]) ** (1.0 / order), 0.1, 0.8)
-        pending = pending[bad]
-        dts[pending] = dt * factor
+    if pending.size:
+        worst = pending[np.argmax([raw[i]["drift"] for i in pending])]
+        raise CollisionError(
+            f"energy drift {raw[worst]['drift']:.2e} still exceeds energy_tol = "
+            f"{settings.energy_tol:.1e} after {settings.max_refinements} step refinements "
+            f"(dt = {raw[worst]['dt']:.3g}) at v = {v[worst]:.4g}, alpha = {alpha[worst]:.4g}; "
+            "raise energy_tol or max_refinements"
+        )
     wall = time.perf_counter() - t_start
     results = []
     for i in range(v.size):

@@ -28,12 +28,15 @@ def cli() -> None:
 
 def _register() -> None:
     from restitution.cli import collide as _collide
+    from restitution.cli import epsilon as _epsilon
     from restitution.cli import modes as _modes
     from restitution.cli import quasistatic as _quasistatic
 
     cli.add_command(_modes.modes)
     cli.add_command(_collide.collide)
     cli.add_command(_quasistatic.quasistatic)
+    cli.add_command(_epsilon.epsilon)
+    cli.add_command(_epsilon.curve)
 
 
 _register()

@@ -1,0 +1,167 @@
+"""Extrapolations alpha -> infinity (1/alpha) and N -> infinity (1/sqrt(N)) on synthetic data.
+
+The synthetic data have a known limit; the statistics tests use fixed seeds.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from restitution.errors import InputError
+from restitution.extrapolation import (
+    combined_limit,
+    epsilon_from_loss,
+    extrapolate_alpha,
+    extrapolate_modes,
+    linear_limit,
+)
+
+PAPER_N = np.array([300, 400, 600, 940])  # the paper's mode counts (Fig. 8 caption)
+ALPHAS = np.array([125.0, 250.0, 500.0, 1000.0])
+
+
+def test_exact_line_recovered_with_zero_error():
+    x = 1.0 / np.sqrt(PAPER_N)
+    fit = extrapolate_modes(PAPER_N, 0.12 - 0.8 * x)
+    assert_allclose(fit.limit, 0.12, rtol=1e-13)
+    assert_allclose(fit.slope, -0.8, rtol=1e-12)
+    assert fit.limit_err < 1e-14
+    assert fit.asymptotic_ok, fit.message
+    assert_allclose(fit.line(x), 0.12 - 0.8 * x, atol=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("fit", "parameter", "slope", "noise"),
+    [
+        (extrapolate_modes, PAPER_N, 2.0, 1e-3),
+        (extrapolate_alpha, ALPHAS, 5.0, 1e-3),
+        (extrapolate_alpha, ALPHAS[:3], 5.0, 1e-3),
+    ],
+)
+def test_error_bar_coverage_on_noisy_lines(fit, parameter, slope, noise):
+    # Linear data + Gaussian noise: the quoted 1-sigma error (standard error combined in
+    # quadrature with the drop-one spread) should cover the truth about 68% of the time. With
+    # 2-3 points per fit the standard error is itself uncertain (t distribution, 1-2 degrees
+    # of freedom), so the 2-sigma coverage falls short of 95%. 200 repetitions give a binomial
+    # scatter of about 0.03; the bounds are wide enough to be robust, tight enough to catch an
+    # error bar that is off by a factor 2.
+    rng = np.random.default_rng(20240601)
+    truth = 0.1
+    x = 1.0 / np.sqrt(parameter) if fit is extrapolate_modes else 1.0 / parameter
+    z = []
+    for _ in range(200):
+        y = truth + slope * x + rng.normal(0.0, noise, x.size)
+        result = fit(parameter, y)
+        z.append(abs(result.limit - truth) / result.limit_err)
+    z = np.array(z)
+    assert 0.55 < np.mean(z < 1.0) < 0.85
+    assert np.mean(z < 2.0) > 0.75
+    assert np.mean(z < 4.0) > 0.9
+
+
+def test_flag_fires_on_non_asymptotic_data():
+    # Energy loss that only becomes linear in 1/alpha at hard walls: at soft walls the loss
+    # saturates (quasi-elastic), as the paper describes for small speeds (Fig. 7 discussion).
+    alpha = np.array([20.0, 40.0, 80.0])
+    loss = 0.05 * (1.0 - np.exp(-alpha / 60.0))
+    fit = extrapolate_alpha(alpha, loss)
+    assert not fit.asymptotic_ok
+    assert "curved" in fit.message or "dropping" in fit.message
+
+
+def test_flag_fires_on_strong_curvature_in_modes():
+    x = 1.0 / np.sqrt(PAPER_N)
+    fit = extrapolate_modes(PAPER_N, 0.1 + 2.0 * x + 60.0 * x**2)
+    assert not fit.asymptotic_ok
+    assert "curved in 1/sqrt(N)" in fit.message
+
+
+def test_mild_curvature_is_accepted():
+    # y = 0.1 + 2 x + c x^2 with 2 c x_max = 0.2: the slope grows by 10% of 2 between x = 0 and
+    # the least asymptotic point; the reported curvature is relative to the fitted slope.
+    x = 1.0 / np.sqrt(PAPER_N)
+    c = 0.1 * 2.0 / (2.0 * x.max())
+    fit = extrapolate_modes(PAPER_N, 0.1 + 2.0 * x + c * x**2)
+    assert fit.asymptotic_ok, fit.message
+    assert_allclose(fit.curvature, 2.0 * c * x.max() / fit.slope, rtol=1e-8)
+
+
+def test_too_few_points_are_flagged():
+    fit = extrapolate_alpha([250.0, 500.0], [0.2, 0.15])
+    assert not fit.asymptotic_ok
+    assert "need >= 3" in fit.message
+    assert_allclose(fit.limit, 0.1, rtol=1e-12)  # the line through two points
+    single = linear_limit([0.1], [0.3])
+    assert not single.asymptotic_ok and math.isnan(single.limit_err)
+
+
+def test_non_finite_points_are_ignored():
+    x = np.array([0.1, 0.2, 0.3, 0.4])
+    fit = linear_limit(x, [1.1, np.nan, 1.3, 1.4])
+    assert_allclose(fit.limit, 1.0, rtol=1e-12)
+    assert fit.x.size == 3
+
+
+def test_bad_input():
+    with pytest.raises(InputError):
+        linear_limit([0.1, 0.2], [1.0])
+    with pytest.raises(InputError):
+        extrapolate_alpha([-1.0, 2.0, 3.0], [0.1, 0.2, 0.3])
+    with pytest.raises(InputError):
+        combined_limit([1.0, 2.0], [10, 20], np.zeros((3, 2)))
+    with pytest.raises(InputError):
+        combined_limit([1.0, 2.0], [10, 20], np.zeros((2, 2)), order="random")
+
+
+def _bilinear(alpha, n, limit=0.2):
+    # Energy loss with independent corrections in 1/alpha and 1/sqrt(N) and a cross term.
+    a, s = 1.0 / alpha[:, None], 1.0 / np.sqrt(n)[None, :]
+    return limit + 5.0 * a - 1.0 * s + 3.0 * a * s
+
+
+def test_combined_limit_exact_on_bilinear_grid():
+    alpha = np.array([125.0, 250.0, 500.0])
+    loss = _bilinear(alpha, PAPER_N)
+    c = combined_limit(alpha, PAPER_N, loss)
+    assert_allclose(c.limit, 0.2, rtol=1e-12)
+    assert_allclose(c.epsilon, math.sqrt(0.8), rtol=1e-12)
+    assert c.asymptotic_ok, c.message
+    # Unweighted fits on a complete grid: both orders give the same limit to round-off.
+    assert abs(c.order_difference) < 1e-14
+    assert len(c.first) == alpha.size and len(c.check_first) == PAPER_N.size
+    other = combined_limit(alpha, PAPER_N, loss, order="alpha_first")
+    assert_allclose(other.limit, c.limit, rtol=1e-12)
+
+
+def test_combined_limit_with_noise_and_a_missing_point():
+    rng = np.random.default_rng(7)
+    alpha = np.array([125.0, 250.0, 500.0, 1000.0])
+    loss = _bilinear(alpha, PAPER_N) + rng.normal(0.0, 2e-4, (alpha.size, PAPER_N.size))
+    loss[0, 1] = np.nan  # a failed collision
+    c = combined_limit(alpha, PAPER_N, loss)
+    assert np.isfinite(c.limit) and c.limit_err > 0
+    assert abs(c.limit - 0.2) < 3.0 * c.limit_err
+    assert c.first[0].x.size == 3  # the missing point was left out of its fit
+    d = c.to_dict()
+    assert d["energy_loss_grid"][0][1] is None and d["epsilon"] == pytest.approx(c.epsilon)
+
+
+def test_epsilon_error_propagation():
+    # d sqrt(1 - L) / dL = -1 / (2 sqrt(1 - L)), compared with a central difference.
+    loss, err = 0.3, 1e-3
+    eps, eps_err = epsilon_from_loss(loss, err)
+    h = 1e-6
+    slope = (math.sqrt(1 - loss - h) - math.sqrt(1 - loss + h)) / (2 * h)
+    assert_allclose(eps, math.sqrt(0.7), rtol=1e-15)
+    assert_allclose(eps_err, abs(slope) * err, rtol=1e-8)
+    assert all(math.isnan(x) for x in epsilon_from_loss(-0.01, 0.001))
+    assert all(math.isnan(x) for x in epsilon_from_loss(1.0, 0.001))
+
+
+def test_unphysical_limit_is_flagged():
+    alpha = np.array([125.0, 250.0, 500.0])
+    c = combined_limit(alpha, PAPER_N, _bilinear(alpha, PAPER_N, limit=-0.05))
+    assert not c.asymptotic_ok and "outside [0, 1)" in c.message
+    assert math.isnan(c.epsilon)
