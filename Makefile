@@ -22,9 +22,11 @@ paper-quick: $(STAMP)
 	$(BIN)/restitution paper --quick --out $(OUT)
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q
 
+# The browser test of the report needs Debian's chromium (installed here if missing, as root).
 test-slow: $(STAMP)
+	command -v chromium >/dev/null || (apt-get update && apt-get install -y chromium)
 	$(BIN)/python -m pytest -q -m slow
 
 lint: $(STAMP)

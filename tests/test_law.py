@@ -147,7 +147,11 @@ def test_missing_points_are_flagged(tmp_path):
 # -- the real solver on a coarse grid --------------------------------------------------------
 
 COARSE = SweepSettings(
-    velocities=(0.1, 0.2), alphas=(20.0, 30.0, 40.0), n_modes=(10, 14, 20), batch_size=3
+    velocities=(0.1, 0.2),
+    alphas=(20.0, 30.0, 40.0),
+    alpha_scale="absolute",
+    n_modes=(10, 14, 20),
+    batch_size=3,
 )
 
 

@@ -28,7 +28,13 @@ import numpy as np
 from restitution.errors import InputError
 from restitution.modes import ModeSet
 
-__all__ = ["WallQuadrature", "default_n_phi", "wall_quadrature", "wall_terms"]
+__all__ = [
+    "WallQuadrature",
+    "active_nodes",
+    "default_n_phi",
+    "wall_quadrature",
+    "wall_terms",
+]
 
 
 def default_n_phi(alpha: float, n_max: int) -> int:
@@ -57,12 +63,15 @@ class WallQuadrature:
         ``cos(phi)``: the undeformed edge relative to the centre, in ``R``.
     G : numpy.ndarray, shape (M, N)
         ``g_k(phi_j)``: the x-displacement of edge point ``j`` per unit ``Q_k``.
+    g_max : numpy.ndarray, shape (N,)
+        ``|C_k| + |S_k|``, a bound of ``|g_k(phi)|`` for every ``phi``.
     """
 
     phi: np.ndarray
     weight: np.ndarray
     cos_phi: np.ndarray
     G: np.ndarray
+    g_max: np.ndarray
 
 
 def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
@@ -77,7 +86,29 @@ def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
     G = modes.C[None, :] * np.cos(n * phi[:, None]) * np.cos(phi)[:, None] - modes.S[
         None, :
     ] * np.sin(n * phi[:, None]) * np.sin(phi)[:, None]
-    return WallQuadrature(phi=phi, weight=weight, cos_phi=np.cos(phi), G=np.ascontiguousarray(G))
+    return WallQuadrature(
+        phi=phi,
+        weight=weight,
+        cos_phi=np.cos(phi),
+        G=np.ascontiguousarray(G),
+        g_max=np.abs(modes.C) + np.abs(modes.S),
+    )
+
+
+# Nodes whose exponent alpha x is certainly below -_NEGLIGIBLE contribute less than
+# exp(-40) = 4e-18 of the force at the wall and are skipped.
+_NEGLIGIBLE = 40.0
+
+
+def active_nodes(quad: WallQuadrature, alpha: np.ndarray, x0: np.ndarray, Q: np.ndarray) -> int:
+    """Number of leading nodes where ``exp(alpha x)`` can exceed ``exp(-40)``.
+
+    ``x(phi_j) <= x0 + cos(phi_j) + sum_k |Q_k| g_max_k``, and ``cos(phi)`` decreases on
+    ``[0, pi/2]``, so the nodes that matter for the whole batch form a prefix.
+    """
+    reach = x0 + np.abs(Q) @ quad.g_max
+    bound = np.min(-reach - _NEGLIGIBLE / alpha)
+    return int(np.searchsorted(-quad.cos_phi, -bound, side="right"))
 
 
 def wall_terms(
@@ -104,7 +135,12 @@ def wall_terms(
     f : numpy.ndarray, shape (B, N)
         ``dV/dQ_k``: generalised wall forces on the modes.
     """
-    x = x0[:, None] + quad.cos_phi[None, :] + Q @ quad.G.T
-    e = np.exp(alpha[:, None] * x) * quad.weight[None, :]
+    J = active_nodes(quad, alpha, x0, Q)
+    if J == 0:
+        zeros = np.zeros(x0.shape)
+        return zeros, zeros, np.zeros(Q.shape)
+    G = quad.G[:J]
+    x = x0[:, None] + quad.cos_phi[None, :J] + Q @ G.T
+    e = np.exp(alpha[:, None] * x) * quad.weight[None, :J]
     F = e.sum(axis=1)
-    return F / alpha, F, e @ quad.G
+    return F / alpha, F, e @ G
