@@ -136,7 +136,9 @@ def test_law_from_store_recovers_the_known_limit(tmp_path, client, scale):
 
 
 def test_missing_points_are_flagged(tmp_path):
-    settings = SweepSettings(velocities=(0.1,), alphas=(100.0, 200.0, 400.0))
+    settings = SweepSettings(
+        velocities=(0.1,), alphas=(100.0, 200.0, 400.0), alpha_scale="absolute"
+    )
     curves = compute_curves([0.5], settings, store=tmp_path / "empty.sqlite", run=False)
     limit = curves[0.5].limits[0]
     assert not limit.asymptotic_ok and "missing" in limit.message
@@ -191,7 +193,10 @@ def _run(command, args):
 
 
 def _grid_args(path):
-    return ["--alphas", "20", "30", "40", "--modes", "10", "14", "20", "--store", str(path)]
+    return [
+        "--alphas", "20", "30", "40", "--alpha-scale", "absolute",
+        "--modes", "10", "14", "20", "--store", str(path),
+    ]  # fmt: skip
 
 
 def test_epsilon_command_json(coarse):
