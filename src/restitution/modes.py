@@ -25,7 +25,7 @@ positive (``S = U_phi(1)`` positive where ``C`` vanishes to round-off).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy.optimize.elementwise import find_minimum, find_root
@@ -345,41 +345,18 @@ def _build(n: np.ndarray, omega: np.ndarray, nu: float) -> ModeSet:
     l = np.arange(n.size) - group_start
     kappa, kappa_p = wavenumbers(omega, nu)
     A, B = _amplitudes(n, omega, nu)
+    zeros = np.zeros_like(omega)
     raw = ModeSet(
-        nu=nu,
-        n=n,
-        l=l,
-        omega=omega,
-        kappa=kappa,
-        kappa_p=kappa_p,
-        A=A,
-        B=B,
-        C=np.zeros_like(omega),
-        S=np.zeros_like(omega),
+        nu=nu, n=n, l=l, omega=omega, kappa=kappa, kappa_p=kappa_p, A=A, B=B, C=zeros, S=zeros
     )
     target = np.where(n == 0, 0.5, 1.0)
     scale = np.sqrt(target / _norm_integrals(raw))
-    A, B = A * scale, B * scale
-    tmp = ModeSet(
-        nu=nu, n=n, l=l, omega=omega, kappa=kappa, kappa_p=kappa_p, A=A, B=B, C=A, S=B
-    )
-    U1, V1 = tmp.shapes(np.array([1.0]))
-    C, S = U1[:, 0], V1[:, 0]
-    tiny = np.abs(C) <= 1e-12 * np.abs(S)
-    sign = np.where(tiny, np.sign(S), np.sign(C))
+    normed = replace(raw, A=A * scale, B=B * scale)
+    U1, V1 = (a[:, 0] for a in normed.shapes(np.array([1.0])))
+    tiny = np.abs(U1) <= 1e-12 * np.abs(V1)
+    sign = np.where(tiny, np.sign(V1), np.sign(U1))
     sign = np.where(sign == 0, 1.0, sign)
-    full = ModeSet(
-        nu=nu,
-        n=n,
-        l=l,
-        omega=omega,
-        kappa=kappa,
-        kappa_p=kappa_p,
-        A=A * sign,
-        B=B * sign,
-        C=C * sign,
-        S=S * sign,
-    )
+    full = replace(normed, A=normed.A * sign, B=normed.B * sign, C=U1 * sign, S=V1 * sign)
     return full.take(np.argsort(omega, kind="stable"))
 
 
