@@ -32,6 +32,7 @@ __all__ = [
     "WallQuadrature",
     "active_nodes",
     "default_n_phi",
+    "dense_edge_matrix",
     "wall_quadrature",
     "wall_terms",
 ]
@@ -53,6 +54,13 @@ def default_n_phi(alpha: float, n_max: int) -> int:
 class WallQuadrature:
     """Quadrature of the wall integral for one mode set.
 
+    The edge displacement is summed order by order: with ``a_n = sum_{k: n_k = n} Q_k C_k`` and
+    ``b_n = sum_{k: n_k = n} Q_k S_k``,
+    ``sum_k Q_k g_k(phi) = cos(phi) sum_n a_n cos(n phi) - sin(phi) sum_n b_n sin(n phi)``,
+    and the generalised forces are ``f_k = C_k c_{n_k} - S_k s_{n_k}`` with
+    ``c_n = int exp(alpha x) cos(n phi) cos(phi)`` and ``s_n`` likewise. The cost per evaluation
+    is ``M x (number of orders)`` instead of ``M x N`` (about 8x less for 1600 modes).
+
     Attributes
     ----------
     phi : numpy.ndarray, shape (M,)
@@ -61,8 +69,16 @@ class WallQuadrature:
         Trapezoid weights, doubled for the mirror half ``[-pi/2, 0]``.
     cos_phi : numpy.ndarray, shape (M,)
         ``cos(phi)``: the undeformed edge relative to the centre, in ``R``.
-    G : numpy.ndarray, shape (M, N)
-        ``g_k(phi_j)``: the x-displacement of edge point ``j`` per unit ``Q_k``.
+    trig : numpy.ndarray, shape (M, 2K)
+        ``[cos(n phi) cos(phi), -sin(n phi) sin(phi)]`` for the ``K`` orders present.
+    C, S : numpy.ndarray, shape (N,)
+        Edge amplitudes of the modes.
+    perm : numpy.ndarray of int, shape (N,)
+        Mode indices sorted by order ``n``.
+    starts : numpy.ndarray of int, shape (K,)
+        Start of each order's run in ``perm``.
+    column : numpy.ndarray of int, shape (N,)
+        Column (order index ``0..K-1``) of every mode.
     g_max : numpy.ndarray, shape (N,)
         ``|C_k| + |S_k|``, a bound of ``|g_k(phi)|`` for every ``phi``.
     """
@@ -70,8 +86,18 @@ class WallQuadrature:
     phi: np.ndarray
     weight: np.ndarray
     cos_phi: np.ndarray
-    G: np.ndarray
+    trig: np.ndarray
+    C: np.ndarray
+    S: np.ndarray
+    perm: np.ndarray
+    starts: np.ndarray
+    column: np.ndarray
     g_max: np.ndarray
+
+    @property
+    def n_orders(self) -> int:
+        """Number ``K`` of distinct orders ``n`` in the mode set."""
+        return int(self.starts.size)
 
 
 def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
@@ -82,17 +108,37 @@ def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
     h = phi[1] - phi[0]
     weight = np.full(n_phi, 2.0 * h)
     weight[0] = weight[-1] = h
-    n = modes.n[None, :]
-    G = modes.C[None, :] * np.cos(n * phi[:, None]) * np.cos(phi)[:, None] - modes.S[
-        None, :
-    ] * np.sin(n * phi[:, None]) * np.sin(phi)[:, None]
+    perm = np.argsort(modes.n, kind="stable")
+    n_sorted = modes.n[perm]
+    first = np.r_[True, n_sorted[1:] != n_sorted[:-1]]
+    starts = np.nonzero(first)[0]
+    orders = n_sorted[starts]
+    column = np.empty(len(modes), dtype=int)
+    column[perm] = np.cumsum(first) - 1
+    arg = orders[None, :] * phi[:, None]
+    trig = np.hstack(
+        [np.cos(arg) * np.cos(phi)[:, None], -np.sin(arg) * np.sin(phi)[:, None]]
+    )
     return WallQuadrature(
         phi=phi,
         weight=weight,
         cos_phi=np.cos(phi),
-        G=np.ascontiguousarray(G),
+        trig=np.ascontiguousarray(trig),
+        C=modes.C.copy(),
+        S=modes.S.copy(),
+        perm=perm,
+        starts=starts,
+        column=column,
         g_max=np.abs(modes.C) + np.abs(modes.S),
     )
+
+
+def dense_edge_matrix(modes: ModeSet, phi: np.ndarray) -> np.ndarray:
+    """``g_k(phi_j)`` as a dense matrix, shape (M, N) (eq. 40); for checks and baselines."""
+    n = modes.n[None, :]
+    return modes.C[None, :] * np.cos(n * phi[:, None]) * np.cos(phi)[:, None] - modes.S[
+        None, :
+    ] * np.sin(n * phi[:, None]) * np.sin(phi)[:, None]
 
 
 # Nodes whose exponent alpha x is certainly below -_NEGLIGIBLE contribute less than
@@ -139,8 +185,18 @@ def wall_terms(
     if J == 0:
         zeros = np.zeros(x0.shape)
         return zeros, zeros, np.zeros(Q.shape)
-    G = quad.G[:J]
-    x = x0[:, None] + quad.cos_phi[None, :J] + Q @ G.T
+    # Per-order amplitudes [a_n, b_n], shape (B, 2K).
+    ab = np.hstack(
+        [
+            np.add.reduceat((Q * quad.C)[:, quad.perm], quad.starts, axis=1),
+            np.add.reduceat((Q * quad.S)[:, quad.perm], quad.starts, axis=1),
+        ]
+    )
+    trig = quad.trig[:J]
+    x = x0[:, None] + quad.cos_phi[None, :J] + ab @ trig.T
     e = np.exp(alpha[:, None] * x) * quad.weight[None, :J]
     F = e.sum(axis=1)
-    return F / alpha, F, e @ G
+    cs = e @ trig  # [c_n, -s_n], shape (B, 2K)
+    K = quad.n_orders
+    f = cs[:, quad.column] * quad.C + cs[:, K + quad.column] * quad.S
+    return F / alpha, F, f

@@ -29,6 +29,7 @@ def cli() -> None:
 def _register() -> None:
     from restitution.cli import collide as _collide
     from restitution.cli import epsilon as _epsilon
+    from restitution.cli import fem_compare as _fem_compare
     from restitution.cli import modes as _modes
     from restitution.cli import quasistatic as _quasistatic
 
@@ -37,6 +38,7 @@ def _register() -> None:
     cli.add_command(_quasistatic.quasistatic)
     cli.add_command(_epsilon.epsilon)
     cli.add_command(_epsilon.curve)
+    cli.add_command(_fem_compare.compare_fem)
 
 
 _register()
