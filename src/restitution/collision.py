@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import time
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -295,7 +295,7 @@ def _run(
         keep = ~done
         active = a[keep]
         state = state.take(np.nonzero(keep)[0])
-        system = System(omega=system.omega, mass=m, quad=quad, alpha=system.alpha[keep])
+        system = replace(system, alpha=system.alpha[keep])
         comp_prev = comp_prev[keep]
     out = []
     for i in range(B):

@@ -14,7 +14,7 @@ same tiny interface: ``step(system, state, dt) -> state`` with class attributes 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import ClassVar, Protocol
 
 import numpy as np
@@ -55,6 +55,19 @@ class System:
     mass: float
     quad: WallQuadrature
     alpha: np.ndarray
+    # Memo of the harmonic rotation (cos, sin, m omega sin, sin/(m omega)) per step size.
+    _rotations: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def rotation(self, dt: float) -> tuple[np.ndarray, ...]:
+        """``cos(omega dt)``, ``sin(omega dt) / (m omega)``, ``m omega sin(omega dt)``."""
+        rot = self._rotations.get(dt)
+        if rot is None:
+            mw = self.mass * self.omega
+            c, s = np.cos(self.omega * dt), np.sin(self.omega * dt)
+            rot = (c, s / mw, mw * s)
+            if len(self._rotations) < 16:
+                self._rotations[dt] = rot
+        return rot
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,11 +147,10 @@ class Integrator(Protocol):
 
 def _free_flow(system: System, x0, p0, Q, P, dt: float):
     """Exact flow of ``H_free`` over ``dt``: translation and harmonic rotation."""
-    m, w = system.mass, system.omega
-    c, s = np.cos(w * dt), np.sin(w * dt)
-    Qn = Q * c + P * (s / (m * w))
-    Pn = P * c - Q * (m * w * s)
-    return x0 + p0 * (dt / m), Qn, Pn
+    c, s_over, s_times = system.rotation(dt)
+    Qn = Q * c + P * s_over
+    Pn = P * c - Q * s_times
+    return x0 + p0 * (dt / system.mass), Qn, Pn
 
 
 @dataclass(frozen=True)

@@ -24,6 +24,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from restitution.errors import InputError
 from restitution.modes import ModeSet
@@ -73,12 +74,14 @@ class WallQuadrature:
         ``[cos(n phi) cos(phi), -sin(n phi) sin(phi)]`` for the ``K`` orders present.
     C, S : numpy.ndarray, shape (N,)
         Edge amplitudes of the modes.
-    perm : numpy.ndarray of int, shape (N,)
-        Mode indices sorted by order ``n``.
-    starts : numpy.ndarray of int, shape (K,)
-        Start of each order's run in ``perm``.
     column : numpy.ndarray of int, shape (N,)
         Column (order index ``0..K-1``) of every mode.
+    edge : scipy.sparse.csr_matrix, shape (N, 2K)
+        ``C_k`` at ``(k, column_k)`` and ``S_k`` at ``(k, K + column_k)``: maps mode
+        coordinates to per-order amplitudes (``Q @ edge``) and per-order integrals back to
+        generalised forces (``edge @ cs``).
+    edge_t : scipy.sparse.csr_matrix, shape (2K, N)
+        Its transpose, stored for fast products.
     g_max : numpy.ndarray, shape (N,)
         ``|C_k| + |S_k|``, a bound of ``|g_k(phi)|`` for every ``phi``.
     """
@@ -89,15 +92,15 @@ class WallQuadrature:
     trig: np.ndarray
     C: np.ndarray
     S: np.ndarray
-    perm: np.ndarray
-    starts: np.ndarray
     column: np.ndarray
+    edge: sp.csr_matrix
+    edge_t: sp.csr_matrix
     g_max: np.ndarray
 
     @property
     def n_orders(self) -> int:
         """Number ``K`` of distinct orders ``n`` in the mode set."""
-        return int(self.starts.size)
+        return int(self.trig.shape[1] // 2)
 
 
 def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
@@ -108,13 +111,12 @@ def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
     h = phi[1] - phi[0]
     weight = np.full(n_phi, 2.0 * h)
     weight[0] = weight[-1] = h
-    perm = np.argsort(modes.n, kind="stable")
-    n_sorted = modes.n[perm]
-    first = np.r_[True, n_sorted[1:] != n_sorted[:-1]]
-    starts = np.nonzero(first)[0]
-    orders = n_sorted[starts]
-    column = np.empty(len(modes), dtype=int)
-    column[perm] = np.cumsum(first) - 1
+    orders, column = np.unique(modes.n, return_inverse=True)
+    N, K = len(modes), orders.size
+    rows = np.r_[np.arange(N), np.arange(N)]
+    edge = sp.csr_matrix(
+        (np.r_[modes.C, modes.S], (rows, np.r_[column, K + column])), shape=(N, 2 * K)
+    )
     arg = orders[None, :] * phi[:, None]
     trig = np.hstack(
         [np.cos(arg) * np.cos(phi)[:, None], -np.sin(arg) * np.sin(phi)[:, None]]
@@ -126,9 +128,9 @@ def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
         trig=np.ascontiguousarray(trig),
         C=modes.C.copy(),
         S=modes.S.copy(),
-        perm=perm,
-        starts=starts,
         column=column,
+        edge=edge,
+        edge_t=edge.T.tocsr(),
         g_max=np.abs(modes.C) + np.abs(modes.S),
     )
 
@@ -186,17 +188,11 @@ def wall_terms(
         zeros = np.zeros(x0.shape)
         return zeros, zeros, np.zeros(Q.shape)
     # Per-order amplitudes [a_n, b_n], shape (B, 2K).
-    ab = np.hstack(
-        [
-            np.add.reduceat((Q * quad.C)[:, quad.perm], quad.starts, axis=1),
-            np.add.reduceat((Q * quad.S)[:, quad.perm], quad.starts, axis=1),
-        ]
-    )
+    ab = (quad.edge_t @ Q.T).T
     trig = quad.trig[:J]
     x = x0[:, None] + quad.cos_phi[None, :J] + ab @ trig.T
     e = np.exp(alpha[:, None] * x) * quad.weight[None, :J]
     F = e.sum(axis=1)
     cs = e @ trig  # [c_n, -s_n], shape (B, 2K)
-    K = quad.n_orders
-    f = cs[:, quad.column] * quad.C + cs[:, K + quad.column] * quad.S
-    return F / alpha, F, f
+    f = (quad.edge @ cs.T).T
+    return F / alpha, F, np.ascontiguousarray(f)
