@@ -39,16 +39,21 @@ def main() -> None:
     t = time.perf_counter()
     default = collide(modes, V, ALPHA)
     t_default = time.perf_counter() - t
-    print(f"restitution defaults (split4, energy_tol 1e-6): |err| "
-          f"{abs(default.epsilon - ref):.1e}  {default.n_steps} steps  {t_default:.2f} s")
+    print(
+        f"restitution defaults (split4, energy_tol 1e-6): |err| "
+        f"{abs(default.epsilon - ref):.1e}  {default.n_steps} steps  {t_default:.2f} s"
+    )
     tol = 1e-3
     while True:
         t = time.perf_counter()
         ours = collide(modes, V, ALPHA, energy_tol=tol)
         t_ours = time.perf_counter() - t
         err_ours = abs(ours.epsilon - ref)
-        print(f"restitution energy_tol {tol:.0e}: eps {ours.epsilon:.10f}  |err| {err_ours:.1e}"
-              f"  {ours.n_steps} steps  {t_ours:.2f} s", flush=True)
+        print(
+            f"restitution energy_tol {tol:.0e}: eps {ours.epsilon:.10f}  |err| {err_ours:.1e}"
+            f"  {ours.n_steps} steps  {t_ours:.2f} s",
+            flush=True,
+        )
         if err_ours <= TARGET or tol < 1e-9:
             break
         tol /= 10.0
@@ -59,14 +64,19 @@ def main() -> None:
         d = collide_dop853(modes, V, ALPHA, rtol=rtol, atol=rtol * 1e-2)
         t_dop = time.perf_counter() - t
         err_dop = abs(d["epsilon"] - ref)
-        print(f"DOP853 rtol {rtol:.0e}: eps {d['epsilon']:.10f}  |err| {err_dop:.1e}  "
-              f"nfev {d['nfev']}  {t_dop:.2f} s", flush=True)
+        print(
+            f"DOP853 rtol {rtol:.0e}: eps {d['epsilon']:.10f}  |err| {err_dop:.1e}  "
+            f"nfev {d['nfev']}  {t_dop:.2f} s",
+            flush=True,
+        )
         if err_dop <= TARGET:
             break
         rtol /= 10.0
     print(f"accuracy: ours {err_ours:.1e}, DOP853 {err_dop:.1e} (target {TARGET:.0e})")
-    print(f"speed-up at equal accuracy: {t_dop / t_ours:.1f}x  (DOP853 {t_dop:.2f} s / "
-          f"restitution {t_ours:.2f} s)")
+    print(
+        f"speed-up at equal accuracy: {t_dop / t_ours:.1f}x  (DOP853 {t_dop:.2f} s / "
+        f"restitution {t_ours:.2f} s)"
+    )
 
     vs = np.linspace(0.02, 0.3, 32)
     t = time.perf_counter()
@@ -76,9 +86,11 @@ def main() -> None:
     for v in vs[::8]:
         collide(modes, v, ALPHA)
     t_loop = (time.perf_counter() - t) * 8
-    print(f"batch of 32 speeds: {t_batch:.1f} s = {32 / t_batch:.2f} collisions/s; "
-          f"one at a time (4 of 32 timed, scaled): {t_loop:.1f} s = {32 / t_loop:.2f} "
-          f"collisions/s; batching gains {t_loop / t_batch:.2f}x")
+    print(
+        f"batch of 32 speeds: {t_batch:.1f} s = {32 / t_batch:.2f} collisions/s; "
+        f"one at a time (4 of 32 timed, scaled): {t_loop:.1f} s = {32 / t_loop:.2f} "
+        f"collisions/s; batching gains {t_loop / t_batch:.2f}x"
+    )
     assert all(np.isfinite([r.epsilon for r in batch]))
 
 

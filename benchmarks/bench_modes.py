@@ -62,11 +62,15 @@ def main() -> None:
     t_base = time.perf_counter() - t
     base = np.array(base)
     base = base[base <= w_max]
-    print(f"restitution: {len(modes)} modes below omega = {w_max:.4f} in {t_ours:.2f} s "
-          f"(target < 3 s)")
+    print(
+        f"restitution: {len(modes)} modes below omega = {w_max:.4f} in {t_ours:.2f} s "
+        f"(target < 3 s)"
+    )
     print(f"baseline (raw determinant, jvp, brentq): {base.size} roots in {t_base:.2f} s")
-    print(f"speed ratio baseline / restitution: {t_base / t_ours:.2f}x; roots missed by the "
-          f"baseline: {len(modes) - base.size}")
+    print(
+        f"speed ratio baseline / restitution: {t_base / t_ours:.2f}x; roots missed by the "
+        f"baseline: {len(modes) - base.size}"
+    )
 
 
 if __name__ == "__main__":

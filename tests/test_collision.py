@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 
 from restitution import get_modes
 from restitution.collision import CollisionError, collide, collide_batch
-from restitution.integrators import INTEGRATORS, System, initial_state, total_energy
+from restitution.integrators import INTEGRATORS, System, initial_state
 from restitution.reference import collide_dop853
 from restitution.wall import wall_quadrature
 
@@ -81,8 +81,11 @@ def test_convergence_order(small, name):
 def test_epsilon_converges_at_least_at_declared_order(small):
     # epsilon is a scattering quantity; for rk4 it converges even faster (about dt^6, see
     # docs/numerics.md), for the symmetric splittings exactly at their order.
-    for name, dts in (("split", [0.004, 0.002, 0.001]), ("split4", [0.008, 0.004, 0.002]),
-                      ("rk4", [0.008, 0.004, 0.002])):
+    for name, dts in (
+        ("split", [0.004, 0.002, 0.001]),
+        ("split4", [0.008, 0.004, 0.002]),
+        ("rk4", [0.008, 0.004, 0.002]),
+    ):
         eps = [collide(small, V, ALPHA, integrator=name, dt=dt).epsilon for dt in dts]
         d = np.abs(np.diff(eps))
         assert np.log2(d[0] / d[1]) > INTEGRATORS[name].order - 0.3, (name, d)
@@ -113,8 +116,10 @@ def test_rigid_limits(small):
 
 def test_more_modes_bring_epsilon_closer_to_one():
     # Paper, section 4: at fixed alpha, more modes make the collision effectively softer.
-    eps = [collide(get_modes(0.33, count=n), V, ALPHA, energy_tol=1e-6).epsilon
-           for n in (25, 50, 100, 200)]
+    eps = [
+        collide(get_modes(0.33, count=n), V, ALPHA, energy_tol=1e-6).epsilon
+        for n in (25, 50, 100, 200)
+    ]
     assert all(b > a for a, b in zip(eps, eps[1:], strict=False)), eps
 
 

@@ -80,7 +80,8 @@ def test_eq25_has_the_same_roots(modes033):
             # eq. (25) changes sign across each determinant root, and its own root is there.
             lo, hi = w - 1e-3, w + 1e-3
             assert eq25(n, lo, nu) * eq25(n, hi, nu) < 0
-            assert abs(brentq(lambda x: eq25(n, x, nu), lo, hi, xtol=1e-14) - w) < 1e-10
+            root = brentq(lambda x, n=n: eq25(n, x, nu), lo, hi, xtol=1e-14)
+            assert abs(root - w) < 1e-10
 
 
 def test_amplitudes_solve_edge_conditions(modes033):

@@ -70,7 +70,9 @@ def test_paper_velocities():
 
 def test_sweep_stores_points_and_skips_them_on_rerun(tmp_path, client):
     settings = SweepSettings(
-        velocities=(0.05, 0.1), alphas=(100.0, 200.0, 400.0), n_modes=(50, 100),
+        velocities=(0.05, 0.1),
+        alphas=(100.0, 200.0, 400.0),
+        n_modes=(50, 100),
         alpha_scale="absolute",
     )
     points = grid([0.33, 0.9], settings)
@@ -90,9 +92,10 @@ def test_sweep_stores_points_and_skips_them_on_rerun(tmp_path, client):
 def test_failures_are_recorded_and_never_lose_other_points(tmp_path, client):
     path = tmp_path / "f.sqlite"
     points = grid(
-        [0.33], SweepSettings(
+        [0.33],
+        SweepSettings(
             velocities=(0.013, 0.05), alphas=(100.0,), n_modes=(50, 99), alpha_scale="absolute"
-        )
+        ),
     )
     report = run_sweep(points, store=path, client=client, batch_function=fake_batch, batch_size=1)
     assert report.computed == 1  # (0.05, N = 50)
@@ -115,9 +118,12 @@ def test_failures_are_recorded_and_never_lose_other_points(tmp_path, client):
 
 def test_sweep_on_a_scheduler_address(tmp_path, client):
     # The --scheduler path: a new distributed.Client connects to an existing cluster.
-    points = grid([0.33], SweepSettings(
+    points = grid(
+        [0.33],
+        SweepSettings(
             velocities=(0.05,), alphas=(100.0,), n_modes=(50, 100), alpha_scale="absolute"
-        ))
+        ),
+    )
     report = run_sweep(
         points,
         store=tmp_path / "a.sqlite",

@@ -22,13 +22,22 @@ def test_potential_matches_adaptive_quadrature():
     V, F, f = wall_terms(wall_quadrature(modes, 800), alpha, x0, Q)
 
     def x(phi):
-        g = modes.C * np.cos(modes.n * phi) * np.cos(phi) - modes.S * np.sin(modes.n * phi) * np.sin(phi)
+        g = modes.C * np.cos(modes.n * phi) * np.cos(phi) - modes.S * np.sin(
+            modes.n * phi
+        ) * np.sin(phi)
         return x0[0] + np.cos(phi) + g @ Q[0]
 
-    ref_V = adaptive(lambda p: np.exp(alpha[0] * x(p)) / alpha[0], -np.pi / 2, np.pi / 2,
-                     limit=400, epsabs=0, epsrel=1e-12)[0]
-    ref_F = adaptive(lambda p: np.exp(alpha[0] * x(p)), -np.pi / 2, np.pi / 2,
-                     limit=400, epsabs=0, epsrel=1e-12)[0]
+    ref_V = adaptive(
+        lambda p: np.exp(alpha[0] * x(p)) / alpha[0],
+        -np.pi / 2,
+        np.pi / 2,
+        limit=400,
+        epsabs=0,
+        epsrel=1e-12,
+    )[0]
+    ref_F = adaptive(
+        lambda p: np.exp(alpha[0] * x(p)), -np.pi / 2, np.pi / 2, limit=400, epsabs=0, epsrel=1e-12
+    )[0]
     assert_allclose(V[0], ref_V, rtol=1e-10)
     assert_allclose(F[0], ref_F, rtol=1e-10)
 
@@ -46,7 +55,7 @@ def test_forces_are_derivatives_of_the_potential():
     for k in (0, 5, 17, 39):
         dQ = np.zeros_like(Q)
         dQ[0, k] = h
-        num = (wall_terms(quad, alpha, x0, Q + dQ)[0] - wall_terms(quad, alpha, x0, Q - dQ)[0])
+        num = wall_terms(quad, alpha, x0, Q + dQ)[0] - wall_terms(quad, alpha, x0, Q - dQ)[0]
         assert_allclose(f[0, k], num[0] / (2 * h), rtol=1e-5, atol=1e-12)
 
 

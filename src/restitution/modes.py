@@ -31,6 +31,7 @@ import numpy as np
 from scipy.optimize.elementwise import find_minimum, find_root
 from scipy.special import jv
 
+from restitution.errors import InputError, RestitutionError
 from restitution.frequency_equation import (
     bessel_and_derivative,
     boundary_matrix,
@@ -38,7 +39,6 @@ from restitution.frequency_equation import (
     normalized_determinant,
     wavenumbers,
 )
-from restitution.errors import InputError, RestitutionError
 from restitution.material import Material
 
 __all__ = ["ModeSet", "compute_modes", "weyl_count", "ModeError"]

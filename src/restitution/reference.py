@@ -83,12 +83,16 @@ def collide_dop853(
     y0 = np.zeros(2 + 2 * N)
     y0[0], y0[1] = x_start, m * v
     start = time.perf_counter()
-    sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=atol, dense_output=False)
+    sol = solve_ivp(
+        rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=atol, dense_output=False
+    )
     elapsed = time.perf_counter() - start
     y = sol.y[:, -1]
     Q, P = y[2 : 2 + N], y[2 + N :]
     e_modes = (P**2 / (2 * m) + 0.5 * m * (w * Q) ** 2) / e0
-    h = np.array([energy(sol.y[:, i]) for i in range(0, sol.y.shape[1], max(1, sol.y.shape[1] // 200))])
+    h = np.array(
+        [energy(sol.y[:, i]) for i in range(0, sol.y.shape[1], max(1, sol.y.shape[1] // 200))]
+    )
     _, F_end, _ = wall(y[0], Q)
     if F_end > CONTACT_TOL * e0 * alpha:
         raise RuntimeError("DOP853 reference ended while still in contact; increase t_end")

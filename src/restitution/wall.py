@@ -118,9 +118,7 @@ def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
         (np.r_[modes.C, modes.S], (rows, np.r_[column, K + column])), shape=(N, 2 * K)
     )
     arg = orders[None, :] * phi[:, None]
-    trig = np.hstack(
-        [np.cos(arg) * np.cos(phi)[:, None], -np.sin(arg) * np.sin(phi)[:, None]]
-    )
+    trig = np.hstack([np.cos(arg) * np.cos(phi)[:, None], -np.sin(arg) * np.sin(phi)[:, None]])
     return WallQuadrature(
         phi=phi,
         weight=weight,
@@ -138,9 +136,10 @@ def wall_quadrature(modes: ModeSet, n_phi: int) -> WallQuadrature:
 def dense_edge_matrix(modes: ModeSet, phi: np.ndarray) -> np.ndarray:
     """``g_k(phi_j)`` as a dense matrix, shape (M, N) (eq. 40); for checks and baselines."""
     n = modes.n[None, :]
-    return modes.C[None, :] * np.cos(n * phi[:, None]) * np.cos(phi)[:, None] - modes.S[
-        None, :
-    ] * np.sin(n * phi[:, None]) * np.sin(phi)[:, None]
+    return (
+        modes.C[None, :] * np.cos(n * phi[:, None]) * np.cos(phi)[:, None]
+        - modes.S[None, :] * np.sin(n * phi[:, None]) * np.sin(phi)[:, None]
+    )
 
 
 # Nodes whose exponent alpha x is certainly below -_NEGLIGIBLE contribute less than

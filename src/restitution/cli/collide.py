@@ -21,7 +21,8 @@ def _print_summary(result, top: int = 10) -> None:
         f"[bold]epsilon = {result.epsilon:.8f}[/bold]  (1 - eps^2 = {result.energy_loss:.6g})\n"
         f"method {result.method}, nu = {result.nu}, v = {result.v} c towards the wall, "
         f"alpha = {result.alpha}, modes = {result.n_modes}, integrator {result.integrator}\n"
-        f"contact time {result.contact_time:.5g} R/c, max compression {result.max_compression:.5g} R, "
+        f"contact time {result.contact_time:.5g} R/c, "
+        f"max compression {result.max_compression:.5g} R, "
         f"max force {result.max_force:.5g} E, energy drift {result.energy_drift:.2e}, "
         f"dt {result.dt:.3g}, {result.n_steps} steps, {result.wall_time_s:.2f} s"
     )
@@ -45,29 +46,64 @@ def _print_summary(result, top: int = 10) -> None:
 @click.command()
 @click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
 @click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
-@click.option("--v", "v", type=float, required=True,
-              help="Speed of the disk towards the wall in units of c = sqrt(E/rho), in (0, 1). "
-                   "Two identical disks approaching each other at +-v collide like this.")
-@click.option("--alpha", type=float, default=500.0, show_default=True,
-              help="Wall hardness alpha of V = exp(alpha x)/alpha, in 1/R.")
-@click.option("--modes", "n_modes", type=int, default=1600, show_default=True,
-              help="Number of modes kept.")
-@click.option("--select", type=click.Choice(["lowest", "ranked"]), default="lowest",
-              show_default=True,
-              help="lowest: the N lowest frequencies; ranked: the N modes with most average "
-                   "energy in a preliminary run with the 2N lowest (paper, section 4).")
-@click.option("--integrator", type=click.Choice(["split4", "split", "rk4"]), default="split4",
-              show_default=True)
-@click.option("--method", type=click.Choice(["modal", "fem"]), default="modal", show_default=True,
-              help="modal: normal-mode expansion (paper); fem: independent finite elements.")
-@click.option("--mesh-refine", type=int, default=1, show_default=True,
-              help="Mesh refinement level for --method fem (1: epsilon within ~1e-5 of level 2 "
-                   "at nu = 0.33, v = 0.1, in seconds; each level halves the element size).")
-@click.option("--energy-tol", type=float, default=1e-6, show_default=True,
-              help="Largest accepted relative energy drift; the step is refined until met.")
+@click.option(
+    "--v",
+    "v",
+    type=float,
+    required=True,
+    help="Speed of the disk towards the wall in units of c = sqrt(E/rho), in (0, 1). "
+    "Two identical disks approaching each other at +-v collide like this.",
+)
+@click.option(
+    "--alpha",
+    type=float,
+    default=500.0,
+    show_default=True,
+    help="Wall hardness alpha of V = exp(alpha x)/alpha, in 1/R.",
+)
+@click.option(
+    "--modes", "n_modes", type=int, default=1600, show_default=True, help="Number of modes kept."
+)
+@click.option(
+    "--select",
+    type=click.Choice(["lowest", "ranked"]),
+    default="lowest",
+    show_default=True,
+    help="lowest: the N lowest frequencies; ranked: the N modes with most average "
+    "energy in a preliminary run with the 2N lowest (paper, section 4).",
+)
+@click.option(
+    "--integrator",
+    type=click.Choice(["split4", "split", "rk4"]),
+    default="split4",
+    show_default=True,
+)
+@click.option(
+    "--method",
+    type=click.Choice(["modal", "fem"]),
+    default="modal",
+    show_default=True,
+    help="modal: normal-mode expansion (paper); fem: independent finite elements.",
+)
+@click.option(
+    "--mesh-refine",
+    type=int,
+    default=1,
+    show_default=True,
+    help="Mesh refinement level for --method fem (1: epsilon within ~1e-5 of level 2 "
+    "at nu = 0.33, v = 0.1, in seconds; each level halves the element size).",
+)
+@click.option(
+    "--energy-tol",
+    type=float,
+    default=1e-6,
+    show_default=True,
+    help="Largest accepted relative energy drift; the step is refined until met.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
-def collide(nu, plane, v, alpha, n_modes, select, integrator, method, mesh_refine, energy_tol,
-            as_json):
+def collide(
+    nu, plane, v, alpha, n_modes, select, integrator, method, mesh_refine, energy_tol, as_json
+):
     """Head-on collision of an elastic disk with a hard wall: epsilon and where the energy goes.
 
     Units: E = rho = R = 1; v in c, times in R/c; mode energies as fractions of the initial
@@ -90,12 +126,14 @@ def collide(nu, plane, v, alpha, n_modes, select, integrator, method, mesh_refin
 
             result = fem_collide(material, v, alpha, refine=mesh_refine)
         else:
-            from restitution.collision import collide as run, rank_modes
+            from restitution.collision import collide as run
+            from restitution.collision import rank_modes
 
             if select == "ranked":
                 pool = get_modes(material, count=2 * n_modes)
-                ms = rank_modes(pool, n_modes, v, alpha, integrator=integrator,
-                                energy_tol=energy_tol)
+                ms = rank_modes(
+                    pool, n_modes, v, alpha, integrator=integrator, energy_tol=energy_tol
+                )
             else:
                 ms = get_modes(material, count=n_modes)
             result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)

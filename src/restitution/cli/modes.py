@@ -44,15 +44,30 @@ def _csv(records: list[dict]) -> str:
 @click.option("--count", type=int, default=None, help="Number of lowest modes [default: 1600].")
 @click.option("--omega-max", type=float, default=None, help="All modes below this omega (c/R).")
 @click.option(
-    "--format", "fmt", type=click.Choice(["table", "csv", "json"]), default="table",
+    "--format",
+    "fmt",
+    type=click.Choice(["table", "csv", "json"]),
+    default="table",
     show_default=True,
 )
-@click.option("--output", type=click.Path(dir_okay=False, path_type=Path), default=None,
-              help="Write the listing to FILE instead of standard output.")
-@click.option("--plot-spectrum", type=click.Path(dir_okay=False, path_type=Path), default=None,
-              help="Draw Fig. 3 (omega against n, radial and tangential type apart) to FILE.")
-@click.option("--plot-shapes", type=click.Path(dir_okay=False, path_type=Path), default=None,
-              help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.")
+@click.option(
+    "--output",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    help="Write the listing to FILE instead of standard output.",
+)
+@click.option(
+    "--plot-spectrum",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    help="Draw Fig. 3 (omega against n, radial and tangential type apart) to FILE.",
+)
+@click.option(
+    "--plot-shapes",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.",
+)
 def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
     """Eigenmodes of the free elastic disk (symmetric family), sorted by frequency.
 

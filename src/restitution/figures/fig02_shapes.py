@@ -61,7 +61,9 @@ def compute(nu: float = 0.33, which=DEFAULT_MODES, amplitude: float = 0.12) -> S
         labels.append(f"n = {n}, l = {l}, omega = {modes.omega[k]:.4f}")
         lines.append(_deformed(modes, k, amplitude))
         edge.append(float(amplitude * max(abs(modes.C[k]), abs(modes.S[k]))))
-    return ShapeData(nu=nu, labels=tuple(labels), lines=tuple(lines), max_edge_displacement=tuple(edge))
+    return ShapeData(
+        nu=nu, labels=tuple(labels), lines=tuple(lines), max_edge_displacement=tuple(edge)
+    )
 
 
 def plot(data: ShapeData, path: str | Path) -> None:

@@ -41,7 +41,9 @@ def plot(data: SpectrumData, path: str | Path) -> None:
     ax.scatter(data.n[~r], data.omega[~r], marker="x", s=18, label="tangential type, |C| < |S|")
     ax.set_xlabel("number of directional nodes n")
     ax.set_ylabel(r"$\omega_{n,l}$  [c/R]")
-    ax.set_title(rf"Symmetric modes of the free disk, $\nu$ = {data.nu} (c = $\sqrt{{E/\rho}}$ = 1)")
+    ax.set_title(
+        rf"Symmetric modes of the free disk, $\nu$ = {data.nu} (c = $\sqrt{{E/\rho}}$ = 1)"
+    )
     ax.legend(loc="upper left")
     ax.grid(alpha=0.3)
     fig.tight_layout()

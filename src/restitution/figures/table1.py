@@ -59,14 +59,29 @@ def compute(nu: float = 0.33, alpha: float = 500.0, v: float = 0.1, count: int =
     window = np.trapezoid(h.mode_energy, h.t, axis=0) / span
     top = np.argsort(-r.mode_energy_mean, kind="stable")[:10]
     lookup = {(p[1], p[2]): p for p in PAPER}
-    pm = np.array([lookup.get((int(r.mode_n[i]), int(r.mode_l[i])), (0, 0, 0, np.nan, np.nan))[3]
-                   for i in top])
-    pa = np.array([lookup.get((int(r.mode_n[i]), int(r.mode_l[i])), (0, 0, 0, np.nan, np.nan))[4]
-                   for i in top])
+    pm = np.array(
+        [
+            lookup.get((int(r.mode_n[i]), int(r.mode_l[i])), (0, 0, 0, np.nan, np.nan))[3]
+            for i in top
+        ]
+    )
+    pa = np.array(
+        [
+            lookup.get((int(r.mode_n[i]), int(r.mode_l[i])), (0, 0, 0, np.nan, np.nan))[4]
+            for i in top
+        ]
+    )
     return Table1(
-        n=r.mode_n[top], l=r.mode_l[top], mean_contact=r.mode_energy_mean[top],
-        mean_window=window[top], after=r.mode_energy_after[top], paper_mean=pm, paper_after=pa,
-        epsilon=r.epsilon, contact_time=r.contact_time, run_time=float(span),
+        n=r.mode_n[top],
+        l=r.mode_l[top],
+        mean_contact=r.mode_energy_mean[top],
+        mean_window=window[top],
+        after=r.mode_energy_after[top],
+        paper_mean=pm,
+        paper_after=pa,
+        epsilon=r.epsilon,
+        contact_time=r.contact_time,
+        run_time=float(span),
     )
 
 
