@@ -31,6 +31,7 @@ def _register() -> None:
     from restitution.cli import epsilon as _epsilon
     from restitution.cli import fem_compare as _fem_compare
     from restitution.cli import modes as _modes
+    from restitution.cli import paper as _paper
     from restitution.cli import quasistatic as _quasistatic
 
     cli.add_command(_modes.modes)
@@ -39,6 +40,7 @@ def _register() -> None:
     cli.add_command(_epsilon.epsilon)
     cli.add_command(_epsilon.curve)
     cli.add_command(_fem_compare.compare_fem)
+    cli.add_command(_paper.paper)
 
 
 _register()
