@@ -26,7 +26,6 @@ import numpy as np
 from restitution.errors import InputError, RestitutionError
 from restitution.integrators import (
     INTEGRATORS,
-    State,
     System,
     initial_state,
     mode_energies,
@@ -164,10 +163,13 @@ def initial_step(
     return coeff * np.minimum(1.0 / (alpha * v), 1.0 / w_max)
 
 
-def _edge_reach(system: System, state: State, e: np.ndarray, C_abs: np.ndarray) -> np.ndarray:
-    """Upper bound of the edge displacement any future free vibration can reach, ``R``."""
+def _edge_reach(system: System, e: np.ndarray, g_max: np.ndarray) -> np.ndarray:
+    """Upper bound of the edge displacement any future free vibration can reach, ``R``.
+
+    ``e`` (shape (B, N)) are the mode energies; ``g_max = |C| + |S|`` bounds each shape.
+    """
     amp = np.sqrt(2.0 * e / system.mass) / system.omega
-    return amp @ C_abs
+    return amp @ g_max
 
 
 @dataclass
@@ -217,7 +219,6 @@ def _run(
         mean_e=np.zeros((B, N)),
         closest_e=np.zeros((B, N)),
     )
-    C_abs = np.abs(modes.C) + np.abs(modes.S)
     active = np.arange(B)  # original indices of the members still integrated
     results: list[dict | None] = [None] * B
     record = settings.record
@@ -236,7 +237,8 @@ def _run(
         state = integrator.step(system, state, dt)
         steps += 1
         a = active
-        h = total_energy(system, state)
+        e_all = mode_energies(system, state)
+        h = state.p0**2 / (2.0 * m) + e_all.sum(axis=1) + state.V
         if not np.all(np.isfinite(h)):
             if abort_drift is not None:
                 raise _Unstable()
@@ -259,7 +261,7 @@ def _run(
         closer = comp > track.max_comp[a]
         if np.any(in_contact | closer):
             sel = np.nonzero(in_contact | closer)[0]
-            e_sel = mode_energies(system, state.take(sel))
+            e_sel = e_all[sel]
             ic = in_contact[sel]
             track.mean_e[a[sel[ic]]] += (frac[sel[ic]] * dt)[:, None] * e_sel[ic]
             cl = closer[sel]
@@ -268,7 +270,6 @@ def _run(
         track.max_force[a] = np.maximum(track.max_force[a], state.F)
         comp_prev = comp
         if record and steps % rec_every == 0:
-            e_all = mode_energies(system, state)
             for i, orig in enumerate(a):
                 hist[orig].append(
                     (state.t, state.x0[i], state.p0[i] / m, state.F[i], e_all[i], state.Q[i])
@@ -278,8 +279,8 @@ def _run(
         leaving = state.p0 < 0
         if not np.any(leaving):
             continue
-        e = mode_energies(system, state)
-        reach = _edge_reach(system, state, e, C_abs)
+        e = e_all
+        reach = _edge_reach(system, e, quad.g_max)
         gap = -(state.x0 + 1.0 + reach)
         done = leaving & (gap * system.alpha > _STOP_LOG) & (state.V < CONTACT_TOL * track.e0[a])
         if not np.any(done):
