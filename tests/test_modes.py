@@ -172,3 +172,19 @@ def test_3d_poisson_range():
 
     with pytest.raises(MaterialError, match=r"\(-1, 0.5\]"):
         Material.from_3d(E=1.0, nu=0.6, plane="stress")
+
+
+def test_shapes_are_finite_and_continuous_at_the_centre():
+    # J_n(x)/x is evaluated through the recurrence, so r = 0 is exact: only n = 1 modes move
+    # the centre (u ~ r^(n-1)), and the value at r = 0 is the limit r -> 0.
+    ms = get_modes(0.33, count=200)
+    U0, V0 = ms.shapes(np.array([0.0]))
+    Ue, Ve = ms.shapes(np.array([1e-7]))
+    assert np.all(np.isfinite(U0)) and np.all(np.isfinite(V0))
+    assert_allclose(U0, Ue, atol=1e-5)
+    assert_allclose(V0, Ve, atol=1e-5)
+    moving = np.abs(U0[:, 0]) > 1e-12
+    assert set(ms.n[moving]) == {1}
+    # For n = 1 the centre moves rigidly: u_r = U cos(phi), u_phi = V sin(phi) with V = -U.
+    one = ms.n == 1
+    assert_allclose(V0[one, 0], -U0[one, 0], rtol=1e-12)
