@@ -132,8 +132,8 @@ MODAL_COUNTS = [800, 1600, 3200]
 
 
 def test_fem_agrees_with_modal_extrapolation_at_nu_033():
-    # About 35 s (default run, issue 7). Measured: FEM 0.9529514 +- 1.1e-5 (refine 2, last Cauchy difference),
-    # modal 0.9530261 +- 4.1e-5: 1.76 combined errors apart.
+    # About 35 s (default run, issue 7). Measured: FEM 0.9529514 +- 1.1e-5 (refine 2, last
+    # Cauchy difference), modal 0.9530261 +- 4.1e-5: 1.76 combined errors apart.
     fem_eps, fem_err, _ = _fem_limit(NU, V, ALPHA, [0, 1, 2])
     fit, (modal_eps, modal_err) = _modal_limit(NU, V, ALPHA, MODAL_COUNTS)
     assert fit.asymptotic_ok, fit.message

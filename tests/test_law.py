@@ -103,18 +103,6 @@ def fake_batch(specs):
     return out
 
 
-@pytest.fixture(scope="module")
-def client():
-    distributed = pytest.importorskip("distributed")
-    with (
-        distributed.LocalCluster(
-            n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0"
-        ) as cluster,
-        distributed.Client(cluster) as c,
-    ):
-        yield c
-
-
 @pytest.mark.parametrize("scale", ["absolute", "compression"])
 def test_law_from_store_recovers_the_known_limit(tmp_path, client, scale):
     settings = SweepSettings(

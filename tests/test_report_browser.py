@@ -1,7 +1,7 @@
 """The HTML report of `restitution paper --quick` renders in headless Chromium with every figure.
 
 Slow (a quick paper run, about a minute, plus two browser starts). Needs Debian's `chromium`
-package (`apt-get install chromium`); skipped with that reason when it is missing.
+package (`make test-slow` installs it); fails with that instruction when it is missing.
 """
 
 import re
@@ -28,7 +28,9 @@ FLAGS = (
 @pytest.fixture(scope="module")
 def run(tmp_path_factory):
     if BROWSER is None:
-        pytest.skip("headless Chromium not installed (Debian: apt-get install -y chromium)")
+        pytest.fail(
+            "headless Chromium not installed: run `make test-slow` (it installs Debian's chromium)"
+        )
     from restitution.paper import QUICK, build_paper
 
     root = tmp_path_factory.mktemp("paper")

@@ -50,18 +50,6 @@ def fake_batch(specs):
     return out
 
 
-@pytest.fixture(scope="module")
-def client():
-    distributed = pytest.importorskip("distributed")
-    with (
-        distributed.LocalCluster(
-            n_workers=1, threads_per_worker=2, processes=False, dashboard_address=":0"
-        ) as cluster,
-        distributed.Client(cluster) as c,
-    ):
-        yield c
-
-
 def test_paper_velocities():
     # Fig. 7 caption: 0.005, 0.01, 0.02, 0.04, 0.06, ..., 0.30.
     assert PAPER_VELOCITIES[:4] == (0.005, 0.01, 0.02, 0.04)

@@ -50,7 +50,7 @@ from restitution.extrapolation import (
     epsilon_from_loss,
     extrapolate_modes,
 )
-from restitution.store import Store, code_version
+from restitution.store import Store, code_version, json_default
 from restitution.sweep import DEFAULTS, SweepSettings, collide_points, grid, load_grid, run_sweep
 
 __all__ = [
@@ -562,7 +562,7 @@ class EpsilonLaw:
     def to_json(self, path: str | os.PathLike) -> Path:
         """Write the JSON export; returns the path."""
         path = Path(path)
-        path.write_text(json.dumps(self.to_dict(), indent=1, allow_nan=False, default=_jsonable))
+        path.write_text(json.dumps(self.to_dict(), indent=1, allow_nan=False, default=json_default))
         return path
 
     def _header_lines(self) -> list[str]:
@@ -574,7 +574,7 @@ class EpsilonLaw:
             f"model: {MODEL}",
             f"units: {UNITS}",
             f"validity: {self._validity()['note']}",
-            "parameters: " + json.dumps(meta.get("parameters", {}), default=_jsonable),
+            "parameters: " + json.dumps(meta.get("parameters", {}), default=json_default),
         ]
         return lines
 
@@ -612,16 +612,6 @@ class EpsilonLaw:
         )
         np.savetxt(path, table, fmt="%.8f", header=header, comments="# ")
         return Path(path)
-
-
-def _jsonable(obj: Any) -> Any:
-    if isinstance(obj, np.integer):
-        return int(obj)
-    if isinstance(obj, np.floating):
-        return float(obj)
-    if isinstance(obj, np.ndarray):
-        return obj.tolist()
-    raise TypeError(f"{type(obj).__name__} is not JSON serialisable")
 
 
 def _metadata(nu: float, parameters: Mapping) -> dict:

@@ -38,6 +38,7 @@ import numpy as np
 
 from restitution.errors import InputError, RestitutionError
 from restitution.modes import ModeSet
+from restitution.wall import dense_edge_matrix, wall_quadrature
 
 __all__ = [
     "RelaxationCurve",
@@ -70,16 +71,10 @@ def default_n_phi(alpha: float, n_max: int) -> int:
 
 
 def _edge(modes: ModeSet, n_phi: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    phi = np.linspace(0.0, 0.5 * math.pi, n_phi)
-    h = phi[1] - phi[0]
-    w = np.full(n_phi, 2.0 * h)
-    w[0] = w[-1] = h
-    n = modes.n[None, :]
-    G = (
-        modes.C[None, :] * np.cos(n * phi[:, None]) * np.cos(phi)[:, None]
-        - modes.S[None, :] * np.sin(n * phi[:, None]) * np.sin(phi)[:, None]
-    )
-    return phi, w, np.cos(phi), np.ascontiguousarray(G)
+    """Nodes, weights, ``cos(phi)`` and the dense edge matrix ``g_k(phi_j)`` of the wall."""
+    quad = wall_quadrature(modes, n_phi)
+    G = dense_edge_matrix(modes, quad.phi)
+    return quad.phi, quad.weight, quad.cos_phi, np.ascontiguousarray(G)
 
 
 @dataclass(frozen=True, eq=False)

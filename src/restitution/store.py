@@ -248,7 +248,8 @@ class StoredPoint:
         return self.status == "ok"
 
 
-def _json_default(obj: Any) -> Any:
+def json_default(obj: Any) -> Any:
+    """``json.dumps`` default for numpy scalars and arrays."""
     if isinstance(obj, np.integer):
         return int(obj)
     if isinstance(obj, np.floating):
@@ -396,7 +397,7 @@ class Store:
         scalars = [_as_real(d.get(name)) for name in _SCALARS]
         if scalars[1] is None and scalars[0] is not None:
             scalars[1] = 1.0 - scalars[0] ** 2
-        blob = json.dumps(d, default=_json_default, allow_nan=True)
+        blob = json.dumps(d, default=json_default, allow_nan=True)
         self._upsert(spec, "ok", None, scalars, blob)
 
     def put_failure(self, spec: PointSpec, message: str) -> None:

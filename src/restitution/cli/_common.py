@@ -18,6 +18,14 @@ PLANE_HELP = (
 )
 
 
+nu_option = click.option(
+    "--nu", type=float, default=0.33, show_default=True, help="Poisson number."
+)
+plane_option = click.option(
+    "--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP
+)
+
+
 def material_from(nu: float, plane: str | None) -> Material:
     """Material for a command's ``--nu`` and ``--plane`` options."""
     if plane is None:

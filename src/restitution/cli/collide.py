@@ -8,7 +8,7 @@ import warnings
 import click
 
 from restitution.cache import get_modes
-from restitution.cli._common import PLANE_HELP, dumps, material_from, positive_finite
+from restitution.cli._common import dumps, material_from, nu_option, plane_option, positive_finite
 from restitution.errors import InputError
 
 
@@ -44,8 +44,8 @@ def _print_summary(result, top: int = 10) -> None:
 
 
 @click.command()
-@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
-@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@nu_option
+@plane_option
 @click.option(
     "--v",
     "v",

@@ -6,7 +6,7 @@ import math
 
 import click
 
-from restitution.cli._common import PLANE_HELP, dumps, material_from, positive_finite
+from restitution.cli._common import dumps, material_from, nu_option, plane_option, positive_finite
 from restitution.errors import InputError
 
 
@@ -71,8 +71,8 @@ def _print(comparison, nu, v, alpha) -> None:
 
 
 @click.command("compare-fem")
-@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
-@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@nu_option
+@plane_option
 @click.option(
     "--v",
     "v",

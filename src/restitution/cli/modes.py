@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from restitution.cache import get_modes
-from restitution.cli._common import PLANE_HELP, dumps, material_from, write_text
+from restitution.cli._common import dumps, material_from, nu_option, plane_option, write_text
 from restitution.errors import InputError
 
 _COLUMNS = ("n", "l", "omega", "kappa", "kappa_p", "A", "B", "C", "S")
@@ -39,8 +39,8 @@ def _csv(records: list[dict]) -> str:
 
 
 @click.command()
-@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
-@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@nu_option
+@plane_option
 @click.option("--count", type=int, default=None, help="Number of lowest modes [default: 1600].")
 @click.option("--omega-max", type=float, default=None, help="All modes below this omega (c/R).")
 @click.option(

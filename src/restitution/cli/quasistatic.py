@@ -6,7 +6,7 @@ import math
 
 import click
 
-from restitution.cli._common import PLANE_HELP, dumps, material_from, positive_finite
+from restitution.cli._common import dumps, material_from, nu_option, plane_option, positive_finite
 from restitution.errors import InputError
 from restitution.hertz import LAWS, contact_law, contact_time_rate, quasistatic_collision
 
@@ -47,8 +47,8 @@ def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 
 
 
 @click.command()
-@click.option("--nu", type=float, default=0.33, show_default=True, help="Poisson number.")
-@click.option("--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP)
+@nu_option
+@plane_option
 @click.option(
     "--v",
     "v",
