@@ -50,6 +50,10 @@ CONTACT_TOL = 1e-12
 
 _STOP_LOG = math.log(1.0 / CONTACT_TOL)
 
+_BACKENDS = ("auto", "compiled", "numpy")
+# Strang steps composing one step of each splitting that the compiled kernel runs.
+_KERNEL_WEIGHTS = {name: INTEGRATORS[name].weights for name in ("split", "split4")}
+
 
 class CollisionError(RestitutionError):
     """A collision could not be integrated to the requested accuracy."""
@@ -86,6 +90,10 @@ class CollisionSettings:
         Time between history samples, ``R / c``.
     max_steps : int
         Hard bound on the number of steps of one run.
+    backend : {"auto", "compiled", "numpy"}
+        ``compiled`` runs the splittings in the numba kernel (:mod:`restitution.kernel`);
+        ``numpy`` runs the NumPy reference path (needed for ``rk4`` and recorded histories);
+        ``auto`` takes the kernel whenever it applies. Both give the same numbers to round-off.
     """
 
     integrator: str = "split4"
@@ -97,6 +105,7 @@ class CollisionSettings:
     record: bool = False
     record_interval: float = 0.02
     max_steps: int = 2_000_000
+    backend: str = "auto"
 
     def __post_init__(self) -> None:
         if self.integrator not in INTEGRATORS:
@@ -107,6 +116,8 @@ class CollisionSettings:
             raise InputError(f"energy_tol must be positive, got {self.energy_tol}")
         if self.dt is not None and not (self.dt > 0 and math.isfinite(self.dt)):
             raise InputError(f"dt must be a positive number, got {self.dt}")
+        if self.backend not in _BACKENDS:
+            raise InputError(f"unknown backend {self.backend!r}; choose one of {_BACKENDS}")
 
 
 def _check_inputs(v: np.ndarray, alpha: np.ndarray, modes: ModeSet) -> None:
@@ -207,7 +218,7 @@ def _run(
     x_start = _start_position(alpha, e0, quad)
     system = System(omega=modes.omega, mass=m, quad=quad, alpha=alpha)
     state = initial_state(system, x_start, m * v)
-    t_max = float(np.max((-1.0 - x_start) / v + 20.0 * _contact_time_estimate(v) + 50.0))
+    t_max = float(np.max(_t_max(v, x_start)))
     N = len(modes)
     track = _Track(
         e0=e0,
@@ -325,49 +336,129 @@ def _run(
     return out
 
 
-def _step_groups(index: np.ndarray, dts: np.ndarray, ratio: float = 1.5) -> list[np.ndarray]:
-    """Split batch members into groups whose steps differ by at most ``ratio``."""
-    order = index[np.argsort(dts[index], kind="stable")]
-    groups, current = [], [order[0]] if order.size else []
-    for i in order[1:]:
-        if dts[i] <= ratio * dts[current[0]]:
-            current.append(i)
-        else:
-            groups.append(np.array(current))
-            current = [i]
-    if current:
-        groups.append(np.array(current))
-    return groups
+def _t_max(v: np.ndarray, x_start: np.ndarray) -> np.ndarray:
+    """Bound of the simulated time of each member, ``R / c``."""
+    return (-1.0 - x_start) / v + 20.0 * _contact_time_estimate(v) + 50.0
 
 
-def _attempt(modes, v, alpha, dts, group, settings, quad, raw, attempt) -> list[int]:
-    """Run one group with its smallest step; store results; return members to redo."""
-    dt = float(dts[group].min())
+def _use_kernel(settings: CollisionSettings) -> bool:
+    """Whether the compiled kernel runs this setting (splittings, no recorded history)."""
+    if settings.backend == "numpy":
+        return False
+    supported = settings.integrator in _KERNEL_WEIGHTS and not settings.record
+    if settings.backend == "compiled" and not supported:
+        raise InputError(
+            f"the compiled backend runs the integrators {sorted(_KERNEL_WEIGHTS)} without "
+            "recorded histories; use backend='numpy' (or 'auto') for "
+            f"integrator={settings.integrator!r}, record={settings.record}"
+        )
+    return supported
+
+
+def _run_kernel(modes, v, alpha, dts, settings, quad, abort) -> list[dict | str]:
+    """Run members on the compiled kernel; a dict per finished member, else ``"unstable"``."""
+    from restitution.kernel import STATUS_OK, STATUS_TIMEOUT, run_batch
+
+    m = modes.mass
+    e0 = 0.5 * m * v**2
+    x_start = _start_position(alpha, e0, quad)
+    got = run_batch(
+        modes.omega,
+        m,
+        quad,
+        v,
+        alpha,
+        x_start,
+        dts,
+        _t_max(v, x_start),
+        _KERNEL_WEIGHTS[settings.integrator],
+        settings.max_steps,
+        abort,
+        _STOP_LOG,
+        CONTACT_TOL,
+    )
+    out: list[dict | str] = []
+    for i in range(v.size):
+        status = got["status"][i]
+        if status == STATUS_TIMEOUT:
+            raise CollisionError(
+                f"the disk did not separate from the wall within t = {got['t_end'][i]:.3g} R/c "
+                f"({got['steps'][i]} steps of dt = {dts[i]:.3g}); this indicates an unstable "
+                "step or an unphysical input: reduce dt or energy_tol, or check alpha and v"
+            )
+        if status != STATUS_OK:
+            if abort is None:
+                raise CollisionError(
+                    f"the integration overflowed at t = {got['t_end'][i]:.3g} with "
+                    f"dt = {dts[i]:.3g}; the step is far too large for this wall hardness: "
+                    "reduce dt"
+                )
+            out.append("unstable")
+            continue
+        contact = got["contact_time"][i]
+        summed = got["energy_sum"][i]
+        out.append(
+            {
+                "epsilon": float(got["epsilon"][i]),
+                "energy_after": got["energy"][i] / e0[i],
+                "steps": int(got["steps"][i]),
+                "t_end": float(got["t_end"][i]),
+                "drift": float(got["drift"][i]),
+                "contact_time": float(contact),
+                "max_compression": float(got["max_compression"][i]),
+                "max_force": float(got["max_force"][i]),
+                "energy_mean": summed / (contact * e0[i]) if contact > 0 else summed,
+                "energy_closest": got["energy_closest"][i] / e0[i],
+            }
+        )
+    return out
+
+
+def _run_numpy(modes, v, alpha, dts, settings, quad, abort) -> list[dict | str]:
+    """Run members one by one on the NumPy reference path (same contract as the kernel)."""
+    out: list[dict | str] = []
+    for i in range(v.size):
+        try:
+            out.append(
+                _run(modes, v[i : i + 1], alpha[i : i + 1], dts[i], settings, quad, abort)[0]
+            )
+        except _Unstable:
+            out.append("unstable")
+    return out
+
+
+def _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt) -> np.ndarray:
+    """Run the pending members, each with its own step; store results; return those to redo.
+
+    Every member's step depends only on its own inputs and history, never on the other
+    members of the batch, so a stored point does not depend on how the sweep batched it.
+    """
     fixed = settings.dt is not None
     abort = None if fixed else max(100.0 * settings.energy_tol, 1e-4)
-    try:
-        got = _run(modes, v[group], alpha[group], dt, settings, quad, abort)
-    except _Unstable:
-        if attempt == settings.max_refinements:
-            raise CollisionError(
-                f"the step stays unstable after {attempt} refinements (dt = {dt:.3g}) at "
-                f"alpha up to {alpha[group].max():.4g}; raise max_refinements or lower "
-                "step_safety"
-            ) from None
-        dts[group] = dt / 4.0
-        return list(group)
-    for i, r in zip(group, got, strict=True):
+    run = _run_kernel if _use_kernel(settings) else _run_numpy
+    got = run(modes, v[pending], alpha[pending], dts[pending], settings, quad, abort)
+    order = INTEGRATORS[settings.integrator].order
+    redo = []
+    for i, r in zip(pending, got, strict=True):
+        dt = float(dts[i])
+        if isinstance(r, str):
+            if attempt == settings.max_refinements:
+                raise CollisionError(
+                    f"the step stays unstable after {attempt} refinements (dt = {dt:.3g}) at "
+                    f"v = {v[i]:.4g}, alpha = {alpha[i]:.4g}; raise max_refinements or lower "
+                    "step_safety"
+                )
+            dts[i] = dt / 4.0
+            redo.append(i)
+            continue
         r["dt"] = dt
         raw[i] = r
-    if fixed:
-        return []
-    order = INTEGRATORS[settings.integrator].order
-    drift = np.array([r["drift"] for r in got])
-    bad = drift > settings.energy_tol
-    # Drift of an order-p method scales like dt^p: aim at half the tolerance.
-    factor = np.clip((0.5 * settings.energy_tol / drift[bad]) ** (1.0 / order), 0.1, 0.8)
-    dts[group[bad]] = dt * factor
-    return list(group[bad])
+        if not fixed and r["drift"] > settings.energy_tol:
+            # Drift of an order-p method scales like dt^p: aim at half the tolerance.
+            factor = (0.5 * settings.energy_tol / r["drift"]) ** (1.0 / order)
+            dts[i] = dt * min(max(factor, 0.1), 0.8)
+            redo.append(i)
+    return np.array(redo, dtype=int)
 
 
 def collide_batch(
@@ -416,10 +507,7 @@ def collide_batch(
     raw: list[dict | None] = [None] * v.size
     pending = np.arange(v.size)
     for attempt in range(settings.max_refinements + 1):
-        failed = []
-        for group in _step_groups(pending, dts):
-            failed.extend(_attempt(modes, v, alpha, dts, group, settings, quad, raw, attempt))
-        pending = np.array(sorted(failed), dtype=int)
+        pending = _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt)
         if pending.size == 0:
             break
     if pending.size:

@@ -19,10 +19,15 @@ from __future__ import annotations
 import numpy as np
 from scipy.special import jv
 
+from restitution.bessel_ratio import scaled_pairs, scaled_pairs_grid
+
 __all__ = [
     "wavenumbers",
     "boundary_matrix",
+    "scaled_boundary_matrix",
+    "edge_matrix_from_pairs",
     "normalized_determinant",
+    "normalized_determinant_grid",
     "breathing_condition",
     "eq25",
     "bessel_and_derivative",
@@ -78,18 +83,71 @@ def _column_norms(m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.hypot(m[..., 0, 0], m[..., 1, 0]), np.hypot(m[..., 0, 1], m[..., 1, 1])
 
 
+def edge_matrix_from_pairs(n, k, kp, jm_k, jn_k, jm_q, jn_q, nu) -> np.ndarray:
+    """:func:`boundary_matrix` from unit Bessel pairs ``(J_{n-1}, J_n) / hypot(...)`` at
+    ``kappa`` (``jm_k, jn_k``) and ``kappa'`` (``jm_q, jn_q``): the columns come out divided by
+    those two (positive) scales."""
+    xd_k = k * jm_k - n * jn_k  # kappa J_n'(kappa), scaled
+    xd_q = kp * jm_q - n * jn_q
+    m = np.empty(np.broadcast_shapes(np.shape(xd_k), np.shape(xd_q)) + (2, 2))
+    m[..., 0, 0] = -((1.0 - nu) * xd_k + (k**2 - (1.0 - nu) * n**2) * jn_k)
+    m[..., 0, 1] = n * (1.0 - nu) * (xd_q - jn_q)
+    m[..., 1, 0] = -2.0 * n * (xd_k - jn_k)
+    m[..., 1, 1] = 2.0 * xd_q + (kp**2 - 2.0 * n**2) * jn_q
+    return m
+
+
+def scaled_boundary_matrix(
+    n: np.ndarray, omega: np.ndarray, nu: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`boundary_matrix` with column 0 divided by ``s = hypot(J_{n-1}, J_n)(kappa)`` and
+    column 1 by the same at ``kappa'``, for ``n >= 1``; finite where ``J_n`` underflows.
+
+    Returns
+    -------
+    m : numpy.ndarray, shape ``broadcast(n, omega).shape + (2, 2)``
+    log_s, log_s_p : numpy.ndarray
+        ``log`` of the two (positive) column scales, so ``boundary_matrix`` is
+        ``m * exp([log_s, log_s_p])`` column by column.
+    """
+    n, omega = np.broadcast_arrays(np.asarray(n), np.asarray(omega, dtype=float))
+    k, kp = wavenumbers(omega, nu)
+    jm_k, jn_k, ls_k = (a.reshape(n.shape) for a in scaled_pairs(n, k))
+    jm_q, jn_q, ls_q = (a.reshape(n.shape) for a in scaled_pairs(n, kp))
+    return edge_matrix_from_pairs(n, k, kp, jm_k, jn_k, jm_q, jn_q, nu), ls_k, ls_q
+
+
+def _normalized(m: np.ndarray) -> np.ndarray:
+    c0, c1 = _column_norms(m)
+    det = m[..., 0, 0] * m[..., 1, 1] - m[..., 0, 1] * m[..., 1, 0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return det / (c0 * c1)
+
+
 def normalized_determinant(n: int | np.ndarray, omega: np.ndarray | float, nu: float) -> np.ndarray:
     """Boundary determinant divided by the norms of its two columns, for ``n >= 1``.
 
     Dividing each column by its (positive) norm keeps the zeros and removes the enormous
     scale differences between ``J_n(kappa)`` and ``J_n(kappa')`` at large ``n``; the result is
     a smooth function with values in ``[-1, 1]`` (the sine of the angle between the columns).
+    It is computed from unit Bessel pairs (:mod:`restitution.bessel_ratio`), so it stays exact
+    where ``J_n`` itself underflows.
     """
-    m = boundary_matrix(n, omega, nu)
-    c0, c1 = _column_norms(m)
-    det = m[..., 0, 0] * m[..., 1, 1] - m[..., 0, 1] * m[..., 1, 0]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return det / (c0 * c1)
+    m, _, _ = scaled_boundary_matrix(n, omega, nu)
+    return _normalized(m)
+
+
+def normalized_determinant_grid(n_lo: int, n_hi: int, omega: np.ndarray, nu: float) -> np.ndarray:
+    """:func:`normalized_determinant` for every order ``n_lo..n_hi`` (``>= 1``) at every
+    frequency of ``omega``; shape ``(n_hi - n_lo + 1, len(omega))``. One Bessel recurrence per
+    frequency serves all orders."""
+    omega = np.asarray(omega, dtype=float)
+    k, kp = wavenumbers(omega, nu)
+    jm_k, jn_k = scaled_pairs_grid(n_lo, n_hi, k)
+    jm_q, jn_q = scaled_pairs_grid(n_lo, n_hi, kp)
+    n = np.arange(n_lo, n_hi + 1)[:, None].astype(float)
+    m = edge_matrix_from_pairs(n, k[None, :], kp[None, :], jm_k, jn_k, jm_q, jn_q, nu)
+    return _normalized(m)
 
 
 def breathing_condition(omega: np.ndarray | float, nu: float) -> np.ndarray:

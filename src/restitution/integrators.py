@@ -168,6 +168,7 @@ class StrangSplit:
     name: ClassVar[str] = "split"
     order: ClassVar[int] = 2
     symplectic: ClassVar[bool] = True
+    weights: ClassVar[tuple[float, ...]] = (1.0,)
 
     def step(self, system: System, state: State, dt: float) -> State:
         h = 0.5 * dt
@@ -193,10 +194,11 @@ class YoshidaSplit:
     name: ClassVar[str] = "split4"
     order: ClassVar[int] = 4
     symplectic: ClassVar[bool] = True
+    weights: ClassVar[tuple[float, ...]] = (_W1, _W0, _W1)
 
     def step(self, system: System, state: State, dt: float) -> State:
         strang = StrangSplit()
-        for w in (_W1, _W0, _W1):
+        for w in self.weights:
             state = strang.step(system, state, w * dt)
         return state
 

@@ -24,19 +24,23 @@ positive (``S = U_phi(1)`` positive where ``C`` vanishes to round-off).
 
 from __future__ import annotations
 
+import functools
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
+from scipy.optimize import brentq
 from scipy.optimize.elementwise import find_minimum, find_root
 from scipy.special import jv
 
+from restitution.bessel_ratio import scaled_pairs
 from restitution.errors import InputError, RestitutionError
 from restitution.frequency_equation import (
     bessel_and_derivative,
-    boundary_matrix,
     breathing_condition,
+    edge_matrix_from_pairs,
     normalized_determinant,
+    normalized_determinant_grid,
     wavenumbers,
 )
 from restitution.material import Material
@@ -48,9 +52,10 @@ __all__ = ["ModeSet", "compute_modes", "weyl_count", "ModeError"]
 # refinement. Steps 0.04, 0.06 and 0.08 give identical roots (to 2e-11) below omega = 62 for
 # nu = 0.33, 0.9 and -0.5.
 _SCAN_STEP = 0.06
-# Orders are processed in blocks; the scan stops after a block without any root.
-_BLOCK = 16
-_ALGORITHM_VERSION = 2
+# Orders are processed in blocks (one Bessel recurrence per frequency serves a block); the
+# scan stops after a block without any root.
+_BLOCK = 128
+_ALGORITHM_VERSION = 3
 
 
 class ModeError(RestitutionError):
@@ -167,15 +172,35 @@ def weyl_count(omega: float, nu: float) -> float:
     return omega**2 / 8.0 * ((1.0 - nu**2) + 2.0 * (1.0 + nu))
 
 
-def _omega_floor(n: np.ndarray, nu: float) -> np.ndarray:
-    """A frequency below the lowest root of order ``n``.
+@functools.cache
+def rayleigh_speed(nu: float) -> float:
+    """Rayleigh wave speed ``c_R`` of the two-dimensional solid, units ``c``.
 
-    The lowest root of order ``n`` approaches ``n c_R`` (Rayleigh waves around the rim) and
-    ``c_R > 0.69 c_s`` for every ``nu`` in (-1, 1); ``0.4 n c_s`` stays safely below it while
-    keeping ``J_n`` of the scan clear of underflow.
+    Root ``xi = c_R / c_s`` in (0, 1) of ``(2 - xi^2)^2 = 4 sqrt(1 - xi^2) sqrt(1 - s^2 xi^2)``
+    with ``s^2 = (c_s / c_p)^2 = (1 - nu) / 2`` for the plane-stress constants of eq. (6).
+    ``c_R -> 0`` as ``nu -> -1``.
     """
+    s2 = (1.0 - nu) / 2.0
+
+    def f(xi):
+        # Divided by xi^2: xi = 0 is a trivial root, f ~ -2 (1 - s^2) xi^2 near it.
+        root = math.sqrt(1.0 - xi**2) * math.sqrt(1.0 - s2 * xi**2)
+        return ((2.0 - xi**2) ** 2 - 4.0 * root) / xi**2
+
     c_s = 1.0 / math.sqrt(2.0 * (1.0 + nu))
-    return np.maximum(0.05, 0.4 * n * c_s)
+    return brentq(f, 1e-4, 1.0, xtol=1e-15) * c_s
+
+
+def _omega_floor(n: np.ndarray, nu: float) -> np.ndarray:
+    """A frequency below the lowest root of order ``n``: ``0.4 n c_R``.
+
+    The lowest root of order ``n`` approaches ``n c_R`` (Rayleigh waves around the rim). The
+    factor 0.4 is a wide margin (the earlier bound ``0.4 n c_s`` lies above this one for every
+    ``nu`` and was checked against finite-element counts); unlike a bound in ``c_s`` it stays
+    below the roots when ``c_R << c_s`` (``nu -> -1``). The scan's Bessel pairs do not
+    underflow, so a low floor costs only grid points.
+    """
+    return np.maximum(0.05, 0.4 * n * rayleigh_speed(nu))
 
 
 def _scan_function(n: np.ndarray, omega: np.ndarray, nu: float) -> np.ndarray:
@@ -188,25 +213,30 @@ def _scan_function(n: np.ndarray, omega: np.ndarray, nu: float) -> np.ndarray:
 
 
 def _roots_for_orders(orders: np.ndarray, nu: float, omega_max: float) -> tuple[np.ndarray, ...]:
-    """All symmetric roots below ``omega_max`` for the given orders ``n``.
+    """All symmetric roots below ``omega_max`` for the consecutive orders ``orders``.
 
     Returns arrays ``(n, omega)`` of the roots found, unsorted.
     """
     floor = _omega_floor(orders, nu)
     n_pts = int(np.ceil((omega_max - floor.min()) / _SCAN_STEP)) + 2
-    # One grid per order, from its floor to omega_max (rows padded with omega_max).
-    t = np.arange(n_pts) * _SCAN_STEP
-    grid = np.minimum(floor[:, None] + t[None, :], omega_max)
+    w = floor.min() + np.arange(n_pts) * _SCAN_STEP
+    grid = np.broadcast_to(w[None, :], (orders.size, n_pts))
     nn = np.broadcast_to(orders[:, None], grid.shape)
-    with np.errstate(all="ignore"):
-        f = _scan_function(nn, grid, nu)
-    if not np.all(np.isfinite(f[grid < omega_max])):
-        bad = np.unique(nn[~np.isfinite(f) & (grid < omega_max)])
+    f = np.empty(grid.shape)
+    positive = orders >= 1
+    if np.any(positive):
+        lo = int(orders[positive].min())
+        f[positive] = normalized_determinant_grid(lo, int(orders.max()), w, nu)
+    if not np.all(positive):
+        f[~positive] = breathing_condition(w, nu)[None, :]
+    inside = grid >= floor[:, None]
+    if not np.all(np.isfinite(f[inside])):
+        bad = np.unique(nn[~np.isfinite(f) & inside])
         raise ModeError(
-            f"the frequency equation is not finite for n = {bad[:5].tolist()} (Bessel functions "
-            "underflow); ask for fewer modes or a lower omega_max"
+            f"the frequency equation is not finite for n = {bad[:5].tolist()}; this is a bug, "
+            "please report it with nu and the mode count"
         )
-    valid = grid[:, 1:] > grid[:, :-1]
+    valid = inside[:, 1:] & inside[:, :-1]
     sign_change = valid & (np.sign(f[:, :-1]) * np.sign(f[:, 1:]) < 0)
     lo_n, lo_w, hi_w = [], [], []
     ri, ci = np.nonzero(sign_change)
@@ -282,64 +312,103 @@ def _all_roots(nu: float, omega_max: float) -> tuple[np.ndarray, np.ndarray]:
     return n[keep], w[keep]
 
 
-def _amplitudes(n: np.ndarray, omega: np.ndarray, nu: float) -> tuple[np.ndarray, np.ndarray]:
-    """Un-normalised ``(A, B)`` spanning the null space of the edge conditions."""
-    m = boundary_matrix(n, omega, nu)
-    c0 = np.hypot(m[..., 0, 0], m[..., 1, 0])
-    c1 = np.hypot(m[..., 0, 1], m[..., 1, 1])
-    # Breathing rows (n = 0) have a vanishing first column at their roots; their amplitudes are
-    # set below, so the divisions there are irrelevant.
-    c0 = np.where(n == 0, 1.0, c0)
-    c1 = np.where(n == 0, 1.0, c1)
-    mt = m.copy()
-    mt[..., :, 0] /= c0[..., None]
-    mt[..., :, 1] /= c1[..., None]
+def _null_vector(m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(A, B)`` spanning the null space of the 2 x 2 edge matrices ``m`` (shape (N, 2, 2))."""
+    c0 = np.hypot(m[:, 0, 0], m[:, 1, 0])
+    c1 = np.hypot(m[:, 0, 1], m[:, 1, 1])
+    mt = m / np.stack([c0, c1], axis=-1)[:, None, :]
     # Null vector of the column-normalised matrix from its better-conditioned row.
-    r0 = np.hypot(mt[..., 0, 0], mt[..., 0, 1])
-    r1 = np.hypot(mt[..., 1, 0], mt[..., 1, 1])
+    r0 = np.hypot(mt[:, 0, 0], mt[:, 0, 1])
+    r1 = np.hypot(mt[:, 1, 0], mt[:, 1, 1])
     use0 = r0 >= r1
-    a_t = np.where(use0, mt[..., 0, 1], mt[..., 1, 1])
-    b_t = np.where(use0, -mt[..., 0, 0], -mt[..., 1, 0])
-    A = a_t / c0
-    B = b_t / c1
-    breathing = n == 0
-    A = np.where(breathing, 1.0, A)
-    B = np.where(breathing, 0.0, B)
-    return A, B
+    a_t = np.where(use0, mt[:, 0, 1], mt[:, 1, 1])
+    b_t = np.where(use0, -mt[:, 0, 0], -mt[:, 1, 0])
+    return a_t / c0, b_t / c1
 
 
-def _lommel_square(order: np.ndarray, a: np.ndarray) -> np.ndarray:
-    """``int_0^1 r J_v(a r)^2 dr = [J_v'(a)^2 + (1 - v^2/a^2) J_v(a)^2] / 2``."""
-    J, dJ = bessel_and_derivative(order, a)
-    return 0.5 * (dJ**2 + (1.0 - order**2 / a**2) * J**2)
+def _lommel_square(v, x, J, dJ):
+    """``int_0^1 r J_v(x r)^2 dr = [J_v'(x)^2 + (1 - v^2/x^2) J_v(x)^2] / 2``."""
+    return 0.5 * (dJ**2 + (1.0 - v**2 / x**2) * J**2)
 
 
-def _lommel_cross(order: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def _lommel_cross(a, b, Ja, dJa, Jb, dJb):
     """``int_0^1 r J_v(a r) J_v(b r) dr = [b J_v(a) J_v'(b) - a J_v(b) J_v'(a)] / (a^2 - b^2)``."""
-    Ja, dJa = bessel_and_derivative(order, a)
-    Jb, dJb = bessel_and_derivative(order, b)
     return (b * Ja * dJb - a * Jb * dJa) / (a**2 - b**2)
 
 
-def _norm_integrals(modes: ModeSet) -> np.ndarray:
-    """``int_0^1 r (U_r^2 + U_phi^2) dr`` per mode, in closed form.
+def _side_bessel(n, x, jm, jn):
+    """``(J_{n-1}, J_{n-1}', J_{n+1}, J_{n+1}')`` at ``x`` in the scale of the unit pair."""
+    j_lo2 = 2.0 * (n - 1) / x * jm - jn  # J_{n-2}
+    j_hi = 2.0 * n / x * jn - jm  # J_{n+1}
+    return jm, j_lo2 - (n - 1) / x * jm, j_hi, jn - (n + 1) / x * j_hi
+
+
+def _flexural(n, kappa, kappa_p, nu):
+    """Normalised ``(A, B, C, S)`` for ``n >= 1``, computed from unit Bessel pairs.
+
+    With ``s = hypot(J_{n-1}, J_n)`` at each wavenumber, the shapes, the edge conditions and
+    the normalisation integrals are bilinear in the scales, so ``(A s, B s')`` are solved and
+    normalised scale-free; ``A`` and ``B`` themselves overflow to ``inf`` where ``s``
+    underflows (orders far above ``kappa``), while ``C`` and ``S`` stay exact.
 
     With ``J_pm = J_{n+-1}(kappa r)``, ``Y_pm = J_{n+-1}(kappa' r)``, ``a = A kappa / 2`` and
-    ``b = B kappa' / 2`` (see :meth:`ModeSet.shapes`)::
+    ``b = B kappa' / 2``::
 
         U_r^2 + U_phi^2 = 2 a^2 (J_-^2 + J_+^2) + 2 b^2 (Y_-^2 + Y_+^2) + 4 a b (J_- Y_- - J_+ Y_+)
 
     and each term is a Lommel integral. ``kappa' > kappa`` always, so no denominator vanishes.
     """
-    n, k, kp = modes.n, modes.kappa, modes.kappa_p
-    a = modes.A * k / 2.0
-    b = modes.B * kp / 2.0
-    lo, hi = n - 1, n + 1
-    return (
-        2.0 * a**2 * (_lommel_square(lo, k) + _lommel_square(hi, k))
-        + 2.0 * b**2 * (_lommel_square(lo, kp) + _lommel_square(hi, kp))
-        + 4.0 * a * b * (_lommel_cross(lo, k, kp) - _lommel_cross(hi, k, kp))
+    jm_k, jn_k, ls_k = scaled_pairs(n, kappa)
+    jm_q, jn_q, ls_q = scaled_pairs(n, kappa_p)
+    m = edge_matrix_from_pairs(n, kappa, kappa_p, jm_k, jn_k, jm_q, jn_q, nu)
+    A, B = _null_vector(m)
+    xd_k = kappa * jm_k - n * jn_k  # kappa J_n'(kappa)
+    xd_q = kappa_p * jm_q - n * jn_q
+    U1 = A * xd_k + n * B * jn_q
+    V1 = -(n * A * jn_k + B * xd_q)
+    Jm_k, dJm_k, Jp_k, dJp_k = _side_bessel(n, kappa, jm_k, jn_k)
+    Jm_q, dJm_q, Jp_q, dJp_q = _side_bessel(n, kappa_p, jm_q, jn_q)
+    a = A * kappa / 2.0
+    b = B * kappa_p / 2.0
+    norm = (
+        2.0
+        * a**2
+        * (_lommel_square(n - 1, kappa, Jm_k, dJm_k) + _lommel_square(n + 1, kappa, Jp_k, dJp_k))
+        + 2.0
+        * b**2
+        * (
+            _lommel_square(n - 1, kappa_p, Jm_q, dJm_q)
+            + _lommel_square(n + 1, kappa_p, Jp_q, dJp_q)
+        )
+        + 4.0
+        * a
+        * b
+        * (
+            _lommel_cross(kappa, kappa_p, Jm_k, dJm_k, Jm_q, dJm_q)
+            - _lommel_cross(kappa, kappa_p, Jp_k, dJp_k, Jp_q, dJp_q)
+        )
     )
+    scale = 1.0 / np.sqrt(norm)
+    tiny = np.abs(U1) <= 1e-12 * np.abs(V1)
+    sign = np.where(tiny, np.sign(V1), np.sign(U1))
+    scale = scale * np.where(sign == 0, 1.0, sign)
+    with np.errstate(over="ignore"):
+        A_abs = A * scale * np.exp(-ls_k)
+        B_abs = B * scale * np.exp(-ls_q)
+    return A_abs, B_abs, U1 * scale, V1 * scale
+
+
+def _breathing(kappa):
+    """Normalised ``(A, B, C, S)`` of the breathing modes (``n = 0``, eq. 20).
+
+    ``U_r = A dJ_0(kappa r)/dr = -A kappa J_1(kappa r)``, ``U_phi = 0``, normalised to
+    ``int_0^1 r U_r^2 dr = 1/2`` (ERRATA) and signed so that ``C = U_r(1) > 0``.
+    """
+    J1, dJ1 = bessel_and_derivative(np.ones_like(kappa), kappa)
+    norm = kappa**2 * _lommel_square(1.0, kappa, J1, dJ1)
+    U1 = -kappa * J1
+    A = np.sign(U1) * np.sqrt(0.5 / norm)
+    return A, np.zeros_like(kappa), U1 * A, np.zeros_like(kappa)
 
 
 def _build(n: np.ndarray, omega: np.ndarray, nu: float) -> ModeSet:
@@ -350,19 +419,14 @@ def _build(n: np.ndarray, omega: np.ndarray, nu: float) -> ModeSet:
     group_start = np.maximum.accumulate(np.where(first, np.arange(n.size), 0))
     l = np.arange(n.size) - group_start
     kappa, kappa_p = wavenumbers(omega, nu)
-    A, B = _amplitudes(n, omega, nu)
-    zeros = np.zeros_like(omega)
-    raw = ModeSet(
-        nu=nu, n=n, l=l, omega=omega, kappa=kappa, kappa_p=kappa_p, A=A, B=B, C=zeros, S=zeros
-    )
-    target = np.where(n == 0, 0.5, 1.0)
-    scale = np.sqrt(target / _norm_integrals(raw))
-    normed = replace(raw, A=A * scale, B=B * scale)
-    U1, V1 = (a[:, 0] for a in normed.shapes(np.array([1.0])))
-    tiny = np.abs(U1) <= 1e-12 * np.abs(V1)
-    sign = np.where(tiny, np.sign(V1), np.sign(U1))
-    sign = np.where(sign == 0, 1.0, sign)
-    full = replace(normed, A=normed.A * sign, B=normed.B * sign, C=U1 * sign, S=V1 * sign)
+    A, B, C, S = (np.empty_like(omega) for _ in range(4))
+    b = n == 0
+    if np.any(b):
+        A[b], B[b], C[b], S[b] = _breathing(kappa[b])
+    if not np.all(b):
+        p = ~b
+        A[p], B[p], C[p], S[p] = _flexural(n[p], kappa[p], kappa_p[p], nu)
+    full = ModeSet(nu=nu, n=n, l=l, omega=omega, kappa=kappa, kappa_p=kappa_p, A=A, B=B, C=C, S=S)
     return full.take(np.argsort(omega, kind="stable"))
 
 
