@@ -1,5 +1,7 @@
 """Eigenmodes of the free disk: closed forms, boundary conditions, orthonormality, counts."""
 
+import math
+
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
@@ -188,3 +190,40 @@ def test_shapes_are_finite_and_continuous_at_the_centre():
     # For n = 1 the centre moves rigidly: u_r = U cos(phi), u_phi = V sin(phi) with V = -U.
     one = ms.n == 1
     assert_allclose(V0[one, 0], -U0[one, 0], rtol=1e-12)
+
+
+@pytest.mark.parametrize(("nu", "omega"), [(-0.9, 10.0), (-0.95, 5.5)])
+def test_negative_nu_count_matches_fem(nu, omega):
+    # For nu -> -1 the Rayleigh speed c_R falls far below c_s (c_R / c_s = 0.316 at nu = -0.9,
+    # 0.224 at -0.95); a scan floor in c_s lost 7 of these 16 modes at nu = -0.9 and 5 of 7 at
+    # -0.95, among them (n = 10, omega = 8.134) and (n = 5, omega = 4.589). The FEM count
+    # (Sylvester's inertia of K - omega^2 M on the level-5 half disk) is independent.
+    from restitution.fem.eigen import fem_count_below, half_disk_system
+
+    modes = compute_modes(nu, omega_max=omega)
+    assert len(modes) == fem_count_below(half_disk_system(nu, 5), omega)
+    # The count is not at the mercy of a root next to omega: the nearest lies > 0.2 away.
+    near = compute_modes(nu, omega_max=omega + 1.0).omega
+    assert np.min(np.abs(near - omega)) > 0.2
+
+
+def test_rayleigh_speed_closed_form():
+    # nu = 0 in 2D plane stress: s^2 = 1/2 and the Rayleigh cubic in eta = xi^2 reads
+    # eta^3 - 8 eta^2 + 16 eta - 8 = (eta - 2)(eta^2 - 6 eta + 4); the root below 1 is
+    # eta = 3 - sqrt(5), so c_R = sqrt(3 - sqrt 5) c_s with c_s = 1/sqrt(2).
+    from restitution.modes import rayleigh_speed
+
+    assert rayleigh_speed(0.0) == pytest.approx(
+        math.sqrt(3.0 - math.sqrt(5.0)) / math.sqrt(2.0), rel=1e-13
+    )
+
+
+def test_ten_thousand_modes_are_complete_and_finite():
+    # Weyl's law with its positive perimeter correction: the count below omega_max exceeds the
+    # leading term by a fraction that falls like 1/omega (7% at omega = 20 above).
+    modes = compute_modes(0.33, count=10_000)
+    w = modes.omega.max()
+    excess = len(modes) / weyl_count(w, 0.33) - 1.0
+    assert 0.0 < excess < 0.07 * 20.0 / w * 1.5, excess
+    assert np.all(np.isfinite(modes.C)) and np.all(np.isfinite(modes.S))
+    assert np.all(np.diff(modes.omega) >= 0)
