@@ -43,8 +43,12 @@ _FAST = {"reassoc", "contract", "nsz"}
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, column, g_max, ab, cs, f):
-    """Wall potential ``V``, force ``F`` and generalised forces ``f`` (written in place)."""
+def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f):
+    """Wall potential ``V``, force ``F`` and generalised forces ``f`` (written in place).
+
+    Modes are ordered by angular order here: those of order column ``i`` are the contiguous
+    slice ``starts[i]:starts[i + 1]``, so the per-order sums need no scattered writes.
+    """
     N = Q.size
     M = cos_phi.size
     K2 = trig.shape[1]
@@ -60,30 +64,40 @@ def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, column, g_max, ab, cs, f):
         for k in range(N):
             f[k] = 0.0
         return 0.0, 0.0
-    for i in range(K2):
-        ab[i] = 0.0
-        cs[i] = 0.0
-    for k in range(N):
-        ab[column[k]] += Q[k] * C[k]
-        ab[K + column[k]] += Q[k] * S[k]
+    for i in range(K):
+        a = 0.0
+        b = 0.0
+        for k in range(starts[i], starts[i + 1]):
+            a += Q[k] * C[k]
+            b += Q[k] * S[k]
+        ab[i] = a
+        ab[K + i] = b
+    # The two products over the active nodes are BLAS matrix-vector products (gemv).
+    x = np.dot(trig[:J], ab)
+    e = np.empty(J)
     F = 0.0
+    # The prefix bound J is loose; past the last node whose exponent exceeds -_NEGLIGIBLE the
+    # terms are below exp(-40) of the force and the second product can stop there.
+    last = 0
     for j in range(J):
-        x = 0.0
-        for i in range(K2):
-            x += ab[i] * trig[j, i]
-        e = math.exp(alpha * (x0 + cos_phi[j] + x)) * weight[j]
-        F += e
-        for i in range(K2):
-            cs[i] += e * trig[j, i]
-    for k in range(N):
-        f[k] = C[k] * cs[column[k]] + S[k] * cs[K + column[k]]
+        ax = alpha * (x0 + cos_phi[j] + x[j])
+        e[j] = math.exp(ax) * weight[j]
+        F += e[j]
+        if ax > -_NEGLIGIBLE:
+            last = j + 1
+    cs[:] = np.dot(e[:last], trig[:last])
+    for i in range(K):
+        c_i = cs[i]
+        s_i = cs[K + i]
+        for k in range(starts[i], starts[i + 1]):
+            f[k] = C[k] * c_i + S[k] * s_i
     return F / alpha, F
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
 def _strang(h_dt, x0, p0, Q, P, V, F, f, rot_c, rot_so, rot_st, mass, alpha, quad, ab, cs):
     """One Strang step of length ``h_dt``: half kick, exact free flow, wall, half kick."""
-    cos_phi, weight, trig, C, S, column, g_max = quad
+    cos_phi, weight, trig, C, S, starts, g_max = quad
     half = 0.5 * h_dt
     p0 = p0 - half * F
     N = Q.size
@@ -93,7 +107,7 @@ def _strang(h_dt, x0, p0, Q, P, V, F, f, rot_c, rot_so, rot_st, mass, alpha, qua
         Q[k] = qk * rot_c[k] + pk * rot_so[k]
         P[k] = pk * rot_c[k] - qk * rot_st[k]
     x0 = x0 + p0 * (h_dt / mass)
-    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, column, g_max, ab, cs, f)
+    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f)
     p0 = p0 - half * F
     for k in range(N):
         P[k] = P[k] - half * f[k]
@@ -122,7 +136,7 @@ def _member(
 ):
     """Integrate one collision; returns (status, epsilon, drift, contact, max_comp, max_force,
     steps, t). Mode energies after, contact-summed and at closest approach go to ``out_*``."""
-    cos_phi, weight, trig, C, S, column, g_max = quad
+    cos_phi, weight, trig, C, S, starts, g_max = quad
     N = omega.size
     K2 = trig.shape[1]
     Q = np.zeros(N)
@@ -134,7 +148,7 @@ def _member(
     e0 = 0.5 * m * v * v
     x0 = x_start
     p0 = m * v
-    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, column, g_max, ab, cs, f)
+    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f)
     h0 = p0 * p0 / (2.0 * m) + V
     drift = 0.0
     contact = 0.0
@@ -212,8 +226,9 @@ def _member(
             return STATUS_OK, -p0 / (m * v), drift, contact, max_comp, max_force, steps, t
 
 
-@njit(cache=True, parallel=True, fastmath=_FAST)
-def _batch(
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _one(
+    b,
     v,
     alpha,
     x_start,
@@ -232,47 +247,57 @@ def _batch(
     out_closest,
     out_scalar,
 ):
-    B = v.size
+    """Member ``b`` of a batch: its rotations for its own step, then :func:`_member`."""
     N = omega.size
-    mw = mass * omega
-    for b in prange(B):
-        rotations = np.empty((weights.size, 3, N))
-        for s in range(weights.size):
-            for k in range(N):
-                arg = omega[k] * (weights[s] * dt[b])
-                c = math.cos(arg)
-                sn = math.sin(arg)
-                rotations[s, 0, k] = c
-                rotations[s, 1, k] = sn / mw[k]
-                rotations[s, 2, k] = mw[k] * sn
-        res = _member(
-            v[b],
-            alpha[b],
-            x_start[b],
-            dt[b],
-            t_max[b],
-            omega,
-            mass,
-            quad,
-            weights,
-            rotations,
-            max_steps,
-            abort_drift,
-            stop_log,
-            contact_tol,
-            out_e[b],
-            out_mean[b],
-            out_closest[b],
-        )
-        status, eps, drift, contact, max_comp, max_force, steps, t_end = res
-        out_scalar[b, 0] = status
-        out_scalar[b, 1] = eps
-        out_scalar[b, 2] = drift
-        out_scalar[b, 3] = contact
-        out_scalar[b, 4] = max_comp
-        out_scalar[b, 5] = max_force
-        out_scalar[b, 6] = steps
-        out_scalar[b, 7] = t_end
+    rotations = np.empty((weights.size, 3, N))
+    for s in range(weights.size):
+        for k in range(N):
+            arg = omega[k] * (weights[s] * dt[b])
+            sn = math.sin(arg)
+            mw = mass * omega[k]
+            rotations[s, 0, k] = math.cos(arg)
+            rotations[s, 1, k] = sn / mw
+            rotations[s, 2, k] = mw * sn
+    res = _member(
+        v[b],
+        alpha[b],
+        x_start[b],
+        dt[b],
+        t_max[b],
+        omega,
+        mass,
+        quad,
+        weights,
+        rotations,
+        max_steps,
+        abort_drift,
+        stop_log,
+        contact_tol,
+        out_e[b],
+        out_mean[b],
+        out_closest[b],
+    )
+    status, eps, drift, contact, max_comp, max_force, steps, t_end = res
+    out_scalar[b, 0] = status
+    out_scalar[b, 1] = eps
+    out_scalar[b, 2] = drift
+    out_scalar[b, 3] = contact
+    out_scalar[b, 4] = max_comp
+    out_scalar[b, 5] = max_force
+    out_scalar[b, 6] = steps
+    out_scalar[b, 7] = t_end
+
+
+@njit(cache=True, parallel=True, fastmath=_FAST)
+def _batch_parallel(v, *args):
+    for b in prange(v.size):
+        _one(b, v, *args)
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _batch_serial(v, *args):
+    for b in range(v.size):
+        _one(b, v, *args)
 
 
 def run_batch(
@@ -322,6 +347,10 @@ def run_batch(
         (B, N) at the closest approach. Energies are absolute (not divided by ``E0``).
     """
     B, N = v.size, omega.size
+    # Modes sorted by order (stable, so each order keeps its original sequence); results are
+    # mapped back to the caller's order at the end.
+    perm = np.argsort(quad.column, kind="stable")
+    starts = np.searchsorted(quad.column[perm], np.arange(quad.n_orders + 1)).astype(np.int64)
     out_e = np.zeros((B, N))
     out_mean = np.zeros((B, N))
     out_closest = np.zeros((B, N))
@@ -330,18 +359,20 @@ def run_batch(
         np.ascontiguousarray(quad.cos_phi, dtype=np.float64),
         np.ascontiguousarray(quad.weight, dtype=np.float64),
         np.ascontiguousarray(quad.trig, dtype=np.float64),
-        np.ascontiguousarray(quad.C, dtype=np.float64),
-        np.ascontiguousarray(quad.S, dtype=np.float64),
-        np.ascontiguousarray(quad.column, dtype=np.int64),
-        np.ascontiguousarray(quad.g_max, dtype=np.float64),
+        np.ascontiguousarray(quad.C[perm], dtype=np.float64),
+        np.ascontiguousarray(quad.S[perm], dtype=np.float64),
+        starts,
+        np.ascontiguousarray(quad.g_max[perm], dtype=np.float64),
     )
-    _batch(
+    # Threads only pay for several members; a single collision runs without the thread pool.
+    run = _batch_parallel if B > 1 else _batch_serial
+    run(
         np.ascontiguousarray(v, dtype=np.float64),
         np.ascontiguousarray(alpha, dtype=np.float64),
         np.ascontiguousarray(x_start, dtype=np.float64),
         np.ascontiguousarray(dt, dtype=np.float64),
         np.ascontiguousarray(t_max, dtype=np.float64),
-        np.ascontiguousarray(omega, dtype=np.float64),
+        np.ascontiguousarray(omega[perm], dtype=np.float64),
         float(mass),
         quad_arrays,
         np.asarray(weights, dtype=np.float64),
@@ -354,6 +385,8 @@ def run_batch(
         out_closest,
         out_scalar,
     )
+    back = np.empty_like(perm)
+    back[perm] = np.arange(N)
     return {
         "status": out_scalar[:, 0].astype(int),
         "epsilon": out_scalar[:, 1],
@@ -363,7 +396,7 @@ def run_batch(
         "max_force": out_scalar[:, 5],
         "steps": out_scalar[:, 6].astype(int),
         "t_end": out_scalar[:, 7],
-        "energy": out_e,
-        "energy_sum": out_mean,
-        "energy_closest": out_closest,
+        "energy": out_e[:, back],
+        "energy_sum": out_mean[:, back],
+        "energy_closest": out_closest[:, back],
     }

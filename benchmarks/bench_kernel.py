@@ -1,0 +1,242 @@
+"""Benchmark: the compiled collision kernel against its baselines, side by side in one run.
+
+Sections (issue 13's targets), each timed in alternating rounds so that the load of a shared
+machine falls on both sides alike; every ratio is printed per round and as min/median/max:
+
+single  One collision, nu = 0.33, v = 0.1, alpha = 500, 1600 lowest modes, |eps error| <= 1e-6.
+        Each solver's tolerance is first tightened tenfold until its epsilon is within 1e-6 of a
+        reference (split4 at energy_tol 1e-10); then those settings are timed. Sides: the
+        compiled kernel, the NumPy reference path, scipy's DOP853 with a dense right-hand side
+        (restitution.reference, as a user would write it) and DOP853 given the same
+        order-by-order wall evaluation as the modal solver.
+batch   32 speeds 0.02-0.3 at alpha = 500 on one mode set (N = 1600): one compiled batch
+        against DOP853 one collision at a time (8 of the 32 speeds timed, times 4).
+large   N = 1e4, v = 0.01, alpha = 1634: compiled kernel against the NumPy path.
+huge    N = 1e5 at v = 1e-4 (alpha = 40 / delta_max): mode build and one collision, in a
+        subprocess whose peak memory (max RSS) is reported.
+modes   Building 1e4 modes at nu = 0.33: the scale-free Bessel-pair scan against the previous
+        scipy-jv scan, loaded from git (``--baseline-rev``, default: the last commit before
+        the change).
+
+Run: python benchmarks/bench_kernel.py [single batch large huge modes] [--rounds 3]
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import numpy as np  # noqa: E402
+
+from restitution import collide, collide_batch, compute_modes, get_modes  # noqa: E402
+from restitution.reference import collide_dop853  # noqa: E402
+from restitution.sweep import quasistatic_compression  # noqa: E402
+
+NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
+BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
+
+
+def _load() -> str:
+    one, five, _ = os.getloadavg()
+    return f"load average {one:.2f} (1 min), {five:.2f} (5 min) on {os.cpu_count()} cores"
+
+
+def _timed(fn):
+    t = time.perf_counter()
+    out = fn()
+    return time.perf_counter() - t, out
+
+
+def _summary(name: str, ratios: list[float]) -> None:
+    r = np.array(ratios)
+    print(
+        f"  {name}: min {r.min():.1f}x  median {np.median(r):.1f}x  max {r.max():.1f}x  "
+        f"({r.size} rounds)",
+        flush=True,
+    )
+
+
+def _tighten(label: str, run, ref: float, start: float, floor: float) -> float:
+    """Tighten a tolerance tenfold until |eps - ref| <= TARGET; returns that tolerance."""
+    tol = start
+    while True:
+        eps = run(tol)
+        print(f"  {label} tol {tol:.0e}: |err| {abs(eps - ref):.1e}", flush=True)
+        if abs(eps - ref) <= TARGET or tol <= floor:
+            return tol
+        tol /= 10.0
+
+
+def single(rounds: int) -> None:
+    print(f"== single collision, N = 1600, v = {V}, alpha = {ALPHA}; {_load()}")
+    modes = get_modes(NU, count=1600)
+    ref = collide(modes, V, ALPHA, energy_tol=1e-10).epsilon
+    print(f"  reference epsilon (split4, energy_tol 1e-10): {ref:.10f}")
+    tol = _tighten(
+        "restitution energy_tol",
+        lambda t: collide(modes, V, ALPHA, energy_tol=t).epsilon,
+        ref,
+        1e-3,
+        1e-9,
+    )
+    rtol = _tighten(
+        "DOP853 rtol",
+        lambda t: collide_dop853(modes, V, ALPHA, rtol=t, atol=t * 1e-2)["epsilon"],
+        ref,
+        1e-5,
+        1e-12,
+    )
+    sides = {
+        "compiled": lambda: collide(modes, V, ALPHA, energy_tol=tol, backend="compiled"),
+        "numpy": lambda: collide(modes, V, ALPHA, energy_tol=tol, backend="numpy"),
+        "dop853 dense": lambda: collide_dop853(modes, V, ALPHA, rtol=rtol, atol=rtol * 1e-2),
+        "dop853 orders": lambda: collide_dop853(
+            modes, V, ALPHA, rtol=rtol, atol=rtol * 1e-2, wall="orders"
+        ),
+    }
+    times: dict[str, list[float]] = {k: [] for k in sides}
+    for i in range(rounds):
+        for name, fn in sides.items():
+            times[name].append(_timed(fn)[0])
+        print(
+            f"  round {i + 1}: "
+            + "  ".join(f"{k} {v[-1]:.3f} s" for k, v in times.items())
+            + f"; {_load()}",
+            flush=True,
+        )
+    c = np.array(times["compiled"])
+    for name in ("dop853 dense", "dop853 orders", "numpy"):
+        _summary(f"{name} / compiled", list(np.array(times[name]) / c))
+
+
+def batch(rounds: int) -> None:
+    print(f"== 32 speeds batched, N = 1600, alpha = {ALPHA}; {_load()}")
+    modes = get_modes(NU, count=1600)
+    vs = np.linspace(0.02, 0.3, 32)
+    # DOP853 at the tolerance that reaches 1e-6 at v = 0.1 (see "single"): rtol 1e-7.
+    ratios, ratios_loop = [], []
+    for i in range(rounds):
+        t_batch, _ = _timed(lambda: collide_batch(modes, vs, ALPHA, backend="compiled"))
+        t_one, _ = _timed(lambda: [collide(modes, v, ALPHA, backend="compiled") for v in vs])
+        t_dop, _ = _timed(lambda: [collide_dop853(modes, v, ALPHA, rtol=1e-7) for v in vs[::4]])
+        t_dop *= 4.0
+        ratios.append(t_dop / t_batch)
+        ratios_loop.append(t_one / t_batch)
+        print(
+            f"  round {i + 1}: compiled batch {t_batch:.2f} s ({32 / t_batch:.1f} collisions/s), "
+            f"compiled one by one {t_one:.2f} s, DOP853 one by one {t_dop:.1f} s (8 timed x 4); "
+            f"{_load()}",
+            flush=True,
+        )
+    _summary("DOP853 one at a time / compiled batch", ratios)
+    _summary("compiled one at a time / compiled batch", ratios_loop)
+
+
+def large(rounds: int) -> None:
+    print(f"== N = 1e4, v = 0.01, alpha = 1634; {_load()}")
+    modes = get_modes(NU, count=10_000)
+    ratios = []
+    for i in range(rounds):
+        t_c, rc = _timed(lambda: collide(modes, 0.01, 1634.0, backend="compiled"))
+        t_n, rn = _timed(lambda: collide(modes, 0.01, 1634.0, backend="numpy"))
+        ratios.append(t_n / t_c)
+        print(
+            f"  round {i + 1}: compiled {t_c:.2f} s, numpy {t_n:.2f} s, {rc.n_steps} steps, "
+            f"|eps difference| {abs(rc.epsilon - rn.epsilon):.1e}; {_load()}",
+            flush=True,
+        )
+    _summary("numpy / compiled", ratios)
+
+
+_HUGE = """
+import resource, time
+from restitution import collide, compute_modes
+t = time.perf_counter(); modes = compute_modes({nu}, count={n}); t_modes = time.perf_counter() - t
+t = time.perf_counter(); r = collide(modes, {v}, {alpha}); t_coll = time.perf_counter() - t
+rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+print(f"  modes {{t_modes:.1f}} s, collision {{t_coll:.1f}} s ({{r.n_steps}} steps, dt {{r.dt:.2e}}, "
+      f"drift {{r.energy_drift:.1e}}), epsilon {{r.epsilon:.6f}}, peak RSS {{rss:.0f}} MiB")
+"""
+
+
+def huge(rounds: int) -> None:
+    v = 1e-4
+    alpha = 40.0 / quasistatic_compression(v)
+    print(f"== N = 1e5, v = {v}, alpha = {alpha:.0f} (alpha delta_max = 40); {_load()}")
+    code = _HUGE.format(nu=NU, n=100_000, v=v, alpha=alpha)
+    subprocess.run([sys.executable, "-c", code], check=True)
+    print(f"  {_load()}")
+
+
+def _baseline_modes(rev: str):
+    """``compute_modes`` of revision ``rev`` (its modes.py and frequency_equation.py)."""
+    root = Path(__file__).resolve().parent.parent
+    tmp = Path(tempfile.mkdtemp(prefix="bench-baseline-"))
+    for name in ("modes", "frequency_equation"):
+        text = subprocess.run(
+            ["git", "show", f"{rev}:src/restitution/{name}.py"],
+            cwd=root,
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout
+        text = text.replace(
+            "from restitution.frequency_equation", "from baseline_frequency_equation"
+        )
+        (tmp / f"baseline_{name}.py").write_text(text)
+    sys.path.insert(0, str(tmp))
+    spec = importlib.util.spec_from_file_location("baseline_modes", tmp / "baseline_modes.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.compute_modes
+
+
+def modes(rounds: int, rev: str) -> None:
+    print(f"== 1e4 modes at nu = {NU}: Bessel-pair scan against the scipy-jv scan of {rev}")
+    old = _baseline_modes(rev)
+    compute_modes(NU, count=50)  # compile (or load) the numba functions outside the timing
+    ratios = []
+    for i in range(rounds):
+        t_new, new = _timed(lambda: compute_modes(NU, count=10_000))
+        t_old, ref = _timed(lambda: old(NU, count=10_000))
+        same = np.array_equal(new.n, ref.n) and np.array_equal(new.l, ref.l)
+        ratios.append(t_old / t_new)
+        print(
+            f"  round {i + 1}: new {t_new:.2f} s, baseline {t_old:.2f} s; same (n, l): {same}, "
+            f"max |d omega| {np.max(np.abs(new.omega - ref.omega)):.1e}; {_load()}",
+            flush=True,
+        )
+    _summary("baseline / new", ratios)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "sections", nargs="*", default=["single", "batch", "large", "huge", "modes"]
+    )
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--baseline-rev", default=BASELINE_REV)
+    args = parser.parse_args()
+    collide(get_modes(NU, count=20), V, ALPHA)  # compile (or load) the kernel once
+    for name in args.sections:
+        if name == "modes":
+            modes(args.rounds, args.baseline_rev)
+        else:
+            {"single": single, "batch": batch, "large": large, "huge": huge}[name](args.rounds)
+    print(
+        f"peak RSS of this process {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB"
+    )
+
+
+if __name__ == "__main__":
+    main()
