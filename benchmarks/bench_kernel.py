@@ -164,8 +164,9 @@ from restitution import collide, compute_modes
 t = time.perf_counter(); modes = compute_modes({nu}, count={n}); t_modes = time.perf_counter() - t
 t = time.perf_counter(); r = collide(modes, {v}, {alpha}); t_coll = time.perf_counter() - t
 rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-print(f"  modes {{t_modes:.1f}} s, collision {{t_coll:.1f}} s ({{r.n_steps}} steps, dt {{r.dt:.2e}}, "
-      f"drift {{r.energy_drift:.1e}}), epsilon {{r.epsilon:.6f}}, peak RSS {{rss:.0f}} MiB")
+print(f"  modes {{t_modes:.1f}} s, collision {{t_coll:.1f}} s ({{r.n_steps}} steps, "
+      f"dt {{r.dt:.2e}}, drift {{r.energy_drift:.1e}}), epsilon {{r.epsilon:.6f}}, "
+      f"peak RSS {{rss:.0f}} MiB")
 """
 
 
@@ -233,9 +234,8 @@ def main() -> None:
             modes(args.rounds, args.baseline_rev)
         else:
             {"single": single, "batch": batch, "large": large, "huge": huge}[name](args.rounds)
-    print(
-        f"peak RSS of this process {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB"
-    )
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"peak RSS of this process {rss:.0f} MiB")
 
 
 if __name__ == "__main__":
