@@ -198,6 +198,7 @@ def _baseline_modes(rev: str):
     sys.path.insert(0, str(tmp))
     spec = importlib.util.spec_from_file_location("baseline_modes", tmp / "baseline_modes.py")
     module = importlib.util.module_from_spec(spec)
+    sys.modules["baseline_modes"] = module
     spec.loader.exec_module(module)
     return module.compute_modes
 

@@ -89,9 +89,11 @@ CREATE INDEX IF NOT EXISTS collisions_lookup
 _SOLVER_MODULES = (
     "restitution.collision",
     "restitution.integrators",
+    "restitution.kernel",
     "restitution.wall",
     "restitution.modes",
     "restitution.frequency_equation",
+    "restitution.bessel_ratio",
     "restitution.material",
     "restitution.results",
 )
