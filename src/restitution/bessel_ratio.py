@@ -55,18 +55,32 @@ def _pair(h_n: float, sign_prev: float, log_prev: float) -> tuple[float, float, 
     return s_n * g / r, s_n / r, log_prev + math.log(abs(h_n)) + math.log(r)
 
 
+@njit(cache=True, nogil=True)
+def _descend(x: float, n: int, with_log: bool) -> tuple[float, float, float]:
+    """One backward recurrence: ``h_n``, and the sign and log-size of ``J_{n-1} / J_0``."""
+    N = _start(n, x)
+    hk = x / (2.0 * N + 2.0)
+    h_n = 0.0
+    sign = 1.0
+    lg = 0.0
+    for k in range(N, 0, -1):
+        d = 2.0 * k - x * hk
+        hk = x / d if d != 0.0 else math.inf
+        if k == n:
+            h_n = hk
+        elif k < n:
+            if hk < 0:
+                sign = -sign
+            if with_log:
+                lg += math.log(abs(hk))
+    return h_n, sign, lg
+
+
 @njit(cache=True, parallel=True)
-def _points(n, x, sign0, log0, out):
+def _points(n, x, sign0, log0, with_log, out):
     for i in prange(n.size):
-        ni = n[i]
-        h = np.empty(ni + 1)
-        _ratios(x[i], ni, h)
-        s = sign0[i]
-        lg = log0[i]
-        for k in range(1, ni):
-            s *= 1.0 if h[k] > 0 else -1.0
-            lg += math.log(abs(h[k]))
-        a, b, c = _pair(h[ni], s, lg)
+        h_n, sign, lg = _descend(x[i], n[i], with_log)
+        a, b, c = _pair(h_n, sign0[i] * sign, log0[i] + lg)
         out[i, 0] = a
         out[i, 1] = b
         out[i, 2] = c
@@ -93,7 +107,7 @@ def _j0_sign_log(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         return np.where(J < 0, -1.0, 1.0), np.log(np.abs(J))
 
 
-def scaled_pairs(n, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def scaled_pairs(n, x, with_log: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Unit pairs at scattered points.
 
     Parameters
@@ -102,6 +116,9 @@ def scaled_pairs(n, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Orders, ``n >= 1``.
     x : array_like, shape (P,)
         Arguments, ``x > 0``.
+    with_log : bool
+        Also accumulate ``log s`` (``n`` logarithms per point); without it ``log_s`` is
+        meaningless.
 
     Returns
     -------
@@ -116,7 +133,7 @@ def scaled_pairs(n, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         raise ValueError("scaled_pairs needs n >= 1 and x > 0")
     sign0, log0 = _j0_sign_log(x)
     out = np.empty((n.size, 3))
-    _points(n, x, sign0, log0, out)
+    _points(n, x, sign0, log0, bool(with_log), out)
     return out[:, 0], out[:, 1], out[:, 2]
 
 

@@ -133,8 +133,11 @@ def normalized_determinant(n: int | np.ndarray, omega: np.ndarray | float, nu: f
     It is computed from unit Bessel pairs (:mod:`restitution.bessel_ratio`), so it stays exact
     where ``J_n`` itself underflows.
     """
-    m, _, _ = scaled_boundary_matrix(n, omega, nu)
-    return _normalized(m)
+    n, omega = np.broadcast_arrays(np.asarray(n), np.asarray(omega, dtype=float))
+    k, kp = wavenumbers(omega, nu)
+    jm_k, jn_k, _ = (a.reshape(n.shape) for a in scaled_pairs(n, k, with_log=False))
+    jm_q, jn_q, _ = (a.reshape(n.shape) for a in scaled_pairs(n, kp, with_log=False))
+    return _normalized(edge_matrix_from_pairs(n, k, kp, jm_k, jn_k, jm_q, jn_q, nu))
 
 
 def normalized_determinant_grid(n_lo: int, n_hi: int, omega: np.ndarray, nu: float) -> np.ndarray:

@@ -53,17 +53,6 @@ def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f):
     M = cos_phi.size
     K2 = trig.shape[1]
     K = K2 // 2
-    reach = x0
-    for k in range(N):
-        reach += abs(Q[k]) * g_max[k]
-    bound = -reach - _NEGLIGIBLE / alpha
-    J = 0
-    while J < M and cos_phi[J] >= bound:
-        J += 1
-    if J == 0:
-        for k in range(N):
-            f[k] = 0.0
-        return 0.0, 0.0
     for i in range(K):
         a = 0.0
         b = 0.0
@@ -72,6 +61,17 @@ def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f):
             b += Q[k] * S[k]
         ab[i] = a
         ab[K + i] = b
+    reach = x0
+    for i in range(K2):
+        reach += abs(ab[i])
+    bound = -reach - _NEGLIGIBLE / alpha
+    J = 0
+    while J < M and cos_phi[J] >= bound:
+        J += 1
+    if J == 0:
+        for k in range(N):
+            f[k] = 0.0
+        return 0.0, 0.0
     # The two products over the active nodes are BLAS matrix-vector products (gemv).
     x = np.dot(trig[:J], ab)
     e = np.empty(J)
@@ -289,15 +289,32 @@ def _one(
 
 
 @njit(cache=True, parallel=True, fastmath=_FAST)
-def _batch_parallel(v, *args):
+def _batch_parallel(
+    v, alpha, x_start, dt, t_max, omega, mass, cos_phi, weight, trig, C, S, starts, g_max,
+    weights, max_steps, abort_drift, stop_log, contact_tol, out_e, out_mean, out_closest,
+    out_scalar,
+):  # fmt: skip
+    # Parallel regions take arrays, not tuples of arrays: the quadrature travels unpacked.
+    quad = (cos_phi, weight, trig, C, S, starts, g_max)
     for b in prange(v.size):
-        _one(b, v, *args)
+        _one(
+            b, v, alpha, x_start, dt, t_max, omega, mass, quad, weights, max_steps, abort_drift,
+            stop_log, contact_tol, out_e, out_mean, out_closest, out_scalar,
+        )  # fmt: skip
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _batch_serial(v, *args):
+def _batch_serial(
+    v, alpha, x_start, dt, t_max, omega, mass, cos_phi, weight, trig, C, S, starts, g_max,
+    weights, max_steps, abort_drift, stop_log, contact_tol, out_e, out_mean, out_closest,
+    out_scalar,
+):  # fmt: skip
+    quad = (cos_phi, weight, trig, C, S, starts, g_max)
     for b in range(v.size):
-        _one(b, v, *args)
+        _one(
+            b, v, alpha, x_start, dt, t_max, omega, mass, quad, weights, max_steps, abort_drift,
+            stop_log, contact_tol, out_e, out_mean, out_closest, out_scalar,
+        )  # fmt: skip
 
 
 def run_batch(
@@ -374,7 +391,7 @@ def run_batch(
         np.ascontiguousarray(t_max, dtype=np.float64),
         np.ascontiguousarray(omega[perm], dtype=np.float64),
         float(mass),
-        quad_arrays,
+        *quad_arrays,
         np.asarray(weights, dtype=np.float64),
         int(max_steps),
         -1.0 if abort_drift is None else float(abort_drift),

@@ -147,13 +147,15 @@ def dense_edge_matrix(modes: ModeSet, phi: np.ndarray) -> np.ndarray:
 _NEGLIGIBLE = 40.0
 
 
-def active_nodes(quad: WallQuadrature, alpha: np.ndarray, x0: np.ndarray, Q: np.ndarray) -> int:
+def active_nodes(quad: WallQuadrature, alpha: np.ndarray, x0: np.ndarray, ab: np.ndarray) -> int:
     """Number of leading nodes where ``exp(alpha x)`` can exceed ``exp(-40)``.
 
-    ``x(phi_j) <= x0 + cos(phi_j) + sum_k |Q_k| g_max_k``, and ``cos(phi)`` decreases on
+    With the per-order amplitudes ``ab = [a_n, b_n]`` (shape (B, 2K)) and ``|cos(n phi)
+    cos(phi)|, |sin(n phi) sin(phi)| <= 1``, ``x(phi_j) <= x0 + cos(phi_j) + sum |ab|``; this
+    is never looser than ``sum_k |Q_k| (|C_k| + |S_k|)``. ``cos(phi)`` decreases on
     ``[0, pi/2]``, so the nodes that matter for the whole batch form a prefix.
     """
-    reach = x0 + np.abs(Q) @ quad.g_max
+    reach = x0 + np.abs(ab).sum(axis=1)
     bound = np.min(-reach - _NEGLIGIBLE / alpha)
     return int(np.searchsorted(-quad.cos_phi, -bound, side="right"))
 
@@ -182,12 +184,12 @@ def wall_terms(
     f : numpy.ndarray, shape (B, N)
         ``dV/dQ_k``: generalised wall forces on the modes.
     """
-    J = active_nodes(quad, alpha, x0, Q)
+    # Per-order amplitudes [a_n, b_n], shape (B, 2K).
+    ab = (quad.edge_t @ Q.T).T
+    J = active_nodes(quad, alpha, x0, ab)
     if J == 0:
         zeros = np.zeros(x0.shape)
         return zeros, zeros, np.zeros(Q.shape)
-    # Per-order amplitudes [a_n, b_n], shape (B, 2K).
-    ab = (quad.edge_t @ Q.T).T
     trig = quad.trig[:J]
     x = x0[:, None] + quad.cos_phi[None, :J] + ab @ trig.T
     e = np.exp(alpha[:, None] * x) * quad.weight[None, :J]
