@@ -5,8 +5,9 @@ A report is a sequence of blocks (:class:`Heading`, :class:`Paragraph`, :class:`
 so the two files always say the same thing. Text inside blocks uses a tiny Markdown subset that
 both renderers understand: ```code```, ``**bold**`` and ``[text](relative/link)``.
 
-Figures are referenced by relative paths (``<img src="fig01_epsilon.png">``), so the report,
-its figures and its tables move together as one folder. The HTML page carries a few lines of
+In Markdown, figures are referenced by relative paths (``![..](fig01_epsilon.png)``); the HTML
+page carries them inline (``data:image/png;base64``) when :func:`to_html` is given the folder
+they live in, so ``report.html`` is one self-contained file. The HTML page carries a few lines of
 script that mark every image as loaded or not (``data-loaded`` on each ``<img>``,
 ``data-images = "loaded/total"`` on ``<body>``) and count load and script errors
 (``data-errors`` on ``<body>``), which a headless browser can read back.
@@ -14,6 +15,7 @@ script that mark every image as loaded or not (``data-loaded`` on each ``<img>``
 
 from __future__ import annotations
 
+import base64
 import html
 import json
 import os
@@ -21,6 +23,7 @@ import platform
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -169,6 +172,8 @@ th, td { border: 1px solid #bbb; padding: 0.25rem 0.5rem; vertical-align: top; t
 th { background: #eee; }
 td.agrees { background: #e6f4e6; }
 td.differs { background: #fbe9e7; }
+td.inconclusive { background: #fff6d5; }
+p.quick { background: #b00000; color: white; padding: 0.5rem; font-weight: bold; }
 figure { margin: 1.5rem 0; }
 figure img { max-width: 100%; border: 1px solid #ddd; }
 figcaption { font-size: 0.9rem; color: #444; }
@@ -200,18 +205,39 @@ def _verdict_class(text: str) -> str:
         return ' class="agrees"'
     if low.startswith("differs"):
         return ' class="differs"'
+    if low.startswith("inconclusive"):
+        return ' class="inconclusive"'
     return ""
 
 
-def to_html(blocks: Iterable[Block], title: str) -> str:
-    """The blocks as one HTML page (inline style, no external resources)."""
+def _image_src(src: str, base: Path | None) -> str:
+    """``src`` as a ``data:`` URI when ``base`` holds the file, else unchanged."""
+    if base is None or "://" in src or src.startswith("data:"):
+        return src
+    path = Path(base) / src
+    mime = {".png": "image/png", ".svg": "image/svg+xml", ".jpg": "image/jpeg"}.get(
+        path.suffix.lower()
+    )
+    if mime is None or not path.is_file():
+        return src
+    return f"data:{mime};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+
+
+def to_html(blocks: Iterable[Block], title: str, base: str | os.PathLike | None = None) -> str:
+    """The blocks as one HTML page (inline style and script).
+
+    With ``base`` (the folder the figures are in) every figure is embedded as a ``data:`` URI,
+    so the page needs no other file to show its figures; links stay links.
+    """
+    base = None if base is None else Path(base)
     body = []
     for b in blocks:
         if isinstance(b, Heading):
             level = min(max(b.level, 1), 6)
             body.append(f'<h{level} id="{slug(b.text)}">{_inline_html(b.text)}</h{level}>')
         elif isinstance(b, Paragraph):
-            body.append(f"<p>{_inline_html(b.text)}</p>")
+            cls = ' class="quick"' if b.text.startswith("**QUICK RUN") else ""
+            body.append(f"<p{cls}>{_inline_html(b.text)}</p>")
         elif isinstance(b, Table):
             head = "".join(f"<th>{_inline_html(c)}</th>" for c in b.header)
             rows = []
@@ -230,7 +256,7 @@ def to_html(blocks: Iterable[Block], title: str) -> str:
             )
             caption = " ".join(x for x in (_inline_html(b.caption), links) if x)
             body.append(
-                f'<figure>\n<img src="{html.escape(b.src, quote=True)}" '
+                f'<figure>\n<img src="{html.escape(_image_src(b.src, base), quote=True)}" '
                 f'alt="{html.escape(b.alt, quote=True)}">\n'
                 f"<figcaption>{caption}</figcaption>\n</figure>"
             )
@@ -306,7 +332,13 @@ _CAPTIONS = {
         "Fig. 1: coefficient of restitution against the speed towards the wall, extrapolated "
         "to a hard wall (alpha -> infinity) and infinitely many modes; open markers did not "
         "pass the asymptotic checks (marked * in the table). Lines: monotone interpolation "
-        "anchored at epsilon(0) = 1."
+        "anchored at epsilon(0) = 1. Speeds in c = sqrt(E/rho), the paper's stated unit."
+    ),
+    "fig01_epsilon_c_L": (
+        "Fig. 1 with the paper's speeds read in units of the dilatational wave speed "
+        "c_L = c / sqrt(1 - nu^2): every collision ran at v_i c_L (2.294 v_i at nu = 0.9, "
+        "1.059 v_i at nu = 0.33, in c) through the same sweep and extrapolation; the axis is "
+        "v_i / c_L. Markers as in Fig. 1."
     ),
     "fig02_shapes": (
         "Fig. 2: radii and circles of the undeformed disk displaced by one mode each "
@@ -316,38 +348,48 @@ _CAPTIONS = {
         "Fig. 3: frequencies of the symmetric modes against the number n of directional nodes "
         "(the caption's 'radial nodes' is a misprint); radial type |C| > |S|."
     ),
-    "fig05_snapshots": "Fig. 5: the disk hitting the wall, {modes} modes, alpha = {alpha:g}.",
+    "fig05_snapshots": (
+        "Fig. 5: the disk hitting the wall, {modes} modes, alpha = {alpha:g}; times in R/c. "
+        "The last frames (orange) follow the separation over one period of the quadrupole, "
+        "by the exact free flow of the modes: the vibrations left after the collision."
+    ),
     "fig06_mode_energy": (
         "Fig. 6: log10 of the energy in the low (n, l) modes at closest approach, {modes} modes, "
-        "v = {v:g} c, alpha = {alpha:g}."
+        "v = {v:g} c, alpha = {alpha:g}. White cells: (n, l) is not among the {modes} "
+        "lowest modes used (its frequency lies above the cut), so no energy was computed."
     ),
     "fig07_alpha": (
         "Fig. 7: 1 - epsilon^2 against 1/alpha at the largest N (filled, solid lines) and "
-        "extrapolated to N -> infinity at each alpha (open, dashed)."
+        "extrapolated to N -> infinity at each alpha (open, dashed); black bars at 1/alpha = 0 "
+        "are both limits, a red cross one that extrapolates below zero (unphysical)."
     ),
     "fig08_modes": (
         "Fig. 8: 1 - epsilon^2 against 1/sqrt(N) at the largest alpha (filled, solid) and "
-        "extrapolated to alpha -> infinity at each N (open, dashed)."
+        "extrapolated to alpha -> infinity at each N (open, dashed); black bars at "
+        "1/sqrt(N) = 0 are both limits, a red cross one that extrapolates below zero."
     ),
     "fig10_force": (
-        "Fig. 10: force against compression: eq. (57) as printed and the centre-of-mass law, "
+        "Fig. 10: force against compression: both contact laws, eq. (57) as printed (paper) "
+        "and the centre-of-mass law (centre), "
         "static relaxation ({modes} modes, alpha = {alpha:g}) and recorded collisions "
         "({loop_modes} modes, alpha = {loop_alpha:g})."
     ),
     "fig11_contact": (
-        "Fig. 11: contact time and maximal compression of the quasistatic collision; "
+        "Fig. 11: contact time and maximal compression of the quasistatic collision under both "
+        "contact laws (eq. 57 as printed and centre of mass); "
         "diamonds: contact times of the sweep's collisions with the hardest wall at each speed "
         "(N = {n})."
     ),
     "fig12_rayleigh": (
         "Fig. 12: energy left in the lowest {modes} modes after a quasistatic collision "
-        "(Rayleigh), all modes and (2, 0) alone; diamonds: the extrapolated dynamic loss of "
-        "the sweep."
+        "(Rayleigh, contact law '{law}'), all modes and (2, 0) alone; diamonds: the "
+        "extrapolated dynamic loss of the sweep."
     ),
 }
 
 _FIGURE_CLAIMS = {
     "fig01_epsilon": ("Fig. 1", "Sec. 6 / Fig. 1"),
+    "fig01_epsilon_c_L": ("Fig. 1", "Sec. 6 / Fig. 1"),
     "fig02_shapes": ("Fig. 2",),
     "fig03_spectrum": ("Fig. 3", "Fig. 3 / eq. (20)"),
     "fig05_snapshots": ("Fig. 5",),
@@ -378,17 +420,18 @@ def _caption(stem: str, d) -> str:
         loop_modes=s.loop_modes,
         loop_alpha=s.loop_alpha,
         n=n_contact,
+        law=s.law,
     )  # fmt: skip
 
 
-def _epsilon_table(f) -> Table:
+def _epsilon_table(f, unit: str = "c") -> Table:
     """epsilon(v) +- error per Poisson number (Fig. 1 data); '*': not asymptotic."""
-    speeds = sorted({float(v) for vs in f.v for v in vs})
+    speeds = sorted({round(float(v), 9) for vs in f.v for v in vs})
     rows = []
     for v in speeds:
         cells = [f"{v:g}"]
         for k in range(len(f.nus)):
-            hit = np.nonzero(f.v[k] == v)[0]
+            hit = np.nonzero(np.isclose(f.v[k], v, rtol=1e-9, atol=0.0))[0]
             if hit.size == 0 or not np.isfinite(f.epsilon[k][hit[0]]):
                 cells.append("")
                 continue
@@ -396,8 +439,26 @@ def _epsilon_table(f) -> Table:
             star = "" if f.asymptotic_ok[k][i] else " *"
             cells.append(f"{f.epsilon[k][i]:.4f} +- {f.epsilon_err[k][i]:.4f}{star}")
         rows.append(tuple(cells))
-    header = ("v [c]", *(f"epsilon (nu = {nu:g})" for nu in f.nus))
+    header = (f"v [{unit}]", *(f"epsilon (nu = {nu:g})" for nu in f.nus))
     return Table(header, tuple(rows))
+
+
+def _unit_table(comps) -> Table | None:
+    """Which reading of the paper's speeds reproduces which claim (rows judged in both)."""
+    by_claim: dict[str, dict[str, str]] = {}
+    for c in comps:
+        if c.speed_unit:
+            name = c.claim.split(" [speeds in")[0]
+            by_claim.setdefault(name, {})[c.speed_unit] = c.verdict
+    units = sorted({u for d in by_claim.values() for u in d}, key=lambda u: u != "c")
+    if len(units) < 2:
+        return None
+    rows = tuple(
+        (name, *(d.get(u, "") for u in units))
+        for name, d in by_claim.items()
+        if len(d) == len(units)
+    )
+    return Table(("claim", *(f"speeds in {u}" for u in units)), rows)
 
 
 def _comparison_table(rows) -> Table:
@@ -452,8 +513,10 @@ def _errata_blocks(run) -> list[Block]:
             "The equation of motion needs the approach of the centre of mass, not of the far "
             f"end of the diameter: c = -1 - 2/pi - nu/4 ({c_c:.3f}), identified numerically "
             "from the modes to 5e-4. The static relaxation (Fig. 10) and the dynamic contact "
-            "times (Fig. 11) side with the centre-of-mass law; the figures show the printed "
-            f"law (default) and the centre-of-mass law. Details: {link}."
+            "times (Fig. 11) side with the centre-of-mass law, so it is the package's default "
+            "(`restitution.hertz.contact_law`); Figs. 10 and 11 draw both laws, Fig. 12 uses "
+            f"the '{run.data.settings.law}' law, and `law=\"paper\"` redraws the paper's own "
+            f"curves. Details: {link}."
         )
     )
     if "quasistatic.md" in docs:
@@ -483,28 +546,28 @@ def paper_blocks(run, store_path: str = "") -> list[Block]:
     from restitution.store import code_version
 
     d, s = run.data, run.data.settings
+    from restitution.claims import counts
+
     comps = run.comparisons
-    n_agree = sum(c.agrees is True for c in comps)
-    n_differ = sum(c.agrees is False for c in comps)
-    n_undet = sum(c.agrees is None for c in comps)
+    n = counts(comps)
     sr = d.sweep_report
-    blocks: list = [
-        Heading(1, "Coefficient of restitution for elastic disks: reproduction report"),
+    blocks: list = [Heading(1, "Coefficient of restitution for elastic disks: reproduction report")]
+    if s.name == "quick":
+        blocks.append(
+            Paragraph(
+                "**QUICK RUN: coarse grids (few speeds, N = "
+                f"{', '.join(str(n) for n in s.sweep.n_modes)} modes, small collisions); the "
+                "numbers are not converged and the verdicts describe this run only.** Run "
+                "`restitution paper` without `--quick` for the paper's sizes."
+            )
+        )
+    blocks += [
         Paragraph(
             'F. Gerl and A. Zippelius, "Coefficient of restitution for elastic disks", '
             f"regenerated by `restitution paper` (restitution {__version__}, code "
             f"{code_version()}) on {run.started} in {run.run_time_s:.0f} s."
         ),
     ]
-    if s.name == "quick":
-        blocks.append(
-            Paragraph(
-                "**Quick run**: coarse grids (few speeds, N = "
-                f"{', '.join(str(n) for n in s.sweep.n_modes)} modes, small collisions) through "
-                "the same code. The numbers are not converged; the verdicts below describe this "
-                "run only. Run `restitution paper` without `--quick` for the paper's sizes."
-            )
-        )
     blocks += [
         Paragraph(
             "Units: two-dimensional E = rho = R = 1, so speeds v are in c = sqrt(E/rho) and "
@@ -514,13 +577,43 @@ def paper_blocks(run, store_path: str = "") -> list[Block]:
         ),
         Heading(2, "Summary: the paper beside this reproduction"),
         Paragraph(
-            f"{len(comps)} comparisons: {n_agree} agree, {n_differ} differ"
-            + (f", {n_undet} undetermined" if n_undet else "")
-            + ". 'agrees' means within the tolerance stated in the row (or the claim holds); "
-            "'differs by' gives our value minus the paper's. The mode-by-mode rows of Table 1 "
-            "are in the [Table 1](#table-1) section."
+            f"{len(comps)} comparisons: {n['agrees']} agree, {n['differs']} differ, "
+            f"{n['inconclusive']} inconclusive. 'agrees' means within the tolerance stated in "
+            "the row, on points that passed their own checks; 'differs by' gives our value "
+            "minus the paper's; 'inconclusive' means the points the claim rests on did not pass "
+            "their checks (e.g. an extrapolation flagged as not asymptotic) or their errors "
+            "exceed the tolerance, and the row says which way they lean at face value. The "
+            "mode-by-mode rows of Table 1 are in the [Table 1](#table-1) section."
         ),
         _comparison_table([c for c in comps if not c.detail]),
+    ]
+    units = _unit_table(comps)
+    if units is not None:
+        blocks += [
+            Heading(2, "Which unit of speed reproduces which claim"),
+            Paragraph(
+                "The paper states its speeds in c = sqrt(E/rho). Read in the dilatational wave "
+                "speed c_L = c / sqrt(1 - nu^2) instead, every collision runs faster by "
+                "1/sqrt(1 - nu^2) (2.294 at nu = 0.9, 1.059 at nu = 0.33). Every Fig. 1 claim, "
+                "judged in both readings by the same rules:"
+            ),
+            units,
+        ]
+    blocks += [
+        Heading(2, "epsilon(v) laws of this run"),
+        Paragraph(
+            "The extrapolated epsilon(v) of this run's sweep (speeds in c), written by "
+            "`restitution.law.EpsilonLaw` as JSON (points, fits, validity), CSV and a plain "
+            "`v epsilon epsilon_err` table for DEM/ED codes"
+            + (" (quick run: not converged)" if s.name == "quick" else "")
+            + ": "
+            + "; ".join(
+                f"nu = {law.nu:g}: [JSON]({law.json.name}), [CSV]({law.csv.name}), "
+                f"[table]({law.table.name})"
+                for law in run.laws
+            )
+            + "."
+        ),
         Heading(2, "Figures"),
     ]
     for f in run.figures:
@@ -534,16 +627,18 @@ def paper_blocks(run, store_path: str = "") -> list[Block]:
                 links=((f.vector.suffix[1:].upper(), f.vector.name), ("PNG", f.png.name)),
             )
         )
+        unit = "c_L" if base.endswith("_c_L") else "c"
         rows = [
             c
             for c in comps
             if c.figure in _FIGURE_CLAIMS.get(base, ())
             and (f.nu is None or f"(nu = {f.nu:g})" in c.claim)
+            and c.speed_unit in ("", unit)
         ]
         if rows:
             blocks.append(_comparison_table(rows))
-        if f.stem == "fig01_epsilon":
-            blocks.append(_epsilon_table(d.fig01))
+        if base.startswith("fig01_epsilon"):
+            blocks.append(_epsilon_table(d.fig01_units[unit], unit))
     t = d.table1
     blocks += [
         Heading(2, "Table 1"),
