@@ -387,3 +387,22 @@ def test_value_verdict_needs_a_checked_point_and_a_small_error():
     f = _fig01([0.98, 0.9, 0.8, 0.747], [0.002] * 4, [True] * 4, nus=(0.9,))
     value = [r for r in epsilon_rows({"c": f}) if r.claim.startswith("epsilon at")]
     assert value[0].agrees is False and value[0].speed_unit == "c"
+
+
+def test_results_doc_states_what_the_shipped_laws_say():
+    # docs/results.md carries a block generated from the shipped laws; when the laws change,
+    # regenerate it with `python -m restitution.claims.shipped docs/results.md`.
+    from pathlib import Path
+
+    from restitution.claims.shipped import BEGIN, END, law_summary
+
+    doc = Path(__file__).resolve().parents[1] / "docs" / "results.md"
+    text = doc.read_text()
+    block = text.split(BEGIN, 1)[1].split(END, 1)[0]
+    assert block.strip() == law_summary().strip(), (
+        "docs/results.md is stale: run `python -m restitution.claims.shipped docs/results.md`"
+    )
+    # The generated statements come from the data: the shipped nu = 0.33 law is not monotone.
+    from restitution.law import law
+
+    assert ("not monotone" in block) == (not law(0.33).monotone)

@@ -59,7 +59,7 @@ def compute(nu: float = 0.33, which=DEFAULT_MODES, amplitude: float = 0.12) -> S
     labels, lines, edge = [], [], []
     for n, l in which:
         k = int(np.nonzero((modes.n == n) & (modes.l == l))[0][0])
-        labels.append(f"n = {n}, l = {l}, omega = {modes.omega[k]:.4f}")
+        labels.append(f"n = {n}, l = {l}, omega = {modes.omega[k]:.4f} c/R")
         lines.append(_deformed(modes, k, amplitude))
         edge.append(float(amplitude * max(abs(modes.C[k]), abs(modes.S[k]))))
     return ShapeData(
