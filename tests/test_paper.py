@@ -293,6 +293,22 @@ def test_paper_command_rejects_bad_options(tmp_path):
     result = runner.invoke(paper, ["--workers", "0", "--out", str(tmp_path)])
     assert result.exit_code == 2
     assert "--quick" in runner.invoke(paper, ["--help"]).output
+    assert "--c-only" in runner.invoke(paper, ["--help"]).output
+
+
+def test_paper_settings_refuse_what_they_cannot_run():
+    from dataclasses import replace
+
+    from restitution.errors import InputError
+    from restitution.paper import PaperSettings
+
+    with pytest.raises(InputError, match="start with"):
+        PaperSettings(speed_units=("c_L",))
+    with pytest.raises(InputError, match="exceed c"):  # 0.5 c_L is 1.15 c at nu = 0.9
+        PaperSettings(sweep=replace(QUICK.sweep, velocities=(0.1, 0.5)))
+    with pytest.raises(InputError, match="law must be"):
+        PaperSettings(law="hertz3d")
+    assert PaperSettings(speed_units=("c",)).speed_units == ("c",)
 
 
 def test_report_writer_renders_the_same_blocks():

@@ -174,6 +174,7 @@ td.agrees { background: #e6f4e6; }
 td.differs { background: #fbe9e7; }
 td.inconclusive { background: #fff6d5; }
 p.quick { background: #b00000; color: white; padding: 0.5rem; font-weight: bold; }
+p.quick code { background: white; color: #b00000; }
 figure { margin: 1.5rem 0; }
 figure img { max-width: 100%; border: 1px solid #ddd; }
 figcaption { font-size: 0.9rem; color: #444; }

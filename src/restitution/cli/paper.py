@@ -109,11 +109,17 @@ class _StageProgress:
     help="Vector format written beside every PNG.",
 )
 @click.option(
+    "--c-only",
+    is_flag=True,
+    help="Read the paper's speeds in c only: skip the second Fig. 1 (speeds read in "
+    "c_L = c/sqrt(1 - nu^2)) and its sweep, which doubles the collisions.",
+)
+@click.option(
     "--progress/--no-progress",
     default=None,
     help="Progress bars on stderr (default: when stderr is a terminal).",
 )
-def paper(quick, out, store, workers, scheduler, fmt, progress):
+def paper(quick, out, store, workers, scheduler, fmt, c_only, progress):
     """Regenerate the paper: Figs. 1-3, 5-8, 10-12, Table 1 and a report comparing with it.
 
     Writes PNG and SVG (or PDF) figures, table1.md / table1.csv, report.html and report.md
@@ -122,9 +128,13 @@ def paper(quick, out, store, workers, scheduler, fmt, progress):
     units of c = sqrt(E/rho). The collisions of the sweep go through the result store, so a
     second run only redraws.
     """
+    from dataclasses import replace
+
     from restitution.paper import FULL, QUICK, STAGES, build_paper
 
     settings = QUICK if quick else FULL
+    if c_only:
+        settings = replace(settings, speed_units=("c",))
     with _StageProgress(progress, len(STAGES)) as reporter:
         run = build_paper(
             out,
