@@ -9,6 +9,8 @@ job:
   data of Figs. 1-3, 5-8, 10-12 and Table 1 (:func:`compute_paper`);
 * :mod:`restitution.claims`: every claim of the paper judged against those data;
 * :mod:`~restitution.paper.files`: figures, Table 1, law exports and JSON writing;
+* :mod:`~restitution.paper.report`: the report's content as blocks, rendered by
+  :mod:`restitution.report`;
 * :mod:`~restitution.paper.build`: :func:`build_paper`, the orchestration behind
   ``restitution paper``; :mod:`restitution.report` renders the report.
 

@@ -2,8 +2,9 @@
 
 :func:`build_paper` is thin orchestration: :func:`restitution.paper.compute.compute_paper`
 computes, :func:`restitution.claims.compare` judges every claim, :mod:`restitution.paper.files`
-writes the figures, Table 1, the law exports and the record, and :mod:`restitution.report`
-writes ``report.html`` (self-contained) and ``report.md``.
+writes the figures, Table 1, the law exports and the record, :mod:`restitution.paper.report`
+lays out the report and :mod:`restitution.report` renders ``report.html`` (self-contained) and
+``report.md``.
 """
 
 from __future__ import annotations
@@ -120,6 +121,7 @@ def build_paper(
     """
     from restitution import report as rp
     from restitution.claims import compare
+    from restitution.paper.report import paper_blocks
 
     if fmt not in ("svg", "pdf"):
         raise InputError(f"vector format must be 'svg' or 'pdf', not {fmt!r}")
@@ -161,7 +163,7 @@ def build_paper(
             run_time_s=time.perf_counter() - t0,
             timings=tuple(stages.timings),
         )
-        blocks = rp.paper_blocks(run, store_path=_store_label(store))
+        blocks = paper_blocks(run, store_path=_store_label(store))
         title = "Coefficient of restitution for elastic disks: reproduction report"
         run.report_md.write_text(rp.to_markdown(blocks))
         run.report_html.write_text(rp.to_html(blocks, title, base=out))
