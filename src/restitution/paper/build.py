@@ -211,14 +211,8 @@ def _record(run: PaperRun, store_label: str) -> dict:
         "run_time_s": run.run_time_s,
         "settings": d.settings.to_dict(),
         "store": store_label,
-        "sweep": {
-            "total": sr.total,
-            "skipped": sr.skipped,
-            "computed": sr.computed,
-            "failed": [{"point": asdict(p), "message": m} for p, m in sr.failed],
-            "wall_time_s": sr.wall_time_s,
-            "executor": sr.executor,
-        },
+        "sweep": _sweep_record(sr),
+        "sweeps_by_speed_unit": {u: _sweep_record(r) for u, r in d.sweep_reports.items()},
         "verdicts": counts(run.comparisons),
         "comparisons": [asdict(c) for c in run.comparisons],
         "epsilon": {
@@ -240,6 +234,17 @@ def _record(run: PaperRun, store_label: str) -> dict:
         "files": [p.name for f in run.figures for p in (f.png, f.vector)]
         + [p.name for p in run.table1]
         + [p.name for law in run.laws for p in (law.json, law.csv, law.table)],
+    }
+
+
+def _sweep_record(sr) -> dict:
+    return {
+        "total": sr.total,
+        "skipped": sr.skipped,
+        "computed": sr.computed,
+        "failed": [{"point": asdict(p), "message": m} for p, m in sr.failed],
+        "wall_time_s": sr.wall_time_s,
+        "executor": sr.executor,
     }
 
 

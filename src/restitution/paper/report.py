@@ -384,6 +384,13 @@ def paper_blocks(run, store_path: str = "") -> list[Block]:
             f"**Sweep**: {sr.total} collisions, {sr.skipped} found in the store, "
             f"{sr.computed} computed, {len(sr.failed)} failed, {sr.wall_time_s:.1f} s "
             f"({sr.executor}). Store: `{store_path}`."
+            + "".join(
+                f" **Sweep at the speeds read in {u}** (every speed times "
+                f"1/sqrt(1 - nu^2)): {r.total} collisions, {r.skipped} found in the store, "
+                f"{r.computed} computed, {len(r.failed)} failed, {r.wall_time_s:.1f} s."
+                for u, r in d.sweep_reports.items()
+                if u != "c"
+            )
         ),
         Table(
             ("stage", "seconds"),
