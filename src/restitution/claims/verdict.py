@@ -117,19 +117,25 @@ def compare_value(
     -------
     agrees : bool or None
     note : str
-        The difference, the tolerance and, if inconclusive, why and which way it leans.
+        The difference, the tolerance and, if inconclusive, why and which way it leans at face
+        value (agrees within the tolerance, differs beyond it by more than two errors).
     """
     if not (math.isfinite(ours) and math.isfinite(err)):
         return None, "no finite value"
     diff = ours - paper
     base = f"difference {diff:+.3f} +- {err:.3f}, tolerance {tol:.3f}"
-    lean = AGREES if abs(diff) <= tol else DIFFERS
+    if abs(diff) <= tol:
+        lean = f"at face value {AGREES}"
+    elif abs(diff) > tol + 2.0 * err:
+        lean = f"at face value {DIFFERS}"
+    else:
+        lean = "leans neither way (within two errors of the tolerance)"
     if not checked:
-        return None, f"{why or 'the value failed its checks'}; at face value {lean} ({base})"
+        return None, f"{why or 'the value failed its checks'}; {lean} ({base})"
     if 2.0 * err > tol:
-        return None, f"error {err:.3f} too large for the tolerance; leans {lean} ({base})"
+        return None, f"error {err:.3f} too large for the tolerance; {lean} ({base})"
     if abs(diff) <= tol:
         return True, base
     if abs(diff) > tol + 2.0 * err:
         return False, f"by {diff:+.3f} ({pct(diff / paper)}); {base}"
-    return None, f"within two errors of the tolerance; leans {lean} ({base})"
+    return None, f"{lean} ({base})"
