@@ -170,7 +170,7 @@ def test_fig11_compute_and_plot(tmp_path):
     fig11_contact.plot(data, tmp_path / "fig11.png")
     assert (tmp_path / "fig11.png").stat().st_size > 1000
     # Contact time at the largest speed equals the quasistatic_collision value.
-    ref = quasistatic_collision(contact_law(NU), data.v[-1]).contact_time[0]
+    ref = quasistatic_collision(contact_law(NU, "paper"), data.v[-1]).contact_time[0]
     assert_allclose(data.contact_time_paper[-1], ref, rtol=1e-12)
     assert np.isnan(data.contact_time_centre[-1])  # above the centre law's largest speed
 

@@ -39,7 +39,7 @@ def test_duhamel_matches_ode_of_eq65(modes):
 
 def test_energy_factors_from_the_real_equation(modes):
     # m Q'' = -m w^2 Q - C P(t) from rest; after contact E = (m/2)(Q'^2 + w^2 Q^2).
-    law = contact_law(NU)
+    law = contact_law(NU, "paper")  # the law rayleigh_energy uses by default
     v = 1e-3
     traj = quasistatic_trajectory(law, v)
     k = int(np.flatnonzero((modes.n == 2) & (modes.l == 0))[0])

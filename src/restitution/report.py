@@ -5,8 +5,9 @@ A report is a sequence of blocks (:class:`Heading`, :class:`Paragraph`, :class:`
 so the two files always say the same thing. Text inside blocks uses a tiny Markdown subset that
 both renderers understand: ```code```, ``**bold**`` and ``[text](relative/link)``.
 
-Figures are referenced by relative paths (``<img src="fig01_epsilon.png">``), so the report,
-its figures and its tables move together as one folder. The HTML page carries a few lines of
+In Markdown, figures are referenced by relative paths (``![..](fig01_epsilon.png)``); the HTML
+page carries them inline (``data:image/png;base64``) when :func:`to_html` is given the folder
+they live in, so ``report.html`` is one self-contained file. The HTML page carries a few lines of
 script that mark every image as loaded or not (``data-loaded`` on each ``<img>``,
 ``data-images = "loaded/total"`` on ``<body>``) and count load and script errors
 (``data-errors`` on ``<body>``), which a headless browser can read back.
@@ -14,17 +15,13 @@ script that mark every image as loaded or not (``data-loaded`` on each ``<img>``
 
 from __future__ import annotations
 
+import base64
 import html
-import json
 import os
-import platform
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-
-import numpy as np
-
-from restitution import __version__
+from pathlib import Path
 
 __all__ = [
     "Code",
@@ -32,7 +29,6 @@ __all__ = [
     "Heading",
     "Paragraph",
     "Table",
-    "paper_blocks",
     "parse_markdown_table",
     "slug",
     "to_html",
@@ -169,6 +165,9 @@ th, td { border: 1px solid #bbb; padding: 0.25rem 0.5rem; vertical-align: top; t
 th { background: #eee; }
 td.agrees { background: #e6f4e6; }
 td.differs { background: #fbe9e7; }
+td.inconclusive { background: #fff6d5; }
+p.quick { background: #b00000; color: white; padding: 0.5rem; font-weight: bold; }
+p.quick code { background: white; color: #b00000; }
 figure { margin: 1.5rem 0; }
 figure img { max-width: 100%; border: 1px solid #ddd; }
 figcaption { font-size: 0.9rem; color: #444; }
@@ -200,18 +199,39 @@ def _verdict_class(text: str) -> str:
         return ' class="agrees"'
     if low.startswith("differs"):
         return ' class="differs"'
+    if low.startswith("inconclusive"):
+        return ' class="inconclusive"'
     return ""
 
 
-def to_html(blocks: Iterable[Block], title: str) -> str:
-    """The blocks as one HTML page (inline style, no external resources)."""
+def _image_src(src: str, base: Path | None) -> str:
+    """``src`` as a ``data:`` URI when ``base`` holds the file, else unchanged."""
+    if base is None or "://" in src or src.startswith("data:"):
+        return src
+    path = Path(base) / src
+    mime = {".png": "image/png", ".svg": "image/svg+xml", ".jpg": "image/jpeg"}.get(
+        path.suffix.lower()
+    )
+    if mime is None or not path.is_file():
+        return src
+    return f"data:{mime};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+
+
+def to_html(blocks: Iterable[Block], title: str, base: str | os.PathLike | None = None) -> str:
+    """The blocks as one HTML page (inline style and script).
+
+    With ``base`` (the folder the figures are in) every figure is embedded as a ``data:`` URI,
+    so the page needs no other file to show its figures; links stay links.
+    """
+    base = None if base is None else Path(base)
     body = []
     for b in blocks:
         if isinstance(b, Heading):
             level = min(max(b.level, 1), 6)
             body.append(f'<h{level} id="{slug(b.text)}">{_inline_html(b.text)}</h{level}>')
         elif isinstance(b, Paragraph):
-            body.append(f"<p>{_inline_html(b.text)}</p>")
+            cls = ' class="quick"' if b.text.startswith("**QUICK RUN") else ""
+            body.append(f"<p{cls}>{_inline_html(b.text)}</p>")
         elif isinstance(b, Table):
             head = "".join(f"<th>{_inline_html(c)}</th>" for c in b.header)
             rows = []
@@ -230,7 +250,7 @@ def to_html(blocks: Iterable[Block], title: str) -> str:
             )
             caption = " ".join(x for x in (_inline_html(b.caption), links) if x)
             body.append(
-                f'<figure>\n<img src="{html.escape(b.src, quote=True)}" '
+                f'<figure>\n<img src="{html.escape(_image_src(b.src, base), quote=True)}" '
                 f'alt="{html.escape(b.alt, quote=True)}">\n'
                 f"<figcaption>{caption}</figcaption>\n</figure>"
             )
@@ -295,318 +315,3 @@ def parse_markdown_table(lines: Sequence[str]) -> Table:
     header = tuple(rows[0])
     body = tuple(tuple((r + [""] * len(header))[: len(header)]) for r in rows[2:])
     return Table(header, body)
-
-
-# ============================================================================================
-# The reproduction report of restitution.paper
-# ============================================================================================
-
-_CAPTIONS = {
-    "fig01_epsilon": (
-        "Fig. 1: coefficient of restitution against the speed towards the wall, extrapolated "
-        "to a hard wall (alpha -> infinity) and infinitely many modes; open markers did not "
-        "pass the asymptotic checks (marked * in the table). Lines: monotone interpolation "
-        "anchored at epsilon(0) = 1."
-    ),
-    "fig02_shapes": (
-        "Fig. 2: radii and circles of the undeformed disk displaced by one mode each "
-        "(amplitude Q = {amp:g} R)."
-    ),
-    "fig03_spectrum": (
-        "Fig. 3: frequencies of the symmetric modes against the number n of directional nodes "
-        "(the caption's 'radial nodes' is a misprint); radial type |C| > |S|."
-    ),
-    "fig05_snapshots": "Fig. 5: the disk hitting the wall, {modes} modes, alpha = {alpha:g}.",
-    "fig06_mode_energy": (
-        "Fig. 6: log10 of the energy in the low (n, l) modes at closest approach, {modes} modes, "
-        "v = {v:g} c, alpha = {alpha:g}."
-    ),
-    "fig07_alpha": (
-        "Fig. 7: 1 - epsilon^2 against 1/alpha at the largest N (filled, solid lines) and "
-        "extrapolated to N -> infinity at each alpha (open, dashed)."
-    ),
-    "fig08_modes": (
-        "Fig. 8: 1 - epsilon^2 against 1/sqrt(N) at the largest alpha (filled, solid) and "
-        "extrapolated to alpha -> infinity at each N (open, dashed)."
-    ),
-    "fig10_force": (
-        "Fig. 10: force against compression: eq. (57) as printed and the centre-of-mass law, "
-        "static relaxation ({modes} modes, alpha = {alpha:g}) and recorded collisions "
-        "({loop_modes} modes, alpha = {loop_alpha:g})."
-    ),
-    "fig11_contact": (
-        "Fig. 11: contact time and maximal compression of the quasistatic collision; "
-        "diamonds: contact times of the sweep's collisions with the hardest wall at each speed "
-        "(N = {n})."
-    ),
-    "fig12_rayleigh": (
-        "Fig. 12: energy left in the lowest {modes} modes after a quasistatic collision "
-        "(Rayleigh), all modes and (2, 0) alone; diamonds: the extrapolated dynamic loss of "
-        "the sweep."
-    ),
-}
-
-_FIGURE_CLAIMS = {
-    "fig01_epsilon": ("Fig. 1", "Sec. 6 / Fig. 1"),
-    "fig02_shapes": ("Fig. 2",),
-    "fig03_spectrum": ("Fig. 3", "Fig. 3 / eq. (20)"),
-    "fig05_snapshots": ("Fig. 5",),
-    "fig06_mode_energy": ("Fig. 6",),
-    "fig07_alpha": ("Fig. 7",),
-    "fig08_modes": ("Fig. 8",),
-    "fig10_force": ("Eq. (57)", "Fig. 10"),
-    "fig11_contact": ("Fig. 11", "Fig. 11 / Sec. 6"),
-    "fig12_rayleigh": ("Fig. 12",),
-}
-
-
-def _caption(stem: str, d) -> str:
-    s = d.settings
-    base = stem.split("_nu")[0]
-    n_contact = d.contact_points[0][2] if d.contact_points else max(s.sweep.n_modes)
-    return _CAPTIONS[base].format(
-        amp=s.shape_amplitude,
-        modes={
-            "fig05_snapshots": s.snapshot_modes,
-            "fig06_mode_energy": s.collision_modes,
-            "fig10_force": s.relax_modes,
-            "fig12_rayleigh": s.rayleigh_modes,
-        }.get(base, 0),
-        alpha=s.snapshot_alpha if base == "fig05_snapshots" else (
-            s.relax_alpha if base == "fig10_force" else s.collision_alpha),
-        v=s.collision_v,
-        loop_modes=s.loop_modes,
-        loop_alpha=s.loop_alpha,
-        n=n_contact,
-    )  # fmt: skip
-
-
-def _epsilon_table(f) -> Table:
-    """epsilon(v) +- error per Poisson number (Fig. 1 data); '*': not asymptotic."""
-    speeds = sorted({float(v) for vs in f.v for v in vs})
-    rows = []
-    for v in speeds:
-        cells = [f"{v:g}"]
-        for k in range(len(f.nus)):
-            hit = np.nonzero(f.v[k] == v)[0]
-            if hit.size == 0 or not np.isfinite(f.epsilon[k][hit[0]]):
-                cells.append("")
-                continue
-            i = hit[0]
-            star = "" if f.asymptotic_ok[k][i] else " *"
-            cells.append(f"{f.epsilon[k][i]:.4f} +- {f.epsilon_err[k][i]:.4f}{star}")
-        rows.append(tuple(cells))
-    header = ("v [c]", *(f"epsilon (nu = {nu:g})" for nu in f.nus))
-    return Table(header, tuple(rows))
-
-
-def _comparison_table(rows) -> Table:
-    return Table(
-        ("where", "result", "paper says", "we get", "verdict"),
-        tuple((c.figure, c.claim, c.paper, c.ours, c.verdict) for c in rows),
-    )
-
-
-def _errata_blocks(run) -> list[Block]:
-    blocks: list = [Heading(2, "Errata: what the code uses instead of the printed equations")]
-    docs = {p.name: p for p in run.docs}
-    eq = docs.get("equations.md")
-    if eq is not None:
-        text = eq.read_text().splitlines()
-        try:
-            start = next(i for i, line in enumerate(text) if line.startswith("## List of corr"))
-            table = parse_markdown_table(text[start + 1 :])
-        except (StopIteration, ValueError):
-            table = None
-        blocks.append(
-            Paragraph(
-                "The printed paper carries misprints; the code follows the corrected equations "
-                "of [docs/equations.md](docs/equations.md) (copied into this folder). Its list "
-                "of corrections:"
-            )
-        )
-        if table is not None:
-            blocks.append(table)
-    else:
-        blocks.append(
-            Paragraph(
-                "The corrected equations and the list of corrections are in `docs/equations.md` "
-                "of the source distribution (not found beside this installation)."
-            )
-        )
-    from restitution.hertz import contact_law
-
-    nu = run.data.settings.nu
-    c_p, c_d, c_c = (contact_law(nu, k).constant for k in ("paper", "diameter", "centre"))
-    blocks.append(Heading(3, "Eq. (57): the constant of the 2D Hertz law"))
-    link = (
-        "[docs/quasistatic.md](docs/quasistatic.md)"
-        if "quasistatic.md" in docs
-        else "`docs/quasistatic.md`"
-    )
-    blocks.append(
-        Paragraph(
-            "Eq. (57) prints delta = P/(pi E) (ln(4 pi E R/P) + c) with c = -1 - nu "
-            f"({c_p:.3f} at nu = {nu:g}). Integrating eqs. (54)-(55) along the axis gives "
-            f"c = -1 ({c_d:.3f}): the transverse stress integrates to zero and nu drops out. "
-            "The equation of motion needs the approach of the centre of mass, not of the far "
-            f"end of the diameter: c = -1 - 2/pi - nu/4 ({c_c:.3f}), identified numerically "
-            "from the modes to 5e-4. The static relaxation (Fig. 10) and the dynamic contact "
-            "times (Fig. 11) side with the centre-of-mass law; the figures show the printed "
-            f"law (default) and the centre-of-mass law. Details: {link}."
-        )
-    )
-    if "quasistatic.md" in docs:
-        text = docs["quasistatic.md"].read_text().splitlines()
-        try:
-            start = next(i for i, line in enumerate(text) if line.startswith("## 6."))
-            end = next(
-                (i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text)
-            )
-            quote = "\n".join(text[start + 1 : end]).strip()
-        except StopIteration:
-            quote = ""
-        if quote:
-            blocks.append(Paragraph(f"Disagreements with section 5, as summarised in {link}:"))
-            blocks.append(Code(quote))
-    return blocks
-
-
-def paper_blocks(run, store_path: str = "") -> list[Block]:
-    """The report of a paper run (:class:`restitution.paper.PaperRun`) as blocks.
-
-    Sections: summary table of every comparison, the figures each with its comparisons,
-    Table 1, the errata, and the parameters (mode selection, extrapolation sets, sweep and
-    stage timings, versions, date).
-    """
-    from restitution.figures.table1 import to_markdown
-    from restitution.store import code_version
-
-    d, s = run.data, run.data.settings
-    comps = run.comparisons
-    n_agree = sum(c.agrees is True for c in comps)
-    n_differ = sum(c.agrees is False for c in comps)
-    n_undet = sum(c.agrees is None for c in comps)
-    sr = d.sweep_report
-    blocks: list = [
-        Heading(1, "Coefficient of restitution for elastic disks: reproduction report"),
-        Paragraph(
-            'F. Gerl and A. Zippelius, "Coefficient of restitution for elastic disks", '
-            f"regenerated by `restitution paper` (restitution {__version__}, code "
-            f"{code_version()}) on {run.started} in {run.run_time_s:.0f} s."
-        ),
-    ]
-    if s.name == "quick":
-        blocks.append(
-            Paragraph(
-                "**Quick run**: coarse grids (few speeds, N = "
-                f"{', '.join(str(n) for n in s.sweep.n_modes)} modes, small collisions) through "
-                "the same code. The numbers are not converged; the verdicts below describe this "
-                "run only. Run `restitution paper` without `--quick` for the paper's sizes."
-            )
-        )
-    blocks += [
-        Paragraph(
-            "Units: two-dimensional E = rho = R = 1, so speeds v are in c = sqrt(E/rho) and "
-            "are the disk's speed towards the wall (two identical disks approaching at +-v, "
-            "relative speed 2v, collide the same way); times in R/c; energies as fractions of "
-            "the initial kinetic energy."
-        ),
-        Heading(2, "Summary: the paper beside this reproduction"),
-        Paragraph(
-            f"{len(comps)} comparisons: {n_agree} agree, {n_differ} differ"
-            + (f", {n_undet} undetermined" if n_undet else "")
-            + ". 'agrees' means within the tolerance stated in the row (or the claim holds); "
-            "'differs by' gives our value minus the paper's. The mode-by-mode rows of Table 1 "
-            "are in the [Table 1](#table-1) section."
-        ),
-        _comparison_table([c for c in comps if not c.detail]),
-        Heading(2, "Figures"),
-    ]
-    for f in run.figures:
-        base = f.stem.split("_nu")[0]
-        blocks.append(Heading(3, f.title))
-        blocks.append(
-            Figure(
-                src=f.png.name,
-                alt=f.title,
-                caption=_caption(f.stem, d),
-                links=((f.vector.suffix[1:].upper(), f.vector.name), ("PNG", f.png.name)),
-            )
-        )
-        rows = [
-            c
-            for c in comps
-            if c.figure in _FIGURE_CLAIMS.get(base, ())
-            and (f.nu is None or f"(nu = {f.nu:g})" in c.claim)
-        ]
-        if rows:
-            blocks.append(_comparison_table(rows))
-        if f.stem == "fig01_epsilon":
-            blocks.append(_epsilon_table(d.fig01))
-    t = d.table1
-    blocks += [
-        Heading(2, "Table 1"),
-        Paragraph(
-            f"The ten modes with the most energy averaged over the contact, nu = {s.nu:g}, "
-            f"v = {s.collision_v:g} c, alpha = {s.collision_alpha:g}, the "
-            f"{s.collision_modes} lowest modes (epsilon = {t.epsilon:.4f}). Files: "
-            f"[{run.table1[0].name}]({run.table1[0].name}), "
-            f"[{run.table1[1].name}]({run.table1[1].name})."
-        ),
-        parse_markdown_table(to_markdown(t).splitlines()),
-        _comparison_table([c for c in comps if c.figure == "Table 1"]),
-    ]
-    blocks += _errata_blocks(run)
-    # Parameters.
-    sw = s.sweep
-    alpha_rows = tuple(
-        (f"{v:g}", ", ".join(f"{a:.4g}" for a in sw.alphas_at(v))) for v in sw.velocities
-    )
-    blocks += [
-        Heading(2, "Parameters"),
-        Paragraph(
-            f"Run `{s.name}`. Poisson numbers of Figs. 1, 7, 8: "
-            f"{', '.join(f'{nu:g}' for nu in s.nus)}; all other figures and Table 1: "
-            f"nu = {s.nu:g}."
-        ),
-        Paragraph(
-            f'**Mode selection**: the N lowest frequencies (`select = "{sw.select}"`) for every '
-            "computation; the paper instead ranked 1600 modes by their energy in a preliminary "
-            "run (section 4)."
-        ),
-        Paragraph(
-            "**Extrapolation sets** of the sweep: N = "
-            f"{', '.join(str(n) for n in sw.n_modes)} (linear in 1/sqrt(N)); alpha values "
-            f'{", ".join(f"{a:g}" for a in sw.alphas)} with `alpha_scale = "{sw.alpha_scale}"`'
-            + (
-                " (products alpha * delta_max(v), delta_max = v sqrt(ln(4/v)))"
-                if sw.alpha_scale == "compression"
-                else " (1/R at every speed)"
-            )
-            + f", linear in 1/alpha; order of the limits `{sw.order}`; integrator "
-            f"`{sw.integrator}`; solver options "
-            f"{', '.join(f'`{k} = {v}`' for k, v in sw.options if v is not None)}."
-        ),
-        Table(("v [c]", "alpha used [1/R]"), alpha_rows),
-        Table(
-            ("setting", "value"),
-            tuple((k, json.dumps(v)) for k, v in d.settings.to_dict().items() if k != "sweep"),
-        ),
-        Paragraph(
-            f"**Sweep**: {sr.total} collisions, {sr.skipped} found in the store, "
-            f"{sr.computed} computed, {len(sr.failed)} failed, {sr.wall_time_s:.1f} s "
-            f"({sr.executor}). Store: `{store_path}`."
-        ),
-        Table(
-            ("stage", "seconds"),
-            tuple((label, f"{sec:.1f}") for label, sec in run.timings)
-            + (("total (until this report was written)", f"{run.run_time_s:.1f}"),),
-        ),
-        Paragraph(
-            f"restitution {__version__} (code {code_version()}), Python "
-            f"{platform.python_version()}, numpy {np.__version__}, {os.cpu_count()} CPU(s); "
-            f"started {run.started}. Machine-readable record: [paper.json](paper.json)."
-        ),
-    ]
-    return blocks

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from restitution.cache import get_modes
+from restitution.figures._style import add_notes
 
 DEFAULT_MODES = ((2, 0), (0, 0), (1, 0))
 """The quadrupole, the lowest breathing mode and the lowest n = 1 mode."""
@@ -58,7 +59,7 @@ def compute(nu: float = 0.33, which=DEFAULT_MODES, amplitude: float = 0.12) -> S
     labels, lines, edge = [], [], []
     for n, l in which:
         k = int(np.nonzero((modes.n == n) & (modes.l == l))[0][0])
-        labels.append(f"n = {n}, l = {l}, omega = {modes.omega[k]:.4f}")
+        labels.append(f"n = {n}, l = {l}, omega = {modes.omega[k]:.4f} c/R")
         lines.append(_deformed(modes, k, amplitude))
         edge.append(float(amplitude * max(abs(modes.C[k]), abs(modes.S[k]))))
     return ShapeData(
@@ -66,8 +67,8 @@ def compute(nu: float = 0.33, which=DEFAULT_MODES, amplitude: float = 0.12) -> S
     )
 
 
-def plot(data: ShapeData, path: str | Path) -> None:
-    """Write the figure to ``path`` (format from the suffix)."""
+def plot(data: ShapeData, path: str | Path, note: str = "") -> None:
+    """Write the figure to ``path`` (format from the suffix). ``note`` is printed under the axes."""
     import matplotlib.pyplot as plt
 
     k = len(data.labels)
@@ -81,6 +82,6 @@ def plot(data: ShapeData, path: str | Path) -> None:
         ax.set_axis_off()
         ax.set_title(label, fontsize=9)
     fig.suptitle(rf"Symmetric eigenmodes, $\nu$ = {data.nu} (grey: undeformed edge)")
-    fig.tight_layout()
+    add_notes(fig, [note])
     fig.savefig(path)
     plt.close(fig)

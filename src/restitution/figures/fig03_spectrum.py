@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from restitution.cache import get_modes
+from restitution.figures._style import add_notes
 
 
 @dataclass(frozen=True, eq=False)
@@ -31,8 +32,8 @@ def compute(nu: float = 0.33, omega_max: float = 20.0) -> SpectrumData:
     )
 
 
-def plot(data: SpectrumData, path: str | Path) -> None:
-    """Write the figure to ``path`` (format from the suffix)."""
+def plot(data: SpectrumData, path: str | Path, note: str = "") -> None:
+    """Write the figure to ``path`` (format from the suffix). ``note`` is printed under the axes."""
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
@@ -44,8 +45,9 @@ def plot(data: SpectrumData, path: str | Path) -> None:
     ax.set_title(
         rf"Symmetric modes of the free disk, $\nu$ = {data.nu} (c = $\sqrt{{E/\rho}}$ = 1)"
     )
-    ax.legend(loc="upper left")
+    # Below the lowest branch (large n, small omega) no mode lives: the legend covers nothing.
+    ax.legend(loc="lower right", fontsize=8)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
+    add_notes(fig, [note])
     fig.savefig(path)
     plt.close(fig)

@@ -9,6 +9,7 @@ import numpy as np
 
 from restitution.cache import get_modes
 from restitution.collision import collide
+from restitution.figures._style import add_notes
 
 
 @dataclass(frozen=True, eq=False)
@@ -32,8 +33,8 @@ def compute(nu=0.33, v=0.1, alpha=500.0, count=1600, n_max=12, l_max=12, result=
     return ModeEnergyData(energy=grid, v=result.v, alpha=result.alpha, n_modes=result.n_modes)
 
 
-def plot(data: ModeEnergyData, path: str | Path) -> None:
-    """Write the figure to ``path``."""
+def plot(data: ModeEnergyData, path: str | Path, note: str = "") -> None:
+    """Write the figure to ``path``. ``note`` is printed under the axes."""
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.0, 4.8))
@@ -42,9 +43,11 @@ def plot(data: ModeEnergyData, path: str | Path) -> None:
     ax.set_xlabel("n (directional nodes)")
     ax.set_ylabel("l")
     ax.set_title(
-        f"Mode energy at closest approach\nv = {data.v} c, alpha = {data.alpha}, "
-        f"{data.n_modes} modes; quadrupole (n=2, l=0) dominates"
+        f"Mode energy at closest approach\nv = {data.v:g} c, alpha = {data.alpha:g}, "
+        f"{data.n_modes} modes",
+        fontsize=10,
     )
-    fig.tight_layout()
+    white = "white: (n, l) not among the modes of the collision (above its frequency cut)"
+    add_notes(fig, [white, note])
     fig.savefig(path)
     plt.close(fig)

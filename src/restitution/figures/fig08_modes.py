@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from restitution.extrapolation import extrapolate_alpha, extrapolate_modes
+from restitution.figures._style import add_notes
 from restitution.law import Curve, compute_curves
 from restitution.sweep import DEFAULTS, SweepSettings
 
@@ -98,14 +99,14 @@ def compute(
     )
 
 
-def plot(data: Fig08Data, path: str | Path) -> Path:
-    """Draw Fig. 8 to ``path``."""
+def plot(data: Fig08Data, path: str | Path, note: str = "") -> Path:
+    """Draw Fig. 8 to ``path``. ``note`` is printed under the axes."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(5.5, 4.5))
+    fig, ax = plt.subplots(figsize=(7.2, 5.6))
     x = 1.0 / np.sqrt(data.n_modes)
     line_x = np.linspace(0.0, 1.05 * x.max(), 50)
     cmap = plt.get_cmap("viridis")
@@ -122,8 +123,34 @@ def plot(data: Fig08Data, path: str | Path) -> Path:
         f"$\\nu = {data.nu:g}$: filled largest $\\alpha$, open $\\alpha \\to\\infty$",
         fontsize=9,
     )
-    ax.legend(title=r"$v_i/c$", fontsize=6, title_fontsize=7, ncol=2, loc="best")
-    fig.tight_layout()
+    # Intercepts (the extrapolated limits) at x = 0; a negative one is unphysical (the
+    # energy loss cannot be negative) and is marked with a red cross.
+    negative = data.limit_inf < 0
+    ax.plot(np.zeros(np.count_nonzero(~negative)), data.limit_inf[~negative], "kD", ms=4,
+            clip_on=False, zorder=5)  # fmt: skip
+    if np.any(negative):
+        ax.plot(np.zeros(np.count_nonzero(negative)), data.limit_inf[negative], "rx", ms=8, mew=2,
+                clip_on=False, zorder=5)  # fmt: skip
+        ax.axhline(0.0, color="r", lw=0.5, ls=":")
+    from matplotlib.lines import Line2D
+
+    kinds = [
+        Line2D([], [], color="k", marker="o", ms=4, lw=0.8, ls="-",
+               label=r"filled, solid: largest $\alpha$, line in $1/\sqrt{N}$"),
+        Line2D([], [], color="k", marker="o", mfc="none", ms=4, lw=0.6, ls="--",
+               label=r"open, dashed: $\alpha \to\infty$ at each N, line"),
+        Line2D([], [], color="k", marker="D", ms=4, ls="none", label="both limits (at 0)"),
+    ]  # fmt: skip
+    if np.any(negative):
+        kinds.append(Line2D([], [], color="r", marker="x", mew=2, ls="none",
+                            label="1 - eps^2 < 0: unphysical"))  # fmt: skip
+    # Both legends outside the axes, so that neither covers data.
+    first = ax.legend(handles=kinds, fontsize=8, loc="upper left", bbox_to_anchor=(0.0, -0.13),
+                      ncol=2, frameon=False)  # fmt: skip
+    ax.add_artist(first)
+    ax.legend(title=r"$v_i/c$", fontsize=8, title_fontsize=8, loc="upper left",
+              bbox_to_anchor=(1.01, 1.0), ncol=1 if len(data.v) <= 9 else 2)  # fmt: skip
+    add_notes(fig, [note])
     path = Path(path)
     fig.savefig(path, dpi=150)
     plt.close(fig)

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.cache import get_modes
+from restitution.figures._style import add_notes
 from restitution.hertz import contact_law
 from restitution.relaxation import relaxation_curve
 
@@ -148,8 +149,8 @@ def compute(
     )
 
 
-def plot(data: Fig10Data, path) -> None:
-    """Draw Fig. 10 into ``path`` (format from the suffix)."""
+def plot(data: Fig10Data, path, note: str = "") -> None:
+    """Draw Fig. 10 into ``path`` (format from the suffix). ``note`` is printed under the axes."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -187,6 +188,6 @@ def plot(data: Fig10Data, path) -> None:
     ax.set_ylabel(r"force $P$  [$E R$]")
     ax.set_title(rf"Force vs compression, $\nu$ = {data.nu:g}")
     ax.legend(fontsize=8, loc="upper left")
-    fig.tight_layout()
+    add_notes(fig, [note])
     fig.savefig(path, dpi=150)
     plt.close(fig)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.figures._style import add_notes
 from restitution.hertz import contact_law, quasistatic_collision
 
 __all__ = ["Fig11Data", "compute", "dynamic_contact_times", "plot"]
@@ -114,8 +115,11 @@ def compute(
     )
 
 
-def plot(data: Fig11Data, path) -> None:
-    """Draw Fig. 11 into ``path``: contact time (top) and maximal compression (bottom)."""
+def plot(data: Fig11Data, path, note: str = "") -> None:
+    """Draw Fig. 11 into ``path``: contact time (top) and maximal compression (bottom).
+
+    ``note`` is printed under the axes.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
@@ -137,6 +141,6 @@ def plot(data: Fig11Data, path) -> None:
     ax2.legend(fontsize=8)
     ax1.set_title(rf"Quasistatic collision, $\nu$ = {data.nu:g}")
     ax1.set_xlim(data.v[0], data.v[-1] * (1.0 + 1e-9) if math.isfinite(data.v[-1]) else None)
-    fig.tight_layout()
+    add_notes(fig, [note])
     fig.savefig(path, dpi=150)
     plt.close(fig)

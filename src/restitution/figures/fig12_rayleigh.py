@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.cache import get_modes
+from restitution.figures._style import add_notes
 from restitution.hertz import contact_law
 from restitution.rayleigh import rayleigh_energy
 
@@ -92,8 +93,8 @@ def compute(
     )
 
 
-def plot(data: Fig12Data, path) -> None:
-    """Draw Fig. 12 into ``path``."""
+def plot(data: Fig12Data, path, note: str = "") -> None:
+    """Draw Fig. 12 into ``path``. ``note`` is printed under the axes."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -106,8 +107,8 @@ def plot(data: Fig12Data, path) -> None:
         ax.loglog(data.dynamic_v, data.dynamic_loss, "D", mfc="none", label="dynamic, extrapolated")
     ax.set_xlabel(r"$v_i$  [$c$]")
     ax.set_ylabel(r"energy in modes / $(m/2) v_i^2$")
-    ax.set_title(rf"Rayleigh's estimate, $\nu$ = {data.nu:g} (law: {data.law})")
+    ax.set_title(rf"Rayleigh's estimate, $\nu$ = {data.nu:g} (contact law: {data.law})")
     ax.legend(fontsize=8)
-    fig.tight_layout()
+    add_notes(fig, [note])
     fig.savefig(path, dpi=150)
     plt.close(fig)
