@@ -265,7 +265,7 @@ def c_header(s: SILaw, f: ClosedForm, name: str = "restitution") -> str:
         "#include <math.h>",
         f"#define {n.upper()}_SPEED_SCALE_M_S {f.speed_scale_m_s!r}",
         f"#define {n.upper()}_W_MAX_M_S {f.valid_m_s[1]!r}",
-        f"/* coefficient of restitution at impact speed w_m_s (m/s; see 'partner' above) */",
+        "/* coefficient of restitution at impact speed w_m_s (m/s; see 'partner' above) */",
         f"static inline double {n}_epsilon(double w_m_s)",
         "{",
         f"    const double xp = pow(w_m_s / {n.upper()}_SPEED_SCALE_M_S, {f.p!r});",

@@ -92,7 +92,7 @@ class Grain:
                 f"the geometry must be 'cylinder' (plane strain) or 'thin-disk' (plane stress), "
                 f"got {self.geometry!r}"
             )
-        self.material  # validates E, nu, rho with one-line messages
+        _ = self.material  # validates E, nu, rho with one-line messages
 
     @property
     def plane(self) -> str:
