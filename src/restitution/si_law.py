@@ -23,7 +23,7 @@ import numpy as np
 
 from restitution.errors import InputError
 from restitution.law import EpsilonLaw
-from restitution.law_nu import NuInterpolatedLaw, law_for
+from restitution.law_nu import NU_MATCH, NuInterpolatedLaw, law_for
 from restitution.units import PARTNERS, Grain, partner_factor
 
 __all__ = ["STATUSES", "SILaw", "SIPoint", "si_law"]
@@ -99,8 +99,8 @@ def _status(law, v: float) -> tuple[str, str]:
         )
     if v < pts[0]:
         return "quasistatic-anchor", (
-            f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c; "
-            + STATUSES["quasistatic-anchor"]
+            f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c: the interpolant "
+            "to epsilon(0) = 1, not a computed value"
         )
     j = int(np.searchsorted(pts, v))
     if j >= pts.size:
@@ -132,6 +132,11 @@ class SILaw:
 
     def __post_init__(self) -> None:
         partner_factor(self.against)  # validates
+        if abs(float(self.law.nu) - self.grain.nu_2d) > NU_MATCH:
+            raise InputError(
+                f"the law is for nu_2d = {float(self.law.nu):g}, the grain has nu_2d = "
+                f"{self.grain.nu_2d:.6g}"
+            )
 
     @property
     def speed_scale_m_s(self) -> float:
