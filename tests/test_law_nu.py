@@ -76,8 +76,8 @@ def test_interpolated_law_exposes_its_points():
     "nu, grid, match",
     [
         (0.6, [0.1, 0.9], "fewer than three"),
-        (0.95, GRID, "outside the grid"),
-        (0.05, GRID, "outside the grid"),
+        (0.95, GRID, "outside the given grid"),
+        (0.05, GRID, "outside the given grid"),
     ],
 )
 def test_refusals_name_the_grid_and_the_command(nu, grid, match):
@@ -94,7 +94,9 @@ def test_shipped_laws_today():
     assert 0.33 in nus and 0.9 in nus
     assert law_for(0.33).nu == 0.33
     if len(nus) < 3:
-        with pytest.raises(InputError, match=r"shipped: 0\.33, 0\.9.*restitution curve --nu 0\.5"):
+        with pytest.raises(
+            InputError, match=r"shipped laws.*grid: 0\.33, 0\.9.*restitution curve --nu 0\.5"
+        ):
             law_for(0.5)
 
 

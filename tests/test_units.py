@@ -118,7 +118,7 @@ def test_steel_is_refused_with_the_command_that_computes_it(capsys):
     assert info.value.code == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "Traceback" not in err
-    assert "restitution curve --nu 0.428571" in err and "0.33, 0.9" in err
+    assert "restitution curve --nu 0.428571" in err and "grid: 0.33, 0.9" in err
 
 
 def test_python_api_matches_the_command(capsys):

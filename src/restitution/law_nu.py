@@ -185,7 +185,7 @@ class NuInterpolatedLaw:
 def _refusal(nu: float, shipped: list[float], why: str) -> InputError:
     name = law_filename(nu)
     return InputError(
-        f"no law for nu_2d = {nu:.6g}: {why} (shipped: "
+        f"no law for nu_2d = {nu:.6g}: {why} (grid: "
         f"{', '.join(f'{x:g}' for x in shipped) or 'none'}); compute it with "
         f"`restitution curve --nu {nu:.6g} --out DIR` and pass the file DIR/{name} "
         "(--law-file, or path= from Python)"
@@ -237,18 +237,19 @@ def law_for(
         nearest = min(shipped, key=lambda x: abs(x - nu), default=None)
         if nearest is not None and abs(nearest - nu) <= NU_MATCH:
             return law(nearest)
-        if len(shipped) < 3:
-            raise _refusal(nu, shipped, "fewer than three shipped laws, so none is interpolated")
-        if not shipped[0] < nu < shipped[-1]:
-            raise _refusal(nu, shipped, "outside the shipped grid")
-        return NuInterpolatedLaw(nu, tuple(law(x) for x in shipped))
+        _check_inside(nu, shipped, "shipped")
+        laws = [law(x) for x in shipped]
     grid = sorted(laws, key=lambda a: a.nu)
     nus = [a.nu for a in grid]
     nearest = min(range(len(grid)), key=lambda i: abs(nus[i] - nu))
     if abs(nus[nearest] - nu) <= NU_MATCH:
         return grid[nearest]
-    if len(grid) < 3:
-        raise _refusal(nu, nus, "fewer than three laws, so none is interpolated")
-    if not nus[0] < nu < nus[-1]:
-        raise _refusal(nu, nus, "outside the grid")
+    _check_inside(nu, nus, "given")
     return NuInterpolatedLaw(nu, tuple(grid))
+
+
+def _check_inside(nu: float, nus: list[float], which: str) -> None:
+    if len(nus) < 3:
+        raise _refusal(nu, nus, f"fewer than three {which} laws, so none is interpolated")
+    if not nus[0] < nu < nus[-1]:
+        raise _refusal(nu, nus, f"outside the {which} grid")
