@@ -134,3 +134,23 @@ def test_si_law_refuses_a_law_for_another_nu():
     grain = Grain(E=1.0, nu=0.3, rho=1.0, geometry="thin-disk")
     with pytest.raises(InputError, match="nu_2d"):
         SILaw(grain, "wall", restitution.law(0.33))
+
+
+def test_docstring_examples():
+    import doctest
+
+    from restitution import si_law as si_law_module
+    from restitution import units
+
+    for module in (units, si_law_module):
+        result = doctest.testmod(module)
+        assert result.attempted > 0 and result.failed == 0
+
+
+def test_text_output_names_partner_and_status(capsys):
+    main(["law", *RUBBER, "--against", "wall", "--speed", "0.1", "5"])
+    captured = capsys.readouterr()
+    assert "against wall: a rigid flat wall" in captured.out
+    assert "c = 76.55" in captured.out
+    assert "quasistatic-anchor" in captured.out
+    assert "note: quasistatic-anchor:" in captured.err

@@ -10,7 +10,7 @@ Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2
     >>> from restitution.si_law import si_law
     >>> s = si_law(E=63e9, nu=0.2481, rho=2500, geometry="cylinder", against="wall")
     >>> round(s.grain.c_m_s)
-    5183
+    5182
 """
 
 from __future__ import annotations
