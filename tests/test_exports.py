@@ -17,7 +17,7 @@ from numpy.testing import assert_allclose
 from scipy.special import gamma
 
 from restitution import exports
-from restitution.errors import InputError
+from restitution.errors import InputError, RestitutionError
 from restitution.law import EpsilonLaw
 from restitution.si_law import STATUSES, SILaw, si_law
 from restitution.units import Grain
@@ -253,3 +253,11 @@ def test_lammps_rebound_ratio_equals_the_exported_constant(tmp_path):
     ratio = after / w
     print(f"LAMMPS rebound ratio {ratio:.8f}, exported constant {c.epsilon:.8f}")
     assert abs(ratio - c.epsilon) < 1e-4 * c.epsilon  # time-step error of velocity Verlet
+
+
+def test_closed_form_refuses_a_pole_inside_the_range(monkeypatch):
+    # b < 0 puts a pole at x = (-1/b)^(1/p); a fit landing there (forced here) is refused.
+    b = -(0.2**-0.9)  # pole at v = 0.2, inside the points (up to 0.3)
+    monkeypatch.setattr(exports, "curve_fit", lambda *a, **k: (np.array([0.05, b, 0.9]), None))
+    with pytest.raises(RestitutionError, match="pole at v = 0.2 c"):
+        exports.fit_closed_form(synthetic(lambda v: closed(v, *TRUE)))

@@ -218,12 +218,18 @@ def fit_closed_form(s: SILaw) -> ClosedForm:
         )
     except (RuntimeError, ValueError) as exc:
         raise RestitutionError(f"the closed form did not fit the law's points: {exc}") from exc
+    a, b, p = (float(x) for x in popt)
+    if b < 0 and p > 0 and (-1.0 / b) ** (1.0 / p) <= v[-1]:
+        raise RestitutionError(
+            f"the closed form fitted to the law has a pole at v = {(-1.0 / b) ** (1.0 / p):.3g} c "
+            "inside the computed range; use the table instead"
+        )
     resid = _form(v, *popt) - eps
     chi2_dof = float(np.sum((resid / sigma) ** 2) / (v.size - 3))
     return ClosedForm(
-        a=float(popt[0]),
-        b=float(popt[1]),
-        p=float(popt[2]),
+        a=a,
+        b=b,
+        p=p,
         covariance=pcov * max(1.0, chi2_dof),
         speed_scale_m_s=s.speed_scale_m_s,
         max_deviation=float(np.max(np.abs(resid))),
