@@ -261,3 +261,16 @@ def test_closed_form_refuses_a_pole_inside_the_range(monkeypatch):
     monkeypatch.setattr(exports, "curve_fit", lambda *a, **k: (np.array([0.05, b, 0.9]), None))
     with pytest.raises(RestitutionError, match="pole at v = 0.2 c"):
         exports.fit_closed_form(synthetic(lambda v: closed(v, *TRUE)))
+
+
+def test_distribution_constant_weights_by_dissipation():
+    # Two impact speeds at equal rates: weights w^2, so eps_eff^2 = (w1^2 e1^2 + w2^2 e2^2) /
+    # (w1^2 + w2^2), written out here by hand.
+    s = synthetic(lambda v: closed(v, *TRUE))
+    w = np.array([200.0, 2000.0])
+    e = s.epsilon(w)
+    c = exports.distribution_constant(s, w, [1.0, 1.0])
+    expected = math.sqrt((w[0] ** 2 * e[0] ** 2 + w[1] ** 2 * e[1] ** 2) / (w[0] ** 2 + w[1] ** 2))
+    assert_allclose(c.epsilon, expected, rtol=1e-13)
+    with pytest.raises(InputError, match="rates"):
+        exports.distribution_constant(s, w, [1.0, -1.0])

@@ -41,6 +41,7 @@ __all__ = [
     "Constant",
     "c_header",
     "constant_at",
+    "distribution_constant",
     "fit_closed_form",
     "fortran_include",
     "liggghts_snippet",
@@ -392,7 +393,29 @@ def maxwell_constant(s: SILaw, temperature_m2_s2: float, *, nodes: int = 400) ->
         )
     x, wq = np.polynomial.legendre.leggauss(nodes)
     w = 0.5 * w_max * (x + 1.0)
-    weight = 0.5 * w_max * wq * w**3 * np.exp(-(w**2) / (2.0 * sigma2))
+    rate = 0.5 * w_max * wq * w * np.exp(-(w**2) / (2.0 * sigma2))
+    return distribution_constant(
+        s,
+        w,
+        rate,
+        how=f"dissipation-weighted average over a Maxwell gas at T = {T:g} m^2/s^2 "
+        f"({s.against}: normal speed variance {sigma2:g} m^2/s^2)",
+    )
+
+
+def distribution_constant(s: SILaw, speeds_m_s, rates, *, how: str = "") -> Constant:
+    """Dissipation-weighted constant for impact speeds ``w_i`` (m/s) occurring at ``rates``.
+
+    ``1 - eps_eff^2 = sum r_i w_i^2 (1 - epsilon(w_i)^2) / sum r_i w_i^2``: the constant that
+    dissipates the same energy per unit time as the law over the named distribution (``rates``
+    are impacts per unit time at each speed, or quadrature weights times that density). The
+    error is half the spread of ``eps_eff`` with ``epsilon +- epsilon_err`` (fully correlated).
+    """
+    w = np.asarray(speeds_m_s, dtype=float)
+    r = np.asarray(rates, dtype=float)
+    if w.shape != r.shape or w.ndim != 1 or np.any(r < 0) or not np.sum(r * w**2) > 0:
+        raise InputError("speeds and rates must be 1D of equal length, rates >= 0, not all 0")
+    weight = r * w**2
     eps = s.epsilon(w)
     err = s.epsilon_err(w)
 
@@ -401,16 +424,15 @@ def maxwell_constant(s: SILaw, temperature_m2_s2: float, *, nodes: int = 400) ->
 
     value = eff(eps)
     spread = 0.5 * abs(eff(np.minimum(eps + err, 1.0)) - eff(eps - err))
-    statuses = [p.status for p in s.points(w)]
-    share = {st: float(np.sum(weight[[x == st for x in statuses]])) / float(np.sum(weight))
-             for st in set(statuses)}  # fmt: skip
+    statuses = np.array([p.status for p in s.points(w)])
+    share = {st: float(np.sum(weight[statuses == st]) / np.sum(weight)) for st in set(statuses)}
     worst = max((st for st, f in share.items() if f > 0.01), key=_ORDER.index, default="computed")
+    by_status = ", ".join(f"{k} {v:.0%}" for k, v in sorted(share.items()))
     return Constant(
         value,
         spread,
-        f"dissipation-weighted average over a Maxwell gas at T = {T:g} m^2/s^2 "
-        f"({s.against}: normal speed variance {sigma2:g} m^2/s^2); weight by status: "
-        + ", ".join(f"{k} {v:.0%}" for k, v in sorted(share.items())),
+        f"{how or 'dissipation-weighted average over the given speeds'}; weight by status: "
+        + by_status,
         worst,
     )
 
