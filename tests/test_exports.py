@@ -274,3 +274,20 @@ def test_distribution_constant_weights_by_dissipation():
     assert_allclose(c.epsilon, expected, rtol=1e-13)
     with pytest.raises(InputError, match="rates"):
         exports.distribution_constant(s, w, [1.0, -1.0])
+
+
+def test_exports_take_a_law_interpolated_in_nu(tmp_path):
+    from restitution.law_nu import NuInterpolatedLaw, law_for
+
+    grid = [
+        EpsilonLaw.from_points(nu, V, closed(V, 0.5 + nu, 1.5, 0.85), np.full(V.size, 1e-4))
+        for nu in (0.1, 0.2, 0.3, 0.4)
+    ]
+    s = SILaw(GRAIN, "wall", law_for(GRAIN.nu_2d, laws=grid))
+    assert isinstance(s.law, NuInterpolatedLaw)
+    assert "leave-one-out" in s.law_source
+    t = np.loadtxt(exports.write_table(s, tmp_path / "t.txt"))
+    assert_allclose(t[1:, 1], s.epsilon(np.minimum(t[1:, 0], s.speed_range_m_s[1])), atol=1e-7)
+    f = exports.fit_closed_form(s)
+    assert f.max_deviation < 1e-3  # the form is exact at every grid nu; PCHIP in nu is close
+    assert exports.constant_at(s, 500.0).status == "interpolated"
