@@ -19,7 +19,6 @@ Every result of this module says which geometry and partner it belongs to.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Literal
 
@@ -171,11 +170,3 @@ class Grain:
             f"E = {self.E:.4g} Pa, nu = {self.nu:g}, rho = {self.rho:.4g} kg/m^3, "
             f"{self.geometry} ({plane}): nu_2d = {self.nu_2d:.6g}, c = {self.c_m_s:.6g} m/s"
         )
-
-
-def check_positive(name: str, value: float) -> float:
-    """``value`` if finite and positive, else :class:`InputError` naming ``name``."""
-    value = float(value)
-    if not (math.isfinite(value) and value > 0):
-        raise InputError(f"{name} must be a positive number, got {value}")
-    return value
