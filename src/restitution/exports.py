@@ -442,8 +442,8 @@ def _comment(s: SILaw, c: Constant, mark: str) -> str:
         *_header(s),
         f"constant: epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g}, {c.how}",
         f"status: {c.status}",
-        "only epsilon comes from restitution; stiffness and contact time are the code's own "
-        "(Hertz) model with the material's E and nu",
+        "only epsilon comes from restitution; stiffness and contact time come from the code's "
+        "own contact model",
     ]
     return "\n".join(f"{mark} {line}" for line in lines)
 
