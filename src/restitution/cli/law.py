@@ -86,8 +86,13 @@ def law(
 ):
     """Coefficient of restitution of a real material at impact speeds in m/s.
 
-    Example: restitution law --E 210e9 --nu 0.3 --rho 7850 --geometry cylinder --against wall
-    --speed 0.5 1 5
+    Every speed comes with v/c, epsilon, its error and a status saying where the number comes
+    from. A 2D Poisson number without a law is refused with the command that computes it.
+    Example (a glass cylinder against a wall):
+
+    \b
+    restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
+        --against wall --speed 0.5 1 5
     """
     from restitution import exports
     from restitution.errors import InputError
