@@ -78,13 +78,18 @@ def _grid(s: SILaw, points: int) -> np.ndarray:
     if points < 2:
         raise InputError("a table needs at least 2 points")
     computed = np.asarray(s.law.v, dtype=float) * s.speed_scale_m_s
-    w = np.union1d(np.linspace(0.0, s.speed_range_m_s[1], points), computed)
-    return w[w <= s.speed_range_m_s[1]]
+    lo, hi = s.speed_range_m_s
+    try:
+        s.epsilon(lo)
+    except InputError:  # a law that serves only its computed speeds
+        lo = float(computed[0])
+    w = np.union1d(np.linspace(lo, hi, points), computed)
+    return w[(w >= lo) & (w <= hi)]
 
 
 def speed_table(s: SILaw, points: int = 61) -> np.ndarray:
     """``[speed_m_s, epsilon, epsilon_err]`` on a uniform grid of ``[0, w_max]`` joined with
-    the computed speeds.
+    the computed speeds (from the lowest computed speed if the law refuses lower ones).
 
     Parameters
     ----------
