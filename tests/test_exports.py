@@ -291,3 +291,24 @@ def test_exports_take_a_law_interpolated_in_nu(tmp_path):
     f = exports.fit_closed_form(s)
     assert f.max_deviation < 1e-3  # the form is exact at every grid nu; PCHIP in nu is close
     assert exports.constant_at(s, 500.0).status == "interpolated"
+
+
+class _ComputedOnly(EpsilonLaw):
+    """A law that, like a future law.py may, refuses speeds below its computed range."""
+
+    def epsilon(self, v, *, outside="raise"):
+        if np.any(np.asarray(v) < self.v[0]):
+            raise InputError("below the computed range")
+        return super().epsilon(v, outside=outside)
+
+
+def test_a_law_refusing_low_speeds_gives_outside_points_and_a_shorter_table(tmp_path):
+    base = EpsilonLaw.from_points(0.25, V, closed(V, *TRUE), np.full(V.size, 1e-4))
+    strict = _ComputedOnly(base.nu, base.v, base.epsilon_points, base.epsilon_err_points,
+                           base.asymptotic_ok, base.metadata)  # fmt: skip
+    s = SILaw(GRAIN, "wall", strict)
+    low, high = s.points([1.0, 100.0])
+    assert low.status == "outside" and low.epsilon is None and "below the computed" in low.note
+    assert high.epsilon is not None
+    t = np.loadtxt(exports.write_table(s, tmp_path / "t.txt"))
+    assert_allclose(t[0, 0], V[0] * s.speed_scale_m_s, rtol=1e-7)
