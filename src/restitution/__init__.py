@@ -13,20 +13,25 @@ from restitution.errors import InputError, RestitutionError  # noqa: E402
 from restitution.law import EpsilonLaw, law  # noqa: E402
 from restitution.material import Material, MaterialError  # noqa: E402
 from restitution.modes import ModeSet, compute_modes, weyl_count  # noqa: E402
+from restitution.si_law import SILaw, si_law  # noqa: E402
+from restitution.units import Grain  # noqa: E402
 
 __all__ = [
     "__version__",
     "CollisionSettings",
     "EpsilonLaw",
+    "Grain",
     "InputError",
     "Material",
     "MaterialError",
     "ModeSet",
     "RestitutionError",
+    "SILaw",
     "collide",
     "collide_batch",
     "compute_modes",
     "get_modes",
     "law",
+    "si_law",
     "weyl_count",
 ]

@@ -18,7 +18,7 @@ import numpy as np
 import platformdirs
 
 from restitution import __version__
-from restitution.material import Material
+from restitution.material import Material, require_reduced
 from restitution.modes import _ALGORITHM_VERSION, ModeSet, compute_modes
 
 __all__ = ["cache_dir", "get_modes"]
@@ -89,7 +89,7 @@ def get_modes(
     Same parameters as :func:`restitution.modes.compute_modes`; ``use_cache=False`` bypasses
     the cache entirely.
     """
-    nu = material.nu if isinstance(material, Material) else Material(nu=material).nu
+    nu = require_reduced(material, "the modal path")
     if not use_cache:
         return compute_modes(nu, count=count, omega_max=omega_max)
     key = _key(nu, count, omega_max)

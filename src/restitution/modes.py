@@ -43,7 +43,7 @@ from restitution.frequency_equation import (
     normalized_determinant_grid,
     wavenumbers,
 )
-from restitution.material import Material
+from restitution.material import Material, require_reduced
 
 __all__ = ["ModeSet", "compute_modes", "weyl_count", "ModeError"]
 
@@ -431,9 +431,7 @@ def _build(n: np.ndarray, omega: np.ndarray, nu: float) -> ModeSet:
 
 
 def _as_nu(material: Material | float) -> float:
-    if isinstance(material, Material):
-        return material.nu
-    return Material(nu=material).nu
+    return require_reduced(material, "the modal path")
 
 
 def compute_modes(

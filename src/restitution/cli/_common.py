@@ -30,7 +30,7 @@ def material_from(nu: float, plane: str | None) -> Material:
     """Material for a command's ``--nu`` and ``--plane`` options."""
     if plane is None:
         return Material(nu=nu)
-    return Material.from_3d(E=1.0, nu=nu, plane=plane)
+    return Material.from_3d(E=1.0, nu=nu, plane=plane).reduced()  # the modal path is reduced
 
 
 def positive_finite(name: str, value: float) -> float:

@@ -1,0 +1,170 @@
+"""Command ``restitution law``: epsilon of a real material at speeds in m/s, and exports.
+
+Thin layer over :mod:`restitution.si_law` and :mod:`restitution.exports`.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from restitution.cli.epsilon import _ListCommand
+from restitution.store import json_default
+
+
+class _LawCommand(_ListCommand):
+    list_options = ("--speed",)
+
+
+@click.command(cls=_LawCommand)
+@click.option("--E", "E", type=float, required=True, help="Young modulus of the 3D material, Pa.")
+@click.option("--nu", type=float, required=True, help="Poisson number of the 3D material.")
+@click.option("--rho", type=float, required=True, help="Density of the 3D material, kg/m^3.")
+@click.option(
+    "--geometry",
+    type=click.Choice(["cylinder", "thin-disk"]),
+    required=True,
+    help="Long cylinder hit along a diameter (plane strain) or thin disk (plane stress).",
+)
+@click.option(
+    "--against",
+    type=click.Choice(["wall", "grain"]),
+    required=True,
+    help="A rigid flat wall hit at speed w (v = w/c), or an identical grain at relative normal "
+    "speed w (v = w/(2c)).",
+)
+@click.option(
+    "--speed",
+    "speeds",
+    type=float,
+    multiple=True,
+    help="Impact speed(s) w in m/s (several after one flag). Default: 0.1 0.5 1 5 10.",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+@click.option(
+    "--law-file",
+    type=click.Path(dir_okay=False, exists=True, path_type=Path),
+    default=None,
+    help="A law JSON from `restitution curve` for this material's 2D Poisson number.",
+)
+@click.option(
+    "--export",
+    "export_dir",
+    type=click.Path(file_okay=False, path_type=Path),
+    default=None,
+    help="Write the table (.txt, .csv), the closed form (.json, C header .h, Fortran .f90) "
+    "and, with --reference-speed or --maxwell-temperature, snippets for LAMMPS, LIGGGHTS, "
+    "MercuryDPM and YADE into this directory.",
+)
+@click.option(
+    "--reference-speed",
+    type=float,
+    default=None,
+    help="Constant for one-number codes: epsilon at this speed, m/s.",
+)
+@click.option(
+    "--maxwell-temperature",
+    type=float,
+    default=None,
+    help="Constant for one-number codes: epsilon averaged (dissipation-weighted) over a Maxwell "
+    "gas at this granular temperature <v_x^2>, m^2/s^2.",
+)
+def law(
+    E,
+    nu,
+    rho,
+    geometry,
+    against,
+    speeds,
+    as_json,
+    law_file,
+    export_dir,
+    reference_speed,
+    maxwell_temperature,
+):
+    """Coefficient of restitution of a real material at impact speeds in m/s.
+
+    Every speed comes with v/c, epsilon, its error and a status saying where the number comes
+    from. A 2D Poisson number without a law is refused with the command that computes it.
+    Example (a glass cylinder against a wall):
+
+    \b
+    restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
+        --against wall --speed 0.5 1 5
+    """
+    from restitution import exports
+    from restitution.errors import InputError
+    from restitution.si_law import si_law
+
+    if reference_speed is not None and maxwell_temperature is not None:
+        raise InputError("give --reference-speed or --maxwell-temperature, not both")
+    s = si_law(E, nu, rho, geometry, against, path=law_file)
+    speeds = list(speeds) or [0.1, 0.5, 1.0, 5.0, 10.0]
+    result = s.to_dict(speeds)
+    constant = None
+    if reference_speed is not None:
+        constant = exports.constant_at(s, reference_speed)
+    elif maxwell_temperature is not None:
+        constant = exports.maxwell_constant(s, maxwell_temperature)
+    if constant is not None:
+        result["constant"] = constant.to_dict()
+    if export_dir is not None:
+        result["exports"] = [str(p) for p in _export(s, constant, export_dir)]
+    if as_json:
+        click.echo(json.dumps(result, indent=1, default=json_default))
+        return
+    g = s.grain
+    click.echo(g.describe())
+    click.echo(
+        f"against {against}: {result['against_meaning']}; law nu_2d = {float(s.law.nu):g} "
+        f"({result['law']['source']})"
+    )
+    click.echo("  speed [m/s]        v/c     epsilon      error   status")
+    notes = {}
+    for p in s.points(speeds):
+        eps = "-" if p.epsilon is None else f"{p.epsilon:.6f}"
+        err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.6f}"
+        click.echo(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>10}  {err:>9}   {p.status}")
+        if p.status not in ("computed", "interpolated"):
+            notes[p.status] = result["statuses"][p.status]
+    for status, text in notes.items():
+        click.echo(f"note: {status}: {text}", err=True)
+    if constant is not None:
+        click.echo(
+            f"constant: epsilon = {constant.epsilon:.6f} +- {constant.epsilon_err:.2g} "
+            f"({constant.how}; {constant.status})"
+        )
+    if export_dir is not None:
+        click.echo("wrote " + ", ".join(result["exports"]))
+
+
+def _export(s, constant, out: Path) -> list[Path]:
+    from restitution import exports
+
+    out.mkdir(parents=True, exist_ok=True)
+    fit = exports.fit_closed_form(s)
+    stem = "epsilon"
+    written = [
+        exports.write_table(s, out / f"{stem}_table.txt"),
+        exports.write_csv(s, out / f"{stem}.csv"),
+    ]
+    fit_path = out / f"{stem}_closed_form.json"
+    fit_path.write_text(json.dumps(fit.to_dict(), indent=1) + "\n")
+    header = out / f"{stem}.h"
+    header.write_text(exports.c_header(s, fit))
+    fortran = out / f"{stem}.f90"
+    fortran.write_text(exports.fortran_include(s, fit))
+    written += [fit_path, header, fortran]
+    if constant is not None:
+        for name, func in (
+            ("lammps.in", exports.lammps_snippet),
+            ("liggghts.in", exports.liggghts_snippet),
+            ("mercurydpm.cpp", exports.mercurydpm_snippet),
+            ("yade.py", exports.yade_snippet),
+        ):
+            path = out / f"{stem}_{name}"
+            path.write_text(func(s, constant))
+            written.append(path)
+    return written
