@@ -17,7 +17,7 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from restitution.law import compute_curves
+from restitution.curves import compute_curves
 from restitution.store import Store
 from restitution.sweep import DEFAULTS
 

@@ -19,9 +19,10 @@ from restitution import get_modes
 from restitution.cli.epsilon import curve as curve_command
 from restitution.cli.epsilon import epsilon as epsilon_command
 from restitution.collision import collide
+from restitution.curves import compute_curves, epsilon_at
 from restitution.errors import InputError, RestitutionError
 from restitution.figures import fig01_epsilon, fig07_alpha, fig08_modes
-from restitution.law import EpsilonLaw, compute_curves, epsilon_at, law
+from restitution.law import EpsilonLaw, law
 from restitution.sweep import SweepSettings
 
 V = np.array([0.01, 0.05, 0.1, 0.2, 0.3])
@@ -34,47 +35,63 @@ def synthetic():
     return EpsilonLaw.from_points(0.33, V, EPS, ERR, parameters={"source": "synthetic"})
 
 
-def test_interpolant_passes_through_points_and_the_anchor(synthetic):
+def test_interpolant_passes_through_the_points_only(synthetic):
     assert_allclose(synthetic.epsilon(V), EPS, rtol=1e-14)
     assert_allclose(synthetic.epsilon_err(V), ERR, rtol=1e-14)
-    assert synthetic.epsilon(0.0) == 1.0 and synthetic.epsilon_err(0.0) == 0.0
     assert isinstance(synthetic.epsilon(0.1), float)
-    assert synthetic(np.zeros((2, 3))).shape == (2, 3)
+    assert synthetic(np.full((2, 3), 0.1)).shape == (2, 3)
     # PCHIP keeps monotone data monotone.
-    fine = synthetic.epsilon(np.linspace(0.0, 0.3, 1001))
+    fine = synthetic.epsilon(np.linspace(0.01, 0.3, 1001))
     assert np.all(np.diff(fine) <= 0) and synthetic.monotone
-    assert synthetic.valid_range == (0.0, 0.3)
+    # The computed range, nothing more: no anchor at v = 0.
+    assert synthetic.valid_range == (0.01, 0.3)
 
 
-def test_outside_the_validity_range(synthetic):
-    with pytest.raises(InputError, match="validity range"):
-        synthetic.epsilon(0.31)
+def test_outside_the_computed_range_is_never_a_number(synthetic):
+    for v in (0.0, 0.005, 0.31, -0.01):
+        with pytest.raises(InputError, match=r"outside the computed range 0.01 <= v <= 0.3"):
+            synthetic.epsilon(v)
     with pytest.raises(InputError):
-        synthetic.epsilon([-0.01, 0.1])
-    with pytest.warns(UserWarning, match="validity range"):
-        synthetic.epsilon(0.35, outside="warn")
-    out = synthetic.epsilon([0.1, 0.4], outside="nan")
-    assert out[0] == pytest.approx(0.96) and math.isnan(out[1])
+        synthetic.epsilon([0.005, 0.1])
+    # "warn" warns and gives nan, never an extrapolated number (it used to return 236 at v = 5).
+    with pytest.warns(UserWarning, match="returning nan"):
+        assert math.isnan(synthetic.epsilon(5.0, outside="warn"))
+    out = synthetic.epsilon([0.1, 0.4, 0.001], outside="nan")
+    assert out[0] == pytest.approx(0.96) and np.isnan(out[1:]).all()
+    assert np.isnan(synthetic.epsilon_err([0.4], outside="nan")).all()
+
+
+def test_points_status_and_repr():
+    law_ = EpsilonLaw.from_points(0.33, V, EPS, ERR, asymptotic_ok=[True, False, True, True, True])
+    assert [p.status for p in law_.points] == ["ok", "not-asymptotic", "ok", "ok", "ok"]
+    assert law_.points[2].v == 0.1 and law_.points[2].epsilon == 0.96
+    text = repr(law_)
+    assert "\n" not in text and "5 points" in text and "4 pass their checks" in text
+    # Between a flagged point and its neighbours the interpolant is not "checked".
+    assert law_.checked([0.02, 0.07, 0.15]).tolist() == [False, False, True]
 
 
 def test_exports_round_trip(synthetic, tmp_path):
     back = EpsilonLaw.from_json(synthetic.to_json(tmp_path / "law.json"))
-    grid = np.linspace(0.0, 0.3, 57)
+    grid = np.linspace(0.01, 0.3, 57)
     assert_allclose(back.epsilon(grid), synthetic.epsilon(grid), rtol=1e-15)
     meta = json.loads((tmp_path / "law.json").read_text())["metadata"]
     for key in ("model", "units", "parameters", "version", "date", "validity"):
         assert key in meta
     assert meta["parameters"]["source"] == "synthetic" and meta["parameters"]["nu"] == 0.33
-    assert meta["validity"]["v_max"] == 0.3
+    assert meta["validity"]["v_min"] == 0.01 and meta["validity"]["v_max"] == 0.3
 
     with open(synthetic.to_csv(tmp_path / "law.csv"), newline="") as fh:
         rows = list(csv.DictReader(line for line in fh if not line.startswith("#")))
     assert_allclose([float(r["epsilon"]) for r in rows], EPS, rtol=1e-15)
     assert_allclose([float(r["v"]) for r in rows], V, rtol=1e-15)
+    assert {r["status"] for r in rows} == {"ok"}
 
     table = np.loadtxt(synthetic.to_table(tmp_path / "law.txt", points=61))
-    assert table.shape == (61, 3)
+    assert table.shape[1] == 4 and 61 <= table.shape[0] <= 61 + V.size
+    assert table[0, 0] == pytest.approx(0.01) and table[-1, 0] == pytest.approx(0.3)
     assert_allclose(table[:, 1], synthetic.epsilon(table[:, 0]), atol=1e-8)  # 8 decimals
+    assert set(table[:, 3]) == {1.0}
     header = (tmp_path / "law.txt").read_text().splitlines()[0]
     assert header.startswith("# restitution law")
 
@@ -130,7 +147,7 @@ def test_missing_points_are_flagged(tmp_path):
     curves = compute_curves([0.5], settings, store=tmp_path / "empty.sqlite", run=False)
     limit = curves[0.5].limits[0]
     assert not limit.asymptotic_ok and "missing" in limit.message
-    with pytest.raises(RestitutionError, match="no speed"):
+    with pytest.raises(RestitutionError, match="fewer than two speeds"):
         EpsilonLaw.from_curve(curves[0.5])
 
 
@@ -209,7 +226,7 @@ def test_curve_command_writes_figures_and_exports(coarse, tmp_path):
         assert (out / name).stat().st_size > 1000
     loaded = law(path=out / "law_nu0.33.json")
     assert_allclose(loaded.epsilon(0.2), curves[0.33].limits[1].epsilon, rtol=1e-12)
-    assert np.loadtxt(out / "law_nu0.33.txt").shape[1] == 3
+    assert np.loadtxt(out / "law_nu0.33.txt").shape[1] == 4  # v, epsilon, error, checked
 
 
 @pytest.mark.parametrize(

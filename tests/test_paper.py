@@ -338,7 +338,7 @@ def test_every_figure_of_a_quick_run_says_so(run):
 
 
 def test_fig01_in_c_L_ran_at_the_converted_speeds(run):
-    from restitution.law import epsilon_at
+    from restitution.curves import epsilon_at
 
     d = run.data
     f = d.fig01_units["c_L"]

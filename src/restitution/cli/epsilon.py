@@ -147,7 +147,7 @@ def epsilon(nu, v, alpha, as_json, alphas, alpha_scale, modes, workers, schedule
     v is the disk's speed towards the wall in units of c = sqrt(E/rho). The collisions of the
     grid are computed (or read from the store) first.
     """
-    from restitution.law import epsilon_at
+    from restitution.curves import epsilon_at
 
     nu = _check_nu(nu)
     settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
@@ -223,8 +223,9 @@ def curve(
     fig01_epsilon, fig07_alpha_nu*, fig08_modes_nu*, and law_nu*.json / .csv / .txt (the
     table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out.
     """
+    from restitution.curves import compute_curves
     from restitution.figures import fig01_epsilon, fig07_alpha, fig08_modes
-    from restitution.law import EpsilonLaw, compute_curves, law_filename
+    from restitution.law import EpsilonLaw, law_filename
 
     nus = tuple(_check_nu(nu) for nu in (nus or (0.33, 0.9)))
     settings = _settings(velocities=velocities, alphas=alphas, modes=modes, alpha_scale=alpha_scale)

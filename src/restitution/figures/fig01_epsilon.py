@@ -1,7 +1,7 @@
 """Fig. 1: the coefficient of restitution epsilon versus the speed towards the wall.
 
 Both limits (hard wall, infinitely many modes) are taken at every speed
-(:func:`restitution.law.compute_curves`); error bars are the extrapolation errors. Points whose
+(:func:`restitution.curves.compute_curves`); error bars are the extrapolation errors. Points whose
 extrapolation failed the asymptotic checks are drawn open. Speeds are the disk's speed towards
 the wall in units of ``c = sqrt(E/rho)``.
 """
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.curves import Curve, compute_curves
 from restitution.figures._style import add_notes
-from restitution.law import Curve, compute_curves
 from restitution.sweep import DEFAULTS, SweepSettings
 
 __all__ = ["Fig01Data", "compute", "plot"]
@@ -60,7 +60,7 @@ def compute(
     """Numbers of Fig. 1 from computed ``curves``, or by running the sweep of ``settings``.
 
     ``scale[nu]`` is ``speed_unit`` in units of ``c``: the curves' speeds (in ``c``) are divided
-    by it. ``sweep_kwargs`` go to :func:`restitution.law.compute_curves` (``store``, ...).
+    by it. ``sweep_kwargs`` go to :func:`restitution.curves.compute_curves` (``store``, ...).
     """
     if curves is None:
         curves = compute_curves(nus, settings, **sweep_kwargs)

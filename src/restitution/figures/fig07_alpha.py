@@ -13,9 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.curves import Curve, compute_curves
 from restitution.extrapolation import extrapolate_alpha, extrapolate_modes
 from restitution.figures._style import add_notes
-from restitution.law import Curve, compute_curves
 from restitution.sweep import DEFAULTS, SweepSettings
 
 __all__ = ["Fig07Data", "compute", "plot"]

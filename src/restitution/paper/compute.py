@@ -84,7 +84,7 @@ class PaperData:
     settings : PaperSettings
     sweep_report : SweepReport
         What the sweep computed and what it found in the store.
-    curves : dict of float to restitution.law.Curve
+    curves : dict of float to restitution.curves.Curve
         Extrapolated epsilon(v) per Poisson number.
     fig01 : restitution.figures.fig01_epsilon.Fig01Data
     fig07, fig08 : tuple
@@ -225,6 +225,7 @@ def compute_paper(
     on_stage : callable, optional
         Called with a :class:`StageEvent` at the start and end of every stage.
     """
+    from restitution.curves import compute_curves
     from restitution.figures import (
         fig01_epsilon,
         fig02_shapes,
@@ -239,7 +240,6 @@ def compute_paper(
         table1,
     )
     from restitution.hertz import contact_law
-    from restitution.law import compute_curves
     from restitution.store import Store
     from restitution.sweep import grid, run_sweep
 
