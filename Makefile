@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick test test-slow lint bench clean
+.PHONY: setup paper paper-quick law test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -20,6 +20,10 @@ paper: $(STAMP)
 
 paper-quick: $(STAMP)
 	$(BIN)/restitution paper --quick --out $(OUT)
+
+# Recompute the shipped epsilon(v) laws (src/restitution/data) with the current code.
+law: $(STAMP)
+	$(BIN)/python -m restitution.production
 
 test: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q

@@ -66,8 +66,7 @@ def _header(s: SILaw) -> list[str]:
         f"partner: {s.against}: {PARTNERS[s.against]}; speed unit k c = "
         f"{s.speed_scale_m_s:.6g} m/s",
         f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}",
-        f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; below {lo:.6g} m/s the law is the "
-        "interpolant to the quasistatic limit epsilon(0) = 1, not computed",
+        f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; the law serves nothing outside them",
     ]
 
 
@@ -167,8 +166,8 @@ class ClosedForm:
     chi2_dof : float
         ``chi^2`` per degree of freedom of the weighted fit.
     valid_m_s : tuple of float
-        Fitted speeds ``(w_min, w_max)`` in m/s; below ``w_min`` the form continues to
-        ``epsilon(0) = 1`` as the law's anchor does, above ``w_max`` it is not valid.
+        Fitted speeds ``(w_min, w_max)`` in m/s. The form has ``epsilon(0) = 1`` built in, but
+        it is validated only on ``[w_min, w_max]``; outside, it is a guess.
     """
 
     a: float
@@ -362,7 +361,6 @@ _ORDER = (
     "interpolated",
     "computed-not-asymptotic",
     "interpolated-not-asymptotic",
-    "quasistatic-anchor",
 )
 
 
@@ -388,17 +386,26 @@ def maxwell_constant(s: SILaw, temperature_m2_s2: float, *, nodes: int = 400) ->
     if not (math.isfinite(T) and T > 0):
         raise InputError(f"the granular temperature must be positive (m^2/s^2), got {T}")
     sigma2 = 2.0 * T if s.against == "grain" else T
-    w_max = s.speed_range_m_s[1]
-    z = w_max**2 / (2.0 * sigma2)
-    tail = (1.0 + z) * math.exp(-z)  # int_wmax^inf w^3 e^(-w^2/2s^2) / int_0^inf
-    if tail > 1e-3:
+    w_min, w_max = s.speed_range_m_s
+
+    def above(w):  # int_w^inf u^3 exp(-u^2 / 2 sigma^2) du / int_0^inf (same)
+        z = w**2 / (2.0 * sigma2)
+        return (1.0 + z) * math.exp(-z)
+
+    if above(w_max) > 1e-3:
         raise InputError(
-            f"{tail:.2%} of the dissipation at T = {T:g} m^2/s^2 comes from speeds above the "
-            f"law's range {w_max:.6g} m/s; use a lower temperature"
+            f"{above(w_max):.2%} of the dissipation at T = {T:g} m^2/s^2 comes from speeds above "
+            f"the law's range {w_max:.6g} m/s; use a lower temperature"
+        )
+    if 1.0 - above(w_min) > 1e-3:
+        raise InputError(
+            f"{1.0 - above(w_min):.2%} of the dissipation at T = {T:g} m^2/s^2 comes from speeds "
+            f"below the law's computed range (from {w_min:.6g} m/s); use a higher temperature"
         )
     x, wq = np.polynomial.legendre.leggauss(nodes)
-    w = 0.5 * w_max * (x + 1.0)
-    rate = 0.5 * w_max * wq * w * np.exp(-(w**2) / (2.0 * sigma2))
+    half = 0.5 * (w_max - w_min)
+    w = w_min + half * (x + 1.0)
+    rate = half * wq * w * np.exp(-(w**2) / (2.0 * sigma2))
     return distribution_constant(
         s,
         w,

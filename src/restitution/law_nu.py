@@ -97,8 +97,11 @@ class NuInterpolatedLaw:
 
     @property
     def valid_range(self) -> tuple[float, float]:
-        """``(0, v_max)`` common to all grid laws, units of ``c``."""
-        return 0.0, min(n.valid_range[1] for n in self.nodes)
+        """The speeds every grid law covers, units of ``c``."""
+        return (
+            max(n.valid_range[0] for n in self.nodes),
+            min(n.valid_range[1] for n in self.nodes),
+        )
 
     def _node_values(self, v: np.ndarray, outside: str) -> tuple[np.ndarray, np.ndarray]:
         eps = np.array([np.atleast_1d(n.epsilon(v, outside=outside)) for n in self.nodes])

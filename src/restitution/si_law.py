@@ -37,12 +37,7 @@ STATUSES: dict[str, str] = {
     "interpolated-not-asymptotic": (
         "between two computed speeds, at least one of which did not pass every asymptotic check"
     ),
-    "quasistatic-anchor": (
-        "below the lowest computed speed: the interpolant between the quasistatic limit "
-        "epsilon(0) = 1 and the computed points, not a computed value; its error bar does not "
-        "cover the shape of the curve there"
-    ),
-    "outside": "outside the law's range; no value",
+    "outside": "outside the computed range of the law; no value (the law never extrapolates)",
 }
 """Status of a point -> what it means."""
 
@@ -94,10 +89,7 @@ def _status(law, v: float) -> tuple[str, str]:
             return "computed", ""
         return "computed-not-asymptotic", STATUSES["computed-not-asymptotic"]
     if v < pts[0]:
-        return "quasistatic-anchor", (
-            f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c: the interpolant "
-            "to epsilon(0) = 1, not a computed value"
-        )
+        return "outside", f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
     j = int(np.searchsorted(pts, v))
     if j >= pts.size:
         return "outside", f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
@@ -141,12 +133,13 @@ class SILaw:
 
     @property
     def speed_range_m_s(self) -> tuple[float, float]:
-        """Speeds in m/s the law covers, ``(0, k c v_max)``."""
-        return 0.0, self.law.valid_range[1] * self.speed_scale_m_s
+        """Speeds in m/s the law covers: its computed range times ``k c``."""
+        lo, hi = self.law.valid_range
+        return lo * self.speed_scale_m_s, hi * self.speed_scale_m_s
 
     @property
     def computed_range_m_s(self) -> tuple[float, float]:
-        """Lowest and highest computed speeds in m/s (below: the quasistatic anchor)."""
+        """Lowest and highest computed speeds in m/s (the law serves nothing outside)."""
         return (
             float(self.law.v[0]) * self.speed_scale_m_s,
             float(self.law.v[-1]) * self.speed_scale_m_s,
@@ -177,7 +170,7 @@ class SILaw:
                 try:
                     eps = float(self.law.epsilon(v))
                     err = float(self.law.epsilon_err(v))
-                except InputError as exc:  # a law that refuses its own anchor region
+                except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
                     status, note = "outside", str(exc)
             out.append(SIPoint(float(w), v, eps, err, status, note))
         return tuple(out)

@@ -1,0 +1,106 @@
+"""The shipped epsilon(v) laws: what they are computed from, and how to regenerate them.
+
+``make law`` (``python -m restitution.production``) recomputes every file
+``restitution/data/law_nu<nu>.json`` with the current code, through the same sweep, store and
+extrapolation as ``restitution curve`` (:mod:`restitution.curves`), with a progress bar. The
+result store is reused, so an interrupted run resumes. ``tests/test_shipped_laws.py`` fails
+when the shipped files no longer match the code.
+
+Two groups of speeds, both with walls scaled to the compression (``alpha delta_max(v) = 40,
+80, 160``):
+
+* the paper's speeds ``0.005 <= v <= 0.3`` with the ``N = 300, 400, 600, 940`` lowest modes;
+* slow speeds ``5e-4 <= v <= 2e-3`` with ``N = 3200 ... 25600``. The contact half-width shrinks
+  with the compression, so slow collisions need far more modes before the energy loss is
+  linear in ``1/sqrt(N)``: at ``v = 1e-3`` (``nu = 0.33``) the loss still falls by 5% per
+  doubling of ``N`` between 1600 and 25600, linearly in ``1/sqrt(N)`` from 3200 on
+  (docs/results.md).
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+from restitution.sweep import DEFAULTS, SweepSettings
+
+__all__ = ["SHIPPED_NUS", "SETTINGS_GROUPS", "build"]
+
+SHIPPED_NUS = (0.33, 0.9)
+"""Two-dimensional Poisson numbers of the shipped laws (the paper's Fig. 1)."""
+
+SLOW = SweepSettings(
+    velocities=(5e-4, 1e-3, 2e-3),
+    n_modes=(3200, 6400, 12800, 25600),
+    batch_size=3,
+)
+
+SETTINGS_GROUPS = (DEFAULTS, SLOW)
+"""The sweeps behind every shipped law; each point of a law records the group it came from."""
+
+
+def build(
+    out_dir: str | Path,
+    nus=SHIPPED_NUS,
+    groups=SETTINGS_GROUPS,
+    *,
+    store=None,
+    workers: int | None = None,
+    progress: bool | None = None,
+) -> list[Path]:
+    """Compute the laws for ``nus`` and write ``law_nu<nu>.json`` into ``out_dir``.
+
+    Parameters
+    ----------
+    out_dir : path
+        Target folder (``src/restitution/data`` for the shipped files).
+    nus : iterable of float
+        Two-dimensional Poisson numbers.
+    groups : iterable of SweepSettings
+        Sweeps whose points are merged into each law (speeds must not repeat).
+    store, workers, progress
+        Passed to :func:`restitution.curves.compute_curves`.
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
+    from restitution.curves import compute_curves
+    from restitution.law import EpsilonLaw, law_filename
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    nus = [float(nu) for nu in nus]
+    per_group = [
+        compute_curves(nus, g, store=store, workers=workers, progress=progress) for g in groups
+    ]
+    written = []
+    for nu in nus:
+        law = EpsilonLaw.from_curves([curves[nu] for curves in per_group])
+        written.append(law.to_json(out / law_filename(nu)))
+    return written
+
+
+def _count(groups, nus) -> int:
+    return sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups) * len(nus)
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description="Regenerate the shipped epsilon(v) laws.")
+    parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
+    parser.add_argument("--workers", type=int, default=None, help="local processes")
+    parser.add_argument("--store", default=None, help="result store (default: user cache)")
+    args = parser.parse_args(argv)
+    start = time.perf_counter()
+    files = build(args.out, store=args.store, workers=args.workers, progress=True)
+    elapsed = time.perf_counter() - start
+    n = _count(SETTINGS_GROUPS, SHIPPED_NUS)
+    for path in files:
+        print(f"wrote {path}")
+    print(f"{n} collisions (stored ones reused) in {elapsed:.0f} s")
+
+
+if __name__ == "__main__":
+    main()
