@@ -5,13 +5,20 @@ Both Poisson numbers (0.33, 0.9) x the paper's velocities x the default alpha an
 ``--scheduler`` says otherwise. Prints the total time, collisions per second, and epsilon at
 every speed. The budget of the issue is 10 minutes on a 2-core machine.
 
+With ``--backends R`` it instead times the same grid R times with the NumPy reference path
+and with the compiled kernel, alternating, each from its own cold store, and prints the
+ratio per round and its min/median/max (the production time before and after the kernel).
+
     python benchmarks/bench_curve.py [--quick] [--workers N | --scheduler ADDRESS]
+    python benchmarks/bench_curve.py --backends 3
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import os
+import statistics
 import tempfile
 import time
 from dataclasses import replace
@@ -24,11 +31,53 @@ from restitution.sweep import DEFAULTS
 BUDGET_S = 600.0
 
 
+def numpy_points(specs):
+    """Sweep task on the NumPy reference path (the production path before the kernel)."""
+    from restitution.cache import get_modes
+    from restitution.collision import CollisionSettings, collide_batch
+
+    first = specs[0]
+    settings = CollisionSettings(
+        integrator=first.integrator, backend="numpy", **dict(first.options)
+    )
+    modes = get_modes(first.nu, count=first.n_modes)
+    results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)
+    return [("ok", r.to_dict()) for r in results]
+
+
+def _timed_grid(nus, settings, batch_function=None) -> float:
+    kwargs = {} if batch_function is None else {"batch_function": batch_function}
+    with tempfile.TemporaryDirectory() as tmp:
+        t0 = time.perf_counter()
+        compute_curves(nus, settings, store=Path(tmp) / "b.sqlite", progress=False, **kwargs)
+        return time.perf_counter() - t0
+
+
+def compare_backends(nus, settings, rounds: int) -> None:
+    """Alternating rounds: NumPy path, then compiled kernel, each from a cold store."""
+    ratios = []
+    for i in range(rounds):
+        t_numpy = _timed_grid(nus, settings, numpy_points)
+        t_kernel = _timed_grid(nus, settings)
+        ratios.append(t_numpy / t_kernel)
+        one, five, _ = os.getloadavg()
+        print(
+            f"round {i + 1}: numpy path {t_numpy:.1f} s, compiled kernel {t_kernel:.1f} s, "
+            f"ratio {ratios[-1]:.2f}x (load {one:.2f} / {five:.2f})",
+            flush=True,
+        )
+    print(
+        f"numpy / compiled: min {min(ratios):.2f}x median {statistics.median(ratios):.2f}x "
+        f"max {max(ratios):.2f}x over {rounds} rounds"
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="a small grid (smoke test)")
     parser.add_argument("--workers", type=int, default=None, help="Dask LocalCluster workers")
     parser.add_argument("--scheduler", default=None, help="Dask scheduler address")
+    parser.add_argument("--backends", type=int, default=0, help="rounds of numpy vs compiled")
     args = parser.parse_args()
     settings = DEFAULTS
     if args.quick:
@@ -42,6 +91,9 @@ def main() -> None:
         f"x N {settings.n_modes} = {n} collisions ({settings.integrator}, "
         f"batch {settings.batch_size})"
     )
+    if args.backends:
+        compare_backends(nus, settings, args.backends)
+        return
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "bench.sqlite"
         t0 = time.perf_counter()

@@ -355,7 +355,7 @@ def _single_threaded_children() -> Iterator[None]:
     The workers already fill the cores; threaded BLAS in each would oversubscribe them. The
     variables are inherited by processes spawned now and restored afterwards.
     """
-    names = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+    names = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
     saved = {k: os.environ.get(k) for k in names}
     os.environ.update({k: "1" for k in names})
     try:
