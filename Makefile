@@ -23,7 +23,7 @@ paper-quick: $(STAMP)
 
 # Recompute the shipped epsilon(v) laws (src/restitution/data) with the current code.
 law: $(STAMP)
-	$(BIN)/python -m restitution.production
+	$(BIN)/python -m restitution.production --figures docs/figures
 
 test: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q

@@ -103,8 +103,9 @@ def test_table_holds_the_law_in_m_s(tmp_path, columns):
     assert "partner: grain" in text and "speed_m_s" in text
     t = np.loadtxt(path)
     assert t.shape[1] == columns
-    assert_allclose(t[0, :2], [0.0, 1.0])
-    w = np.minimum(t[:, 0], s.speed_range_m_s[1])  # the last speed is printed rounded
+    # From the lowest computed speed (the law serves nothing below it), not from 0.
+    assert_allclose(t[0, 0], s.speed_range_m_s[0], rtol=1e-6)
+    w = np.clip(t[:, 0], *s.speed_range_m_s)  # the end speeds are printed rounded
     assert_allclose(t[:, 1], s.epsilon(w), atol=1e-7)
     computed = s.law.v * s.speed_scale_m_s
     assert np.all(np.isin(np.round(computed, 3), np.round(t[:, 0], 3)))
@@ -144,7 +145,10 @@ def test_maxwell_constant_matches_the_closed_form_average(against, var):
     # k <w^4>/<w^3> with weight exp(-w^2/(2 sigma^2)):
     # <w^4>/<w^3> = sqrt(2) sigma Gamma(5/2) / Gamma(2).
     k_red = 1.0  # in reduced units, 1 - eps^2 = v
-    s = synthetic(lambda v: np.sqrt(1 - k_red * v), against=against)
+    # Points from 1e-5 c (0.05-0.1 m/s): the dissipation below them is ~1e-12 of the total.
+    v = np.geomspace(1e-5, 0.3, 120)
+    wide = EpsilonLaw.from_points(0.25, v, np.sqrt(1 - k_red * v), np.full(v.size, 1e-5))
+    s = SILaw(GRAIN, against, wide)
     T = 1e4  # m^2/s^2; sigma = 100-140 m/s, far inside the law's 0.3 k c (~1.5-3 km/s)
     sigma = math.sqrt(var * T)
     k = k_red / s.speed_scale_m_s
@@ -158,6 +162,10 @@ def test_maxwell_constant_refuses_a_temperature_beyond_the_law():
     s = synthetic(lambda v: np.full(v.shape, 0.8), against="wall")
     with pytest.raises(InputError, match="lower temperature"):
         exports.maxwell_constant(s, temperature_m2_s2=(0.3 * s.speed_scale_m_s) ** 2)
+    # Below the computed range (V[0] = 0.005 c, 19 m/s here) the law has no value either: a
+    # gas so cold that more than 0.1% of its dissipation comes from there is refused.
+    with pytest.raises(InputError, match="higher temperature"):
+        exports.maxwell_constant(s, temperature_m2_s2=(0.005 * s.speed_scale_m_s) ** 2)
 
 
 def test_snippets_carry_the_constant_and_the_material():
@@ -293,22 +301,12 @@ def test_exports_take_a_law_interpolated_in_nu(tmp_path):
     assert exports.constant_at(s, 500.0).status == "interpolated"
 
 
-class _ComputedOnly(EpsilonLaw):
-    """A law that, like a future law.py may, refuses speeds below its computed range."""
-
-    def epsilon(self, v, *, outside="raise"):
-        if np.any(np.asarray(v) < self.v[0]):
-            raise InputError("below the computed range")
-        return super().epsilon(v, outside=outside)
-
-
-def test_a_law_refusing_low_speeds_gives_outside_points_and_a_shorter_table(tmp_path):
-    base = EpsilonLaw.from_points(0.25, V, closed(V, *TRUE), np.full(V.size, 1e-4))
-    strict = _ComputedOnly(base.nu, base.v, base.epsilon_points, base.epsilon_err_points,
-                           base.asymptotic_ok, base.metadata)  # fmt: skip
-    s = SILaw(GRAIN, "wall", strict)
+def test_speeds_below_the_computed_range_are_outside_and_the_table_starts_there(tmp_path):
+    law_ = EpsilonLaw.from_points(0.25, V, closed(V, *TRUE), np.full(V.size, 1e-4))
+    s = SILaw(GRAIN, "wall", law_)
     low, high = s.points([1.0, 100.0])
-    assert low.status == "outside" and low.epsilon is None and "below the computed" in low.note
+    assert low.status == "outside" and low.epsilon is None
+    assert "below the lowest computed speed" in low.note
     assert high.epsilon is not None
     t = np.loadtxt(exports.write_table(s, tmp_path / "t.txt"))
     assert_allclose(t[0, 0], V[0] * s.speed_scale_m_s, rtol=1e-7)

@@ -93,6 +93,7 @@ def main(argv=None) -> None:
     parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
+    parser.add_argument("--figures", default=None, help="also draw the slow-point figures here")
     args = parser.parse_args(argv)
     start = time.perf_counter()
     files = build(args.out, store=args.store, workers=args.workers, progress=True)
@@ -101,6 +102,27 @@ def main(argv=None) -> None:
     for path in files:
         print(f"wrote {path}")
     print(f"{n} collisions (stored ones reused) in {elapsed:.0f} s")
+    if args.figures:
+        for path in draw_figures(files, args.figures):
+            print(f"wrote {path}")
+
+
+def draw_figures(law_files, out_dir) -> list[Path]:
+    """Convergence and two-routes figures of the slow points of each law file."""
+    from restitution.figures import slow_convergence, slow_routes
+    from restitution.law import EpsilonLaw
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for path in law_files:
+        law = EpsilonLaw.from_json(path)
+        conv = out / f"slow_convergence_nu{law.nu:g}.png"
+        slow_convergence.plot(slow_convergence.compute(law, v_max=1e-3), law.nu, conv)
+        routes = out / f"slow_routes_nu{law.nu:g}.png"
+        slow_routes.plot(slow_routes.compute(law, v_max=0.05), routes)
+        written += [conv, routes]
+    return written
 
 
 if __name__ == "__main__":

@@ -1,0 +1,38 @@
+"""Figures of the slow points: they show the law's own numbers (read, not recomputed)."""
+
+import numpy as np
+import pytest
+
+from restitution.cache import get_modes
+from restitution.extrapolation import extrapolate_modes
+from restitution.figures import slow_convergence, slow_routes
+from restitution.hertz import contact_law
+from restitution.law import law
+from restitution.rayleigh import rayleigh_energy
+
+
+def test_slow_convergence_shows_the_served_numbers(tmp_path):
+    served = law(0.33)
+    points = slow_convergence.compute(served, v_max=1e-3)
+    assert [p.v for p in points] == pytest.approx([1e-4, 2e-4, 5e-4, 1e-3])
+    for p in points:
+        # The diamond is what the law serves: 1 - epsilon^2 at that speed.
+        assert p.limit == pytest.approx(1.0 - served.epsilon(p.v) ** 2, rel=1e-9)
+        # Each square is the N -> infinity fit of its row, redone from the plotted points.
+        for i in range(p.alpha.size):
+            redo = extrapolate_modes(p.n_modes, p.loss[i])
+            assert p.n_limit[i] == pytest.approx(redo.limit, rel=1e-12)
+    fig = slow_convergence.plot(points[:2], 0.33, tmp_path / "conv.png")
+    assert len(fig.axes) == 4 and (tmp_path / "conv.png").stat().st_size > 10_000
+
+
+def test_slow_routes_put_the_law_beside_rayleigh(tmp_path):
+    served = law(0.9)
+    data = slow_routes.compute(served, n_modes=60, v_max=1e-3, n_v=6)
+    direct = rayleigh_energy(get_modes(0.9, count=60), float(data.v[0]), contact_law(0.9, "centre"))
+    assert data.rayleigh["centre"][0] == pytest.approx(direct.energy_fraction, rel=1e-12)
+    rows = slow_routes.compare(data)
+    assert rows[0]["dynamic"] == pytest.approx(1.0 - served.epsilon(rows[0]["v"]) ** 2, rel=1e-9)
+    assert all(np.isfinite(r["ratio_paper"]) and r["ratio_paper"] > 0 for r in rows)
+    slow_routes.plot(data, tmp_path / "routes.png")
+    assert (tmp_path / "routes.png").stat().st_size > 10_000
