@@ -38,6 +38,7 @@ modes."""
 class CacheError(RestitutionError):
     """The cache directory cannot be created or written."""
 
+
 _FIELDS = ("n", "l", "omega", "kappa", "kappa_p", "A", "B", "C", "S")
 
 

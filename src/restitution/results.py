@@ -7,9 +7,8 @@ modulus times length / length), energies as fractions of the initial kinetic ene
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
-
 import math
+from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
