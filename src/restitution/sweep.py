@@ -24,6 +24,7 @@ The default extrapolation sets (velocities, ``alpha`` and ``N`` values) live in 
 
 from __future__ import annotations
 
+import asyncio
 import concurrent.futures as cf
 import contextlib
 import math
@@ -39,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from restitution.errors import InputError
+from restitution.errors import InputError, SchedulerError
 from restitution.store import PointSpec, Store
 
 __all__ = [
@@ -51,6 +52,7 @@ __all__ = [
     "collide_points",
     "grid",
     "load_grid",
+    "probe_scheduler",
     "run_sweep",
 ]
 
@@ -123,6 +125,13 @@ class SweepSettings:
         object.__setattr__(self, "velocities", tuple(float(v) for v in self.velocities))
         object.__setattr__(self, "alphas", tuple(float(a) for a in self.alphas))
         object.__setattr__(self, "n_modes", tuple(int(n) for n in self.n_modes))
+        for name in ("velocities", "alphas", "n_modes"):
+            values = getattr(self, name)
+            if len(set(values)) != len(values):
+                raise InputError(
+                    f"{name} has repeated values {list(values)}; give distinct values "
+                    "(a repeated point adds nothing to an extrapolation)"
+                )
         integrator, options = _solver_settings(self.integrator, self.options)
         object.__setattr__(self, "integrator", integrator)
         object.__setattr__(self, "options", options)
@@ -313,6 +322,9 @@ class SweepReport:
         Wall-clock time, seconds.
     executor : str
         Description of the executor used.
+    lost : tuple of (PointSpec, str)
+        Points whose worker died (infrastructure failure) on every one of
+        :data:`INFRASTRUCTURE_RETRIES` + 1 attempts; not stored, so a rerun computes them.
     """
 
     total: int
@@ -321,6 +333,12 @@ class SweepReport:
     failed: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
     wall_time_s: float = 0.0
     executor: str = ""
+    lost: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
+
+    @property
+    def complete(self) -> bool:
+        """Whether every point of this run is now stored as a success."""
+        return not self.failed and not self.lost
 
     @property
     def rate(self) -> float:
@@ -388,6 +406,56 @@ def _cpu_count() -> int:
         return os.cpu_count() or 1
 
 
+SCHEDULER_TIMEOUT_S = 10.0
+"""Seconds to wait for a Dask scheduler to accept a connection and answer."""
+
+
+def probe_scheduler(address: str, timeout: float = SCHEDULER_TIMEOUT_S) -> dict:
+    """Ask ``address`` for its identity; returns it if it is a Dask scheduler.
+
+    ``distributed.Client`` waits forever for the handshake of a server that accepts the
+    connection but never answers (say, a dashboard or web port given by mistake); this probe
+    has one overall deadline.
+
+    Raises
+    ------
+    SchedulerError
+        If the address is malformed, nothing answers within ``timeout`` seconds, or the server
+        is not a Dask scheduler; the message says what to do.
+    """
+    from distributed.comm import connect
+
+    async def ask() -> dict:
+        comm = await connect(address, timeout=timeout)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    hint = "give the scheduler's address, e.g. tcp://HOST:8786 (not the dashboard's)"
+    try:
+        reply = asyncio.run(asyncio.wait_for(ask(), timeout + 1.0))
+    except ValueError as exc:
+        raise SchedulerError(
+            f"{address!r} is not a Dask scheduler address ({exc}); {hint}"
+        ) from None
+    except TimeoutError:
+        raise SchedulerError(
+            f"{address} did not answer as a Dask scheduler within {timeout:g} s; {hint}"
+        ) from None
+    except OSError as exc:
+        raise SchedulerError(f"cannot reach Dask scheduler {address}: {exc}; {hint}") from None
+    except Exception as exc:  # noqa: BLE001 - a server speaking another protocol
+        raise SchedulerError(
+            f"{address} did not answer as a Dask scheduler ({type(exc).__name__}: {exc}); {hint}"
+        ) from None
+    if not isinstance(reply, dict) or reply.get("type") != "Scheduler":
+        kind = reply.get("type") if isinstance(reply, dict) else type(reply).__name__
+        raise SchedulerError(f"{address} is a Dask {kind}, not a scheduler; {hint}")
+    return reply
+
+
 @contextlib.contextmanager
 def _executor(
     workers: int | None, scheduler: str | None, client: Any
@@ -398,7 +466,12 @@ def _executor(
     if scheduler is not None:
         from distributed import Client
 
-        with Client(scheduler) as c:
+        probe_scheduler(scheduler)
+        try:
+            c = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
+        except (OSError, ValueError) as exc:
+            raise SchedulerError(f"cannot connect to Dask scheduler {scheduler}: {exc}") from None
+        with c:
             yield c.get_executor(pure=False), f"dask scheduler {scheduler}"
         return
     if workers is not None:
@@ -502,7 +575,10 @@ def run_sweep(
     progress : bool, optional
         Show a progress bar with ETA on stderr; default: only when stderr is a terminal.
     retry_failed : bool
-        Also recompute points stored as failed.
+        Also recompute points stored as failed. Points whose task died with its worker
+        (``BrokenProcessPool``, a lost Dask worker) are never stored as failed; they are
+        resubmitted up to :data:`INFRASTRUCTURE_RETRIES` times and otherwise left for the next
+        run (:attr:`SweepReport.lost`).
 
     Returns
     -------
@@ -518,15 +594,21 @@ def run_sweep(
     try:
         unique = list(dict.fromkeys(points))
         status = db.status(unique)
+        errors = db.errors(s for s in unique if status.get(s.key()) == "failed")
         todo = [
             s
             for s in unique
-            if status.get(s.key()) is None or (retry_failed and status[s.key()] == "failed")
+            if status.get(s.key()) is None
+            or (
+                status[s.key()] == "failed"
+                and (retry_failed or _infrastructure_message(errors.get(s.key())))
+            )
         ]
         skipped = len(unique) - len(todo)
-        computed, failed, name = 0, [], "none"
+        computed, failed, lost, name = 0, [], [], "none"
         if todo:
-            computed, failed, name = _execute(
+            db.check_writable()  # fail now, not after computing
+            computed, failed, lost, name = _execute(
                 db, todo, batch_size, batch_function, workers, scheduler, client, progress
             )
         return SweepReport(
@@ -534,6 +616,7 @@ def run_sweep(
             skipped=skipped,
             computed=computed,
             failed=tuple(failed),
+            lost=tuple(lost),
             wall_time_s=time.perf_counter() - t0,
             executor=name,
         )
@@ -542,34 +625,77 @@ def run_sweep(
             db.close()
 
 
+INFRASTRUCTURE_RETRIES = 3
+"""How often a batch lost to an infrastructure failure (a dead worker) is resubmitted."""
+
+_INFRASTRUCTURE_ERRORS = frozenset(
+    {"KilledWorker", "CommClosedError", "StreamClosedError", "FutureCancelledError"}
+)
+
+
+def is_infrastructure_failure(exc: BaseException) -> bool:
+    """Whether a task died for reasons outside the computation (a killed or lost worker).
+
+    Such a task says nothing about its points, so they are retried, never stored as failed.
+    """
+    return (
+        isinstance(exc, cf.BrokenExecutor | cf.CancelledError | ConnectionError)
+        or type(exc).__name__ in _INFRASTRUCTURE_ERRORS
+    )
+
+
+def _infrastructure_message(message: str | None) -> bool:
+    """A stored failure message that names an infrastructure failure (older code stored them)."""
+    head = (message or "").split(":", 1)[0]
+    return head in _INFRASTRUCTURE_ERRORS or head in ("BrokenProcessPool", "CancelledError")
+
+
 def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, progress):
-    batches = _batches(todo, batch_size)
-    computed, failed = 0, []
-    with _executor(workers, scheduler, client) as (executor, name):
-        futures = {executor.submit(_run_task, batch_function, b): b for b in batches}
-        try:
-            with _progress(progress, len(todo)) as bar:
-                task = bar.add_task("sweep", total=len(todo))
-                for future in cf.as_completed(futures):
-                    batch = futures.pop(future)
-                    try:
-                        outcomes = future.result()
-                    except Exception as exc:  # noqa: BLE001 - the whole task died
-                        outcomes = [("failed", f"{type(exc).__name__}: {exc}")] * len(batch)
-                    for spec, (state, payload) in zip(batch, outcomes, strict=True):
-                        if state == "ok":
-                            db.put(spec, payload)
-                            computed += 1
-                        else:
-                            db.put_failure(spec, str(payload))
-                            failed.append((spec, str(payload)))
-                    bar.advance(task, len(batch))
-        except BaseException:
-            # Ctrl-C (or any error in the parent): drop the queued work; what is stored stays.
-            for future in futures:
-                future.cancel()
-            raise
-    return computed, failed, name
+    pending = _batches(todo, batch_size)
+    computed, failed, lost, name = 0, [], [], "none"
+    with _progress(progress, len(todo)) as bar:
+        task = bar.add_task("sweep", total=len(todo))
+        for attempt in range(INFRASTRUCTURE_RETRIES + 1):
+            retry = []
+            with _executor(workers, scheduler, client) as (executor, name):
+                futures = {executor.submit(_run_task, batch_function, b): b for b in pending}
+                try:
+                    for future in cf.as_completed(futures):
+                        batch = futures.pop(future)
+                        try:
+                            outcomes = future.result()
+                        except Exception as exc:  # noqa: BLE001 - the whole task died
+                            if is_infrastructure_failure(exc):
+                                retry.append((batch, f"{type(exc).__name__}: {exc}"))
+                                continue
+                            outcomes = [("failed", f"{type(exc).__name__}: {exc}")] * len(batch)
+                        for spec, (state, payload) in zip(batch, outcomes, strict=True):
+                            if state == "ok":
+                                db.put(spec, payload)
+                                computed += 1
+                            else:
+                                db.put_failure(spec, str(payload))
+                                failed.append((spec, str(payload)))
+                        bar.advance(task, len(batch))
+                except BaseException:
+                    # Ctrl-C (or any error in the parent): drop the queued work; what is
+                    # stored stays.
+                    for future in futures:
+                        future.cancel()
+                    raise
+            if not retry:
+                break
+            pending = [batch for batch, _ in retry]
+            points = sum(len(b) for b in pending)
+            if attempt < INFRASTRUCTURE_RETRIES:
+                bar.console.print(
+                    f"warning: {points} point(s) lost with a worker ({retry[0][1][:120]}); "
+                    f"retrying ({attempt + 1}/{INFRASTRUCTURE_RETRIES})"
+                )
+        else:
+            # Still lost after every retry: not stored, so the next run computes them.
+            lost = [(spec, message) for batch, message in retry for spec in batch]
+    return computed, failed, lost, name
 
 
 # -- reading a grid back ---------------------------------------------------------------------
