@@ -53,14 +53,14 @@ def cache_dir() -> Path:
     """
     env = os.environ.get("RESTITUTION_CACHE_DIR")
     path = Path(env) if env else Path(platformdirs.user_cache_dir("restitution"))
+    what = "RESTITUTION_CACHE_DIR" if env else "the user cache directory"
+    advice = "set RESTITUTION_CACHE_DIR to a writable directory (or give --store PATH)"
+    if path.exists() and not path.is_dir():
+        raise CacheError(f"{what} {path} is a file, not a directory; {advice}")
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        what = "RESTITUTION_CACHE_DIR" if env else "the user cache directory"
-        raise CacheError(
-            f"cannot use {what} {path} ({exc.strerror or exc}); set RESTITUTION_CACHE_DIR to a "
-            "writable directory"
-        ) from None
+        raise CacheError(f"cannot create {what} {path} ({exc.strerror or exc}); {advice}") from None
     return path
 
 

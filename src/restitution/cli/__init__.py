@@ -55,8 +55,18 @@ def _register() -> None:
 _register()
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Warnings as one line on stderr (none with ``--quiet``)."""
+    from restitution.cli._common import note
+
+    note(f"warning: {message}")
+
+
 def main(argv: list[str] | None = None) -> None:
     """Console-script entry point."""
+    import warnings
+
+    warnings.showwarning = _show_warning
     try:
         cli.main(args=argv, prog_name="restitution", standalone_mode=False)
     except click.exceptions.Abort:

@@ -175,7 +175,12 @@ def write_text(text: str, output: Path | None) -> None:
 
 
 def envelope(
-    command: str, inputs: dict, *, status: str = "ok", advice: str | None = None, **payload
+    command: str,
+    inputs: dict,
+    payload: dict | None = None,
+    *,
+    status: str = "ok",
+    advice: str | None = None,
 ) -> dict:
     """The keys every JSON output starts with, then ``payload``.
 
@@ -191,7 +196,7 @@ def envelope(
         "status": status,
         "advice": advice,
     }
-    return {**head, **{k: v for k, v in payload.items() if k not in head}}
+    return {**head, **{k: v for k, v in (payload or {}).items() if k not in head}}
 
 
 def _finite(obj):

@@ -195,7 +195,7 @@ def collide(
                 modes=n_modes, select=select, integrator=integrator, energy_tol=energy_tol
             )
         d = envelope(
-            "collide", inputs, status=result.status, advice=result.advice, **result.to_dict()
+            "collide", inputs, result.to_dict(), status=result.status, advice=result.advice
         )
         d["wall_time_s"] = wall
         d["select"] = select if method == "modal" else None
@@ -203,7 +203,8 @@ def collide(
     else:
         _print_summary(result)
     if result.status != "ok":
-        note(f"warning: status {result.status}: {result.advice}")
+        if not as_json:  # the JSON says it in "status"
+            note(f"warning: status {result.status}: {result.advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
 
@@ -212,10 +213,10 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
     """Say the estimated work of a long run before it starts (the run shows no progress)."""
     import numpy as np
 
-    from restitution.collision import CollisionSettings, estimate_work
+    from restitution.collision import CollisionSettings, check_work
 
     settings = CollisionSettings(integrator=integrator, energy_tol=energy_tol)
-    est = estimate_work(modes, np.array([v]), np.array([alpha]), settings)
+    est = check_work(modes, np.array([v]), np.array([alpha]), settings)  # refuses the infeasible
     if est.steps > _LONG_RUN_STEPS:
         note(
             f"note: about {est.steps:.2g} time steps of {len(modes)} modes expected "

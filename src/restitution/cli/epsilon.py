@@ -210,7 +210,7 @@ def epsilon(
             "store": None if store is None else str(store),
         }
         click.echo(
-            dumps(envelope("epsilon", inputs, status=status, advice=advice, **result.to_dict()))
+            dumps(envelope("epsilon", inputs, result.to_dict(), status=status, advice=advice))
         )
     else:
         limits = "N -> inf" if alpha is not None else "alpha -> inf and N -> inf"
@@ -229,7 +229,7 @@ def epsilon(
             f"N = {', '.join(str(n) for n in settings.n_modes)} "
             f"({settings.select} modes, {settings.integrator} integrator)"
         )
-    _finish(status, advice, [(a, n, m) for a, n, m in result.failures], report, strict)
+    _finish(status, advice, list(result.failures), report, strict, as_json)
 
 
 def _err(value: float) -> str:
@@ -263,18 +263,19 @@ def _status(asymptotic: bool, message: str, failed: int) -> tuple[str, str | Non
     return "ok", None
 
 
-def _finish(status, advice, failures, report, strict) -> None:
-    """Print what went wrong and exit with the documented status."""
+def _finish(status, advice, failures, report, strict, as_json=False) -> None:
+    """Print what went wrong (JSON says it in 'status') and exit with the documented status."""
     if status == "ok":
         return
-    note(f"warning: {status}: {advice}")
-    for a, n, m in failures[:3]:
-        note(f"  failed: alpha = {a:g}, N = {n}: {m}")
-    for spec, m in report.lost[:3]:
-        note(
-            f"  lost (worker died; rerun to retry): v = {spec.v:g}, alpha = {spec.alpha:g}, "
-            f"N = {spec.n_modes}: {m}"
-        )
+    if not as_json:
+        note(f"warning: {status}: {advice}")
+        for a, n, m in failures[:3]:
+            note(f"  failed: alpha = {a:g}, N = {n}: {m}")
+        for spec, m in report.lost[:3]:
+            note(
+                f"  lost (worker died; rerun to retry): v = {spec.v:g}, "
+                f"alpha = {spec.alpha:g}, N = {spec.n_modes}: {m}"
+            )
     if status == "points-failed":
         sys.exit(EXIT_FAILED_POINTS)
     if strict:

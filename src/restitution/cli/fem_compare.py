@@ -165,14 +165,13 @@ def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, strict)
         }
         click.echo(
             dumps(
-                envelope(
-                    "compare-fem", inputs, status=status, advice=advice, **comparison.to_dict()
-                )
+                envelope("compare-fem", inputs, comparison.to_dict(), status=status, advice=advice)
             )
         )
     else:
         _print(comparison, material.nu, v, alpha)
     if status != "ok":
-        note(f"warning: {status}: {advice}")
+        if not as_json:  # the JSON says it in "status"
+            note(f"warning: {status}: {advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)

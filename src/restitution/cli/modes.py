@@ -103,7 +103,7 @@ def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
     records = ms.as_records()
     if fmt == "json":
         inputs = {"nu": material.nu, "plane": plane, "count": count, "omega_max": omega_max}
-        text = dumps(envelope("modes", inputs, modes=records))
+        text = dumps(envelope("modes", inputs, {"modes": records}))
     elif fmt == "csv":
         text = _csv(records)
     else:

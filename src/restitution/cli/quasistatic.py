@@ -103,7 +103,7 @@ def quasistatic(nu, plane, v, law, n_modes, as_json):
         raise InputError("contact time is not finite; use a smaller --v")
     if as_json:
         inputs = {"nu": material.nu, "plane": plane, "v": v, "law": law, "modes": n_modes}
-        click.echo(dumps(envelope("quasistatic", inputs, **out)))
+        click.echo(dumps(envelope("quasistatic", inputs, out)))
         return
     click.echo(
         f"quasistatic collision, nu = {out['nu']:g}, v = {v:g} c towards the wall, "
