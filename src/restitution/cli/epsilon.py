@@ -216,12 +216,12 @@ def epsilon(
         limits = "N -> inf" if alpha is not None else "alpha -> inf and N -> inf"
         where = f" at alpha = {alpha:g}" if alpha is not None else ""
         click.echo(
-            f"epsilon = {result.epsilon:.6f} +- {_err(result.epsilon_err)}   "
+            f"epsilon = {result.epsilon:.6f} +- {_err(result.epsilon_err, swept)}   "
             f"(nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})"
         )
         click.echo(
             f"energy loss 1 - epsilon^2 = {result.energy_loss:.6f} +- "
-            f"{_err(result.energy_loss_err)}"
+            f"{_err(result.energy_loss_err, swept)}"
         )
         grid_alphas = [alpha] if alpha is not None else list(settings.alphas_at(v))
         click.echo(
@@ -232,9 +232,13 @@ def epsilon(
     _finish(status, advice, list(result.failures), report, strict, as_json)
 
 
-def _err(value: float) -> str:
-    """An error bar, or ``unknown`` when the fit could not estimate one."""
-    return f"{value:.6f}" if math.isfinite(value) and value > 0 else "unknown"
+def _err(value: float, settings: SweepSettings) -> str:
+    """An error bar, or ``unknown`` when the fit cannot estimate one: a line through two
+    points (two N, or two alpha with both limits) has no residual, so its error is zero."""
+    two_point = len(settings.n_modes) < 3 or 1 < len(settings.alphas) < 3
+    if two_point or not (math.isfinite(value) and value > 0):
+        return "unknown"
+    return f"{value:.6f}"
 
 
 def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
@@ -374,7 +378,7 @@ def curve(
             asymptotic &= bool(lim.asymptotic_ok)
             eps = "nan" if not math.isfinite(lim.epsilon) else f"{lim.epsilon:.5f}"
             click.echo(
-                f"          {v:5.3f}  {eps:>8}  {_err(lim.epsilon_err)[:8]:>8}   "
+                f"          {v:5.3f}  {eps:>8}  {_err(lim.epsilon_err, settings)[:8]:>8}   "
                 f"{'yes' if lim.asymptotic_ok else 'NO: ' + lim.message[:70]}"
             )
         try:
