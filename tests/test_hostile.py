@@ -147,6 +147,15 @@ def always_broken(specs):
     raise cf.process.BrokenProcessPool("a process in the pool was terminated abruptly")
 
 
+def always_killed(specs):
+    from distributed import KilledWorker
+
+    from types import SimpleNamespace
+
+    # What the scheduler raises after a task's workers died allowed_failures + 1 times.
+    raise KilledWorker("collide_points", SimpleNamespace(address="tcp://10.0.0.1:4242"), 3)
+
+
 def touch_marker(specs):
     open(os.environ["RESTITUTION_TEST_MARKER"], "w").close()
     return ok_batch(specs)
@@ -397,11 +406,14 @@ def test_killed_pool_worker_is_retried_not_stored_as_failed(tmp_path, monkeypatc
         assert all(p.ok for p in db.points())
 
 
-def test_persistent_infrastructure_failure_is_left_for_the_next_run(tmp_path, client):
+@pytest.mark.parametrize(
+    ("broken", "name"), [(always_broken, "BrokenProcessPool"), (always_killed, "KilledWorker")]
+)
+def test_persistent_infrastructure_failure_is_left_for_the_next_run(tmp_path, client, broken, name):
     path = tmp_path / "s.sqlite"
-    report = run_sweep(POINTS, store=path, client=client, batch_function=always_broken)
+    report = run_sweep(POINTS, store=path, client=client, batch_function=broken)
     assert len(report.lost) == len(POINTS) and report.failed == () and not report.complete
-    assert "BrokenProcessPool" in report.lost[0][1]
+    assert report.lost[0][1].startswith(name)
     with Store(path) as db:
         assert len(db) == 0  # nothing stored as failed
     again = run_sweep(POINTS, store=path, client=client, batch_function=ok_batch)
