@@ -148,9 +148,9 @@ def always_broken(specs):
 
 
 def always_killed(specs):
-    from distributed import KilledWorker
-
     from types import SimpleNamespace
+
+    from distributed import KilledWorker
 
     # What the scheduler raises after a task's workers died allowed_failures + 1 times.
     raise KilledWorker("collide_points", SimpleNamespace(address="tcp://10.0.0.1:4242"), 3)
