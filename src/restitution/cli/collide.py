@@ -18,6 +18,7 @@ from restitution.cli._common import (
     nu_option,
     plane_option,
     positive_finite,
+    quiet,
     quiet_option,
     refuse_ignored,
     strict_option,
@@ -183,8 +184,9 @@ def collide(
                 )
             else:
                 ms = get_modes(material, count=n_modes)
-            _announce(ms, v, alpha, integrator, energy_tol)
-            result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
+            long_run = _announce(ms, v, alpha, integrator, energy_tol)
+            with _elapsed(long_run):
+                result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
     wall = time.perf_counter() - start
     if as_json:
         inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "method": method}
@@ -209,8 +211,19 @@ def collide(
             sys.exit(EXIT_NOT_CONVERGED)
 
 
-def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float) -> None:
-    """Say the estimated work of a long run before it starts (the run shows no progress)."""
+def _elapsed(enabled: bool):
+    """A spinner with the elapsed time on stderr while a long run integrates (terminals only)."""
+    import contextlib
+
+    from rich.console import Console
+
+    if not enabled or quiet() or not sys.stderr.isatty():
+        return contextlib.nullcontext()
+    return Console(stderr=True).status("integrating the collision ...")
+
+
+def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float) -> bool:
+    """Say the estimated work of a long run before it starts; returns whether it is long."""
     import numpy as np
 
     from restitution.collision import CollisionSettings, check_work
@@ -222,3 +235,4 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
             f"note: about {est.steps:.2g} time steps of {len(modes)} modes expected "
             f"(simulated time {est.t_end:.3g} R/c, dt = {est.dt:.3g} R/c); this may take a while"
         )
+    return est.steps > _LONG_RUN_STEPS
