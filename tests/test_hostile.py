@@ -36,8 +36,9 @@ from restitution.collision import (
     estimate_work,
 )
 from restitution.errors import InputError, RestitutionError, SchedulerError
+from restitution.executors import probe_scheduler
 from restitution.store import PointSpec, Store, StoreError
-from restitution.sweep import DEFAULTS, grid, probe_scheduler, run_sweep
+from restitution.sweep import DEFAULTS, grid, run_sweep
 
 # -- helpers -------------------------------------------------------------------------------
 
