@@ -23,7 +23,10 @@ def test_modes_json_sorted_with_required_keys(tmp_path):
     out = tmp_path / "modes.json"
     r = run("modes", "--nu", "0.33", "--count", "50", "--format", "json", "--output", str(out))
     assert r.returncode == 0, r.stderr
-    records = json.loads(out.read_text())
+    doc = json.loads(out.read_text())
+    assert {"version", "command", "units", "inputs", "status", "advice"} <= doc.keys()
+    assert doc["inputs"]["count"] == 50 and doc["status"] == "ok"
+    records = doc["modes"]
     assert len(records) == 50
     assert {"n", "l", "omega", "C", "S"} <= records[0].keys()
     omega = [rec["omega"] for rec in records]

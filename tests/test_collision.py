@@ -91,12 +91,22 @@ def test_epsilon_converges_at_least_at_declared_order(small):
         assert np.log2(d[0] / d[1]) > INTEGRATORS[name].order - 0.3, (name, d)
 
 
-def test_agrees_with_dop853(small):
-    ref = collide_dop853(small, V, ALPHA, rtol=1e-11, atol=1e-13)
-    r = collide(small, V, ALPHA, energy_tol=1e-9)
-    assert ref["energy_drift"] < 1e-8
-    assert_allclose(r.epsilon, ref["epsilon"], atol=2e-7)
-    assert_allclose(r.mode_energy_after, ref["energy_after"], atol=2e-7)
+@pytest.fixture(scope="module")
+def dop853(small):
+    return collide_dop853(small, V, ALPHA, rtol=1e-11, atol=1e-13)
+
+
+@pytest.mark.parametrize("integrator", ["split4", "rk4"])
+def test_agrees_with_dop853(small, dop853, integrator):
+    # Measured at energy_tol = 1e-9 (N = 24, v = 0.1, alpha = 500): |eps - eps_DOP853| =
+    # 5.6e-10 (split4) and 6.2e-11 (rk4); mode energies 6.3e-10 and 1.2e-10. The reference
+    # itself moves by 1.7e-12 from rtol 1e-11 to 1e-12. The tolerance is 1e-9, near the
+    # split4 measurement, so a loss of accuracy of a few times shows.
+    ref = dop853
+    r = collide(small, V, ALPHA, integrator=integrator, energy_tol=1e-9)
+    assert ref["energy_drift"] < 1e-10 and r.energy_drift < 1e-9
+    assert_allclose(r.epsilon, ref["epsilon"], rtol=0, atol=1e-9)
+    assert_allclose(r.mode_energy_after, ref["energy_after"], rtol=0, atol=1e-9)
 
 
 def test_rigid_limits(small):

@@ -141,13 +141,29 @@ def test_fem_agrees_with_modal_extrapolation_at_nu_033():
     assert abs(fem_eps - modal_eps) < 2.0 * combined, (fem_eps, fem_err, modal_eps, modal_err)
 
 
+# At nu = 0.9, v = 0.3 the window 800-3200 fails the extrapolation's own checks (dropping
+# N = 800 moves the limit by 1.0e-3; the slope changes by 211%), so it cannot be the test's
+# reference. The next window, 1600-6400, passes them (measured, issue 14): losses 0.4382484,
+# 0.4367624, 0.4357336 at N = 1600, 3200, 6400; eps = 0.7528530 +- 2.9e-5.
+MODAL_COUNTS_NU09 = [1600, 3200, 6400]
+
+
 @pytest.mark.slow
+@pytest.mark.xfail(
+    strict=True,
+    reason="open (issue 14): the modal fit over N = 1600-6400 passes its own checks, but "
+    "eps = 0.7528530 +- 2.9e-5 lies 2.27 combined errors above the FEM's 0.7526889 +- 6.6e-5 "
+    "(measured, 263 s); windows 400-1600, 800-3200, 1600-6400 give 0.75163, 0.75221, 0.75285: "
+    "the 1/sqrt(N) limit still drifts with N at nu = 0.9, v = 0.3",
+)
 def test_fem_agrees_with_modal_extrapolation_at_nu_09_high_speed():
-    # ~4 minutes. Measured: FEM 0.7526889 +- 6.6e-5, modal 0.752206 +- 7.8e-4: 0.62 combined
-    # errors apart.
+    # ~4.5 minutes. Like the nu = 0.33 test: the modal fit must pass its own checks, then
+    # agree with the FEM within two combined errors. It does not yet (see the xfail reason);
+    # strict, so the test reports when it starts to agree.
     nu, v = 0.9, 0.3
     fem_eps, fem_err, _ = _fem_limit(nu, v, ALPHA, [0, 1, 2])
-    fit, (modal_eps, modal_err) = _modal_limit(nu, v, ALPHA, MODAL_COUNTS)
+    fit, (modal_eps, modal_err) = _modal_limit(nu, v, ALPHA, MODAL_COUNTS_NU09)
+    assert fit.asymptotic_ok, fit.message
     combined = math.hypot(fem_err, modal_err)
     assert abs(fem_eps - modal_eps) < 2.0 * combined, (fem_eps, fem_err, modal_eps, modal_err)
 
@@ -165,6 +181,6 @@ def test_compare_fem_command_prints_both_methods():
     assert [row["n_modes"] for row in data["modal"]] == [50, 100, 200]
     assert data["fem"][0]["method"] == "fem" and data["modal"][0]["method"] == "modal"
     # With one FEM level there is no error estimate; the modal limit exists.
-    assert math.isnan(data["fem_error"]) and math.isfinite(data["modal_epsilon"])
+    assert data["fem_error"] is None and math.isfinite(data["modal_epsilon"])  # NaN -> null
     bad = CliRunner().invoke(compare_fem, ["--refine", "1", "--refine-min", "2"])
     assert isinstance(bad.exception, InputError)

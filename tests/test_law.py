@@ -212,7 +212,9 @@ def test_epsilon_command_json(coarse):
     assert d["epsilon"] == pytest.approx(curves[0.33].limits[1].epsilon, rel=1e-12)
     assert d["grid"]["alpha"] == [20.0, 30.0, 40.0] and d["grid"]["n_modes"] == [10, 14, 20]
     assert {"epsilon_err", "fits", "asymptotic_ok", "message"} <= d.keys()
-    at = _run(epsilon_command, ["--nu", "0.33", "--v", "0.2", "--alpha", "40", *_grid_args(path)])
+    # --alpha takes the place of --alphas / --alpha-scale (giving both is refused).
+    one_wall = ["--alpha", "40", "--modes", "10", "14", "20", "--store", str(path)]
+    at = _run(epsilon_command, ["--nu", "0.33", "--v", "0.2", *one_wall])
     assert at.exit_code == 0 and "at alpha = 40" in at.output
 
 

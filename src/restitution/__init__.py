@@ -7,26 +7,39 @@ velocities are in units of c = sqrt(E / rho) and the disk mass is pi.
 
 __version__ = "0.1.0"
 
-from restitution.cache import get_modes  # noqa: E402
-from restitution.collision import CollisionSettings, collide, collide_batch  # noqa: E402
+from restitution.cache import CacheError, get_modes  # noqa: E402
+from restitution.collision import (  # noqa: E402
+    CollisionError,
+    CollisionSettings,
+    collide,
+    collide_batch,
+)
 from restitution.errors import InputError, RestitutionError  # noqa: E402
 from restitution.law import EpsilonLaw, law  # noqa: E402
 from restitution.material import Material, MaterialError  # noqa: E402
-from restitution.modes import ModeSet, compute_modes, weyl_count  # noqa: E402
+from restitution.modes import ModeError, ModeSet, compute_modes, weyl_count  # noqa: E402
+from restitution.results import UNITS, CollisionResult  # noqa: E402
 from restitution.si_law import SILaw, si_law  # noqa: E402
+from restitution.store import StoreError  # noqa: E402
 from restitution.units import Grain  # noqa: E402
 
 __all__ = [
     "__version__",
+    "UNITS",
+    "CacheError",
+    "CollisionError",
+    "CollisionResult",
     "CollisionSettings",
     "EpsilonLaw",
     "Grain",
     "InputError",
     "Material",
     "MaterialError",
+    "ModeError",
     "ModeSet",
     "RestitutionError",
     "SILaw",
+    "StoreError",
     "collide",
     "collide_batch",
     "compute_modes",

@@ -39,8 +39,11 @@ __all__ = [
     "CONTACT_TOL",
     "CollisionError",
     "CollisionSettings",
+    "WorkEstimate",
+    "check_work",
     "collide",
     "collide_batch",
+    "estimate_work",
     "initial_step",
     "rank_modes",
 ]
@@ -112,17 +115,87 @@ class CollisionSettings:
             raise InputError(
                 f"unknown integrator {self.integrator!r}; choose one of {sorted(INTEGRATORS)}"
             )
-        if not (self.energy_tol > 0):
-            raise InputError(f"energy_tol must be positive, got {self.energy_tol}")
-        if self.dt is not None and not (self.dt > 0 and math.isfinite(self.dt)):
-            raise InputError(f"dt must be a positive number, got {self.dt}")
-        if self.backend not in _BACKENDS:
-            raise InputError(f"unknown backend {self.backend!r}; choose one of {_BACKENDS}")
+        _require(
+            _is_real(self.energy_tol) and 0 < self.energy_tol < 1,
+            f"energy_tol must be a number in (0, 1) (relative energy drift), got "
+            f"{self.energy_tol!r}",
+        )
+        _require(
+            self.dt is None or (_is_real(self.dt) and self.dt > 0),
+            f"dt must be None (automatic) or a positive number in R/c, got {self.dt!r}",
+        )
+        _require(
+            self.n_phi is None or (_is_int(self.n_phi) and self.n_phi >= 16),
+            f"n_phi must be None (automatic) or an integer >= 16, got {self.n_phi!r}",
+        )
+        _require(
+            _is_int(self.max_refinements) and self.max_refinements >= 0,
+            f"max_refinements must be an integer >= 0, got {self.max_refinements!r}",
+        )
+        _require(
+            _is_real(self.step_safety) and self.step_safety > 0,
+            f"step_safety must be a positive number (it multiplies the automatic step), got "
+            f"{self.step_safety!r}",
+        )
+        _require(
+            isinstance(self.record, bool | np.bool_),
+            f"record must be True or False, got {self.record!r}",
+        )
+        _require(
+            _is_real(self.record_interval) and self.record_interval > 0,
+            f"record_interval must be a positive time in R/c, got {self.record_interval!r}",
+        )
+        _require(
+            _is_int(self.max_steps) and self.max_steps >= 1,
+            f"max_steps must be a positive integer, got {self.max_steps!r}",
+        )
+        _require(
+            self.backend in _BACKENDS,
+            f"unknown backend {self.backend!r}; choose one of {_BACKENDS}",
+        )
 
 
-def _check_inputs(v: np.ndarray, alpha: np.ndarray, modes: ModeSet) -> None:
+def _require(condition: bool, message: str) -> None:
+    if not condition:
+        raise InputError(message)
+
+
+def _is_int(value) -> bool:
+    return isinstance(value, int | np.integer) and not isinstance(value, bool | np.bool_)
+
+
+def _is_real(value) -> bool:
+    return (
+        isinstance(value, int | float | np.integer | np.floating)
+        and not isinstance(value, bool | np.bool_)
+        and math.isfinite(value)
+    )
+
+
+def _check_inputs(v, alpha, modes: ModeSet) -> tuple[np.ndarray, np.ndarray]:
+    """Validate a batch; returns ``(v, alpha)`` as equal-length float arrays, shape (B,)."""
+    if not isinstance(modes, ModeSet):
+        raise InputError(f"modes must be a ModeSet (see get_modes), got {type(modes).__name__}")
     if len(modes) < 1:
         raise InputError("at least one mode is needed (use --modes >= 1)")
+    arrays = []
+    for name, value in (("v", v), ("alpha", alpha)):
+        try:
+            arr = np.atleast_1d(np.asarray(value, dtype=float))
+        except (TypeError, ValueError):
+            raise InputError(f"{name} must be a number or a 1-D list of numbers") from None
+        if arr.ndim != 1:
+            raise InputError(f"{name} must be a number or a 1-D list, got shape {arr.shape}")
+        if arr.size == 0:
+            raise InputError(f"{name} is empty: give at least one collision")
+        arrays.append(arr)
+    v, alpha = arrays
+    if v.size != alpha.size and 1 not in (v.size, alpha.size):
+        raise InputError(
+            f"v has {v.size} values and alpha {alpha.size}: give equally many, or one of them "
+            "as a single number"
+        )
+    v, alpha = (a.astype(float).copy() for a in np.broadcast_arrays(v, alpha))
     if not np.all(np.isfinite(v)) or np.any(v <= 0) or np.any(v >= 1):
         raise InputError(
             f"the speed v must lie in (0, 1) in units of c (the disk's speed towards the wall), "
@@ -136,6 +209,7 @@ def _check_inputs(v: np.ndarray, alpha: np.ndarray, modes: ModeSet) -> None:
             "extrapolation",
             stacklevel=3,
         )
+    return v, alpha
 
 
 def _start_position(alpha: np.ndarray, e0: np.ndarray, quad) -> np.ndarray:
@@ -172,6 +246,119 @@ def initial_step(
     coeff = _STEP_COEFF[integrator] * (energy_tol / 1e-6) ** (1.0 / order)
     w_max = float(modes.omega.max())
     return coeff * np.minimum(1.0 / (alpha * v), 1.0 / w_max)
+
+
+_MAX_MEMORY_BYTES = 4 * 2**30
+"""Largest working memory (quadrature and batch arrays) a collision run may plan to use."""
+
+
+@dataclass(frozen=True)
+class WorkEstimate:
+    """Up-front estimate of the work of one batch (the largest member).
+
+    Attributes
+    ----------
+    steps : float
+        Expected time steps of one run: (approach + contact + departure time) / dt.
+    t_end : float
+        Expected simulated time, ``R / c``: the approach from the start position and back at
+        speed ``v`` plus the quasistatic contact time.
+    dt : float
+        First step, ``R / c``.
+    n_phi : int
+        Nodes of the edge quadrature.
+    memory_bytes : float
+        Working memory of the quadrature and the batch arrays, bytes.
+    limit : str
+        What makes it large: ``"approach"`` (the start is far from the wall for this ``v`` and
+        ``alpha``), ``"wall"`` (``alpha v`` forces a tiny step) or ``"modes"`` (the fastest
+        mode forces a tiny step).
+    """
+
+    steps: float
+    t_end: float
+    dt: float
+    n_phi: int
+    memory_bytes: float
+    limit: str
+
+
+def estimate_work(
+    modes: ModeSet, v: np.ndarray, alpha: np.ndarray, settings: CollisionSettings
+) -> WorkEstimate:
+    """Estimate steps and memory of :func:`collide_batch` before anything is allocated.
+
+    The start position solves ``V(x0) = CONTACT_TOL E0`` with the wall integral approximated
+    by ``min(pi/2, sqrt(pi / (2 alpha)))`` (the Gaussian peak at ``phi = 0``); the disk flies
+    that distance at ``v`` in and out, and touches for the quasistatic time of eq. (61).
+    """
+    v = np.asarray(v, dtype=float)
+    alpha = np.asarray(alpha, dtype=float)
+    e0 = 0.5 * modes.mass * v**2
+    integral = np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / alpha))
+    with np.errstate(over="ignore", divide="ignore"):
+        gap = np.maximum(0.0, -np.log(CONTACT_TOL * e0 * alpha / integral) / alpha)
+    flight = 2.0 * gap / v
+    t_end = flight + _contact_time_estimate(v)
+    if settings.dt is not None:
+        dt = np.full(v.size, settings.dt)
+    else:
+        dt = settings.step_safety * initial_step(
+            modes, v, alpha, settings.integrator, settings.energy_tol
+        )
+    steps = t_end / dt
+    worst = int(np.argmax(steps))
+    if flight[worst] > 0.5 * t_end[worst]:
+        limit = "approach"
+    elif alpha[worst] * v[worst] > float(modes.omega.max()):
+        limit = "wall"
+    else:
+        limit = "modes"
+    n_max = int(modes.n.max())
+    n_phi = settings.n_phi or default_n_phi(float(alpha.max()), n_max)
+    orders = np.unique(modes.n).size
+    # trig (n_phi x 2K) and a few (B x n_phi) and (B x N) work arrays, 8 bytes each.
+    memory = 8.0 * (n_phi * (2 * orders + 4) + 6 * v.size * (n_phi + len(modes)))
+    return WorkEstimate(
+        steps=float(steps[worst]),
+        t_end=float(t_end[worst]),
+        dt=float(dt[worst]),
+        n_phi=int(n_phi),
+        memory_bytes=float(memory),
+        limit=limit,
+    )
+
+
+def check_work(
+    modes: ModeSet, v: np.ndarray, alpha: np.ndarray, settings: CollisionSettings
+) -> WorkEstimate:
+    """Refuse a batch whose estimated work exceeds ``settings.max_steps`` or the memory bound.
+
+    Raises
+    ------
+    InputError
+        Saying the estimate and what to change.
+    """
+    est = estimate_work(modes, v, alpha, settings)
+    if est.memory_bytes > _MAX_MEMORY_BYTES:
+        raise InputError(
+            f"alpha up to {float(np.max(alpha)):.3g} needs {est.n_phi:.3g} edge quadrature "
+            f"nodes, about {est.memory_bytes / 2**30:.3g} GiB (limit "
+            f"{_MAX_MEMORY_BYTES / 2**30:g} GiB); lower alpha or set a smaller n_phi"
+        )
+    if est.steps > settings.max_steps:
+        advice = {
+            "approach": "the disk starts where the wall energy is 1e-12 of E0 and needs that "
+            "long to arrive: raise v or alpha (alpha * v of order 1-100 is typical)",
+            "wall": "the step must resolve 1/(alpha v): lower alpha",
+            "modes": "the step must resolve the fastest mode: use fewer modes",
+        }[est.limit]
+        raise InputError(
+            f"this collision would need about {est.steps:.2g} time steps (simulated time "
+            f"{est.t_end:.3g} R/c at dt = {est.dt:.3g} R/c), more than max_steps = "
+            f"{settings.max_steps}; {advice}"
+        )
+    return est
 
 
 def _edge_reach(system: System, e: np.ndarray, g_max: np.ndarray) -> np.ndarray:
@@ -493,9 +680,8 @@ def collide_batch(
     settings = settings or CollisionSettings()
     if overrides:
         settings = CollisionSettings(**{**settings.__dict__, **overrides})
-    v, alpha = np.broadcast_arrays(np.atleast_1d(np.asarray(v, float)), np.atleast_1d(alpha))
-    v, alpha = v.astype(float).copy(), alpha.astype(float).copy()
-    _check_inputs(v, alpha, modes)
+    v, alpha = _check_inputs(v, alpha, modes)
+    check_work(modes, v, alpha, settings)
     n_max = int(modes.n.max())
     # Each member's quadrature follows from its own alpha, never from its batch.
     n_phis = np.array([settings.n_phi or default_n_phi(float(a), n_max) for a in alpha])
@@ -551,6 +737,7 @@ def collide_batch(
                 mode_energy_mean=r["energy_mean"],
                 mode_energy_closest=r["energy_closest"],
                 history=r.get("history"),
+                energy_tol=settings.energy_tol,
             )
         )
     return results
@@ -572,6 +759,8 @@ def collide(
     >>> 0.9 < r.epsilon < 1.0
     True
     """
+    if np.ndim(v) or np.ndim(alpha):
+        raise InputError("collide takes one speed v and one alpha; use collide_batch for several")
     return collide_batch(modes, [v], [alpha], settings, **overrides)[0]
 
 

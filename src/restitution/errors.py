@@ -6,7 +6,7 @@ message on one line and exits with status 2, without a traceback.
 
 from __future__ import annotations
 
-__all__ = ["RestitutionError", "InputError"]
+__all__ = ["RestitutionError", "InputError", "OutputError", "SchedulerError"]
 
 
 class RestitutionError(Exception):
@@ -15,3 +15,11 @@ class RestitutionError(Exception):
 
 class InputError(RestitutionError, ValueError):
     """An input is outside its allowed range; the message names the range."""
+
+
+class SchedulerError(RestitutionError):
+    """A Dask scheduler address is malformed, unreachable or not a Dask scheduler."""
+
+
+class OutputError(RestitutionError):
+    """An output file or directory cannot be written; the message names it and what to do."""

@@ -7,11 +7,25 @@ modulus times length / length), energies as fractions of the initial kinetic ene
 
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-__all__ = ["CollisionResult", "History"]
+__all__ = ["UNITS", "CollisionResult", "History"]
+
+UNITS: dict[str, str] = {
+    "system": "E = rho = R = 1: two-dimensional Young modulus, mass per area and disk radius",
+    "length": "R",
+    "time": "R/c",
+    "speed": "c = sqrt(E/rho) (v: the disk's speed towards the wall)",
+    "frequency": "c/R",
+    "alpha": "1/R",
+    "force": "E R",
+    "energy": "fraction of the initial kinetic energy (m/2) v^2, m = pi",
+    "wall_time": "s",
+}
+"""The units of every number this package reports; every JSON output carries this table."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -79,6 +93,8 @@ class CollisionResult:
         closest approach (largest ``x0``); fractions of the initial kinetic energy.
     history : History or None
         Time histories when requested.
+    energy_tol : float or None
+        The drift the run had to meet (``None``: not checked against a tolerance).
     """
 
     method: str
@@ -101,6 +117,30 @@ class CollisionResult:
     mode_energy_mean: np.ndarray = field(default_factory=lambda: np.zeros(0))
     mode_energy_closest: np.ndarray = field(default_factory=lambda: np.zeros(0))
     history: History | None = None
+    energy_tol: float | None = None
+
+    @property
+    def status(self) -> str:
+        """``"ok"``, ``"drift-exceeded"`` (a fixed step broke ``energy_tol``) or
+        ``"not-finite"``; :attr:`advice` says what to do."""
+        if not math.isfinite(self.epsilon) or not math.isfinite(self.energy_drift):
+            return "not-finite"
+        if self.energy_tol is not None and self.energy_drift > self.energy_tol:
+            return "drift-exceeded"
+        return "ok"
+
+    @property
+    def advice(self) -> str | None:
+        """What to change when :attr:`status` is not ``"ok"``; ``None`` when it is."""
+        if self.status == "drift-exceeded":
+            return (
+                f"energy drift {self.energy_drift:.2g} exceeds energy_tol = "
+                f"{self.energy_tol:.2g}: epsilon may be off by about the drift; use a smaller "
+                "fixed dt, or dt=None to choose and refine the step automatically"
+            )
+        if self.status == "not-finite":
+            return "the run produced no finite epsilon; use a smaller step"
+        return None
 
     @property
     def energy_loss(self) -> float:
@@ -111,6 +151,8 @@ class CollisionResult:
         """JSON-ready dictionary (histories are omitted)."""
         d = {k: v for k, v in asdict(self).items() if k != "history" and not k.startswith("mode_")}
         d["energy_loss"] = self.energy_loss
+        d["status"] = self.status
+        d["advice"] = self.advice
         if modes:
             d["mode_energies_after"] = [
                 {"n": int(n), "l": int(l), "energy": float(e)}

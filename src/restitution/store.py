@@ -288,7 +288,13 @@ class Store:
     def __init__(self, path: str | Path | None = None) -> None:
         self.path = Path(path) if path is not None else default_store_path()
         self._check_file()
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise StoreError(
+                f"cannot create the directory of result store {self.path} "
+                f"({exc.strerror or exc}); pass --store PATH in a writable directory"
+            ) from None
         try:
             self._conn = sqlite3.connect(
                 self.path, timeout=_BUSY_TIMEOUT_S, isolation_level=None, check_same_thread=False
@@ -300,12 +306,7 @@ class Store:
             self._init_schema()
         except sqlite3.DatabaseError as exc:
             self._conn.close()
-            if isinstance(exc, sqlite3.OperationalError) and "locked" in str(exc):
-                raise StoreError(
-                    f"result store {self.path} stayed locked by another process for "
-                    f"{_BUSY_TIMEOUT_S:g} s; try again, or pass another path (--store PATH)"
-                ) from exc
-            raise self._foreign(f"SQLite cannot read it ({exc})") from exc
+            raise self._error(exc, opening=True) from None
         except StoreError:
             self._conn.close()
             raise
@@ -314,17 +315,75 @@ class Store:
 
     def _foreign(self, what: str) -> StoreError:
         return StoreError(
-            f"result store {self.path} is not a restitution store: {what}. Delete the file "
-            "or pass another path (--store PATH)"
+            f"result store {self.path} is not a restitution store: {what}. Pass another path "
+            "(--store PATH), or move the file away if it is not needed"
         )
+
+    def _error(self, exc: sqlite3.Error, *, opening: bool = False) -> StoreError:
+        """A :class:`StoreError` for an SQLite error, with advice that fits its cause.
+
+        Only a file that SQLite cannot recognise is called foreign; a valid store that cannot
+        be written, is locked or is damaged is never called foreign, and deleting a store is
+        never advised.
+        """
+        name = getattr(exc, "sqlite_errorname", "")
+        text = str(exc)
+        if "locked" in text or name in ("SQLITE_BUSY", "SQLITE_LOCKED"):
+            return StoreError(
+                f"result store {self.path} stayed locked by another process for "
+                f"{_BUSY_TIMEOUT_S:g} s; try again, or pass another path (--store PATH)"
+            )
+        if name == "SQLITE_NOTADB" or "not a database" in text:
+            return self._foreign(f"SQLite cannot read it ({text})")
+        if name == "SQLITE_CORRUPT" or "malformed" in text:
+            return StoreError(
+                f"result store {self.path} is damaged ({text}); its readable rows may be "
+                f"saved with `sqlite3 {self.path} .recover`; pass another path (--store PATH) "
+                "to compute afresh"
+            )
+        if name == "SQLITE_FULL" or "full" in text:
+            return StoreError(
+                f"result store {self.path}: the disk is full ({text}); free space and rerun "
+                "(stored points are kept), or pass --store PATH on another disk"
+            )
+        action = "opened" if opening else "written"
+        return StoreError(
+            f"result store {self.path} cannot be {action} ({text}): make the file and its "
+            "directory writable, or pass --store PATH to a writable location (a copy of this "
+            "file keeps its results)"
+        )
+
+    def check_writable(self) -> None:
+        """Write one row of metadata now, so that a sweep fails before computing, not after.
+
+        Raises
+        ------
+        StoreError
+            If the store cannot be written; the message says what to do.
+        """
+        try:
+            with self._write():
+                self._conn.execute(
+                    "INSERT INTO meta VALUES ('last_write_check', ?) "
+                    "ON CONFLICT(key) DO UPDATE SET value = excluded.value",
+                    (_now(),),
+                )
+        except sqlite3.Error as exc:
+            raise self._error(exc) from None
 
     def _check_file(self) -> None:
         if not self.path.exists():
             return
         if self.path.is_dir():
             raise self._foreign("it is a directory")
-        with open(self.path, "rb") as fh:
-            head = fh.read(len(_SQLITE_MAGIC))
+        try:
+            with open(self.path, "rb") as fh:
+                head = fh.read(len(_SQLITE_MAGIC))
+        except OSError as exc:
+            raise StoreError(
+                f"cannot read result store {self.path} ({exc.strerror or exc}); make it "
+                "readable or pass another path (--store PATH)"
+            ) from None
         if head and head != _SQLITE_MAGIC:
             raise self._foreign("not a SQLite database")
 
@@ -363,8 +422,8 @@ class Store:
         if meta.get("schema_version") != _SCHEMA_VERSION:
             raise StoreError(
                 f"result store {self.path} has schema version {meta.get('schema_version')}, "
-                f"this code reads version {_SCHEMA_VERSION}. Delete the file or pass another "
-                "path (--store PATH)"
+                f"this code reads version {_SCHEMA_VERSION}; pass another path (--store PATH) "
+                "and keep this file for the code version that wrote it"
             )
 
     def _write(self):
@@ -436,16 +495,18 @@ class Store:
             f"INSERT INTO collisions ({cols}) VALUES ({', '.join('?' * len(values))}) "
             f"ON CONFLICT(key) DO UPDATE SET {update} WHERE collisions.status = 'failed'"
         )
-        with self._write():
-            self._conn.execute(sql, values)
+        try:
+            with self._write():
+                self._conn.execute(sql, values)
+        except sqlite3.Error as exc:
+            raise self._error(exc) from None
 
     # -- reading -----------------------------------------------------------------------------
 
     def get(self, spec: PointSpec) -> StoredPoint | None:
         """The stored row of ``spec`` (this code version), or None."""
-        row = self._conn.execute(
-            f"SELECT {_ROW} FROM collisions WHERE key = ?", (spec.key(),)
-        ).fetchone()
+        row = self._read(f"SELECT {_ROW} FROM collisions WHERE key = ?", (spec.key(),))
+        row = row[0] if row else None
         return None if row is None else _row_to_point(row)
 
     def status(self, specs: Iterable[PointSpec]) -> dict[str, str]:
@@ -456,9 +517,23 @@ class Store:
             chunk = keys[start : start + 500]
             marks = ",".join("?" * len(chunk))
             out.update(
-                self._conn.execute(
-                    f"SELECT key, status FROM collisions WHERE key IN ({marks})", chunk
-                ).fetchall()
+                self._read(f"SELECT key, status FROM collisions WHERE key IN ({marks})", chunk)
+            )
+        return out
+
+    def errors(self, specs: Iterable[PointSpec]) -> dict[str, str]:
+        """Map key -> error message for those of ``specs`` that are stored as failed."""
+        keys = [s.key() for s in specs]
+        out: dict[str, str] = {}
+        for start in range(0, len(keys), 500):
+            chunk = keys[start : start + 500]
+            marks = ",".join("?" * len(chunk))
+            out.update(
+                self._read(
+                    f"SELECT key, error FROM collisions WHERE status = 'failed' AND key IN "
+                    f"({marks})",
+                    chunk,
+                )
             )
         return out
 
@@ -476,16 +551,22 @@ class Store:
             where.append("code_version = ?")
             args.append(code_version())
         clause = f" WHERE {' AND '.join(where)}" if where else ""
-        rows = self._conn.execute(
+        rows = self._read(
             f"SELECT {_ROW} FROM collisions{clause} ORDER BY nu, v, alpha, n_modes", args
         )
         return [_row_to_point(r) for r in rows]
+
+    def _read(self, sql: str, args: Any = ()) -> list[tuple]:
+        try:
+            return self._conn.execute(sql, args).fetchall()
+        except sqlite3.Error as exc:
+            raise self._error(exc) from None
 
     def __iter__(self) -> Iterator[StoredPoint]:
         return iter(self.points(all_versions=True))
 
     def __len__(self) -> int:
-        return int(self._conn.execute("SELECT COUNT(*) FROM collisions").fetchone()[0])
+        return int(self._read("SELECT COUNT(*) FROM collisions")[0][0])
 
 
 _ROW = f"inputs, status, error, {', '.join(_SCALARS)}, result, code_version, created_at"

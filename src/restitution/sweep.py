@@ -6,17 +6,13 @@ integrator, options), sorted by ``(alpha, v)`` inside a group so that a batch sh
 time step, cut into batches of ``batch_size`` points and submitted to an executor; each batch
 calls :func:`restitution.collision.collide_batch` on one mode set. The parent process writes
 every finished batch to the store at once, so Ctrl-C or ``kill -9`` loses at most the points in
-flight, and a failed point is stored with its error message without losing the others.
+flight. A point that failed in the solver is stored with its error message without losing the
+others; a task that died with its worker (``kill -9`` of a pool process, a lost Dask worker) is
+resubmitted (:data:`restitution.executors.INFRASTRUCTURE_RETRIES` times) and never stored as
+failed. The store is checked for writability before anything is computed.
 
-Executors (library interfaces only, no home-made distribution):
-
-* default: :class:`concurrent.futures.ProcessPoolExecutor` on all cores (spawned processes);
-* ``workers=N``: a :class:`distributed.LocalCluster` with ``N`` single-threaded workers;
-* ``scheduler=ADDRESS``: an existing Dask cluster, through ``distributed.Client(ADDRESS)``;
-* ``client=``: an existing :class:`distributed.Client`.
-
-Dask futures come from ``Client.get_executor()``, so every executor is driven through
-:func:`concurrent.futures.as_completed`.
+Where the tasks run is :mod:`restitution.executors`: local processes (default), a Dask
+``LocalCluster`` (``workers=N``), an existing scheduler (``scheduler=ADDRESS``) or client.
 
 The default extrapolation sets (velocities, ``alpha`` and ``N`` values) live in ONE place,
 :data:`DEFAULTS`; change them with :func:`dataclasses.replace`.
@@ -25,21 +21,24 @@ The default extrapolation sets (velocities, ``alpha`` and ``N`` values) live in 
 from __future__ import annotations
 
 import concurrent.futures as cf
-import contextlib
 import math
-import multiprocessing
 import os
 import sys
-import threading
 import time
 from collections import defaultdict
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.executors import (
+    INFRASTRUCTURE_RETRIES,
+    executor,
+    infrastructure_message,
+    is_infrastructure_failure,
+)
 from restitution.store import PointSpec, Store
 
 __all__ = [
@@ -123,6 +122,13 @@ class SweepSettings:
         object.__setattr__(self, "velocities", tuple(float(v) for v in self.velocities))
         object.__setattr__(self, "alphas", tuple(float(a) for a in self.alphas))
         object.__setattr__(self, "n_modes", tuple(int(n) for n in self.n_modes))
+        for name in ("velocities", "alphas", "n_modes"):
+            values = getattr(self, name)
+            if len(set(values)) != len(values):
+                raise InputError(
+                    f"{name} has repeated values {list(values)}; give distinct values "
+                    "(a repeated point adds nothing to an extrapolation)"
+                )
         integrator, options = _solver_settings(self.integrator, self.options)
         object.__setattr__(self, "integrator", integrator)
         object.__setattr__(self, "options", options)
@@ -315,6 +321,9 @@ class SweepReport:
         Wall-clock time, seconds.
     executor : str
         Description of the executor used.
+    lost : tuple of (PointSpec, str)
+        Points whose worker died (infrastructure failure) on every one of
+        :data:`INFRASTRUCTURE_RETRIES` + 1 attempts; not stored, so a rerun computes them.
     """
 
     total: int
@@ -323,6 +332,12 @@ class SweepReport:
     failed: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
     wall_time_s: float = 0.0
     executor: str = ""
+    lost: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
+
+    @property
+    def complete(self) -> bool:
+        """Whether every point of this run is now stored as a success."""
+        return not self.failed and not self.lost
 
     @property
     def rate(self) -> float:
@@ -346,100 +361,6 @@ def _batches(specs: list[PointSpec], batch_size: int) -> list[list[PointSpec]]:
         out += [members[i : i + batch_size] for i in range(0, len(members), batch_size)]
     out.sort(key=_cost, reverse=True)  # longest first balances the workers
     return out
-
-
-@contextlib.contextmanager
-def _single_threaded_children() -> Iterator[None]:
-    """One BLAS/OpenMP thread in worker processes started inside this block.
-
-    The workers already fill the cores; threaded BLAS in each would oversubscribe them. The
-    variables are inherited by processes spawned now and restored afterwards.
-    """
-    names = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
-    saved = {k: os.environ.get(k) for k in names}
-    os.environ.update({k: "1" for k in names})
-    try:
-        yield
-    finally:
-        for k, v in saved.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
-
-
-def _exit_with_parent(parent: int) -> None:
-    """Worker initializer: end this worker when the sweep process is gone (e.g. ``kill -9``).
-
-    Pool workers would otherwise wait for work forever: every worker holds both ends of the
-    task queue, so the parent's death never reaches them as end-of-file.
-    """
-
-    def watch() -> None:
-        while os.getppid() == parent:
-            time.sleep(1.0)
-        os._exit(1)
-
-    threading.Thread(target=watch, daemon=True, name="exit-with-parent").start()
-
-
-def _cpu_count() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # pragma: no cover - not Linux
-        return os.cpu_count() or 1
-
-
-@contextlib.contextmanager
-def _executor(
-    workers: int | None, scheduler: str | None, client: Any
-) -> Iterator[tuple[cf.Executor, str]]:
-    if client is not None:
-        yield client.get_executor(pure=False), f"dask client {client.scheduler.address}"
-        return
-    if scheduler is not None:
-        from distributed import Client
-
-        with Client(scheduler) as c:
-            yield c.get_executor(pure=False), f"dask scheduler {scheduler}"
-        return
-    if workers is not None:
-        if workers < 1:
-            raise InputError("workers must be >= 1")
-        from distributed import Client, LocalCluster
-
-        with (
-            _single_threaded_children(),
-            LocalCluster(
-                n_workers=workers,
-                threads_per_worker=1,
-                processes=True,
-                dashboard_address=":0",  # any free port; never collide with 8787
-            ) as cluster,
-            Client(cluster) as c,
-        ):
-            yield c.get_executor(pure=False), f"dask LocalCluster, {workers} workers"
-        return
-    n = _cpu_count()
-    with _single_threaded_children():
-        context = multiprocessing.get_context("spawn")  # safe with the parent's threads
-        pool = cf.ProcessPoolExecutor(
-            max_workers=n,
-            mp_context=context,
-            initializer=_exit_with_parent,
-            initargs=(os.getpid(),),
-        )
-        try:
-            yield pool, f"local processes, {n} workers"
-        except BaseException:
-            # Interrupted: stop the workers now instead of letting them finish their batches
-            # (their results could no longer be stored anyway).
-            processes = list((getattr(pool, "_processes", None) or {}).values())
-            pool.shutdown(wait=False, cancel_futures=True)
-            for process in processes:
-                process.terminate()
-            raise
-        pool.shutdown(wait=True)
 
 
 def _progress(enabled: bool | None, total: int):
@@ -504,7 +425,10 @@ def run_sweep(
     progress : bool, optional
         Show a progress bar with ETA on stderr; default: only when stderr is a terminal.
     retry_failed : bool
-        Also recompute points stored as failed.
+        Also recompute points stored as failed. Points whose task died with its worker
+        (``BrokenProcessPool``, a lost Dask worker) are never stored as failed; they are
+        resubmitted up to :data:`INFRASTRUCTURE_RETRIES` times and otherwise left for the next
+        run (:attr:`SweepReport.lost`).
 
     Returns
     -------
@@ -520,15 +444,21 @@ def run_sweep(
     try:
         unique = list(dict.fromkeys(points))
         status = db.status(unique)
+        errors = db.errors(s for s in unique if status.get(s.key()) == "failed")
         todo = [
             s
             for s in unique
-            if status.get(s.key()) is None or (retry_failed and status[s.key()] == "failed")
+            if status.get(s.key()) is None
+            or (
+                status[s.key()] == "failed"
+                and (retry_failed or infrastructure_message(errors.get(s.key())))
+            )
         ]
         skipped = len(unique) - len(todo)
-        computed, failed, name = 0, [], "none"
+        computed, failed, lost, name = 0, [], [], "none"
         if todo:
-            computed, failed, name = _execute(
+            db.check_writable()  # fail now, not after computing
+            computed, failed, lost, name = _execute(
                 db, todo, batch_size, batch_function, workers, scheduler, client, progress
             )
         return SweepReport(
@@ -536,6 +466,7 @@ def run_sweep(
             skipped=skipped,
             computed=computed,
             failed=tuple(failed),
+            lost=tuple(lost),
             wall_time_s=time.perf_counter() - t0,
             executor=name,
         )
@@ -545,33 +476,51 @@ def run_sweep(
 
 
 def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, progress):
-    batches = _batches(todo, batch_size)
-    computed, failed = 0, []
-    with _executor(workers, scheduler, client) as (executor, name):
-        futures = {executor.submit(_run_task, batch_function, b): b for b in batches}
-        try:
-            with _progress(progress, len(todo)) as bar:
-                task = bar.add_task("sweep", total=len(todo))
-                for future in cf.as_completed(futures):
-                    batch = futures.pop(future)
-                    try:
-                        outcomes = future.result()
-                    except Exception as exc:  # noqa: BLE001 - the whole task died
-                        outcomes = [("failed", f"{type(exc).__name__}: {exc}")] * len(batch)
-                    for spec, (state, payload) in zip(batch, outcomes, strict=True):
-                        if state == "ok":
-                            db.put(spec, payload)
-                            computed += 1
-                        else:
-                            db.put_failure(spec, str(payload))
-                            failed.append((spec, str(payload)))
-                    bar.advance(task, len(batch))
-        except BaseException:
-            # Ctrl-C (or any error in the parent): drop the queued work; what is stored stays.
-            for future in futures:
-                future.cancel()
-            raise
-    return computed, failed, name
+    pending = _batches(todo, batch_size)
+    computed, failed, lost, name = 0, [], [], "none"
+    with _progress(progress, len(todo)) as bar:
+        task = bar.add_task("sweep", total=len(todo))
+        for attempt in range(INFRASTRUCTURE_RETRIES + 1):
+            retry = []
+            with executor(workers, scheduler, client) as (pool, name):
+                futures = {pool.submit(_run_task, batch_function, b): b for b in pending}
+                try:
+                    for future in cf.as_completed(futures):
+                        batch = futures.pop(future)
+                        try:
+                            outcomes = future.result()
+                        except Exception as exc:  # noqa: BLE001 - the whole task died
+                            if is_infrastructure_failure(exc):
+                                retry.append((batch, f"{type(exc).__name__}: {exc}"))
+                                continue
+                            outcomes = [("failed", f"{type(exc).__name__}: {exc}")] * len(batch)
+                        for spec, (state, payload) in zip(batch, outcomes, strict=True):
+                            if state == "ok":
+                                db.put(spec, payload)
+                                computed += 1
+                            else:
+                                db.put_failure(spec, str(payload))
+                                failed.append((spec, str(payload)))
+                        bar.advance(task, len(batch))
+                except BaseException:
+                    # Ctrl-C (or any error in the parent): drop the queued work; what is
+                    # stored stays.
+                    for future in futures:
+                        future.cancel()
+                    raise
+            if not retry:
+                break
+            pending = [batch for batch, _ in retry]
+            points = sum(len(b) for b in pending)
+            if attempt < INFRASTRUCTURE_RETRIES:
+                bar.console.print(
+                    f"warning: {points} point(s) lost with a worker ({retry[0][1][:120]}); "
+                    f"retrying ({attempt + 1}/{INFRASTRUCTURE_RETRIES})"
+                )
+        else:
+            # Still lost after every retry: not stored, so the next run computes them.
+            lost = [(spec, message) for batch, message in retry for spec in batch]
+    return computed, failed, lost, name
 
 
 # -- reading a grid back ---------------------------------------------------------------------

@@ -2,6 +2,10 @@
 
 Every command lives in its own module of this package; this file only assembles the group and
 turns the package's own errors into one line on stderr with exit status 2.
+
+Exit status: 0 success; 1 some collisions of a sweep failed (``epsilon``, ``curve``); 2 an
+error (one line on stderr); 3 with ``--strict``, a result that is not asymptotic or not
+converged; 130 interrupted.
 """
 
 from __future__ import annotations
@@ -11,11 +15,13 @@ import sys
 import click
 
 from restitution import __version__
+from restitution.cli._common import quiet_option
 from restitution.errors import RestitutionError
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="restitution")
+@quiet_option
 def cli() -> None:
     """Coefficient of restitution of elastic disks from their vibrational modes.
 
@@ -23,6 +29,9 @@ def cli() -> None:
     c = sqrt(E/rho), times in R/c, and the disk mass is pi. Speeds v are the disk's speed
     towards the wall; two identical disks approaching each other at +-v collide at relative
     speed 2v.
+
+    Exit status: 0 success; 1 some collisions of a sweep failed; 2 an error; 3 with --strict,
+    a result that is not asymptotic or not converged.
     """
 
 
@@ -48,8 +57,18 @@ def _register() -> None:
 _register()
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Warnings as one line on stderr (none with ``--quiet``)."""
+    from restitution.cli._common import note
+
+    note(f"warning: {message}")
+
+
 def main(argv: list[str] | None = None) -> None:
     """Console-script entry point."""
+    import warnings
+
+    warnings.showwarning = _show_warning
     try:
         cli.main(args=argv, prog_name="restitution", standalone_mode=False)
     except click.exceptions.Abort:
@@ -60,6 +79,10 @@ def main(argv: list[str] | None = None) -> None:
         sys.exit(exc.exit_code)
     except RestitutionError as exc:
         click.echo(f"error: {exc}", err=True)
+        sys.exit(2)
+    except OSError as exc:  # a file the command reads or writes, named by the system
+        where = f" ({exc.filename})" if exc.filename else ""
+        click.echo(f"error: {exc.strerror or exc}{where}", err=True)
         sys.exit(2)
     except KeyboardInterrupt:
         click.echo("interrupted", err=True)

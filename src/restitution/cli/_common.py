@@ -1,15 +1,30 @@
-"""Options and output helpers shared by the commands."""
+"""Options and output helpers shared by the commands.
+
+Every JSON document a command prints carries the same envelope keys (:func:`envelope`):
+``version``, ``command``, ``units``, ``inputs``, ``status`` and ``advice``.
+"""
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
+import os
+from collections.abc import Iterator
 from pathlib import Path
 
 import click
 
-from restitution.errors import InputError
+from restitution import __version__
+from restitution.errors import InputError, OutputError
 from restitution.material import Material
+from restitution.results import UNITS
+
+EXIT_FAILED_POINTS = 1
+"""Exit status when collisions of a sweep failed (their messages are printed)."""
+
+EXIT_NOT_CONVERGED = 3
+"""Exit status with ``--strict`` when a result is not asymptotic or not converged."""
 
 PLANE_HELP = (
     "Interpret --nu as the three-dimensional Poisson number of a thin plate (stress) or of a "
@@ -25,6 +40,42 @@ plane_option = click.option(
     "--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP
 )
 
+_state = {"quiet": False}
+
+
+def _set_quiet(ctx: click.Context, param: click.Parameter, value: bool) -> None:
+    if value:
+        _state["quiet"] = True
+
+
+quiet_option = click.option(
+    "-q",
+    "--quiet",
+    is_flag=True,
+    expose_value=False,
+    is_eager=True,
+    callback=_set_quiet,
+    help="Print only results and errors: no notes, warnings or progress on stderr.",
+)
+
+strict_option = click.option(
+    "--strict",
+    is_flag=True,
+    help=f"Exit with status {EXIT_NOT_CONVERGED} when the result is not asymptotic or not "
+    "converged (the JSON 'status' says so either way).",
+)
+
+
+def quiet() -> bool:
+    """Whether ``--quiet`` was given."""
+    return _state["quiet"]
+
+
+def note(message: str) -> None:
+    """A note or warning on stderr, unless ``--quiet``."""
+    if not _state["quiet"]:
+        click.echo(message, err=True)
+
 
 def material_from(nu: float, plane: str | None) -> Material:
     """Material for a command's ``--nu`` and ``--plane`` options."""
@@ -39,14 +90,129 @@ def positive_finite(name: str, value: float) -> float:
     return value
 
 
+def given(ctx: click.Context, name: str) -> bool:
+    """Whether the option ``name`` (parameter name) was given on the command line."""
+    source = ctx.get_parameter_source(name)
+    return source is not None and source.name not in ("DEFAULT", "DEFAULT_MAP")
+
+
+def refuse_ignored(ctx: click.Context, names: dict[str, str], reason: str) -> None:
+    """Refuse options that would be accepted and then ignored (``names``: param -> flag)."""
+    bad = [flag for name, flag in names.items() if given(ctx, name)]
+    if bad:
+        raise InputError(
+            f"{', '.join(bad)} {'has' if len(bad) == 1 else 'have'} no effect {reason}"
+        )
+
+
+def _reason(exc: OSError) -> str:
+    return exc.strerror or str(exc)
+
+
+@contextlib.contextmanager
+def writing(path: Path, option: str) -> Iterator[None]:
+    """Turn an ``OSError`` while writing ``path`` into one clear :class:`OutputError`."""
+    try:
+        yield
+    except OSError as exc:
+        raise OutputError(
+            f"cannot write {option} {path}: {_reason(exc)}; choose a writable location"
+        ) from None
+
+
+def check_output_file(path: Path, option: str) -> None:
+    """Fail before any computation when ``path`` cannot be created or written."""
+    if path.is_dir():
+        raise OutputError(f"{option} {path} is a directory; give a file name")
+    parent = path.parent
+    if not parent.is_dir():
+        raise OutputError(
+            f"{option} {path}: the directory {parent} does not exist; create it first"
+        )
+    existed = path.exists()
+    with writing(path, option):
+        with open(path, "ab"):
+            pass
+    if not existed:
+        with contextlib.suppress(OSError):
+            path.unlink()
+
+
+def check_output_dir(path: Path, option: str) -> None:
+    """Create ``path`` if needed and prove that a file can be written in it."""
+    if path.exists() and not path.is_dir():
+        raise OutputError(f"{option} {path} is a file, not a directory")
+    with writing(path, option):
+        path.mkdir(parents=True, exist_ok=True)
+        probe = path / f".restitution-write-test-{os.getpid()}"
+        probe.write_bytes(b"")
+        probe.unlink()
+
+
+def check_figure_file(path: Path, option: str) -> None:
+    """Refuse a figure name whose suffix Matplotlib cannot write, then check the path."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    formats = FigureCanvasBase.get_supported_filetypes()
+    suffix = path.suffix.lower().lstrip(".")
+    if suffix not in formats:
+        raise OutputError(
+            f"{option} {path}: unknown figure format {path.suffix or '(none)'!r}; use one of "
+            f"{', '.join('.' + f for f in sorted(formats))}"
+        )
+    check_output_file(path, option)
+
+
 def write_text(text: str, output: Path | None) -> None:
     """Print ``text`` or write it to ``output``."""
     if output is None:
         click.echo(text, nl=not text.endswith("\n"))
     else:
-        output.write_text(text if text.endswith("\n") else text + "\n")
-        click.echo(f"wrote {output}", err=True)
+        with writing(output, "--output"):
+            with open(output, "w") as fh:
+                fh.write(text if text.endswith("\n") else text + "\n")
+        note(f"wrote {output}")
+
+
+def envelope(
+    command: str,
+    inputs: dict,
+    payload: dict | None = None,
+    *,
+    status: str = "ok",
+    advice: str | None = None,
+) -> dict:
+    """The keys every JSON output starts with, then ``payload``.
+
+    ``version`` (package version), ``command``, ``units`` (:data:`restitution.results.UNITS`),
+    ``inputs`` (every option that determines the result), ``status`` (``"ok"`` or what is
+    wrong) and ``advice`` (what to do when the status is not ``"ok"``).
+    """
+    head = {
+        "version": __version__,
+        "command": command,
+        "units": dict(UNITS),
+        "inputs": inputs,
+        "status": status,
+        "advice": advice,
+    }
+    return {**head, **{k: v for k, v in (payload or {}).items() if k not in head}}
+
+
+def _finite(obj):
+    """``obj`` with every non-finite float replaced by ``None`` (JSON has no NaN)."""
+    if isinstance(obj, float):
+        return obj if math.isfinite(obj) else None
+    if isinstance(obj, dict):
+        return {k: _finite(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [_finite(v) for v in obj]
+    return obj
 
 
 def dumps(obj) -> str:
-    return json.dumps(obj, indent=2, allow_nan=True)
+    """Strict JSON (``NaN`` and infinities become ``null``), numpy values included."""
+    from restitution.store import json_default
+
+    plain = json.loads(json.dumps(obj, default=json_default, allow_nan=True))
+    return json.dumps(_finite(plain), indent=2, allow_nan=False)

@@ -2,14 +2,31 @@
 
 from __future__ import annotations
 
+import sys
 import time
 import warnings
 
 import click
 
-from restitution.cache import get_modes
-from restitution.cli._common import dumps, material_from, nu_option, plane_option, positive_finite
+from restitution.cache import check_mode_request, get_modes
+from restitution.cli._common import (
+    EXIT_NOT_CONVERGED,
+    dumps,
+    envelope,
+    material_from,
+    note,
+    nu_option,
+    plane_option,
+    positive_finite,
+    quiet,
+    quiet_option,
+    refuse_ignored,
+    strict_option,
+)
 from restitution.errors import InputError
+
+_LONG_RUN_STEPS = 200_000
+"""Runs expected to take more steps than this are announced with their estimate."""
 
 
 def _print_summary(result, top: int = 10) -> None:
@@ -41,6 +58,8 @@ def _print_summary(result, top: int = 10) -> None:
                 f"{result.mode_energy_closest[i]:.7f}",
             )
         console.print(table)
+    if result.status != "ok":
+        console.print(f"[yellow]status {result.status}: {result.advice}[/yellow]")
 
 
 @click.command()
@@ -101,8 +120,23 @@ def _print_summary(result, top: int = 10) -> None:
     help="Largest accepted relative energy drift; the step is refined until met.",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
+@strict_option
+@quiet_option
+@click.pass_context
 def collide(
-    nu, plane, v, alpha, n_modes, select, integrator, method, mesh_refine, energy_tol, as_json
+    ctx,
+    nu,
+    plane,
+    v,
+    alpha,
+    n_modes,
+    select,
+    integrator,
+    method,
+    mesh_refine,
+    energy_tol,
+    as_json,
+    strict,
 ):
     """Head-on collision of an elastic disk with a hard wall: epsilon and where the energy goes.
 
@@ -116,8 +150,22 @@ def collide(
     positive_finite("--energy-tol", energy_tol)
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
+    if method == "fem":
+        refuse_ignored(
+            ctx,
+            {
+                "n_modes": "--modes",
+                "select": "--select",
+                "integrator": "--integrator",
+                "energy_tol": "--energy-tol",
+            },
+            "with --method fem (finite elements use --mesh-refine)",
+        )
+    else:
+        refuse_ignored(ctx, {"mesh_refine": "--mesh-refine"}, "with --method modal")
+        check_mode_request(material.nu, 2 * n_modes if select == "ranked" else n_modes)
     if v > 0.3:
-        click.echo("warning: v > 0.3 c stretches linear elasticity", err=True)
+        note("warning: v > 0.3 c stretches linear elasticity")
     start = time.perf_counter()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -136,12 +184,55 @@ def collide(
                 )
             else:
                 ms = get_modes(material, count=n_modes)
-            result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
+            long_run = _announce(ms, v, alpha, integrator, energy_tol)
+            with _elapsed(long_run):
+                result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
     wall = time.perf_counter() - start
     if as_json:
-        d = result.to_dict()
+        inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "method": method}
+        if method == "fem":
+            inputs["mesh_refine"] = mesh_refine
+        else:
+            inputs.update(
+                modes=n_modes, select=select, integrator=integrator, energy_tol=energy_tol
+            )
+        d = envelope(
+            "collide", inputs, result.to_dict(), status=result.status, advice=result.advice
+        )
         d["wall_time_s"] = wall
         d["select"] = select if method == "modal" else None
         click.echo(dumps(d))
     else:
         _print_summary(result)
+    if result.status != "ok":
+        if not as_json:  # the JSON says it in "status"
+            note(f"warning: status {result.status}: {result.advice}")
+        if strict:
+            sys.exit(EXIT_NOT_CONVERGED)
+
+
+def _elapsed(enabled: bool):
+    """A spinner with the elapsed time on stderr while a long run integrates (terminals only)."""
+    import contextlib
+
+    from rich.console import Console
+
+    if not enabled or quiet() or not sys.stderr.isatty():
+        return contextlib.nullcontext()
+    return Console(stderr=True).status("integrating the collision ...")
+
+
+def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float) -> bool:
+    """Say the estimated work of a long run before it starts; returns whether it is long."""
+    import numpy as np
+
+    from restitution.collision import CollisionSettings, check_work
+
+    settings = CollisionSettings(integrator=integrator, energy_tol=energy_tol)
+    est = check_work(modes, np.array([v]), np.array([alpha]), settings)  # refuses the infeasible
+    if est.steps > _LONG_RUN_STEPS:
+        note(
+            f"note: about {est.steps:.2g} time steps of {len(modes)} modes expected "
+            f"(simulated time {est.t_end:.3g} R/c, dt = {est.dt:.3g} R/c); this may take a while"
+        )
+    return est.steps > _LONG_RUN_STEPS

@@ -6,13 +6,26 @@ options accept several values after one flag (``--nu 0.33 0.9``) or a repeated f
 
 from __future__ import annotations
 
-import json
 import math
+import sys
 from dataclasses import replace
 from pathlib import Path
 
 import click
 
+from restitution.cli._common import (
+    EXIT_FAILED_POINTS,
+    EXIT_NOT_CONVERGED,
+    check_output_dir,
+    dumps,
+    envelope,
+    note,
+    quiet,
+    quiet_option,
+    strict_option,
+    writing,
+)
+from restitution.errors import InputError
 from restitution.material import Material
 from restitution.sweep import DEFAULTS, SweepSettings
 
@@ -82,6 +95,13 @@ def _check_nu(nu: float) -> float:
 
 
 def _executor_options(f):
+    f = quiet_option(f)
+    f = strict_option(f)
+    f = click.option(
+        "--retry-failed",
+        is_flag=True,
+        help="Recompute points stored as failed (points whose worker died are always retried).",
+    )(f)
     f = click.option(
         "--progress/--no-progress",
         default=None,
@@ -141,46 +161,129 @@ def _executor_options(f):
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON with the grid and fits.")
 @_executor_options
-def epsilon(nu, v, alpha, as_json, alphas, alpha_scale, modes, workers, scheduler, store, progress):
+def epsilon(
+    nu,
+    v,
+    alpha,
+    as_json,
+    alphas,
+    alpha_scale,
+    modes,
+    workers,
+    scheduler,
+    store,
+    progress,
+    retry_failed,
+    strict,
+):
     """Coefficient of restitution at one speed v, extrapolated to a hard wall and N -> infinity.
 
     v is the disk's speed towards the wall in units of c = sqrt(E/rho). The collisions of the
-    grid are computed (or read from the store) first.
+    grid are computed (or read from the store) first. Exit status 1 when grid points failed;
+    with --strict, 3 when the extrapolation is not asymptotic.
     """
     from restitution.curves import epsilon_at
+    from restitution.sweep import grid
 
     nu = _check_nu(nu)
+    if alpha is not None and (alphas or alpha_scale):
+        raise InputError(
+            "--alpha fixes one wall and extrapolates N -> infinity only; --alphas and "
+            "--alpha-scale set the alpha -> infinity extrapolation: give one or the other"
+        )
     settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
-    result = epsilon_at(
-        nu,
-        v,
-        alpha=alpha,
-        settings=settings,
+    swept = replace(settings, velocities=(float(v),))
+    if alpha is not None:
+        if not (alpha > 0 and math.isfinite(alpha)):
+            raise InputError(f"--alpha must be a positive number (1/R), got {alpha}")
+        swept = replace(swept, alphas=(float(alpha),), alpha_scale="absolute")
+    report = _sweep(grid([nu], swept), swept, store, workers, scheduler, progress, retry_failed)
+    result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
+    failed = len(result.failures) + len(report.lost)
+    status, advice = _status(result.asymptotic_ok, result.message, failed)
+    if as_json:
+        inputs = {
+            "nu": nu,
+            "v": v,
+            "alpha": alpha,
+            "settings": swept.to_dict(),
+            "store": None if store is None else str(store),
+        }
+        click.echo(
+            dumps(envelope("epsilon", inputs, result.to_dict(), status=status, advice=advice))
+        )
+    else:
+        limits = "N -> inf" if alpha is not None else "alpha -> inf and N -> inf"
+        where = f" at alpha = {alpha:g}" if alpha is not None else ""
+        click.echo(
+            f"epsilon = {result.epsilon:.6f} +- {_err(result.epsilon_err, swept)}   "
+            f"(nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})"
+        )
+        click.echo(
+            f"energy loss 1 - epsilon^2 = {result.energy_loss:.6f} +- "
+            f"{_err(result.energy_loss_err, swept)}"
+        )
+        grid_alphas = [alpha] if alpha is not None else list(settings.alphas_at(v))
+        click.echo(
+            f"grid: alpha = {', '.join(f'{a:g}' for a in grid_alphas)}; "
+            f"N = {', '.join(str(n) for n in settings.n_modes)} "
+            f"({settings.select} modes, {settings.integrator} integrator)"
+        )
+    _finish(status, advice, list(result.failures), report, strict, as_json)
+
+
+def _err(value: float, settings: SweepSettings) -> str:
+    """An error bar, or ``unknown`` when the fit cannot estimate one: a line through two
+    points (two N, or two alpha with both limits) has no residual, so its error is zero."""
+    two_point = len(settings.n_modes) < 3 or 1 < len(settings.alphas) < 3
+    if two_point or not (math.isfinite(value) and value > 0):
+        return "unknown"
+    return f"{value:.6f}"
+
+
+def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
+    from restitution.sweep import run_sweep
+
+    return run_sweep(
+        points,
         store=store,
         workers=workers,
         scheduler=scheduler,
-        progress=progress,
+        batch_size=settings.batch_size,
+        progress=False if quiet() else progress,
+        retry_failed=retry_failed,
     )
-    if as_json:
-        click.echo(json.dumps(result.to_dict(), indent=1))
+
+
+def _status(asymptotic: bool, message: str, failed: int) -> tuple[str, str | None]:
+    if failed:
+        why = f" ({message})" if message else ""
+        return "points-failed", (
+            f"{failed} collision(s) of the grid failed{why}; see the messages, change the "
+            "settings, or rerun with --retry-failed"
+        )
+    if not asymptotic:
+        return "not-asymptotic", f"{message}; use larger N (--modes) and harder walls (--alphas)"
+    return "ok", None
+
+
+def _finish(status, advice, failures, report, strict, as_json=False) -> None:
+    """Print what went wrong (JSON says it in 'status') and exit with the documented status."""
+    if status == "ok":
         return
-    limits = "N -> inf" if alpha is not None else "alpha -> inf and N -> inf"
-    where = f" at alpha = {alpha:g}" if alpha is not None else ""
-    click.echo(
-        f"epsilon = {result.epsilon:.6f} +- {result.epsilon_err:.6f}   "
-        f"(nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})"
-    )
-    click.echo(
-        f"energy loss 1 - epsilon^2 = {result.energy_loss:.6f} +- {result.energy_loss_err:.6f}"
-    )
-    grid_alphas = [alpha] if alpha is not None else list(settings.alphas_at(v))
-    click.echo(
-        f"grid: alpha = {', '.join(f'{a:g}' for a in grid_alphas)}; "
-        f"N = {', '.join(str(n) for n in settings.n_modes)} "
-        f"({settings.select} modes, {settings.integrator} integrator)"
-    )
-    if not result.asymptotic_ok:
-        click.echo(f"warning: not asymptotic: {result.message}", err=True)
+    if not as_json:
+        note(f"warning: {status}: {advice}")
+        for a, n, m in failures[:3]:
+            note(f"  failed: alpha = {a:g}, N = {n}: {m}")
+        for spec, m in report.lost[:3]:
+            note(
+                f"  lost (worker died; rerun to retry): v = {spec.v:g}, "
+                f"alpha = {spec.alpha:g}, N = {spec.n_modes}: {m}"
+            )
+    if status == "points-failed":
+        sys.exit(EXIT_FAILED_POINTS)
+    if strict:
+        sys.exit(EXIT_NOT_CONVERGED)
 
 
 @click.command(cls=_CurveCommand)
@@ -215,51 +318,84 @@ def epsilon(nu, v, alpha, as_json, alphas, alpha_scale, modes, workers, schedule
 )
 @_executor_options
 def curve(
-    nus, velocities, out, fmt, alphas, alpha_scale, modes, workers, scheduler, store, progress
+    nus,
+    velocities,
+    out,
+    fmt,
+    alphas,
+    alpha_scale,
+    modes,
+    workers,
+    scheduler,
+    store,
+    progress,
+    retry_failed,
+    strict,
 ):
     """epsilon(v) for one or more Poisson numbers: Fig. 1, Figs. 7 and 8, and exports.
 
     v is the disk's speed towards the wall in units of c = sqrt(E/rho). Writes
     fig01_epsilon, fig07_alpha_nu*, fig08_modes_nu*, and law_nu*.json / .csv / .txt (the
-    table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out.
+    table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out. Exit status 1
+    when collisions failed; with --strict, 3 when a speed is not asymptotic.
     """
     from restitution.curves import compute_curves
     from restitution.figures import fig01_epsilon, fig07_alpha, fig08_modes
     from restitution.law import EpsilonLaw, law_filename
+    from restitution.store import Store
+    from restitution.sweep import grid
 
     nus = tuple(_check_nu(nu) for nu in (nus or (0.33, 0.9)))
     settings = _settings(velocities=velocities, alphas=alphas, modes=modes, alpha_scale=alpha_scale)
-    out.mkdir(parents=True, exist_ok=True)
-    curves = compute_curves(
-        nus, settings, store=store, workers=workers, scheduler=scheduler, progress=progress
-    )
-    written = [
-        fig01_epsilon.plot(fig01_epsilon.compute(nus, curves=curves), out / f"fig01_epsilon.{fmt}")
-    ]
+    check_output_dir(out, "--out")  # before the sweep, not after it
+    points = grid(nus, settings)
+    report = _sweep(points, settings, store, workers, scheduler, progress, retry_failed)
+    curves = compute_curves(nus, settings, store=store, run=False)
+    with Store(store) as db:
+        errors = db.errors(points)
+    failures = [(s.alpha, s.n_modes, errors[s.key()]) for s in points if s.key() in errors]
+    with writing(out, "--out"):
+        written = [
+            fig01_epsilon.plot(
+                fig01_epsilon.compute(nus, curves=curves), out / f"fig01_epsilon.{fmt}"
+            )
+        ]
+    asymptotic = True
     for nu in nus:
         c = curves[nu]
-        written.append(
-            fig07_alpha.plot(fig07_alpha.compute(nu, curve=c), out / f"fig07_alpha_nu{nu:g}.{fmt}")
-        )
-        written.append(
-            fig08_modes.plot(fig08_modes.compute(nu, curve=c), out / f"fig08_modes_nu{nu:g}.{fmt}")
-        )
+        with writing(out, "--out"):
+            written.append(
+                fig07_alpha.plot(
+                    fig07_alpha.compute(nu, curve=c), out / f"fig07_alpha_nu{nu:g}.{fmt}"
+                )
+            )
+            written.append(
+                fig08_modes.plot(
+                    fig08_modes.compute(nu, curve=c), out / f"fig08_modes_nu{nu:g}.{fmt}"
+                )
+            )
         click.echo(f"nu = {nu:g}:   v/c    epsilon     error   asymptotic")
         for v, lim in zip(c.velocities, c.limits, strict=True):
+            asymptotic &= bool(lim.asymptotic_ok)
             eps = "nan" if not math.isfinite(lim.epsilon) else f"{lim.epsilon:.5f}"
             click.echo(
-                f"          {v:5.3f}  {eps:>8}  {lim.epsilon_err:8.5f}   "
+                f"          {v:5.3f}  {eps:>8}  {_err(lim.epsilon_err, settings)[:8]:>8}   "
                 f"{'yes' if lim.asymptotic_ok else 'NO: ' + lim.message[:70]}"
             )
         try:
             law = EpsilonLaw.from_curve(c)
         except Exception as exc:  # noqa: BLE001 - report and go on with the other nu
-            click.echo(f"warning: no law for nu = {nu:g}: {exc}", err=True)
+            note(f"warning: no law for nu = {nu:g}: {exc}")
             continue
         stem = Path(law_filename(nu)).stem
-        written += [
-            law.to_json(out / f"{stem}.json"),
-            law.to_csv(out / f"{stem}.csv"),
-            law.to_table(out / f"{stem}.txt"),
-        ]
+        with writing(out, "--out"):
+            written += [
+                law.to_json(out / f"{stem}.json"),
+                law.to_csv(out / f"{stem}.csv"),
+                law.to_table(out / f"{stem}.txt"),
+            ]
     click.echo("wrote " + ", ".join(str(p) for p in written))
+    failed = len(failures) + len(report.lost)
+    message = "" if asymptotic else "some speeds are not asymptotic (see the table)"
+    status, advice = _status(asymptotic, message, failed)
+    _finish(status, advice, failures, report, strict)

@@ -3,10 +3,23 @@
 from __future__ import annotations
 
 import math
+import sys
 
 import click
 
-from restitution.cli._common import dumps, material_from, nu_option, plane_option, positive_finite
+from restitution.cache import check_mode_request
+from restitution.cli._common import (
+    EXIT_NOT_CONVERGED,
+    dumps,
+    envelope,
+    material_from,
+    note,
+    nu_option,
+    plane_option,
+    positive_finite,
+    quiet_option,
+    strict_option,
+)
 from restitution.errors import InputError
 
 
@@ -106,7 +119,9 @@ def _print(comparison, nu, v, alpha) -> None:
     help="Comma-separated numbers of lowest modes for the modal runs.",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print the comparison as JSON.")
-def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json):
+@strict_option
+@quiet_option
+def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, strict):
     """Compare the FEM impact solver with the modal solver extrapolated to N -> infinity.
 
     The FEM runs at mesh levels refine-min..refine (error: last Cauchy difference); the modal
@@ -125,10 +140,38 @@ def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json):
     counts = _int_list(modes, "--modes")
     if min(counts) < 1:
         raise InputError(f"--modes must be positive, got {modes}")
+    if len(set(counts)) != len(counts):
+        raise InputError(f"--modes has repeated values ({modes}); give distinct counts")
+    check_mode_request(material.nu, max(counts))
     comparison = compare_fem_modal(
         material, v, alpha, levels=range(refine_min, refine + 1), counts=counts
     )
+    lim = comparison.modal_limit
+    status, advice = "ok", None
+    if lim is None or not lim.asymptotic_ok:
+        status = "not-asymptotic"
+        advice = (lim.message if lim is not None else "no modal extrapolation") + (
+            "; use more and larger --modes"
+        )
     if as_json:
-        click.echo(dumps(comparison.to_dict()))
+        inputs = {
+            "nu": material.nu,
+            "plane": plane,
+            "v": v,
+            "alpha": alpha,
+            "refine": refine,
+            "refine_min": refine_min,
+            "modes": counts,
+        }
+        click.echo(
+            dumps(
+                envelope("compare-fem", inputs, comparison.to_dict(), status=status, advice=advice)
+            )
+        )
     else:
         _print(comparison, material.nu, v, alpha)
+    if status != "ok":
+        if not as_json:  # the JSON says it in "status"
+            note(f"warning: {status}: {advice}")
+        if strict:
+            sys.exit(EXIT_NOT_CONVERGED)

@@ -8,8 +8,20 @@ from pathlib import Path
 
 import click
 
-from restitution.cache import get_modes
-from restitution.cli._common import dumps, material_from, nu_option, plane_option, write_text
+from restitution.cache import check_mode_request, get_modes
+from restitution.cli._common import (
+    check_figure_file,
+    check_output_file,
+    dumps,
+    envelope,
+    material_from,
+    note,
+    nu_option,
+    plane_option,
+    quiet_option,
+    write_text,
+    writing,
+)
 from restitution.errors import InputError
 
 _COLUMNS = ("n", "l", "omega", "kappa", "kappa_p", "A", "B", "C", "S")
@@ -68,21 +80,30 @@ def _csv(records: list[dict]) -> str:
     default=None,
     help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.",
 )
+@quiet_option
 def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
     """Eigenmodes of the free elastic disk (symmetric family), sorted by frequency.
 
     Units: E = rho = R = 1, omega in c/R. For n = 0 only the breathing modes (eq. 20); the
     rigid translation is excluded. C = U_r(1) > 0 and S = U_phi(1) are the edge amplitudes.
+    The JSON format is one object: version, units, inputs, status and the list "modes".
     """
     if count is not None and omega_max is not None:
         raise InputError("give either --count or --omega-max, not both")
     if count is None and omega_max is None:
         count = 1600
     material = material_from(nu, plane)
+    check_mode_request(material.nu, count, omega_max)
+    if output is not None:
+        check_output_file(output, "--output")
+    for path, option in ((plot_spectrum, "--plot-spectrum"), (plot_shapes, "--plot-shapes")):
+        if path is not None:
+            check_figure_file(path, option)
     ms = get_modes(material, count=count, omega_max=omega_max)
     records = ms.as_records()
     if fmt == "json":
-        text = dumps(records)
+        inputs = {"nu": material.nu, "plane": plane, "count": count, "omega_max": omega_max}
+        text = dumps(envelope("modes", inputs, {"modes": records}))
     elif fmt == "csv":
         text = _csv(records)
     else:
@@ -92,10 +113,14 @@ def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
         from restitution.figures import fig03_spectrum
 
         top = float(omega_max) if omega_max is not None else float(min(ms.omega.max(), 20.0))
-        fig03_spectrum.plot(fig03_spectrum.compute(material.nu, omega_max=top), plot_spectrum)
-        click.echo(f"wrote {plot_spectrum}", err=True)
+        data = fig03_spectrum.compute(material.nu, omega_max=top)
+        with writing(plot_spectrum, "--plot-spectrum"):
+            fig03_spectrum.plot(data, plot_spectrum)
+        note(f"wrote {plot_spectrum}")
     if plot_shapes is not None:
         from restitution.figures import fig02_shapes
 
-        fig02_shapes.plot(fig02_shapes.compute(material.nu), plot_shapes)
-        click.echo(f"wrote {plot_shapes}", err=True)
+        data = fig02_shapes.compute(material.nu)
+        with writing(plot_shapes, "--plot-shapes"):
+            fig02_shapes.plot(data, plot_shapes)
+        note(f"wrote {plot_shapes}")

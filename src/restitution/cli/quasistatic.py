@@ -6,9 +6,20 @@ import math
 
 import click
 
-from restitution.cli._common import dumps, material_from, nu_option, plane_option, positive_finite
+from restitution.cache import check_mode_request
+from restitution.cli._common import (
+    dumps,
+    envelope,
+    material_from,
+    note,
+    nu_option,
+    plane_option,
+    positive_finite,
+    quiet_option,
+)
 from restitution.errors import InputError
 from restitution.hertz import LAWS, contact_law, contact_time_rate, quasistatic_collision
+from restitution.results import UNITS
 
 
 def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 400) -> dict:
@@ -41,8 +52,7 @@ def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 
         "rayleigh_dominant_mode": [n, l],
         "rayleigh_dominant_share": share,
         "rayleigh_n_modes": len(modes),
-        "units": "E = rho = R = 1: lengths R, times R/c, forces E R, speeds c; "
-        "energy fractions of (m/2) v^2",
+        "units": dict(UNITS),
     }
 
 
@@ -75,6 +85,7 @@ def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 
     help="Lowest modes driven in Rayleigh's approach (the paper's Fig. 12 uses 1800).",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of text.")
+@quiet_option
 def quasistatic(nu, plane, v, law, n_modes, as_json):
     """Quasistatic collision (2D Hertz law) and Rayleigh's energy estimate at speed V.
 
@@ -86,9 +97,13 @@ def quasistatic(nu, plane, v, law, n_modes, as_json):
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     material = material_from(nu, plane)
+    check_mode_request(material.nu, n_modes)
     out = quasistatic_summary(material.nu, v, law, n_modes)
+    if not math.isfinite(out["contact_time"]):
+        raise InputError("contact time is not finite; use a smaller --v")
     if as_json:
-        click.echo(dumps(out))
+        inputs = {"nu": material.nu, "plane": plane, "v": v, "law": law, "modes": n_modes}
+        click.echo(dumps(envelope("quasistatic", inputs, out)))
         return
     click.echo(
         f"quasistatic collision, nu = {out['nu']:g}, v = {v:g} c towards the wall, "
@@ -105,10 +120,7 @@ def quasistatic(nu, plane, v, law, n_modes, as_json):
         f"(n={out['rayleigh_dominant_mode'][0]}, l={out['rayleigh_dominant_mode'][1]})"
     )
     if out["rayleigh_energy_fraction"] > 0.1:
-        click.echo(
+        note(
             "  note: a fraction this large is outside the first-order validity of Rayleigh's "
-            "approach",
-            err=True,
+            "approach"
         )
-    if not math.isfinite(out["contact_time"]):
-        raise InputError("contact time is not finite; use a smaller --v")

@@ -1,0 +1,575 @@
+"""Hostile input, faults and lost work (issue 14): every case a clear error or a correct result.
+
+Each case of the issue has a test here with small sizes. Command-line cases call
+:func:`restitution.cli.main` in this process and check the documented exit status and that
+stderr is exactly one line starting with ``error:`` (no traceback). Cases that used to hang
+check that the refusal comes before any integration (the integrator loop is replaced by one
+that fails the test).
+
+Read-only files are made with ``chmod`` (or, as root, which ignores permissions, with
+``chattr +i``); the tests that need one skip when neither is possible.
+"""
+
+import concurrent.futures as cf
+import contextlib
+import json
+import os
+import shutil
+import signal
+import socket
+import sqlite3
+import subprocess
+import threading
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+import restitution
+from restitution import get_modes
+from restitution.cache import MAX_MODES, CacheError, cache_dir
+from restitution.cli import _common, main
+from restitution.collision import (
+    CollisionSettings,
+    collide,
+    collide_batch,
+    estimate_work,
+)
+from restitution.errors import InputError, RestitutionError, SchedulerError
+from restitution.executors import probe_scheduler
+from restitution.store import PointSpec, Store, StoreError
+from restitution.sweep import DEFAULTS, grid, run_sweep
+
+# -- helpers -------------------------------------------------------------------------------
+
+
+def cli(capsys, *args):
+    """Run the command line in this process; returns (exit status, stdout, stderr)."""
+    _common._state["quiet"] = False
+    try:
+        main(list(args))
+        code = 0
+    except SystemExit as exc:
+        code = exc.code
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def one_line_error(code, err, *words):
+    lines = [x for x in err.splitlines() if x.strip()]
+    assert code == 2, err
+    assert len(lines) == 1 and lines[0].startswith("error: "), err
+    assert "Traceback" not in err
+    for w in words:
+        assert w in lines[0], (w, lines[0])
+    return lines[0]
+
+
+@pytest.fixture
+def no_integration(monkeypatch):
+    """Make any time integration fail the test: refusals must come before it."""
+    import restitution.collision as collision
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("the collision was integrated instead of refused up front")
+
+    monkeypatch.setattr(collision, "_run", refuse)
+
+
+@pytest.fixture(scope="module")
+def small():
+    return get_modes(0.33, count=20)
+
+
+@contextlib.contextmanager
+def read_only(path):
+    """``path`` (file or directory) read-only for the duration; skips when impossible."""
+    path = str(path)
+    if os.geteuid() != 0:
+        mode = os.stat(path).st_mode
+        os.chmod(path, 0o555 if os.path.isdir(path) else 0o444)
+        try:
+            yield
+        finally:
+            os.chmod(path, mode)
+        return
+    chattr = shutil.which("chattr")
+    if chattr is None or subprocess.run([chattr, "+i", path], capture_output=True).returncode:
+        pytest.skip("running as root without chattr +i: cannot make a read-only file")
+    try:
+        yield
+    finally:
+        subprocess.run([chattr, "-i", path], check=True)
+
+
+@pytest.fixture
+def silent_server():
+    """A TCP server that accepts connections and never answers (like a dashboard port)."""
+    srv = socket.socket()
+    srv.bind(("127.0.0.1", 0))
+    srv.listen(8)
+    srv.settimeout(0.2)
+    held, stop = [], threading.Event()
+
+    def serve():
+        while not stop.is_set():
+            with contextlib.suppress(OSError):
+                held.append(srv.accept()[0])
+
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    yield f"tcp://127.0.0.1:{srv.getsockname()[1]}"
+    stop.set()
+    thread.join()
+    for conn in held:
+        conn.close()
+    srv.close()
+
+
+# Stand-ins for the solver in sweep tests (module level: they must pickle).
+
+
+def ok_batch(specs):
+    return [("ok", {"epsilon": 0.9, "energy_drift": 1e-9}) for _ in specs]
+
+
+def die_once(specs):
+    """The first call kills its own worker process (kill -9); later calls succeed."""
+    try:
+        fd = os.open(os.environ["RESTITUTION_TEST_MARKER"], os.O_CREAT | os.O_EXCL)
+    except FileExistsError:
+        return ok_batch(specs)
+    os.close(fd)
+    os.kill(os.getpid(), signal.SIGKILL)
+    return []  # pragma: no cover
+
+
+def always_broken(specs):
+    raise cf.process.BrokenProcessPool("a process in the pool was terminated abruptly")
+
+
+def always_killed(specs):
+    from types import SimpleNamespace
+
+    from distributed import KilledWorker
+
+    # What the scheduler raises after a task's workers died allowed_failures + 1 times.
+    raise KilledWorker("collide_points", SimpleNamespace(address="tcp://10.0.0.1:4242"), 3)
+
+
+def touch_marker(specs):
+    open(os.environ["RESTITUTION_TEST_MARKER"], "w").close()
+    return ok_batch(specs)
+
+
+POINTS = [PointSpec(0.33, v, 100.0, 10) for v in (0.05, 0.1, 0.15, 0.2)]
+
+
+# -- hangs: refused up front with an estimate -------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("v", "alpha", "cause"),
+    [(1e-9, 500.0, "raise v or alpha"), (0.1, 1e7, "lower alpha"), (0.1, 1e-6, "raise v")],
+)
+def test_hopeless_collisions_are_refused_with_the_estimate(small, no_integration, v, alpha, cause):
+    with pytest.raises(InputError, match="time steps") as info:
+        collide(small, v, alpha)
+    assert "max_steps = 2000000" in str(info.value) and cause in str(info.value)
+
+
+def test_hopeless_collision_at_the_command_line(capsys, no_integration):
+    code, out, err = cli(capsys, "collide", "--v", "1e-9", "--modes", "20", "--json")
+    one_line_error(code, err, "time steps", "raise v or alpha")
+    assert out == ""
+
+
+def test_work_estimate_is_near_the_steps_taken(small):
+    # Measured: estimate 1735 / 5500 steps, taken 2288 / 5160 (the driver refines the step).
+    for v, alpha in [(0.1, 500.0), (0.1, 5.0)]:
+        est = estimate_work(small, np.array([v]), np.array([alpha]), CollisionSettings())
+        taken = collide(small, v, alpha).n_steps
+        assert 0.5 < est.steps / taken < 2.0, (v, alpha, est.steps, taken)
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("modes", "--count", "1000000"),
+        ("modes", "--omega-max", "1e4"),
+        ("collide", "--v", "0.1", "--modes", "1000000"),
+        ("quasistatic", "--v", "0.1", "--modes", "1000000"),
+        ("compare-fem", "--modes", "20,1000000"),
+    ],
+)
+def test_a_million_modes_is_refused_up_front(capsys, monkeypatch, args):
+    import restitution.cache as cache
+
+    def refuse(*a, **k):
+        raise AssertionError("modes were computed instead of refused")
+
+    monkeypatch.setattr(cache, "compute_modes", refuse)
+    code, _, err = cli(capsys, *args)
+    one_line_error(code, err, str(MAX_MODES))
+
+
+def test_mode_count_limit_in_the_library():
+    with pytest.raises(InputError, match="not feasible"):
+        get_modes(0.33, count=MAX_MODES + 1)
+
+
+@pytest.mark.parametrize(
+    "field",
+    [
+        {"step_safety": 0},
+        {"step_safety": -1},
+        {"step_safety": float("nan")},
+        {"max_refinements": -1},
+        {"max_refinements": 1.5},
+        {"max_steps": 0},
+        {"energy_tol": 0.0},
+        {"energy_tol": float("inf")},
+        {"n_phi": 4},
+        {"record_interval": 0.0},
+        {"record": "yes"},
+        {"dt": -0.1},
+    ],
+)
+def test_every_settings_field_is_checked(small, field):
+    with pytest.raises(InputError, match=next(iter(field))):
+        CollisionSettings(**field)
+    with pytest.raises(InputError):
+        collide(small, 0.1, 500.0, **field)
+
+
+def test_non_dask_server_is_refused_within_the_deadline(silent_server):
+    with pytest.raises(SchedulerError, match="did not answer as a Dask scheduler"):
+        probe_scheduler(silent_server, timeout=1.0)
+
+
+@pytest.mark.parametrize(
+    ("address", "words"),
+    [("notanaddress", "not a Dask scheduler address"), ("tcp://127.0.0.1:1", "cannot reach")],
+)
+def test_bad_scheduler_addresses(address, words):
+    with pytest.raises(SchedulerError, match=words):
+        probe_scheduler(address, timeout=1.0)
+
+
+def test_scheduler_errors_at_the_command_line(capsys, tmp_path):
+    store = str(tmp_path / "s.sqlite")
+    args = ("epsilon", "--nu", "0.33", "--v", "0.1", "--modes", "10", "14", "20")
+    code, _, err = cli(capsys, *args, "--store", store, "--scheduler", "notanaddress")
+    one_line_error(code, err, "tcp://HOST:8786")
+
+
+def test_a_live_scheduler_passes_the_probe(client):
+    assert probe_scheduler(client.scheduler.address)["type"] == "Scheduler"
+
+
+# -- tracebacks that are now one line ---------------------------------------------------------
+
+
+@pytest.mark.parametrize("alpha", ["1e300", "1e14"])
+def test_absurd_wall_hardness(capsys, no_integration, alpha):
+    code, _, err = cli(capsys, "collide", "--v", "0.1", "--alpha", alpha, "--modes", "20")
+    one_line_error(code, err, "GiB")
+
+
+def test_unknown_figure_format(capsys, tmp_path):
+    code, _, err = cli(capsys, "modes", "--count", "20", "--plot-spectrum", str(tmp_path / "x.xyz"))
+    one_line_error(code, err, "unknown figure format", ".png")
+
+
+def test_output_into_a_missing_directory(capsys, tmp_path):
+    target = tmp_path / "missing" / "m.csv"
+    code, _, err = cli(capsys, "modes", "--count", "20", "--output", str(target))
+    one_line_error(code, err, "does not exist")
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
+def test_output_to_a_full_disk(capsys):
+    code, _, err = cli(capsys, "modes", "--count", "20", "--output", "/dev/full")
+    one_line_error(code, err, "No space left")
+
+
+def test_output_into_a_read_only_directory(capsys, tmp_path):
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    with read_only(folder):
+        code, _, err = cli(capsys, "modes", "--count", "20", "--output", str(folder / "m.csv"))
+    one_line_error(code, err, "cannot write --output")
+
+
+def test_curve_refuses_an_unwritable_out_before_computing(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    store = tmp_path / "s.sqlite"
+    args = ("curve", "--nu", "0.33", "--v", "0.1", "--modes", "10", "14", "20")
+    code, _, err = cli(capsys, *args, "--store", str(store), "--out", str(blocker / "out"))
+    one_line_error(code, err, "--out")
+    assert not store.exists()  # nothing was computed
+
+
+def _damaged_store(path):
+    with Store(path) as db:
+        for i in range(200):
+            db.put_failure(PointSpec(0.33, 0.001 * (i + 1), 500.0, 20), "x" * 500)
+    size = path.stat().st_size
+    rng = np.random.default_rng(1)
+    with open(path, "r+b") as fh:
+        for page in range(3, size // 4096, 2):
+            fh.seek(page * 4096 + 10)
+            fh.write(rng.bytes(2000))
+
+
+def test_damaged_store_is_one_clear_error(capsys, tmp_path):
+    path = tmp_path / "damaged.sqlite"
+    _damaged_store(path)
+    before = path.read_bytes()
+    with pytest.raises(StoreError, match="damaged") as info:
+        with Store(path) as db:
+            db.points()
+    assert "delete" not in str(info.value).lower() and ".recover" in str(info.value)
+    assert path.read_bytes() == before
+    args = ("epsilon", "--nu", "0.33", "--v", "0.1", "--modes", "10", "14", "20")
+    code, _, err = cli(capsys, *args, "--store", str(path))
+    one_line_error(code, err, "damaged")
+
+
+def test_cache_dir_that_is_a_file(capsys, tmp_path, monkeypatch):
+    bad = tmp_path / "not-a-dir"
+    bad.write_text("")
+    monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(bad))
+    with pytest.raises(CacheError, match="is a file"):
+        cache_dir()
+    with pytest.warns(UserWarning, match="without the cache"):
+        modes = get_modes(0.33, count=5)  # the cache is optional
+    assert len(modes) == 5
+    code, _, err = cli(capsys, "epsilon", "--nu", "0.33", "--v", "0.1")
+    one_line_error(code, err, "RESTITUTION_CACHE_DIR")
+
+
+def test_cache_dir_under_a_read_only_directory(tmp_path, monkeypatch):
+    parent = tmp_path / "ro"
+    parent.mkdir()
+    monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(parent / "cache"))
+    with read_only(parent):
+        with pytest.raises(CacheError, match="cannot create"):
+            cache_dir()
+        with pytest.raises(CacheError, match="--store PATH"):
+            Store()
+
+
+@pytest.mark.parametrize(
+    ("v", "alpha", "words"),
+    [
+        ([[0.1, 0.2]], [500.0], "1-D"),
+        ([], [], "empty"),
+        ([0.1, 0.2, 0.3], [500.0, 600.0], "equally many"),
+        ([0.1, "x"], 500.0, "numbers"),
+    ],
+)
+def test_bad_batches(small, v, alpha, words):
+    with pytest.raises(InputError, match=words):
+        collide_batch(small, v, alpha)
+
+
+def test_collide_takes_one_speed(small):
+    with pytest.raises(InputError, match="collide_batch"):
+        collide(small, [0.1, 0.2], 500.0)
+    with pytest.raises(InputError, match="ModeSet"):
+        collide("modes", 0.1, 500.0)
+
+
+# -- lost or stuck work ---------------------------------------------------------------------
+
+
+def test_read_only_store_fails_before_computing(tmp_path, monkeypatch, client):
+    path = tmp_path / "s.sqlite"
+    run_sweep(POINTS[:1], store=path, client=client, batch_function=ok_batch)
+    marker = tmp_path / "computed"
+    monkeypatch.setenv("RESTITUTION_TEST_MARKER", str(marker))
+    with read_only(path):
+        with pytest.raises(StoreError, match="cannot be written") as info:
+            run_sweep(POINTS, store=path, client=client, batch_function=touch_marker)
+    assert not marker.exists()  # refused before any work
+    assert "delete" not in str(info.value).lower()
+
+
+def test_killed_pool_worker_is_retried_not_stored_as_failed(tmp_path, monkeypatch):
+    monkeypatch.setenv("RESTITUTION_TEST_MARKER", str(tmp_path / "died"))
+    path = tmp_path / "s.sqlite"
+    report = run_sweep(POINTS, store=path, batch_function=die_once, batch_size=1, progress=False)
+    assert (tmp_path / "died").exists()  # a worker really was killed
+    assert report.computed == len(POINTS) and report.failed == () and report.lost == ()
+    with Store(path) as db:
+        assert all(p.ok for p in db.points())
+
+
+@pytest.mark.parametrize(
+    ("broken", "name"), [(always_broken, "BrokenProcessPool"), (always_killed, "KilledWorker")]
+)
+def test_persistent_infrastructure_failure_is_left_for_the_next_run(tmp_path, client, broken, name):
+    path = tmp_path / "s.sqlite"
+    report = run_sweep(POINTS, store=path, client=client, batch_function=broken)
+    assert len(report.lost) == len(POINTS) and report.failed == () and not report.complete
+    assert report.lost[0][1].startswith(name)
+    with Store(path) as db:
+        assert len(db) == 0  # nothing stored as failed
+    again = run_sweep(POINTS, store=path, client=client, batch_function=ok_batch)
+    assert again.computed == len(POINTS) and again.complete
+
+
+def test_infrastructure_failures_stored_by_older_code_are_retried(tmp_path, client):
+    path = tmp_path / "s.sqlite"
+    with Store(path) as db:
+        db.put_failure(POINTS[0], "BrokenProcessPool: A process in the pool was terminated")
+        db.put_failure(POINTS[1], "CollisionError: energy drift still exceeds energy_tol")
+    report = run_sweep(POINTS, store=path, client=client, batch_function=ok_batch)
+    assert report.skipped == 1 and report.computed == 3  # the physics failure stays
+    with Store(path) as db:
+        assert not db.get(POINTS[1]).ok and db.get(POINTS[0]).ok
+
+
+def test_valid_store_that_cannot_be_opened_is_never_called_foreign(tmp_path):
+    path = tmp_path / "s.sqlite"
+    Store(path).close()
+    with Store(path) as db:
+        for exc in (
+            sqlite3.OperationalError("unable to open database file"),
+            sqlite3.OperationalError("attempt to write a readonly database"),
+        ):
+            message = str(db._error(exc, opening=True))
+            assert "not a restitution store" not in message
+            assert "delete" not in message.lower() and "writable" in message
+
+
+# -- the commands: failed points, --retry-failed, status, --strict, --quiet --------------------
+
+GRID = ("--alphas", "20", "30", "40", "--alpha-scale", "absolute", "--modes", "10", "14", "20")
+
+
+@pytest.fixture(scope="module")
+def failing_store(tmp_path_factory):
+    """A store where one point of the v = 0.2 grid is recorded as a physics failure."""
+    path = tmp_path_factory.mktemp("failing") / "s.sqlite"
+    settings = replace(
+        DEFAULTS,
+        velocities=(0.2,),
+        alphas=(20.0, 30.0, 40.0),
+        n_modes=(10, 14, 20),
+        alpha_scale="absolute",
+    )
+    spec = grid([0.33], settings)[4]
+    with Store(path) as db:
+        db.put_failure(spec, "CollisionError: synthetic failure")
+    return path, spec
+
+
+def test_failed_points_make_curve_and_epsilon_exit_non_zero(capsys, tmp_path, failing_store):
+    path, spec = failing_store
+    base = ("--nu", "0.33", "--v", "0.2", *GRID, "--store", str(path), "--no-progress")
+    code, out, err = cli(capsys, "curve", *base, "--out", str(tmp_path / "out"))
+    assert code == 1, err
+    assert "synthetic failure" in err and "--retry-failed" in err
+    assert (tmp_path / "out" / "fig01_epsilon.png").exists()  # the rest is still written
+    code, out, err = cli(capsys, "epsilon", *base, "--json")
+    assert code == 1
+    doc = json.loads(out)
+    assert doc["status"] == "points-failed" and "--retry-failed" in doc["advice"]
+    code, out, err = cli(capsys, "epsilon", *base, "--retry-failed", "--json")
+    assert code == 0, err
+    assert json.loads(out)["status"] in ("ok", "not-asymptotic")
+    with Store(path) as db:
+        assert db.get(spec).ok
+
+
+def test_two_mode_counts_give_no_error_bar_and_strict_fails(capsys, failing_store):
+    path, _ = failing_store
+    args = ("epsilon", "--nu", "0.33", "--v", "0.2", "--alphas", "20", "30")
+    args += ("--alpha-scale", "absolute", "--modes", "10", "14", "--store", str(path))
+    code, out, err = cli(capsys, *args, "--no-progress")
+    assert code == 0 and "+- unknown" in out and "0.000000" not in out
+    assert "not-asymptotic" in err
+    code, out, err = cli(capsys, *args, "--no-progress", "--strict")
+    assert code == _common.EXIT_NOT_CONVERGED
+
+
+def test_repeated_mode_counts_are_refused(capsys, tmp_path):
+    args = ("epsilon", "--nu", "0.33", "--v", "0.1", "--modes", "20", "20", "20")
+    code, _, err = cli(capsys, *args, "--store", str(tmp_path / "s.sqlite"))
+    one_line_error(code, err, "repeated")
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (("epsilon", "--nu", "0.33", "--v", "0.1", "--alpha", "500", "--alphas", "40", "80"),
+         "--alpha"),
+        (("collide", "--v", "0.1", "--method", "fem", "--modes", "5", "--select", "ranked"),
+         "--modes, --select"),
+        (("collide", "--v", "0.1", "--mesh-refine", "2"), "--mesh-refine"),
+    ],
+)  # fmt: skip
+def test_ignored_options_are_refused(capsys, args, words):
+    code, _, err = cli(capsys, *args)
+    one_line_error(code, err, words, "no effect" if args[0] == "collide" else "one or the other")
+
+
+def test_fixed_step_with_large_drift_says_so(small):
+    # dt = 0.02 at v = 0.1, alpha = 500 (N = 20): drift 7.7e-4 and epsilon 0.93600 against
+    # 0.92833 with the automatic step (measured).
+    r = collide(small, 0.1, 500.0, dt=0.02)
+    assert r.energy_drift > r.energy_tol
+    assert r.status == "drift-exceeded" and "dt" in r.advice
+    d = r.to_dict()
+    assert d["status"] == "drift-exceeded" and d["advice"] == r.advice
+    good = collide(small, 0.1, 500.0)
+    assert good.status == "ok" and good.advice is None
+    assert abs(r.epsilon - good.epsilon) > 1e-3  # the warning is not idle
+
+
+def test_strict_json_has_no_bare_nan():
+    text = _common.dumps({"a": float("nan"), "b": [1.0, float("inf")], "c": np.float64("nan")})
+
+    def refuse(name):
+        raise AssertionError(f"bare {name} in JSON")
+
+    assert json.loads(text, parse_constant=refuse) == {"a": None, "b": [1.0, None], "c": None}
+
+
+ENVELOPE = {"version", "command", "units", "inputs", "status", "advice"}
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("collide", "--v", "0.1", "--modes", "10", "--json"),
+        ("modes", "--count", "10", "--format", "json"),
+        ("quasistatic", "--v", "0.05", "--modes", "20", "--json"),
+    ],
+)
+def test_every_json_has_the_same_envelope(capsys, args):
+    code, out, err = cli(capsys, *args)
+    assert code == 0, err
+    doc = json.loads(out, parse_constant=lambda name: pytest.fail(f"bare {name}"))
+    assert ENVELOPE <= doc.keys()
+    assert doc["version"] == restitution.__version__ and doc["units"] == restitution.UNITS
+    assert doc["command"] == args[0] and doc["status"] == "ok"
+    assert doc["inputs"]["nu"] == pytest.approx(0.33)
+
+
+def test_quiet_silences_stderr(capsys):
+    args = ("collide", "--v", "0.35", "--alpha", "100", "--modes", "10", "--energy-tol", "1e-4")
+    code, _, err = cli(capsys, *args, "--json")
+    assert code == 0 and "linear elasticity" in err
+    for quiet in (("--quiet", *args, "--json"), (*args, "--json", "-q")):
+        code, out, err = cli(capsys, *quiet)
+        assert code == 0 and err == "" and json.loads(out)["epsilon"] > 0
+
+
+def test_errors_are_exported():
+    for name in ("CollisionError", "StoreError", "CacheError", "ModeError", "InputError"):
+        err = getattr(restitution, name)
+        assert issubclass(err, RestitutionError) and name in restitution.__all__
