@@ -69,4 +69,4 @@ def test_cli_plane_strain_still_reaches_the_modal_path(capsys, tmp_path, monkeyp
     monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(tmp_path))
     main(["modes", "--nu", "0.3", "--plane", "strain", "--count", "3", "--format", "json"])
     out = json.loads(capsys.readouterr().out)
-    assert_allclose([m["omega"] for m in out], compute_modes(0.3 / 0.7, count=3).omega)
+    assert_allclose([m["omega"] for m in out["modes"]], compute_modes(0.3 / 0.7, count=3).omega)
