@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 from numba import njit, prange
 
@@ -382,8 +383,9 @@ def run_batch(
         np.ascontiguousarray(quad.g_max[perm], dtype=np.float64),
     )
     # Threads only pay for several members; a single collision runs without the thread pool.
-    run = _batch_parallel if B > 1 else _batch_serial
-    run(
+    # Members differ in cost (slow speeds take many more steps), so the threads take them one
+    # at a time instead of in fixed halves.
+    args = (
         np.ascontiguousarray(v, dtype=np.float64),
         np.ascontiguousarray(alpha, dtype=np.float64),
         np.ascontiguousarray(x_start, dtype=np.float64),
@@ -402,6 +404,12 @@ def run_batch(
         out_closest,
         out_scalar,
     )
+    run = _batch_parallel if B > 1 else _batch_serial
+    previous_chunk = numba.set_parallel_chunksize(1)
+    try:
+        run(*args)
+    finally:
+        numba.set_parallel_chunksize(previous_chunk)
     back = np.empty_like(perm)
     back[perm] = np.arange(N)
     return {
