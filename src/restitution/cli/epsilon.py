@@ -140,8 +140,17 @@ def _executor_options(f):
     help="Only extrapolate N -> infinity at this wall hardness (1/R); default: both limits.",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON with the grid and fits.")
+@click.option(
+    "--method",
+    type=click.Choice(["modal", "fem"]),
+    default="modal",
+    show_default=True,
+    help="modal: N modes, N -> infinity; fem: finite elements on contact-graded meshes, h -> 0.",
+)
 @_executor_options
-def epsilon(nu, v, alpha, as_json, alphas, alpha_scale, modes, workers, scheduler, store, progress):
+def epsilon(
+    nu, v, alpha, as_json, method, alphas, alpha_scale, modes, workers, scheduler, store, progress
+):
     """Coefficient of restitution at one speed v, extrapolated to a hard wall and N -> infinity.
 
     v is the disk's speed towards the wall in units of c = sqrt(E/rho). The collisions of the
@@ -150,6 +159,12 @@ def epsilon(nu, v, alpha, as_json, alphas, alpha_scale, modes, workers, schedule
     from restitution.law import epsilon_at
 
     nu = _check_nu(nu)
+    if method == "fem":
+        from restitution.fem.limits import fem_epsilon_command
+
+        modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
+        modal_only["--store"] = store
+        return fem_epsilon_command(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress)
     settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
     result = epsilon_at(
         nu,
