@@ -115,6 +115,7 @@ def compute_reference(
     levels=LEVELS,
     grading: ContactGrading | None = None,
     on_run: Callable[[float, float, FemRun], None] | None = None,
+    provenance: dict | None = None,
 ) -> dict:
     """Compute FEM epsilon with errors at ``points`` and write them with provenance to ``path``.
 
@@ -128,6 +129,8 @@ def compute_reference(
     grading : ContactGrading, optional
     on_run : callable, optional
         Called with ``(nu, v, run)`` after every collision.
+    provenance : dict, optional
+        Further provenance to store (e.g. the commit of the sources).
 
     Returns
     -------
@@ -146,6 +149,7 @@ def compute_reference(
         "created": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
         "code_version": fem_code_version(),
         "environment": _environment(),
+        **(provenance or {}),
         "levels": [int(k) for k in levels],
         "grading": grading.to_dict(),
         "points": [],
@@ -181,3 +185,35 @@ def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]
         name = path or "fem_reference.json"
         raise InputError(f"{name} is not an FEM reference file: {exc}") from exc
     return points
+
+
+def main(argv: list[str] | None = None) -> None:
+    """``python -m restitution.fem.reference OUT.json [nu:v ...]``: compute and write."""
+    import subprocess
+    import sys
+
+    args = sys.argv[1:] if argv is None else argv
+    if not args:
+        print("usage: python -m restitution.fem.reference OUT.json [nu:v ...]", file=sys.stderr)
+        raise SystemExit(2)
+    points = [tuple(float(x) for x in a.split(":")) for a in args[1:]] or REFERENCE_POINTS
+    try:
+        commit = subprocess.run(
+            ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=True
+        ).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        commit = "unknown"
+
+    def report(nu: float, v: float, run: FemRun) -> None:
+        print(
+            f"nu = {nu:g}, v = {v:g}, alpha = {run.alpha:.6g}, level {run.level}: "
+            f"{run.n_dofs} dofs, h_contact = {run.h_contact:.3g}, epsilon = {run.epsilon:.8f}, "
+            f"{run.n_steps} steps, {run.wall_time_s:.1f} s {run.message}",
+            flush=True,
+        )
+
+    compute_reference(args[0], points, on_run=report, provenance={"git_commit": commit})
+
+
+if __name__ == "__main__":
+    main()
