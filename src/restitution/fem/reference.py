@@ -33,18 +33,22 @@ __all__ = [
     "compute_reference",
     "fem_code_version",
     "load_reference",
+    "merge_reference",
 ]
 
 REFERENCE_POINTS = (
-    (0.33, 0.01),
-    (0.9, 0.01),
-    (0.33, 0.1),
-    (0.9, 0.1),
-    (0.9, 0.3),
-    (0.33, 0.001),
-    (0.9, 0.001),
+    (0.33, 0.1, 1),
+    (0.9, 0.1, 1),
+    (0.9, 0.3, 1),
+    (0.33, 0.01, 1),
+    (0.9, 0.01, 1),
+    (0.33, 0.001, 0),
+    (0.9, 0.001, 0),
+    (0.33, 0.0001, 0),
+    (0.9, 0.0001, 0),
 )
-"""``(nu, v)`` of the shipped reference: v = 1e-3, 1e-2, 0.1 at both nu and 0.3 at nu = 0.9."""
+"""``(nu, v, first level)`` of the shipped reference: v = 1e-4, 1e-3, 1e-2, 0.1 at both nu and
+0.3 at nu = 0.9. Three levels from the first; the finer levels 1-3 where they are affordable."""
 
 _SOURCES = (
     "restitution.fem.contact",
@@ -123,8 +127,9 @@ def compute_reference(
     ----------
     path : str or Path
         JSON file, rewritten after every point.
-    points : iterable of (float, float)
-        ``(nu, v)``, ``v`` in ``c``.
+    points : iterable of tuple
+        ``(nu, v)`` or ``(nu, v, first_level)``, ``v`` in ``c``; the levels are
+        ``first_level + levels`` (``first_level`` defaults to 0).
     levels : sequence of int
     grading : ContactGrading, optional
     on_run : callable, optional
@@ -151,15 +156,44 @@ def compute_reference(
         "environment": _environment(),
         **(provenance or {}),
         "levels": [int(k) for k in levels],
+        "levels_note": "per point: first_level + levels (settings.levels of each point)",
         "grading": grading.to_dict(),
         "points": [],
     }
-    for nu, v in points:
+    for point in points:
+        nu, v = point[0], point[1]
+        first = int(point[2]) if len(point) > 2 else 0
         report = None if on_run is None else (lambda run, nu=nu, v=v: on_run(nu, v, run))
-        result = fem_epsilon(nu, v, levels=levels, grading=grading, on_run=report)
+        shifted = [first + int(k) for k in levels]
+        result = fem_epsilon(nu, v, levels=shifted, grading=grading, on_run=report)
         doc["points"].append(result.to_dict())
         path.write_text(json.dumps(doc, indent=1) + "\n")
     return doc
+
+
+def merge_reference(docs: list[dict]) -> dict:
+    """One reference document from several runs: per ``(nu, v)`` the point with the finest
+    levels (the later run on a tie); each run's provenance is kept under ``"runs"`` and every
+    point names its run (``"run"``: index into ``"runs"``)."""
+    if not docs:
+        raise InputError("nothing to merge")
+    chosen: dict[tuple[float, float], dict] = {}
+    for i, doc in enumerate(docs):
+        for point in doc["points"]:
+            key = (float(point["nu"]), float(point["v"]))
+            old = chosen.get(key)
+            if old is None or max(point["settings"]["levels"]) >= max(old["settings"]["levels"]):
+                chosen[key] = {**point, "run": i}
+    runs = [{k: v for k, v in doc.items() if k != "points"} for doc in docs]
+    versions = {r["code_version"] for r in runs}
+    return {
+        "description": docs[-1]["description"],
+        "units": docs[-1]["units"],
+        "code_version": versions.pop() if len(versions) == 1 else sorted(versions),
+        "git_commit": runs[-1].get("git_commit", "unknown"),
+        "runs": runs,
+        "points": [chosen[k] for k in sorted(chosen)],
+    }
 
 
 def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]:
@@ -188,13 +222,16 @@ def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]
 
 
 def main(argv: list[str] | None = None) -> None:
-    """``python -m restitution.fem.reference OUT.json [nu:v ...]``: compute and write."""
+    """``python -m restitution.fem.reference OUT.json [nu:v[:first_level] ...]``."""
     import subprocess
     import sys
 
     args = sys.argv[1:] if argv is None else argv
     if not args:
-        print("usage: python -m restitution.fem.reference OUT.json [nu:v ...]", file=sys.stderr)
+        print(
+            "usage: python -m restitution.fem.reference OUT.json [nu:v[:level] ...]",
+            file=sys.stderr,
+        )
         raise SystemExit(2)
     points = [tuple(float(x) for x in a.split(":")) for a in args[1:]] or REFERENCE_POINTS
     try:
