@@ -19,7 +19,7 @@ from typing import Protocol
 
 from restitution.errors import InputError
 
-__all__ = ["JudgedPoint", "LawJudgement", "LawLike", "judge_law"]
+__all__ = ["JudgedPoint", "LawJudgement", "LawLike", "judge_law", "judge_shipped_law"]
 
 
 class LawLike(Protocol):
@@ -177,3 +177,19 @@ def judge_law(points: Iterable, laws: Mapping[float, LawLike] | LawLike) -> LawJ
             )
         )
     return LawJudgement(points=tuple(rows))
+
+
+def judge_shipped_law(reference_path=None) -> LawJudgement:
+    """The shipped FEM reference against the shipped modal laws (``restitution.law(nu)``)."""
+    from restitution.fem.reference import load_reference
+    from restitution.law import law
+
+    points = load_reference(reference_path)
+    laws = {nu: law(nu) for nu in sorted({p.nu for p in points})}
+    return judge_law(points, laws)
+
+
+if __name__ == "__main__":
+    import sys
+
+    print(judge_shipped_law(sys.argv[1] if len(sys.argv) > 1 else None).to_markdown())
