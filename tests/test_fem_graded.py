@@ -348,3 +348,30 @@ def test_shipped_reference_has_provenance_and_the_issue_points():
     for point in doc["points"]:
         for run in point["grid"]["runs"]:
             assert run["n_dofs"] > 0 and run["wall_time_s"] > 0 and run["h_contact"] > 0
+
+
+def test_both_limits_of_a_synthetic_grid_and_a_failed_run():
+    from restitution.fem.graded import ContactGrading
+    from restitution.fem.limits import FemRun, _assemble
+
+    def grid(fail=None):
+        runs = []
+        for alpha in (100.0, 200.0, 400.0):
+            for k in (0, 1, 2):
+                # Loss linear in 1/alpha, mesh error 0.01 h^4 with h = 2^-k: exact limit 0.1.
+                loss = 0.1 - 2.0 / alpha + 0.01 * 2.0 ** (-4 * k)
+                eps = math.nan if (alpha, k) == fail else math.sqrt(1.0 - loss)
+                runs.append(FemRun(alpha, k, 100 * 4**k, 0.1 * 2**-k, eps, 1e-8, 10, 1e-3, 1.0))
+        return _assemble(Material(NU), 0.1, None, runs, (0, 1, 2), ContactGrading(), 9.0)
+
+    exact = grid()
+    assert exact.asymptotic_ok, exact.message
+    assert_allclose(exact.energy_loss, 0.1, atol=1e-12)
+    assert_allclose(exact.epsilon, math.sqrt(0.9), atol=1e-12)
+    assert_allclose([m.rate for m in exact.mesh_limits], 4.0, rtol=1e-8)
+    assert abs(exact.order_difference) < 1e-12
+    # A failed coarse run leaves two levels at that alpha: kept, flagged, and reported.
+    failed = grid(fail=(200.0, 0))
+    assert not failed.asymptotic_ok and "1 run(s) failed" in failed.message
+    assert failed.mesh_limits[1].kind == "two levels"
+    assert failed.to_dict()["failed_points"] == [{"alpha": 200.0, "level": 0, "message": ""}]

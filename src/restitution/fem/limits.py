@@ -328,7 +328,9 @@ def _assemble(material, v, alpha, runs, levels, grading, wall) -> FemEpsilon:
         problems.append(f"{len(failed)} run(s) failed: {failed[0].message}")
     mesh_limits = []
     for a, row in zip(alpha_values, loss, strict=True):
-        good = row[np.isfinite(row)]
+        # The finest consecutive finite levels: Richardson needs the ratio 2 between them.
+        bad = np.nonzero(~np.isfinite(row))[0]
+        good = row[bad[-1] + 1 :] if bad.size else row
         if good.size < 2:
             mesh_limits.append(None)
             continue
