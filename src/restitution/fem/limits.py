@@ -413,8 +413,9 @@ def fem_epsilon_command(
 
     given = [name for name, value in modal_only.items() if value]
     if given:
+        verb, it = ("belongs", "it") if len(given) == 1 else ("belong", "them")
         raise InputError(
-            f"{', '.join(given)} belong(s) to the modal route; leave them out with --method fem"
+            f"{', '.join(given)} {verb} to the modal route; leave {it} out with --method fem"
         )
 
     def report(run: FemRun) -> None:
