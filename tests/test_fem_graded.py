@@ -69,7 +69,7 @@ def test_graded_mesh_is_fine_at_the_contact_and_curved(v):
         [s.h_contact for s in sizes[1:]], [0.5 * s.h_contact for s in sizes[:-1]], rtol=1e-3
     )
     # ... and the finest is about a tenth of the half-width: bisection of the coarse facets
-    # lands between half the target and the target (measured 0.48-0.66 of a / 10).
+    # lands between half the target and the target (measured 0.48-0.82 of a / 10).
     assert 0.045 * a < sizes[-1].h_contact <= 0.1 * a * (1 + 1e-12)
     # Away from the contact the elements reach the cap h_far / 4 = 0.1 R of the finest level
     # (they are bisected only below it, so their longest edge exceeds half of it).

@@ -25,7 +25,7 @@ element, which is what a three-level Richardson study needs. An unstructured gen
 ``level`` 0, 1, 2 are the three meshes of a convergence study; with the default
 ``contact_fraction = 0.4`` the finest (``level = 2``) has target edges of ``a / 10`` on the
 contact arc (bisection makes the actual longest arc chords between about half the target and
-the target, measured 0.48-0.66 of ``a / 10`` at ``v`` = 1e-3 to 0.1; :func:`mesh_summary`
+the target, measured 0.48-0.82 of ``a / 10`` at ``v`` = 1e-4 to 0.3; :func:`mesh_summary`
 measures them).
 """
 
