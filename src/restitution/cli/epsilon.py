@@ -160,12 +160,20 @@ def _executor_options(f):
     help="Only extrapolate N -> infinity at this wall hardness (1/R); default: both limits.",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON with the grid and fits.")
+@click.option(
+    "--method",
+    type=click.Choice(["modal", "fem"]),
+    default="modal",
+    show_default=True,
+    help="modal: N modes, N -> infinity; fem: finite elements on contact-graded meshes, h -> 0.",
+)
 @_executor_options
 def epsilon(
     nu,
     v,
     alpha,
     as_json,
+    method,
     alphas,
     alpha_scale,
     modes,
@@ -191,6 +199,13 @@ def epsilon(
             "--alpha fixes one wall and extrapolates N -> infinity only; --alphas and "
             "--alpha-scale set the alpha -> infinity extrapolation: give one or the other"
         )
+    if method == "fem":
+        from restitution.fem.limits import fem_epsilon_command
+
+        modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
+        modal_only["--store"] = store
+        modal_only["--retry-failed"] = retry_failed or None
+        return fem_epsilon_command(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress)
     settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
     swept = replace(settings, velocities=(float(v),))
     if alpha is not None:

@@ -6,19 +6,33 @@ plane elasticity on the half disk (symmetric family) with isoparametric quadrati
 :mod:`~restitution.fem.elasticity` (stiffness and mass), :mod:`~restitution.fem.eigen`
 (frequencies, inertia counts), :mod:`~restitution.fem.contact` (the wall on the arc),
 :mod:`~restitution.fem.impact` (the collision), :mod:`~restitution.fem.compare` (against the
-modal solver).
+modal solver), :mod:`~restitution.fem.graded` (meshes sized by the contact half-width),
+:mod:`~restitution.fem.richardson` (the limit h -> 0), :mod:`~restitution.fem.limits` (epsilon
+with h -> 0 and alpha -> infinity), :mod:`~restitution.fem.reference` (stored reference values
+with provenance) and :mod:`~restitution.fem.judge` (a law against the reference).
 """
 
 from restitution.fem.compare import Comparison, compare_fem_modal
 from restitution.fem.eigen import fem_count_below, fem_symmetric_frequencies
+from restitution.fem.graded import ContactGrading, contact_half_width
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide
+from restitution.fem.judge import LawJudgement, judge_law
+from restitution.fem.limits import FemEpsilon, fem_epsilon
+from restitution.fem.reference import load_reference
 
 __all__ = [
     "Comparison",
+    "ContactGrading",
     "FemCollisionError",
+    "FemEpsilon",
     "FemSettings",
+    "LawJudgement",
     "compare_fem_modal",
+    "contact_half_width",
     "fem_collide",
     "fem_count_below",
+    "fem_epsilon",
     "fem_symmetric_frequencies",
+    "judge_law",
+    "load_reference",
 ]

@@ -57,6 +57,7 @@ __all__ = [
     "fem_collide",
     "model_for",
     "pressure_estimate",
+    "verlet_step",
 ]
 
 CONTACT_TOL = 1e-12
@@ -213,10 +214,58 @@ class _Run:
     history: list = field(default_factory=list)
 
 
+def verlet_step(
+    model: FemModel,
+    alpha: float,
+    x_c: float,
+    u: np.ndarray,
+    ud: np.ndarray,
+    f: np.ndarray,
+    dt: float,
+) -> tuple[np.ndarray, np.ndarray, float, float, np.ndarray]:
+    """One velocity-Verlet step of the half disk against the wall, in place.
+
+    Second order, symplectic and time-reversible (negating ``ud`` and stepping again retraces
+    the path), explicit; stable for ``dt < 2 / omega_max`` (module docstring).
+
+    Parameters
+    ----------
+    model : FemModel
+    alpha : float
+        Wall hardness, ``1/R``.
+    x_c : float
+        Reference position of the disk's centre, ``R``.
+    u, ud : numpy.ndarray, shape (n,)
+        Displacement (``R``) and velocity (``c``); updated in place.
+    f : numpy.ndarray, shape (n,)
+        Force at ``u`` (``-K u - dV/du``), ``E R``.
+    dt : float
+        Step, ``R / c``.
+
+    Returns
+    -------
+    f : numpy.ndarray
+        Force at the new ``u``.
+    Ku : numpy.ndarray
+        ``K u`` at the new ``u``.
+    V, F : float
+        Wall potential and total wall force of the half disk.
+    density : numpy.ndarray
+        Wall force per quadrature point.
+    """
+    ud += 0.5 * dt * (model.inverse_mass * f)
+    u += dt * ud
+    Ku = model.disk.K @ u
+    V, F, grad, dens = wall_terms(model.quad, alpha, x_c, u)
+    f = -Ku - grad
+    ud += 0.5 * dt * (model.inverse_mass * f)
+    return f, Ku, V, F, dens
+
+
 def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> _Run:
     """Integrate one collision with velocity Verlet at fixed step ``dt``."""
     disk, quad = model.disk, model.quad
-    K, mass, r = disk.K, disk.mass, model.r
+    mass, r = disk.mass, model.r
     e0 = 0.5 * mass * v**2
     x_c = _start_position(model, alpha, e0)
     t_max = s.max_time or ((-1.0 - x_c) / v + 4.0 * _contact_time_estimate(v) + 10.0)
@@ -226,7 +275,6 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
     p = v * r  # M @ ud, kept in step with ud
     V, F, grad, dens = wall_terms(quad, alpha, x_c, u)
     f = -grad
-    acc = model.inverse_mass * f
     h0 = 0.5 * _dot(ud, p) + V
     out = _Run(dt=dt)
     rec_every = max(1, int(round(s.record_interval / dt))) if s.record else 0
@@ -239,14 +287,8 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
                 f"the disk did not separate from the wall within t = {t:.3g} R/c "
                 f"({out.steps} steps of dt = {dt:.3g}); raise max_time or check v and alpha"
             )
-        ud += 0.5 * dt * acc
         p += 0.5 * dt * f
-        u += dt * ud
-        Ku = K @ u
-        V, F, grad, dens = wall_terms(quad, alpha, x_c, u)
-        f = -Ku - grad
-        acc = model.inverse_mass * f
-        ud += 0.5 * dt * acc
+        f, Ku, V, F, dens = verlet_step(model, alpha, x_c, u, ud, f, dt)
         p += 0.5 * dt * f
         t += dt
         out.steps += 1

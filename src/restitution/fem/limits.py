@@ -1,0 +1,437 @@
+"""epsilon at one speed from the FEM alone: mesh limit ``h -> 0`` and hard wall ``alpha -> inf``.
+
+Units: ``E = rho = R = 1``; ``v`` in ``c`` (speed towards the wall), ``alpha`` in ``1/R``, wall
+times in seconds.
+
+The FEM route has no modal truncation; its two limits are
+
+1. ``h -> 0`` at every ``alpha``: three contact-graded meshes (:mod:`restitution.fem.graded`,
+   levels ``0, 1, 2``, each halving all element sizes) and a Richardson extrapolation of the
+   energy loss ``1 - eps^2`` (:func:`restitution.fem.richardson.richardson_limit`);
+2. ``alpha -> infinity`` of those limits, linear in ``1/alpha``, with the package's
+   extrapolation (:func:`restitution.extrapolation.extrapolate_alpha`, errors propagated).
+
+The ``alpha`` are those of the modal sweeps (:class:`restitution.sweep.SweepSettings`, by default
+``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))``), so both routes
+extrapolate from the same walls. As a check the other order is taken too (``alpha -> inf`` at
+every level, then Richardson); the error is the larger of the two orders' errors combined in
+quadrature with their difference, as in :func:`restitution.extrapolation.combined_limit`.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from restitution import __version__
+from restitution.errors import InputError
+from restitution.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
+from restitution.fem.elasticity import as_material
+from restitution.fem.graded import ContactGrading, graded_settings, mesh_summary
+from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide, model_for
+from restitution.fem.richardson import MeshLimit, richardson_limit
+from restitution.material import Material
+from restitution.sweep import DEFAULTS
+
+__all__ = ["FemEpsilon", "FemRun", "fem_epsilon", "fem_epsilon_command"]
+
+LEVELS = (0, 1, 2)
+"""Mesh levels of the convergence study (each halves all element sizes)."""
+
+
+@dataclass(frozen=True)
+class FemRun:
+    """One FEM collision of the grid.
+
+    Attributes
+    ----------
+    alpha : float
+        Wall hardness, ``1/R``.
+    level : int
+        Mesh level.
+    n_dofs : int
+        Degrees of freedom of the half disk.
+    h_contact : float
+        Longest arc facet within the Hertz half-width of ``(R, 0)``, ``R``.
+    epsilon : float
+        ``nan`` when the run failed (``message`` says why).
+    energy_drift : float
+        Largest relative energy error of the run.
+    n_steps : int
+    dt : float
+        Time step, ``R / c``.
+    wall_time_s : float
+        Seconds, mesh and matrices included.
+    message : str
+    """
+
+    alpha: float
+    level: int
+    n_dofs: int
+    h_contact: float
+    epsilon: float
+    energy_drift: float
+    n_steps: int
+    dt: float
+    wall_time_s: float
+    message: str = ""
+
+    @property
+    def energy_loss(self) -> float:
+        """``1 - epsilon^2``."""
+        return 1.0 - self.epsilon**2
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary."""
+        d = dict(self.__dict__)
+        d["epsilon"] = self.epsilon if math.isfinite(self.epsilon) else None
+        return d
+
+
+@dataclass(frozen=True, eq=False)
+class FemEpsilon:
+    """epsilon at one speed from the FEM route, with the grid and fits behind it.
+
+    Attributes
+    ----------
+    nu, v : float
+        Poisson number and speed towards the wall (``c``).
+    alpha : float or None
+        The fixed wall hardness (``1/R``) when only ``h -> 0`` was taken; ``None`` for both.
+    epsilon, epsilon_err, energy_loss, energy_loss_err : float
+    asymptotic_ok : bool
+    message : str
+    runs : tuple of FemRun
+        The grid, ordered by ``alpha`` then level.
+    mesh_limits : tuple of MeshLimit
+        ``h -> 0`` at each ``alpha``.
+    alpha_limit : LinearLimit or None
+        ``alpha -> inf`` of the mesh limits (``None`` with a fixed ``alpha``).
+    check_alpha_limits : tuple of LinearLimit
+        The other order: ``alpha -> inf`` at each level.
+    check_mesh_limit : MeshLimit or None
+        ... then ``h -> 0``.
+    order_difference : float
+        Loss of the primary order minus the check order (``nan`` with a fixed ``alpha``).
+    grading : ContactGrading
+    levels : tuple of int
+    wall_time_s : float
+    """
+
+    nu: float
+    v: float
+    alpha: float | None
+    epsilon: float
+    epsilon_err: float
+    energy_loss: float
+    energy_loss_err: float
+    asymptotic_ok: bool
+    message: str
+    runs: tuple[FemRun, ...]
+    mesh_limits: tuple[MeshLimit, ...]
+    alpha_limit: LinearLimit | None
+    check_alpha_limits: tuple[LinearLimit, ...]
+    check_mesh_limit: MeshLimit | None
+    order_difference: float
+    grading: ContactGrading
+    levels: tuple[int, ...]
+    wall_time_s: float
+
+    @property
+    def alphas(self) -> tuple[float, ...]:
+        """The wall hardness values of the grid, ``1/R``."""
+        return tuple(sorted({r.alpha for r in self.runs}))
+
+    def summary(self) -> str:
+        """Three lines for the terminal: epsilon, energy loss, grid."""
+        limits = "h -> 0" if self.alpha is not None else "alpha -> inf and h -> 0"
+        where = f" at alpha = {self.alpha:g}" if self.alpha is not None else ""
+        dofs = sorted({r.n_dofs for r in self.runs})
+        lines = [
+            f"epsilon = {self.epsilon:.6f} +- {self.epsilon_err:.6f}   (nu = {self.nu:g}, "
+            f"v = {self.v:g} c towards the wall; FEM, {limits}{where})",
+            f"energy loss 1 - epsilon^2 = {self.energy_loss:.6f} +- {self.energy_loss_err:.6f}",
+            f"grid: alpha = {', '.join(f'{a:g}' for a in self.alphas)}; mesh levels "
+            f"{', '.join(str(k) for k in self.levels)} ({dofs[0]}-{dofs[-1]} dofs, "
+            f"{self.wall_time_s:.0f} s)",
+        ]
+        if not self.asymptotic_ok:
+            lines.append(f"warning: not asymptotic: {self.message}")
+        return "\n".join(lines)
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary with the keys of the modal route's
+        :meth:`restitution.law.PointEpsilon.to_dict` (``grid`` and ``fits`` hold the FEM's
+        levels and fits in place of mode counts)."""
+        alphas = self.alphas
+        table = {(r.alpha, r.level): r for r in self.runs}
+
+        def cell(a: float, k: int, name: str):
+            r = table.get((a, k))
+            value = None if r is None else getattr(r, name)
+            return value if value is None or math.isfinite(value) else None
+
+        return {
+            "nu": self.nu,
+            "v": self.v,
+            "v_units": "c (speed of the disk towards the wall)",
+            "alpha": self.alpha,
+            "limits": ["h"] if self.alpha is not None else ["alpha", "h"],
+            "epsilon": _finite(self.epsilon),
+            "epsilon_err": _finite(self.epsilon_err),
+            "energy_loss": _finite(self.energy_loss),
+            "energy_loss_err": _finite(self.energy_loss_err),
+            "asymptotic_ok": bool(self.asymptotic_ok),
+            "message": self.message,
+            "grid": {
+                "alpha": list(alphas),
+                "levels": list(self.levels),
+                "energy_loss": [[cell(a, k, "energy_loss") for k in self.levels] for a in alphas],
+                "n_dofs": [[cell(a, k, "n_dofs") for k in self.levels] for a in alphas],
+                "h_contact": [[cell(a, k, "h_contact") for k in self.levels] for a in alphas],
+                "runs": [r.to_dict() for r in self.runs],
+            },
+            "fits": {
+                "h": [m.to_dict() for m in self.mesh_limits],
+                "alpha": self.alpha_limit.to_dict() if self.alpha_limit else None,
+                "check_alpha": [f.to_dict() for f in self.check_alpha_limits],
+                "check_h": self.check_mesh_limit.to_dict() if self.check_mesh_limit else None,
+                "order_difference": _finite(self.order_difference),
+            },
+            "failed_points": [
+                {"alpha": r.alpha, "level": r.level, "message": r.message}
+                for r in self.runs
+                if not math.isfinite(r.epsilon)
+            ],
+            "settings": {
+                "method": "fem",
+                "levels": list(self.levels),
+                "grading": self.grading.to_dict(),
+                "alphas": list(alphas),
+                "wall_time_s": self.wall_time_s,
+            },
+            "version": __version__,
+        }
+
+
+def _finite(x: float) -> float | None:
+    return float(x) if math.isfinite(x) else None
+
+
+def _one_run(
+    material: Material, v: float, alpha: float, level: int, settings: FemSettings
+) -> FemRun:
+    start = time.perf_counter()
+    summary = mesh_summary(model_for(material, v, alpha, settings), v)
+    try:
+        r = fem_collide(material, v, alpha, settings=settings)
+    except FemCollisionError as exc:
+        return FemRun(
+            alpha, level, summary.n_dofs, summary.h_contact, float("nan"), float("nan"), 0,
+            float("nan"), time.perf_counter() - start, str(exc),
+        )  # fmt: skip
+    return FemRun(
+        alpha=alpha,
+        level=level,
+        n_dofs=summary.n_dofs,
+        h_contact=summary.h_contact,
+        epsilon=r.epsilon,
+        energy_drift=r.energy_drift,
+        n_steps=r.n_steps,
+        dt=r.dt,
+        wall_time_s=time.perf_counter() - start,
+    )
+
+
+def fem_epsilon(
+    material_or_nu: Material | float,
+    v: float,
+    *,
+    alpha: float | None = None,
+    alphas: Sequence[float] | None = None,
+    alpha_scale: str | None = None,
+    levels: Sequence[int] = LEVELS,
+    grading: ContactGrading | None = None,
+    base: FemSettings | None = None,
+    on_run: Callable[[FemRun], None] | None = None,
+) -> FemEpsilon:
+    """epsilon at speed ``v`` from the FEM alone, extrapolated to ``h -> 0`` and ``alpha -> inf``.
+
+    Parameters
+    ----------
+    material_or_nu : Material or float
+        The disk's material or its two-dimensional Poisson number.
+    v : float
+        Speed towards the wall before the collision, ``c``.
+    alpha : float, optional
+        Only take ``h -> 0`` at this wall hardness (``1/R``).
+    alphas : sequence of float, optional
+        Wall hardness values for ``alpha -> inf``, read by ``alpha_scale``; default the modal
+        sweeps' ``alpha * delta_max(v) = 40, 80, 160``.
+    alpha_scale : {"absolute", "compression"}, optional
+        ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; default as
+        :data:`restitution.sweep.DEFAULTS`.
+    levels : sequence of int
+        Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level).
+    grading : ContactGrading, optional
+    base : FemSettings, optional
+        Integrator settings of every run.
+    on_run : callable, optional
+        Called with each finished :class:`FemRun` (progress reports).
+
+    Returns
+    -------
+    FemEpsilon
+        Failed runs are kept (``epsilon = nan``, with their message) and flag the result.
+    """
+    material = as_material(material_or_nu)
+    v = float(v)
+    if not 0.0 < v < 1.0:
+        raise InputError(f"the speed v must lie in (0, 1) in units of c, got {v}")
+    levels = tuple(int(k) for k in levels)
+    if len(levels) < 2 or any(b - a != 1 for a, b in zip(levels, levels[1:], strict=False)):
+        raise InputError(f"levels must be at least two consecutive integers, got {levels}")
+    grading = grading or ContactGrading()
+    if alpha is not None:
+        if not (alpha > 0 and math.isfinite(alpha)):
+            raise InputError(f"the wall hardness alpha must be positive (1/R), got {alpha}")
+        alpha_values = (float(alpha),)
+    else:
+        scale = alpha_scale or DEFAULTS.alpha_scale
+        sweep = replace(DEFAULTS, alphas=tuple(alphas or DEFAULTS.alphas), alpha_scale=scale)
+        alpha_values = tuple(sorted(sweep.alphas_at(v)))
+    start = time.perf_counter()
+    runs = []
+    for a in alpha_values:
+        for k in levels:
+            run = _one_run(material, v, a, k, graded_settings(v, a, k, grading, base))
+            runs.append(run)
+            if on_run is not None:
+                on_run(run)
+    return _assemble(material, v, alpha, runs, levels, grading, time.perf_counter() - start)
+
+
+def _assemble(material, v, alpha, runs, levels, grading, wall) -> FemEpsilon:
+    """Both limits from the grid of runs."""
+    alpha_values = sorted({r.alpha for r in runs})
+    loss = np.array(
+        [[next(r for r in runs if r.alpha == a and r.level == k).energy_loss for k in levels]
+         for a in alpha_values]
+    )  # fmt: skip
+    problems = []
+    failed = [r for r in runs if not math.isfinite(r.epsilon)]
+    if failed:
+        problems.append(f"{len(failed)} run(s) failed: {failed[0].message}")
+    mesh_limits = []
+    for a, row in zip(alpha_values, loss, strict=True):
+        # The finest consecutive finite levels: Richardson needs the ratio 2 between them.
+        bad = np.nonzero(~np.isfinite(row))[0]
+        good = row[bad[-1] + 1 :] if bad.size else row
+        if good.size < 2:
+            mesh_limits.append(None)
+            continue
+        fit = richardson_limit(good)
+        mesh_limits.append(fit)
+        if not fit.asymptotic_ok:
+            problems.append(f"h -> 0 at alpha = {a:g}: {fit.message}")
+    kept = [(a, m) for a, m in zip(alpha_values, mesh_limits, strict=True) if m is not None]
+    nan = float("nan")
+    alpha_limit, checks, check_mesh, difference = None, (), None, nan
+    if not kept:
+        loss_value, loss_err = nan, nan
+    elif alpha is not None:
+        loss_value, loss_err = kept[0][1].limit, kept[0][1].limit_err
+    else:
+        alpha_limit = extrapolate_alpha(
+            [a for a, _ in kept],
+            [m.limit for _, m in kept],
+            loss_err=[m.limit_err for _, m in kept],
+        )
+        if not alpha_limit.asymptotic_ok:
+            problems.append(f"alpha -> inf: {alpha_limit.message}")
+        checks = tuple(extrapolate_alpha(alpha_values, col) for col in loss.T)
+        check_values = [c.limit for c in checks]
+        if len(check_values) >= 2 and all(math.isfinite(c) for c in check_values):
+            check_mesh = richardson_limit(check_values)
+            difference = alpha_limit.limit - check_mesh.limit
+            # The check's own error: the finest level's alpha fit and the Richardson step.
+            err_check = math.hypot(checks[-1].limit_err, check_mesh.limit_err)
+            loss_err = math.sqrt(max(alpha_limit.limit_err, err_check) ** 2 + difference**2)
+        else:
+            loss_err = alpha_limit.limit_err
+        loss_value = alpha_limit.limit
+    eps, eps_err = epsilon_from_loss(loss_value, loss_err)
+    if not math.isfinite(eps):
+        problems.append(f"energy loss {loss_value:.4g} is outside [0, 1)")
+    return FemEpsilon(
+        nu=material.nu,
+        v=v,
+        alpha=None if alpha is None else float(alpha),
+        epsilon=eps,
+        epsilon_err=eps_err,
+        energy_loss=loss_value,
+        energy_loss_err=loss_err,
+        asymptotic_ok=not problems,
+        message="; ".join(problems),
+        runs=tuple(runs),
+        mesh_limits=tuple(m for m in mesh_limits if m is not None),
+        alpha_limit=alpha_limit,
+        check_alpha_limits=checks,
+        check_mesh_limit=check_mesh,
+        order_difference=difference,
+        grading=grading,
+        levels=levels,
+        wall_time_s=wall,
+    )
+
+
+def fem_epsilon_command(
+    nu: float,
+    v: float,
+    alpha: float | None,
+    alphas: Sequence[float],
+    alpha_scale: str | None,
+    as_json: bool,
+    modal_only: dict,
+    progress: bool | None,
+) -> None:
+    """What ``restitution epsilon --method fem`` does: compute and print (text or JSON).
+
+    ``modal_only`` maps options of the modal route to their values; any that is set is refused
+    (the FEM route runs in this process and keeps no store).
+    """
+    import json
+    import sys
+
+    import click
+
+    from restitution.store import json_default
+
+    given = [name for name, value in modal_only.items() if value]
+    if given:
+        verb, it = ("belongs", "it") if len(given) == 1 else ("belong", "them")
+        raise InputError(
+            f"{', '.join(given)} {verb} to the modal route; leave {it} out with --method fem"
+        )
+
+    def report(run: FemRun) -> None:
+        print(
+            f"alpha = {run.alpha:.6g}, level {run.level}: {run.n_dofs} dofs, "
+            f"epsilon = {run.epsilon:.7f} ({run.wall_time_s:.1f} s)",
+            file=sys.stderr,
+        )
+
+    result = fem_epsilon(
+        nu,
+        v,
+        alpha=alpha,
+        alphas=tuple(alphas) or None,
+        alpha_scale=alpha_scale,
+        on_run=report if progress else None,
+    )
+    text = json.dumps(result.to_dict(), indent=1, default=json_default)
+    click.echo(text if as_json else result.summary())

@@ -1,0 +1,256 @@
+"""FEM reference values of epsilon with full provenance (the judge of the modal law).
+
+Units: ``E = rho = R = 1``; ``v`` in ``c`` (speed towards the wall), ``alpha`` in ``1/R``.
+
+:func:`compute_reference` runs :func:`restitution.fem.limits.fem_epsilon` at a list of
+``(nu, v)`` and writes a JSON file after every point (a long run that is stopped keeps what it
+finished): the inputs, the mesh sizes, every level's epsilon, drift, step and time, both fits,
+the code version (a digest of the FEM sources and what they import) and the package versions.
+The shipped file is ``restitution/data/fem_reference.json``; :func:`load_reference` reads it.
+"""
+
+from __future__ import annotations
+
+import datetime
+import hashlib
+import importlib.util
+import json
+import math
+import platform
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from restitution import __version__
+from restitution.errors import InputError
+from restitution.fem.graded import ContactGrading
+from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
+
+__all__ = [
+    "REFERENCE_POINTS",
+    "ReferencePoint",
+    "compute_reference",
+    "fem_code_version",
+    "load_reference",
+    "merge_reference",
+]
+
+REFERENCE_POINTS = (
+    (0.33, 0.1, 1),
+    (0.9, 0.1, 1),
+    (0.9, 0.3, 1),
+    (0.33, 0.01, 1),
+    (0.9, 0.01, 1),
+    (0.33, 0.001, 0),
+    (0.9, 0.001, 0),
+    (0.33, 0.0001, 0),
+    (0.9, 0.0001, 0),
+)
+"""``(nu, v, first level)`` of the shipped reference: v = 1e-4, 1e-3, 1e-2, 0.1 at both nu and
+0.3 at nu = 0.9. Three levels from the first; the finer levels 1-3 where they are affordable."""
+
+_SOURCES = (
+    "restitution.fem.contact",
+    "restitution.fem.elasticity",
+    "restitution.fem.graded",
+    "restitution.fem.impact",
+    "restitution.fem.limits",
+    "restitution.fem.mesh",
+    "restitution.fem.model",
+    "restitution.fem.richardson",
+    "restitution.extrapolation",
+    "restitution.material",
+)
+
+
+def fem_code_version() -> str:
+    """``__version__`` plus a digest of the FEM route's sources, e.g. ``0.1.0+fem.3fa2...``."""
+    digest = hashlib.sha256()
+    for name in _SOURCES:
+        origin = getattr(importlib.util.find_spec(name), "origin", None)
+        try:
+            with open(origin, "rb") as fh:
+                digest.update(name.encode() + b"\0" + fh.read())
+        except (OSError, TypeError):
+            return __version__
+    return f"{__version__}+fem.{digest.hexdigest()[:12]}"
+
+
+def _environment() -> dict:
+    import numpy
+    import scipy
+    import skfem
+
+    return {
+        "python": platform.python_version(),
+        "numpy": numpy.__version__,
+        "scipy": scipy.__version__,
+        "scikit-fem": getattr(skfem, "__version__", "unknown"),
+        "machine": platform.machine(),
+    }
+
+
+@dataclass(frozen=True)
+class ReferencePoint:
+    """One FEM reference value.
+
+    Attributes
+    ----------
+    nu, v : float
+        Poisson number and speed towards the wall (``c``).
+    epsilon, epsilon_err : float
+    asymptotic_ok : bool
+    message : str
+    """
+
+    nu: float
+    v: float
+    epsilon: float
+    epsilon_err: float
+    asymptotic_ok: bool
+    message: str = ""
+
+
+def compute_reference(
+    path: str | Path,
+    points: Iterable[tuple[float, float]] = REFERENCE_POINTS,
+    *,
+    levels=LEVELS,
+    grading: ContactGrading | None = None,
+    on_run: Callable[[float, float, FemRun], None] | None = None,
+    provenance: dict | None = None,
+) -> dict:
+    """Compute FEM epsilon with errors at ``points`` and write them with provenance to ``path``.
+
+    Parameters
+    ----------
+    path : str or Path
+        JSON file, rewritten after every point.
+    points : iterable of tuple
+        ``(nu, v)`` or ``(nu, v, first_level)``, ``v`` in ``c``; the levels are
+        ``first_level + levels`` (``first_level`` defaults to 0).
+    levels : sequence of int
+    grading : ContactGrading, optional
+    on_run : callable, optional
+        Called with ``(nu, v, run)`` after every collision.
+    provenance : dict, optional
+        Further provenance to store (e.g. the commit of the sources).
+
+    Returns
+    -------
+    dict
+        What was written.
+    """
+    grading = grading or ContactGrading()
+    path = Path(path)
+    doc = {
+        "description": (
+            "FEM epsilon of the disk-wall collision, extrapolated to h -> 0 (Richardson, three "
+            "contact-graded meshes) and alpha -> infinity (linear in 1/alpha); "
+            "restitution.fem.reference.compute_reference"
+        ),
+        "units": "E = rho = R = 1; v in c = sqrt(E/rho) (speed towards the wall); alpha in 1/R",
+        "created": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+        "code_version": fem_code_version(),
+        "environment": _environment(),
+        **(provenance or {}),
+        "levels": [int(k) for k in levels],
+        "levels_note": "per point: first_level + levels (settings.levels of each point)",
+        "grading": grading.to_dict(),
+        "points": [],
+    }
+    for point in points:
+        nu, v = point[0], point[1]
+        first = int(point[2]) if len(point) > 2 else 0
+        report = None if on_run is None else (lambda run, nu=nu, v=v: on_run(nu, v, run))
+        shifted = [first + int(k) for k in levels]
+        result = fem_epsilon(nu, v, levels=shifted, grading=grading, on_run=report)
+        doc["points"].append(result.to_dict())
+        path.write_text(json.dumps(doc, indent=1) + "\n")
+    return doc
+
+
+def merge_reference(docs: list[dict]) -> dict:
+    """One reference document from several runs: per ``(nu, v)`` the point with the finest
+    levels (the later run on a tie); each run's provenance is kept under ``"runs"`` and every
+    point names its run (``"run"``: index into ``"runs"``)."""
+    if not docs:
+        raise InputError("nothing to merge")
+    chosen: dict[tuple[float, float], dict] = {}
+    for i, doc in enumerate(docs):
+        for point in doc["points"]:
+            key = (float(point["nu"]), float(point["v"]))
+            old = chosen.get(key)
+            if old is None or max(point["settings"]["levels"]) >= max(old["settings"]["levels"]):
+                chosen[key] = {**point, "run": i}
+    runs = [{k: v for k, v in doc.items() if k != "points"} for doc in docs]
+    versions = {r["code_version"] for r in runs}
+    return {
+        "description": docs[-1]["description"],
+        "units": docs[-1]["units"],
+        "code_version": versions.pop() if len(versions) == 1 else sorted(versions),
+        "git_commit": runs[-1].get("git_commit", "unknown"),
+        "runs": runs,
+        "points": [chosen[k] for k in sorted(chosen)],
+    }
+
+
+def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]:
+    """The FEM reference points from ``path`` (default: the shipped file)."""
+    if path is None:
+        text = resources.files("restitution").joinpath("data", "fem_reference.json").read_text()
+    else:
+        text = Path(path).read_text()
+    try:
+        doc = json.loads(text)
+        points = tuple(
+            ReferencePoint(
+                nu=float(p["nu"]),
+                v=float(p["v"]),
+                epsilon=math.nan if p["epsilon"] is None else float(p["epsilon"]),
+                epsilon_err=math.nan if p["epsilon_err"] is None else float(p["epsilon_err"]),
+                asymptotic_ok=bool(p["asymptotic_ok"]),
+                message=str(p.get("message", "")),
+            )
+            for p in doc["points"]
+        )
+    except (ValueError, KeyError, TypeError) as exc:
+        name = path or "fem_reference.json"
+        raise InputError(f"{name} is not an FEM reference file: {exc}") from exc
+    return points
+
+
+def main(argv: list[str] | None = None) -> None:
+    """``python -m restitution.fem.reference OUT.json [nu:v[:first_level] ...]``."""
+    import subprocess
+    import sys
+
+    args = sys.argv[1:] if argv is None else argv
+    if not args:
+        print(
+            "usage: python -m restitution.fem.reference OUT.json [nu:v[:level] ...]",
+            file=sys.stderr,
+        )
+        raise SystemExit(2)
+    points = [tuple(float(x) for x in a.split(":")) for a in args[1:]] or REFERENCE_POINTS
+    try:
+        commit = subprocess.run(
+            ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=True
+        ).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        commit = "unknown"
+
+    def report(nu: float, v: float, run: FemRun) -> None:
+        print(
+            f"nu = {nu:g}, v = {v:g}, alpha = {run.alpha:.6g}, level {run.level}: "
+            f"{run.n_dofs} dofs, h_contact = {run.h_contact:.3g}, epsilon = {run.epsilon:.8f}, "
+            f"{run.n_steps} steps, {run.wall_time_s:.1f} s {run.message}",
+            flush=True,
+        )
+
+    compute_reference(args[0], points, on_run=report, provenance={"git_commit": commit})
+
+
+if __name__ == "__main__":
+    main()
