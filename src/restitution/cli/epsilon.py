@@ -200,12 +200,10 @@ def epsilon(
             "--alpha-scale set the alpha -> infinity extrapolation: give one or the other"
         )
     if method == "fem":
-        from restitution.fem.limits import fem_epsilon_command
-
         modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
-        modal_only["--store"] = store
-        modal_only["--retry-failed"] = retry_failed or None
-        return fem_epsilon_command(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress)
+        modal_only.update({"--store": store, "--retry-failed": retry_failed or None})
+        _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict)
+        return
     settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
     swept = replace(settings, velocities=(float(v),))
     if alpha is not None:
@@ -270,6 +268,46 @@ def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
     )
 
 
+def _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict):
+    """``epsilon --method fem``: both limits (or h -> 0 at one alpha) on the FEM route, printed
+    like the modal route (JSON: the same envelope and keys, with levels in place of N)."""
+    from restitution.fem.limits import fem_epsilon
+
+    given = [name for name, value in modal_only.items() if value]
+    if given:
+        verb, it = ("belongs", "it") if len(given) == 1 else ("belong", "them")
+        raise InputError(
+            f"{', '.join(given)} {verb} to the modal route; leave {it} out with --method fem"
+        )
+
+    def report(run) -> None:
+        note(
+            f"alpha = {run.alpha:.6g}, level {run.level}: {run.n_dofs} dofs, "
+            f"epsilon = {run.epsilon:.7f} ({run.wall_time_s:.1f} s)"
+        )
+
+    result = fem_epsilon(
+        nu,
+        v,
+        alpha=alpha,
+        alphas=tuple(alphas) or None,
+        alpha_scale=alpha_scale,
+        on_run=report if progress else None,
+    )
+    status, advice = _status(result.asymptotic_ok, result.message, 0)
+    if status != "ok":
+        advice = f"{result.message}; refine the meshes or add harder walls (--alphas)"
+    inputs = {"nu": nu, "v": v, "alpha": alpha, "method": "fem", "alphas": list(alphas) or None,
+              "alpha_scale": alpha_scale}  # fmt: skip
+    if as_json:
+        click.echo(
+            dumps(envelope("epsilon", inputs, result.to_dict(), status=status, advice=advice))
+        )
+    else:
+        click.echo(result.summary())
+    _finish(status, advice, (), None, strict, as_json)
+
+
 def _status(asymptotic: bool, message: str, failed: int) -> tuple[str, str | None]:
     if failed:
         why = f" ({message})" if message else ""
@@ -290,7 +328,7 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
         note(f"warning: {status}: {advice}")
         for a, n, m in failures[:3]:
             note(f"  failed: alpha = {a:g}, N = {n}: {m}")
-        for spec, m in report.lost[:3]:
+        for spec, m in (report.lost if report is not None else ())[:3]:
             note(
                 f"  lost (worker died; rerun to retry): v = {spec.v:g}, "
                 f"alpha = {spec.alpha:g}, N = {spec.n_modes}: {m}"

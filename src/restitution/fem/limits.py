@@ -37,7 +37,7 @@ from restitution.fem.richardson import MeshLimit, richardson_limit
 from restitution.material import Material
 from restitution.sweep import DEFAULTS
 
-__all__ = ["FemEpsilon", "FemRun", "fem_epsilon", "fem_epsilon_command"]
+__all__ = ["FemEpsilon", "FemRun", "fem_epsilon"]
 
 LEVELS = (0, 1, 2)
 """Mesh levels of the convergence study (each halves all element sizes)."""
@@ -387,51 +387,3 @@ def _assemble(material, v, alpha, runs, levels, grading, wall) -> FemEpsilon:
         levels=levels,
         wall_time_s=wall,
     )
-
-
-def fem_epsilon_command(
-    nu: float,
-    v: float,
-    alpha: float | None,
-    alphas: Sequence[float],
-    alpha_scale: str | None,
-    as_json: bool,
-    modal_only: dict,
-    progress: bool | None,
-) -> None:
-    """What ``restitution epsilon --method fem`` does: compute and print (text or JSON).
-
-    ``modal_only`` maps options of the modal route to their values; any that is set is refused
-    (the FEM route runs in this process and keeps no store).
-    """
-    import json
-    import sys
-
-    import click
-
-    from restitution.store import json_default
-
-    given = [name for name, value in modal_only.items() if value]
-    if given:
-        verb, it = ("belongs", "it") if len(given) == 1 else ("belong", "them")
-        raise InputError(
-            f"{', '.join(given)} {verb} to the modal route; leave {it} out with --method fem"
-        )
-
-    def report(run: FemRun) -> None:
-        print(
-            f"alpha = {run.alpha:.6g}, level {run.level}: {run.n_dofs} dofs, "
-            f"epsilon = {run.epsilon:.7f} ({run.wall_time_s:.1f} s)",
-            file=sys.stderr,
-        )
-
-    result = fem_epsilon(
-        nu,
-        v,
-        alpha=alpha,
-        alphas=tuple(alphas) or None,
-        alpha_scale=alpha_scale,
-        on_run=report if progress else None,
-    )
-    text = json.dumps(result.to_dict(), indent=1, default=json_default)
-    click.echo(text if as_json else result.summary())
