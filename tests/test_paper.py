@@ -117,6 +117,19 @@ def test_report_links_and_images_resolve(run):
         assert f'id="{anchor}"' in html
 
 
+def test_report_judges_the_shipped_law_by_finite_elements(run):
+    from restitution.fem.judge import judge_shipped_law
+
+    md = run.report_md.read_text()
+    assert "## The shipped epsilon(v) laws against finite elements" in md
+    judged = judge_shipped_law()
+    # Every reference point is a row, with the sigma the judge computes independently.
+    for p in judged.points:
+        assert f"| {p.nu:g} | {p.v:g} | {p.reference:.5f} +- {p.reference_err:.5f} |" in md
+        assert f"{p.sigma:+.2f}" in md
+    assert f"Coverage: {judged.coverage(1.0):.0%} within one" in md
+
+
 def test_report_compares_with_the_paper_and_records_the_run(run):
     md = run.report_md.read_text()
     claims = {c.claim for c in run.comparisons}

@@ -9,6 +9,7 @@ parameters. Rendering is :func:`restitution.report.to_markdown` and ``to_html``.
 from __future__ import annotations
 
 import json
+import math
 import os
 import platform
 
@@ -227,6 +228,37 @@ def _errata_blocks(run) -> list[Block]:
     return blocks
 
 
+def _shipped_law_blocks() -> list[Block]:
+    """The shipped epsilon(v) laws judged by the independent finite-element route."""
+    from restitution.fem.judge import judge_shipped_law
+
+    judged = judge_shipped_law()
+    rows = tuple(
+        (
+            f"{p.nu:g}",
+            f"{p.v:g}",
+            f"{p.reference:.5f} +- {p.reference_err:.5f}",
+            f"{p.law:.5f} +- {p.law_err:.5f}",
+            f"{p.difference:+.5f}",
+            f"{p.sigma:+.2f}" if math.isfinite(p.sigma) else (p.note or "n/a"),
+        )
+        for p in judged.points
+    )
+    return [
+        Heading(2, "The shipped epsilon(v) laws against finite elements"),
+        Paragraph(
+            "The package's shipped laws (`restitution.law`, computed for 1e-4 <= v/c <= 0.3 by "
+            "`make law`, independent of this run) against the finite-element route on "
+            "contact-graded meshes with both limits h -> 0 and alpha -> infinity "
+            "(`src/restitution/data/fem_reference.json`, docs/fem.md). The last column is the "
+            f"difference in combined errors. Coverage: {judged.coverage(1.0):.0%} within one, "
+            f"{judged.coverage(2.0):.0%} within two combined errors "
+            f"({len(judged.compared)} points)."
+        ),
+        Table(("nu", "v [c]", "FEM epsilon", "law epsilon", "difference", "sigma"), rows),
+    ]
+
+
 def paper_blocks(run, store_path: str = "") -> list[Block]:
     """The report of a paper run (:class:`restitution.paper.PaperRun`) as blocks.
 
@@ -344,6 +376,7 @@ def paper_blocks(run, store_path: str = "") -> list[Block]:
         parse_markdown_table(to_markdown(t).splitlines()),
         _comparison_table([c for c in comps if c.figure == "Table 1"]),
     ]
+    blocks += _shipped_law_blocks()
     blocks += _errata_blocks(run)
     # Parameters.
     sw = s.sweep
