@@ -113,10 +113,12 @@ def plot(data: Fig01Data, path: str | Path, note: str = "") -> Path:
                 )  # fmt: skip
         if np.any(cut):
             ax.plot(v[cut], np.ones(np.count_nonzero(cut)), "^", color=color, ms=5)
-        if np.count_nonzero(finite) >= 1:
-            xs = np.r_[0.0, v[finite]]
-            curve = PchipInterpolator(xs, np.r_[1.0, eps[finite]])
-            fine = np.linspace(0.0, xs[-1], 200)
+        if np.count_nonzero(finite) >= 2:
+            # The computed points only, as the law serves them: no curve to an assumed
+            # epsilon(0) = 1 (docs/results.md, slow collisions).
+            xs = v[finite]
+            curve = PchipInterpolator(xs, eps[finite])
+            fine = np.linspace(xs[0], xs[-1], 200)
             ax.plot(fine, curve(fine), color=color, lw=0.8)
     ax.axhline(1.0, color="0.6", lw=0.6, ls=":")
     unit = r"c_L" if data.speed_unit == "c_L" else "c"

@@ -24,8 +24,9 @@ _CAPTIONS = {
     "fig01_epsilon": (
         "Fig. 1: coefficient of restitution against the speed towards the wall, extrapolated "
         "to a hard wall (alpha -> infinity) and infinitely many modes; open markers did not "
-        "pass the asymptotic checks (marked * in the table). Lines: monotone interpolation "
-        "anchored at epsilon(0) = 1. Speeds in c = sqrt(E/rho), the paper's stated unit."
+        "pass the asymptotic checks (marked * in the table). Lines: shape-preserving (PCHIP) "
+        "interpolation between the computed points only; nothing is drawn below the slowest "
+        "computed speed. Speeds in c = sqrt(E/rho), the paper's stated unit."
     ),
     "fig01_epsilon_c_L": (
         "Fig. 1 with the paper's speeds read in units of the dilatational wave speed "
