@@ -659,7 +659,10 @@ def collide_batch(
 ) -> list[CollisionResult]:
     """Integrate many collisions ``(v_i, alpha_i)`` on one mode set at once.
 
-    The batch shares the mode set and the step, so the wall terms are matrix-matrix products.
+    The batch shares the mode set; every member keeps its own step, step refinements and edge
+    quadrature, so its result does not depend on the other members. The compiled kernel
+    (:mod:`restitution.kernel`) runs the members on all cores; the NumPy reference path runs
+    them one after the other.
 
     Parameters
     ----------

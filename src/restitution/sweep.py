@@ -95,7 +95,8 @@ class SweepSettings:
     order : str
         Primary order of the two limits (:func:`restitution.extrapolation.combined_limit`).
     batch_size : int
-        Collisions per task; they share one mode set and one time step.
+        Collisions per task; they share one mode set (each keeps its own time step, so a
+        stored point does not depend on its batch).
     """
 
     velocities: tuple[float, ...] = PAPER_VELOCITIES
