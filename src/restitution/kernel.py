@@ -44,7 +44,7 @@ _FAST = {"reassoc", "contract", "nsz"}
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f):
+def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f):
     """Wall potential ``V``, force ``F`` and generalised forces ``f`` (written in place).
 
     Modes are ordered by angular order here: those of order column ``i`` are the contiguous
@@ -98,7 +98,7 @@ def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f):
 @njit(cache=True, nogil=True, fastmath=_FAST)
 def _strang(h_dt, x0, p0, Q, P, V, F, f, rot_c, rot_so, rot_st, mass, alpha, quad, ab, cs):
     """One Strang step of length ``h_dt``: half kick, exact free flow, wall, half kick."""
-    cos_phi, weight, trig, C, S, starts, g_max = quad
+    cos_phi, weight, trig, C, S, starts, _ = quad
     half = 0.5 * h_dt
     p0 = p0 - half * F
     N = Q.size
@@ -108,7 +108,7 @@ def _strang(h_dt, x0, p0, Q, P, V, F, f, rot_c, rot_so, rot_st, mass, alpha, qua
         Q[k] = qk * rot_c[k] + pk * rot_so[k]
         P[k] = pk * rot_c[k] - qk * rot_st[k]
     x0 = x0 + p0 * (h_dt / mass)
-    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f)
+    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f)
     p0 = p0 - half * F
     for k in range(N):
         P[k] = P[k] - half * f[k]
@@ -149,7 +149,7 @@ def _member(
     e0 = 0.5 * m * v * v
     x0 = x_start
     p0 = m * v
-    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, g_max, ab, cs, f)
+    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f)
     h0 = p0 * p0 / (2.0 * m) + V
     drift = 0.0
     contact = 0.0
