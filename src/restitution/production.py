@@ -9,7 +9,8 @@ when the shipped files no longer match the code.
 Two groups of speeds, both with walls scaled to the compression (``alpha delta_max(v) = 40,
 80, 160``):
 
-* the paper's speeds ``0.005 <= v <= 0.3`` with the ``N = 300, 400, 600, 940`` lowest modes;
+* the paper's speeds ``0.005 <= v <= 0.3`` with the ``N = 1880, 3760, 7520, 15040`` lowest
+  modes (the paper used 300-940; with those most points fail the curvature test);
 * slow speeds ``1e-4 <= v <= 2e-3`` with windows from ``N = 3200 ... 25600`` (at ``1e-3`` and
   ``2e-3``) to ``N = 12800 ... 102400`` (at ``1e-4``). The contact half-width shrinks with the
   compression, so slow collisions need far more modes before the energy loss is linear in
@@ -21,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from restitution.sweep import DEFAULTS, SweepSettings
@@ -30,6 +32,11 @@ __all__ = ["SHIPPED_NUS", "SETTINGS_GROUPS", "build"]
 SHIPPED_NUS = (0.33, 0.9)
 """Two-dimensional Poisson numbers of the shipped laws (the paper's Fig. 1)."""
 
+# The paper's speeds with the mode window N = 1880-15040: with the paper's N = 300-940 most
+# points fail the curvature test in 1/sqrt(N) (4 of 34 passed); with this window 7 of 8 sampled
+# points pass and v = 0.1, 0.3 agree with the finite-element route within 0.3 of their errors.
+PAPER = replace(DEFAULTS, n_modes=(1880, 3760, 7520, 15040))
+
 # Slow speeds: the mode windows grow as the contact narrows (about 1 / delta_max(v)).
 SLOW = (
     SweepSettings(velocities=(1e-3, 2e-3), n_modes=(3200, 6400, 12800, 25600), batch_size=3),
@@ -37,7 +44,7 @@ SLOW = (
     SweepSettings(velocities=(1e-4,), n_modes=(12800, 25600, 51200, 102400), batch_size=3),
 )
 
-SETTINGS_GROUPS = (DEFAULTS, *SLOW)
+SETTINGS_GROUPS = (PAPER, *SLOW)
 """The sweeps behind every shipped law; each point of a law records the group it came from."""
 
 
