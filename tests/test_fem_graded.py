@@ -328,10 +328,14 @@ def test_judge_reports_differences_in_combined_errors_and_coverage():
 def test_judge_accepts_the_package_law():
     from restitution.law import law
 
-    points = [ReferencePoint(0.33, 0.1, 0.9473, 0.0011, True)]
-    judged = judge_law(points, law(0.33))
-    # The shipped law at v = 0.1 is one of its own points (0.9473(11), closing note of issue 4).
-    assert abs(judged.points[0].sigma) < 0.1
+    served = law(0.33)
+    own = next(p for p in served.points if p.v == 0.1)
+    points = [ReferencePoint(0.33, 0.1, own.epsilon, own.epsilon_err, True)]
+    judged = judge_law(points, served)
+    # A law judged at one of its own computed points: the interpolant passes through it, so the
+    # difference is zero and the combined error is sqrt(2) times the point's error.
+    assert abs(judged.points[0].sigma) < 1e-9
+    assert judged.points[0].law_err == pytest.approx(own.epsilon_err, rel=1e-12)
 
 
 def test_shipped_reference_has_provenance_and_the_issue_points():
