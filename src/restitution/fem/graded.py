@@ -32,7 +32,7 @@ measures them).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -133,19 +133,14 @@ def graded_settings(
     base = base or FemSettings()
     a = contact_half_width(v)
     h_contact = min(grading.contact_fraction * a, grading.h_far)
-    return FemSettings(
+    # The mesh fields come from the grading; every other (integrator) field is kept from base.
+    return replace(
+        base,
         refine=int(level),
         contact_angle=contact_angle_estimate(v, alpha),
         h_contact=h_contact,
         h_far=grading.h_far,
         grading=grading.grading,
-        n_gauss=base.n_gauss,
-        step_safety=base.step_safety,
-        energy_tol=base.energy_tol,
-        max_step_reductions=base.max_step_reductions,
-        record=base.record,
-        record_interval=base.record_interval,
-        max_time=base.max_time,
     )
 
 

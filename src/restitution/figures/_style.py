@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-__all__ = ["QUICK_NOTE", "add_notes"]
+__all__ = ["QUICK_NOTE", "add_notes", "limits_and_legends"]
 
 QUICK_NOTE = "QUICK RUN: coarse grids, numbers not converged"
 """The note every figure of a quick paper run carries."""
@@ -25,3 +25,32 @@ def add_notes(fig, notes: Sequence[str], fontsize: float = 7.5) -> None:
             0.01, line * (i + 0.3), text, fontsize=fontsize, ha="left", va="bottom",
             color="#b00000" if quick else "0.25", weight="bold" if quick else "normal",
         )  # fmt: skip
+
+
+def limits_and_legends(ax, limit_inf, solid: str, dashed: str, n_speeds: int) -> None:
+    """The shared furniture of Figs. 7 and 8: the extrapolated limits at ``x = 0`` (a negative
+    one, an unphysical energy loss, as a red cross), a legend of the line styles below the axes
+    and the legend of the speeds to the right, so that neither covers data."""
+    import numpy as np
+    from matplotlib.lines import Line2D
+
+    negative = limit_inf < 0
+    ax.plot(np.zeros(np.count_nonzero(~negative)), limit_inf[~negative], "kD", ms=4,
+            clip_on=False, zorder=5)  # fmt: skip
+    if np.any(negative):
+        ax.plot(np.zeros(np.count_nonzero(negative)), limit_inf[negative], "rx", ms=8, mew=2,
+                clip_on=False, zorder=5)  # fmt: skip
+        ax.axhline(0.0, color="r", lw=0.5, ls=":")
+    kinds = [
+        Line2D([], [], color="k", marker="o", ms=4, lw=0.8, ls="-", label=solid),
+        Line2D([], [], color="k", marker="o", mfc="none", ms=4, lw=0.6, ls="--", label=dashed),
+        Line2D([], [], color="k", marker="D", ms=4, ls="none", label="both limits (at 0)"),
+    ]
+    if np.any(negative):
+        kinds.append(Line2D([], [], color="r", marker="x", mew=2, ls="none",
+                            label="1 - eps^2 < 0: unphysical"))  # fmt: skip
+    first = ax.legend(handles=kinds, fontsize=8, loc="upper left", bbox_to_anchor=(0.0, -0.13),
+                      ncol=2, frameon=False)  # fmt: skip
+    ax.add_artist(first)
+    ax.legend(title=r"$v_i/c$", fontsize=8, title_fontsize=8, loc="upper left",
+              bbox_to_anchor=(1.01, 1.0), ncol=1 if n_speeds <= 9 else 2)  # fmt: skip

@@ -15,7 +15,7 @@ import numpy as np
 
 from restitution.curves import Curve, compute_curves
 from restitution.extrapolation import extrapolate_alpha, extrapolate_modes
-from restitution.figures._style import add_notes
+from restitution.figures._style import add_notes, limits_and_legends
 from restitution.sweep import DEFAULTS, SweepSettings
 
 __all__ = ["Fig07Data", "compute", "plot"]
@@ -124,33 +124,14 @@ def plot(data: Fig07Data, path: str | Path, note: str = "") -> Path:
     ax.set_title(
         f"$\\nu = {data.nu:g}$: filled N = {data.n_modes}, open N $\\to\\infty$", fontsize=9
     )
-    # Intercepts (the extrapolated limits) at x = 0; a negative one is unphysical (the
-    # energy loss cannot be negative) and is marked with a red cross.
-    negative = data.limit_inf < 0
-    ax.plot(np.zeros(np.count_nonzero(~negative)), data.limit_inf[~negative], "kD", ms=4,
-            clip_on=False, zorder=5)  # fmt: skip
-    if np.any(negative):
-        ax.plot(np.zeros(np.count_nonzero(negative)), data.limit_inf[negative], "rx", ms=8, mew=2,
-                clip_on=False, zorder=5)  # fmt: skip
-        ax.axhline(0.0, color="r", lw=0.5, ls=":")
-    from matplotlib.lines import Line2D
-
-    kinds = [
-        Line2D([], [], color="k", marker="o", ms=4, lw=0.8, ls="-",
-               label=f"filled, solid: N = {data.n_modes}, line in $1/\\alpha$"),
-        Line2D([], [], color="k", marker="o", mfc="none", ms=4, lw=0.6, ls="--",
-               label=r"open, dashed: N $\to\infty$ at each $\alpha$, line"),
-        Line2D([], [], color="k", marker="D", ms=4, ls="none", label="both limits (at 0)"),
-    ]  # fmt: skip
-    if np.any(negative):
-        kinds.append(Line2D([], [], color="r", marker="x", mew=2, ls="none",
-                            label="1 - eps^2 < 0: unphysical"))  # fmt: skip
-    # Both legends outside the axes, so that neither covers data.
-    first = ax.legend(handles=kinds, fontsize=8, loc="upper left", bbox_to_anchor=(0.0, -0.13),
-                      ncol=2, frameon=False)  # fmt: skip
-    ax.add_artist(first)
-    ax.legend(title=r"$v_i/c$", fontsize=8, title_fontsize=8, loc="upper left",
-              bbox_to_anchor=(1.01, 1.0), ncol=1 if len(data.v) <= 9 else 2)  # fmt: skip
+    # Intercepts at x = 0 (a negative one marked), and both legends outside the axes.
+    limits_and_legends(
+        ax,
+        data.limit_inf,
+        f"filled, solid: N = {data.n_modes}, line in $1/\\alpha$",
+        r"open, dashed: N $\to\infty$ at each $\alpha$, line",
+        len(data.v),
+    )
     add_notes(fig, [note])
     path = Path(path)
     fig.savefig(path, dpi=150)
