@@ -12,6 +12,18 @@ The step is chosen automatically (see :func:`initial_step`) and the run is repea
 smaller step while the relative energy drift exceeds ``energy_tol``; after ``max_refinements``
 the point fails with :class:`CollisionError`, whose message says what to change. A bound on the
 simulated time prevents hanging.
+
+**Vibrating disks.** A collision may start from any modal state ``(Q, P)`` (``initial=`` of
+:func:`collide_batch`; ``Q`` in ``R``, ``P`` in ``m c``, in the order of the mode set). That state
+is the *free-flight* state at the moment the centre passes the start position above: the disk's
+translation and its free oscillation, without the wall. The integration begins earlier by the
+vibration's reach (the bound on the edge displacement that the stop test uses), so that no edge
+point is closer to the wall than the undeformed disk's edge at the start position, with the
+state carried back by the exact free oscillation (:func:`~restitution.integrators.free_modes`):
+the same physics, defined independently of where the integration begins. Every
+result carries the final state (``final_Q``, ``final_P`` at centre position ``final_x0`` and time
+``t_end`` after the start position was passed) so collisions can be chained. A zero initial state
+is today's collision, bit for bit.
 """
 
 from __future__ import annotations
@@ -27,6 +39,7 @@ from restitution.errors import InputError, RestitutionError
 from restitution.integrators import (
     INTEGRATORS,
     System,
+    free_modes,
     initial_state,
     mode_energies,
     total_energy,
@@ -46,6 +59,7 @@ __all__ = [
     "estimate_work",
     "initial_step",
     "rank_modes",
+    "start_position",
 ]
 
 CONTACT_TOL = 1e-12
@@ -212,11 +226,96 @@ def _check_inputs(v, alpha, modes: ModeSet) -> tuple[np.ndarray, np.ndarray]:
     return v, alpha
 
 
+def start_position(
+    modes: ModeSet, v: float, alpha: float, settings: CollisionSettings | None = None
+) -> float:
+    """The start position of the centre (``R``) for a disk at rest: where the undeformed disk's
+    wall energy is ``CONTACT_TOL`` times its kinetic energy. An ``initial`` state of
+    :func:`collide` is the free-flight state at the moment the centre passes this position."""
+    settings = settings or CollisionSettings()
+    v_arr, alpha_arr = _check_inputs(v, alpha, modes)
+    n_phi = settings.n_phi or default_n_phi(float(alpha_arr[0]), int(modes.n.max()))
+    quad = wall_quadrature(modes, int(n_phi))
+    return float(_start_position(alpha_arr, 0.5 * modes.mass * v_arr**2, quad)[0])
+
+
 def _start_position(alpha: np.ndarray, e0: np.ndarray, quad) -> np.ndarray:
     """Centre position where the undeformed disk's wall energy is ``CONTACT_TOL * E0``."""
     # V(x0) = exp(alpha (x0 + 1)) * I / alpha with I = int exp(alpha (cos phi - 1)) dphi.
     integral = np.exp(alpha[:, None] * (quad.cos_phi[None, :] - 1.0)) @ quad.weight
     return -1.0 + np.log(CONTACT_TOL * e0 * alpha / integral) / alpha
+
+
+@dataclass(frozen=True)
+class _Start:
+    """Where and in which state the integration of each member begins (private).
+
+    ``x0``: centre position (``R``); ``Q``, ``P``: modal state there, shape (B, N), or ``None``
+    for disks at rest; ``lead``: time (``R / c``) from there to the start position proper.
+    """
+
+    x0: np.ndarray
+    Q: np.ndarray | None
+    P: np.ndarray | None
+    lead: np.ndarray
+
+    def take(self, index) -> _Start:
+        pick = None if self.Q is None else self.Q[index]
+        return _Start(self.x0[index], pick, None if self.P is None else self.P[index],
+                      self.lead[index])  # fmt: skip
+
+
+def _start(modes: ModeSet, v: np.ndarray, alpha: np.ndarray, quad, initial) -> _Start:
+    """Start of each member: the standard position, or earlier when a vibrating edge reaches.
+
+    ``initial`` is ``None`` or ``(Q, P)`` of shape (B, N): the free-flight state at the moment
+    the centre passes the standard start position (module docstring).
+    """
+    m = modes.mass
+    x_start = _start_position(alpha, 0.5 * m * v**2, quad)
+    if initial is None:
+        return _Start(x_start, None, None, np.zeros(v.size))
+    Q, P = initial
+    energy = P**2 / (2.0 * m) + 0.5 * m * (modes.omega * Q) ** 2
+    reach = np.sqrt(2.0 * energy / m) / modes.omega @ quad.g_max
+    # Every edge point then lies at most as close to the wall as the undeformed disk's edge at
+    # the standard start, so the wall energy is at most CONTACT_TOL * E0 there, as for a disk
+    # at rest (and a zero state starts exactly where a disk at rest does).
+    x_begin = x_start - reach
+    lead = reach / v
+    Qb, Pb = free_modes(modes.omega, m, Q, P, -lead[:, None])
+    return _Start(x_begin, Qb, Pb, lead)
+
+
+def _check_initial(initial, modes: ModeSet, size: int):
+    """Validate ``initial = (Q, P)``; returns arrays of shape (B, N) or ``None``."""
+    if initial is None:
+        return None
+    N = len(modes)
+    try:
+        Q, P = initial
+        Q = np.asarray(Q, dtype=float)
+        P = np.asarray(P, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(
+            "initial must be a pair (Q, P) of modal coordinates and momenta, each of "
+            f"length {N} (one per mode) or shape (B, {N}) for a batch"
+        ) from None
+    out = []
+    for name, arr in (("Q", Q), ("P", P)):
+        if (
+            arr.ndim not in (1, 2)
+            or arr.shape[-1] != N
+            or (arr.ndim == 2 and arr.shape[0] not in (1, size))
+        ):
+            raise InputError(
+                f"initial {name} has shape {arr.shape}; give ({N},) for every collision or "
+                f"({size}, {N}), one row per collision"
+            )  # fmt: skip
+        if not np.all(np.isfinite(arr)):
+            raise InputError(f"initial {name} contains non-finite values")
+        out.append(np.broadcast_to(np.atleast_2d(arr), (size, N)).copy())
+    return tuple(out)
 
 
 def _contact_time_estimate(v: np.ndarray) -> np.ndarray:
@@ -392,6 +491,7 @@ def _run(
     settings: CollisionSettings,
     quad,
     abort_drift: float | None = None,
+    initial=None,
 ) -> list[dict]:
     """Integrate a batch with one fixed step; returns one dict of raw results per member.
 
@@ -402,10 +502,10 @@ def _run(
     m = modes.mass
     B = v.size
     e0 = 0.5 * m * v**2
-    x_start = _start_position(alpha, e0, quad)
+    begin = _start(modes, v, alpha, quad, initial)
     system = System(omega=modes.omega, mass=m, quad=quad, alpha=alpha)
-    state = initial_state(system, x_start, m * v)
-    t_max = float(np.max(_t_max(v, x_start)))
+    state = initial_state(system, begin.x0, m * v, begin.Q, begin.P)
+    t_max = float(np.max(_t_max(v, begin.x0)))
     N = len(modes)
     track = _Track(
         e0=e0,
@@ -489,7 +589,10 @@ def _run(
                 "epsilon": float(-state.p0[i] / (m * v[orig])),
                 "energy_after": e[i] / e0[orig],
                 "steps": steps,
-                "t_end": state.t,
+                "t_end": state.t - float(begin.lead[orig]),
+                "final_Q": state.Q[i].copy(),
+                "final_P": state.P[i].copy(),
+                "final_x0": float(state.x0[i]),
             }
         keep = ~done
         active = a[keep]
@@ -542,27 +645,29 @@ def _use_kernel(settings: CollisionSettings) -> bool:
     return supported
 
 
-def _run_kernel(modes, v, alpha, dts, settings, quad, abort) -> list[dict | str]:
+def _run_kernel(modes, v, alpha, dts, settings, quad, abort, initial) -> list[dict | str]:
     """Run members on the compiled kernel; a dict per finished member, else ``"unstable"``."""
     from restitution.kernel import STATUS_OK, STATUS_TIMEOUT, run_batch
 
     m = modes.mass
     e0 = 0.5 * m * v**2
-    x_start = _start_position(alpha, e0, quad)
+    begin = _start(modes, v, alpha, quad, initial)
     got = run_batch(
         modes.omega,
         m,
         quad,
         v,
         alpha,
-        x_start,
+        begin.x0,
         dts,
-        _t_max(v, x_start),
+        _t_max(v, begin.x0),
         _KERNEL_WEIGHTS[settings.integrator],
         settings.max_steps,
         abort,
         _STOP_LOG,
         CONTACT_TOL,
+        begin.Q,
+        begin.P,
     )
     out: list[dict | str] = []
     for i in range(v.size):
@@ -589,7 +694,10 @@ def _run_kernel(modes, v, alpha, dts, settings, quad, abort) -> list[dict | str]
                 "epsilon": float(got["epsilon"][i]),
                 "energy_after": got["energy"][i] / e0[i],
                 "steps": int(got["steps"][i]),
-                "t_end": float(got["t_end"][i]),
+                "t_end": float(got["t_end"][i] - begin.lead[i]),
+                "final_Q": got["final_Q"][i],
+                "final_P": got["final_P"][i],
+                "final_x0": float(got["final_x0"][i]),
                 "drift": float(got["drift"][i]),
                 "contact_time": float(contact),
                 "max_compression": float(got["max_compression"][i]),
@@ -601,20 +709,21 @@ def _run_kernel(modes, v, alpha, dts, settings, quad, abort) -> list[dict | str]
     return out
 
 
-def _run_numpy(modes, v, alpha, dts, settings, quad, abort) -> list[dict | str]:
+def _run_numpy(modes, v, alpha, dts, settings, quad, abort, initial) -> list[dict | str]:
     """Run members one by one on the NumPy reference path (same contract as the kernel)."""
     out: list[dict | str] = []
     for i in range(v.size):
+        one = None if initial is None else (initial[0][i : i + 1], initial[1][i : i + 1])
         try:
             out.append(
-                _run(modes, v[i : i + 1], alpha[i : i + 1], dts[i], settings, quad, abort)[0]
+                _run(modes, v[i : i + 1], alpha[i : i + 1], dts[i], settings, quad, abort, one)[0]
             )
         except _Unstable:
             out.append("unstable")
     return out
 
 
-def _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt) -> np.ndarray:
+def _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt, initial) -> np.ndarray:
     """Run the pending members, each with its own step; store results; return those to redo.
 
     Every member's step depends only on its own inputs and history, never on the other
@@ -623,7 +732,8 @@ def _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt) -> np.
     fixed = settings.dt is not None
     abort = None if fixed else max(100.0 * settings.energy_tol, 1e-4)
     run = _run_kernel if _use_kernel(settings) else _run_numpy
-    got = run(modes, v[pending], alpha[pending], dts[pending], settings, quad, abort)
+    mine = None if initial is None else (initial[0][pending], initial[1][pending])
+    got = run(modes, v[pending], alpha[pending], dts[pending], settings, quad, abort, mine)
     order = INTEGRATORS[settings.integrator].order
     redo = []
     for i, r in zip(pending, got, strict=True):
@@ -655,6 +765,8 @@ def collide_batch(
     v,
     alpha,
     settings: CollisionSettings | None = None,
+    *,
+    initial=None,
     **overrides,
 ) -> list[CollisionResult]:
     """Integrate many collisions ``(v_i, alpha_i)`` on one mode set at once.
@@ -674,6 +786,10 @@ def collide_batch(
         Wall hardness, ``1 / R``; broadcast against ``v``.
     settings : CollisionSettings, optional
         Numerical settings; keyword ``overrides`` replace single fields.
+    initial : (Q, P), optional
+        Modal coordinates (``R``) and momenta (``m c``) of the vibrating disk, each of shape
+        (N,) for every member or (B, N), in the order of ``modes``: the free-flight state when
+        the centre passes the start position (module docstring). Omitted: disks at rest.
 
     Returns
     -------
@@ -684,6 +800,7 @@ def collide_batch(
     if overrides:
         settings = CollisionSettings(**{**settings.__dict__, **overrides})
     v, alpha = _check_inputs(v, alpha, modes)
+    initial = _check_initial(initial, modes, v.size)
     check_work(modes, v, alpha, settings)
     n_max = int(modes.n.max())
     # Each member's quadrature follows from its own alpha, never from its batch.
@@ -701,7 +818,7 @@ def collide_batch(
         quad = wall_quadrature(modes, int(n_phi))
         pending = np.nonzero(n_phis == n_phi)[0]
         for attempt in range(settings.max_refinements + 1):
-            pending = _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt)
+            pending = _attempt(modes, v, alpha, dts, pending, settings, quad, raw, attempt, initial)
             if pending.size == 0:
                 break
         unresolved.extend(pending.tolist())
@@ -741,9 +858,23 @@ def collide_batch(
                 mode_energy_closest=r["energy_closest"],
                 history=r.get("history"),
                 energy_tol=settings.energy_tol,
+                mode_energy_before=_energy_before(modes, initial, i, v[i]),
+                final_Q=r["final_Q"],
+                final_P=r["final_P"],
+                final_x0=r["final_x0"],
+                t_end=r["t_end"],
             )
         )
     return results
+
+
+def _energy_before(modes: ModeSet, initial, i: int, v: float) -> np.ndarray:
+    """Energy per mode at the start, fraction of ``E0`` (zeros for a disk at rest)."""
+    if initial is None:
+        return np.zeros(len(modes))
+    m = modes.mass
+    Q, P = initial[0][i], initial[1][i]
+    return (P**2 / (2.0 * m) + 0.5 * m * (modes.omega * Q) ** 2) / (0.5 * m * v**2)
 
 
 def collide(
@@ -751,6 +882,8 @@ def collide(
     v: float,
     alpha: float,
     settings: CollisionSettings | None = None,
+    *,
+    initial=None,
     **overrides,
 ) -> CollisionResult:
     """One collision of the disk with the wall (see :func:`collide_batch` for parameters).
@@ -764,7 +897,7 @@ def collide(
     """
     if np.ndim(v) or np.ndim(alpha):
         raise InputError("collide takes one speed v and one alpha; use collide_batch for several")
-    return collide_batch(modes, [v], [alpha], settings, **overrides)[0]
+    return collide_batch(modes, [v], [alpha], settings, initial=initial, **overrides)[0]
 
 
 def rank_modes(

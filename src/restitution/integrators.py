@@ -29,6 +29,7 @@ __all__ = [
     "YoshidaSplit",
     "RK4Interaction",
     "INTEGRATORS",
+    "free_modes",
     "initial_state",
     "total_energy",
     "mode_energies",
@@ -116,11 +117,15 @@ def _evaluate(system: System, t: float, x0, p0, Q, P) -> State:
     return State(t=t, x0=x0, p0=p0, Q=Q, P=P, V=V, F=F, f=f)
 
 
-def initial_state(system: System, x0: np.ndarray, p0: np.ndarray) -> State:
-    """Undeformed disks at ``x0`` moving with momenta ``p0``, all modes at rest."""
+def initial_state(
+    system: System, x0: np.ndarray, p0: np.ndarray, Q: np.ndarray | None = None, P=None
+) -> State:
+    """Disks at ``x0`` moving with momenta ``p0``; modal state ``(Q, P)``, shape (B, N), or
+    all modes at rest (undeformed disks) when omitted."""
     B, N = x0.size, system.omega.size
-    zeros = np.zeros((B, N))
-    return _evaluate(system, 0.0, np.asarray(x0, float), np.asarray(p0, float), zeros, zeros)
+    Q = np.zeros((B, N)) if Q is None else np.array(Q, dtype=float)
+    P = np.zeros((B, N)) if P is None else np.array(P, dtype=float)
+    return _evaluate(system, 0.0, np.asarray(x0, float), np.asarray(p0, float), Q, P)
 
 
 def mode_energies(system: System, state: State) -> np.ndarray:
@@ -143,6 +148,22 @@ class Integrator(Protocol):
     symplectic: ClassVar[bool]
 
     def step(self, system: System, state: State, dt: float) -> State: ...
+
+
+def free_modes(omega, mass: float, Q, P, t):
+    """Exact free oscillation of the modes over a time ``t`` (``R / c``, may be negative).
+
+    ``Q`` (``R``) and ``P`` (``m c``) have shape (..., N) and ``omega`` (``c / R``) shape (N,);
+    ``t`` is a number or broadcasts against the leading axes (shape (B, 1) for a batch).
+    Returns ``(Q(t), P(t))``; every mode's energy is unchanged.
+    """
+    omega = np.asarray(omega, dtype=float)
+    Q = np.asarray(Q, dtype=float)
+    P = np.asarray(P, dtype=float)
+    arg = omega * np.asarray(t, dtype=float)
+    c, s = np.cos(arg), np.sin(arg)
+    mw = mass * omega
+    return Q * c + P * (s / mw), P * c - Q * (mw * s)
 
 
 def _free_flow(system: System, x0, p0, Q, P, dt: float):

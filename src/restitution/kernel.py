@@ -131,17 +131,18 @@ def _member(
     abort_drift,
     stop_log,
     contact_tol,
+    Q,
+    P,
     out_e,
     out_mean,
     out_closest,
 ):
-    """Integrate one collision; returns (status, epsilon, drift, contact, max_comp, max_force,
-    steps, t). Mode energies after, contact-summed and at closest approach go to ``out_*``."""
+    """Integrate one collision from the modal state ``(Q, P)`` (advanced in place to the final
+    state); returns (status, epsilon, drift, contact, max_comp, max_force, steps, t, x0). Mode
+    energies after, contact-summed and at closest approach go to ``out_*``."""
     cos_phi, weight, trig, C, S, starts, g_max = quad
     N = omega.size
     K2 = trig.shape[1]
-    Q = np.zeros(N)
-    P = np.zeros(N)
     f = np.zeros(N)
     ab = np.zeros(K2)
     cs = np.zeros(K2)
@@ -151,6 +152,8 @@ def _member(
     p0 = m * v
     V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f)
     h0 = p0 * p0 / (2.0 * m) + V
+    for k in range(N):
+        h0 += P[k] * P[k] / (2.0 * m) + 0.5 * m * (omega[k] * Q[k]) ** 2
     drift = 0.0
     contact = 0.0
     max_comp = -np.inf
@@ -164,7 +167,7 @@ def _member(
     n_sub = weights.size
     while True:
         if steps >= max_steps or t > t_max:
-            return STATUS_TIMEOUT, 0.0, drift, contact, max_comp, max_force, steps, t
+            return STATUS_TIMEOUT, 0.0, drift, contact, max_comp, max_force, steps, t, x0
         for s in range(n_sub):
             x0, p0, V, F = _strang(
                 weights[s] * dt,
@@ -193,10 +196,10 @@ def _member(
             esum += ek
         h = p0 * p0 / (2.0 * m) + esum + V
         if not math.isfinite(h):
-            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t
+            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
         drift = max(drift, abs(h - h0) / h0)
         if abort_drift > 0.0 and drift > abort_drift:
-            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t
+            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
         comp = x0 + 1.0
         if comp > 0.0 and comp_prev > 0.0:
             frac = 1.0
@@ -224,7 +227,7 @@ def _member(
             reach += math.sqrt(2.0 * out_e[k] / m) / omega[k] * g_max[k]
         gap = -(x0 + 1.0 + reach)
         if gap * alpha > stop_log and V < contact_tol * e0:
-            return STATUS_OK, -p0 / (m * v), drift, contact, max_comp, max_force, steps, t
+            return STATUS_OK, -p0 / (m * v), drift, contact, max_comp, max_force, steps, t, x0
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
@@ -243,12 +246,17 @@ def _one(
     abort_drift,
     stop_log,
     contact_tol,
+    out_Q,
+    out_P,
     out_e,
     out_mean,
     out_closest,
     out_scalar,
 ):
-    """Member ``b`` of a batch: its rotations for its own step, then :func:`_member`."""
+    """Member ``b`` of a batch: its rotations for its own step, then :func:`_member`.
+
+    ``out_Q[b]``, ``out_P[b]`` hold the member's initial modal state and receive its final one.
+    """
     N = omega.size
     rotations = np.empty((weights.size, 3, N))
     for s in range(weights.size):
@@ -274,11 +282,13 @@ def _one(
         abort_drift,
         stop_log,
         contact_tol,
+        out_Q[b],
+        out_P[b],
         out_e[b],
         out_mean[b],
         out_closest[b],
     )
-    status, eps, drift, contact, max_comp, max_force, steps, t_end = res
+    status, eps, drift, contact, max_comp, max_force, steps, t_end, x_end = res
     out_scalar[b, 0] = status
     out_scalar[b, 1] = eps
     out_scalar[b, 2] = drift
@@ -287,34 +297,35 @@ def _one(
     out_scalar[b, 5] = max_force
     out_scalar[b, 6] = steps
     out_scalar[b, 7] = t_end
+    out_scalar[b, 8] = x_end
 
 
 @njit(cache=True, parallel=True, fastmath=_FAST)
 def _batch_parallel(
     v, alpha, x_start, dt, t_max, omega, mass, cos_phi, weight, trig, C, S, starts, g_max,
-    weights, max_steps, abort_drift, stop_log, contact_tol, out_e, out_mean, out_closest,
-    out_scalar,
+    weights, max_steps, abort_drift, stop_log, contact_tol, out_Q, out_P, out_e, out_mean,
+    out_closest, out_scalar,
 ):  # fmt: skip
     # Parallel regions take arrays, not tuples of arrays: the quadrature travels unpacked.
     quad = (cos_phi, weight, trig, C, S, starts, g_max)
     for b in prange(v.size):
         _one(
             b, v, alpha, x_start, dt, t_max, omega, mass, quad, weights, max_steps, abort_drift,
-            stop_log, contact_tol, out_e, out_mean, out_closest, out_scalar,
+            stop_log, contact_tol, out_Q, out_P, out_e, out_mean, out_closest, out_scalar,
         )  # fmt: skip
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
 def _batch_serial(
     v, alpha, x_start, dt, t_max, omega, mass, cos_phi, weight, trig, C, S, starts, g_max,
-    weights, max_steps, abort_drift, stop_log, contact_tol, out_e, out_mean, out_closest,
-    out_scalar,
+    weights, max_steps, abort_drift, stop_log, contact_tol, out_Q, out_P, out_e, out_mean,
+    out_closest, out_scalar,
 ):  # fmt: skip
     quad = (cos_phi, weight, trig, C, S, starts, g_max)
     for b in range(v.size):
         _one(
             b, v, alpha, x_start, dt, t_max, omega, mass, quad, weights, max_steps, abort_drift,
-            stop_log, contact_tol, out_e, out_mean, out_closest, out_scalar,
+            stop_log, contact_tol, out_Q, out_P, out_e, out_mean, out_closest, out_scalar,
         )  # fmt: skip
 
 
@@ -332,6 +343,8 @@ def run_batch(
     abort_drift: float | None,
     stop_log: float,
     contact_tol: float,
+    Q0: np.ndarray | None = None,
+    P0: np.ndarray | None = None,
 ) -> dict[str, np.ndarray]:
     """Integrate ``B`` independent collisions, each with its own step ``dt[b]``.
 
@@ -355,6 +368,9 @@ def run_batch(
         Stop a member as unstable once its relative energy drift exceeds this.
     stop_log, contact_tol : float
         Stop test: ``alpha * gap > stop_log`` and ``V < contact_tol * E0``.
+    Q0, P0 : numpy.ndarray, shape (B, N), optional
+        Modal coordinates (``R``) and momenta (``m c``) at the start; zero (disk at rest in its
+        undeformed shape) when omitted.
 
     Returns
     -------
@@ -363,16 +379,19 @@ def run_batch(
         ``max_force``, ``steps``, ``t_end`` (B,); ``energy`` (B, N) mode energies at the end,
         ``energy_sum`` (B, N) contact-time integral of the mode energies, ``energy_closest``
         (B, N) at the closest approach. Energies are absolute (not divided by ``E0``).
+        ``final_Q``, ``final_P`` (B, N) and ``final_x0`` (B,): the state where the run stopped.
     """
     B, N = v.size, omega.size
     # Modes sorted by order (stable, so each order keeps its original sequence); results are
     # mapped back to the caller's order at the end.
     perm = np.argsort(quad.column, kind="stable")
     starts = np.searchsorted(quad.column[perm], np.arange(quad.n_orders + 1)).astype(np.int64)
+    out_Q = np.zeros((B, N)) if Q0 is None else np.array(np.asarray(Q0, float)[:, perm])
+    out_P = np.zeros((B, N)) if P0 is None else np.array(np.asarray(P0, float)[:, perm])
     out_e = np.zeros((B, N))
     out_mean = np.zeros((B, N))
     out_closest = np.zeros((B, N))
-    out_scalar = np.zeros((B, 8))
+    out_scalar = np.zeros((B, 9))
     quad_arrays = (
         np.ascontiguousarray(quad.cos_phi, dtype=np.float64),
         np.ascontiguousarray(quad.weight, dtype=np.float64),
@@ -399,6 +418,8 @@ def run_batch(
         -1.0 if abort_drift is None else float(abort_drift),
         float(stop_log),
         float(contact_tol),
+        out_Q,
+        out_P,
         out_e,
         out_mean,
         out_closest,
@@ -424,4 +445,7 @@ def run_batch(
         "energy": out_e[:, back],
         "energy_sum": out_mean[:, back],
         "energy_closest": out_closest[:, back],
+        "final_Q": out_Q[:, back],
+        "final_P": out_P[:, back],
+        "final_x0": out_scalar[:, 8],
     }

@@ -95,6 +95,15 @@ class CollisionResult:
         Time histories when requested.
     energy_tol : float or None
         The drift the run had to meet (``None``: not checked against a tolerance).
+    mode_energy_before : numpy.ndarray, shape (N,)
+        Energy per mode at the start (zero for a disk at rest), fraction of ``(m/2) v^2``.
+    final_Q, final_P : numpy.ndarray, shape (N,)
+        Modal coordinates (``R``) and momenta (``m c``) where the run stopped (modal only):
+        with ``final_x0`` and ``-epsilon v`` the state from which a later collision continues.
+    final_x0 : float
+        Centre position where the run stopped, ``R`` (``nan`` when not recorded).
+    t_end : float
+        Time from the moment the centre passed the start position to the stop, ``R / c``.
     """
 
     method: str
@@ -118,6 +127,11 @@ class CollisionResult:
     mode_energy_closest: np.ndarray = field(default_factory=lambda: np.zeros(0))
     history: History | None = None
     energy_tol: float | None = None
+    mode_energy_before: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    final_Q: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    final_P: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    final_x0: float = float("nan")
+    t_end: float = float("nan")
 
     @property
     def status(self) -> str:
@@ -149,7 +163,10 @@ class CollisionResult:
 
     def to_dict(self, *, modes: bool = True) -> dict:
         """JSON-ready dictionary (histories are omitted)."""
-        d = {k: v for k, v in asdict(self).items() if k != "history" and not k.startswith("mode_")}
+        skip = ("history", "final_Q", "final_P")
+        d = {k: v for k, v in asdict(self).items() if k not in skip and not k.startswith("mode_")}
+        d["vibration_energy_before"] = float(np.sum(self.mode_energy_before))
+        d["vibration_energy_after"] = float(np.sum(self.mode_energy_after))
         d["energy_loss"] = self.energy_loss
         d["status"] = self.status
         d["advice"] = self.advice
