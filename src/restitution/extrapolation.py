@@ -39,6 +39,16 @@ weights as independent errors. With unweighted fits on a complete grid the two o
 their error estimates and, when points are missing or the drop-one fits are taken, in the limit.
 The combined error is the larger of the two orders' errors combined in quadrature with their
 difference. ``epsilon = sqrt(1 - L)`` with ``epsilon_err = L_err / (2 epsilon)``.
+
+**Negligible first stages.** The relative tests above measure a fit's instability against its
+own extrapolated step; where the data are flat (the loss at one ``alpha`` changes by 1e-5 over
+a factor 8 in ``N`` while the ``alpha`` extrapolation is uncertain by 1e-4) the step is close to
+zero and the ratio means nothing. A failing first-stage fit is therefore not held against the
+combined limit when everything it can do to the answer -- the largest of its extrapolated step,
+its drop-one spread and the shift of its limit to a quadratic fit -- is below ``drop_tol``
+times the second stage's *own* error (its standard error and drop-one spread, without the
+errors propagated from the first stage, so the rule is not circular). The waiver is recorded
+in ``CombinedLimit.notes``; the fit's error is still propagated into the combined error.
 """
 
 from __future__ import annotations
@@ -409,10 +419,15 @@ class CombinedLimit:
     order_difference : float
         ``limit(primary) - limit(other order)``.
     asymptotic_ok : bool
-        All fits of the primary order are asymptotic, the orders agree within the error and the
-        limit is a physical loss.
+        All fits of the primary order are asymptotic (or negligible, see ``notes``), the orders
+        agree within the error and the limit is a physical loss.
     message : str
         Why not, when not.
+    settings : dict
+        Tolerances passed to the fits.
+    notes : str
+        First-stage fits whose relative tests were waived because their whole extrapolation is
+        negligible (module docstring), with the numbers.
     """
 
     alpha: np.ndarray
@@ -431,6 +446,7 @@ class CombinedLimit:
     asymptotic_ok: bool
     message: str = ""
     settings: dict = field(default_factory=dict)
+    notes: str = ""
 
     def to_dict(self, *, fits: bool = True) -> dict:
         """JSON-ready dictionary; ``fits=False`` leaves out the individual fits."""
@@ -446,6 +462,7 @@ class CombinedLimit:
             "order_difference": _float(self.order_difference),
             "asymptotic_ok": bool(self.asymptotic_ok),
             "message": self.message,
+            "notes": self.notes,
             "settings": dict(self.settings),
         }
         if fits:
@@ -525,10 +542,22 @@ def combined_limit(
     eps, eps_err = epsilon_from_loss(second.limit, err)
 
     problems = []
+    notes = []
     stage1 = "N" if primary else "alpha"
+    own = math.hypot(second.stat_err, second.drop_spread)
+    drop_tol = kwargs.get("drop_tol", DROP_TOL)
     for fit, value in zip(first, alpha if primary else n_modes, strict=True):
-        if not fit.asymptotic_ok:
-            name = "alpha" if primary else "N"
+        if fit.asymptotic_ok:
+            continue
+        name = "alpha" if primary else "N"
+        reach = _consequence(fit)
+        if reach < drop_tol * own:
+            notes.append(
+                f"{stage1} -> inf at {name} = {value:g}: relative tests waived, the whole "
+                f"extrapolation moves the loss by at most {reach:.2g} < {drop_tol:g} x the "
+                f"second stage's own error {own:.2g} ({fit.message})"
+            )
+        else:
             problems.append(f"{stage1} -> inf at {name} = {value:g}: {fit.message}")
     if not second.asymptotic_ok:
         problems.append(f"{'alpha' if primary else 'N'} -> inf: {second.message}")
@@ -557,4 +586,14 @@ def combined_limit(
         asymptotic_ok=not problems,
         message="; ".join(problems),
         settings={k: float(v) for k, v in kwargs.items()},
+        notes="; ".join(notes),
     )
+
+
+def _consequence(fit: LinearLimit) -> float:
+    """The most a first-stage fit's extrapolation can move the loss: the largest of its
+    extrapolated step, its drop-one spread and the shift of its limit to a quadratic fit."""
+    if fit.y.size < MIN_POINTS or not math.isfinite(fit.limit):
+        return math.inf
+    quadratic = float(np.polyfit(fit.x, fit.y, 2)[2])
+    return max(abs(fit.limit - fit.y[0]), fit.drop_spread, abs(quadratic - fit.limit))
