@@ -103,6 +103,10 @@ class Ensemble:
     def summary(self) -> dict:
         """Mean, spread (standard deviation), extremes and the fraction above 1 of epsilon."""
         eps = self.epsilon
+        if eps.size == 0:
+            return {"samples": 0, "mean": None, "spread": None, "mean_error": None,
+                    "min": None, "max": None, "fraction_above_1": None,
+                    "failed": len(self.failures)}  # fmt: skip
         return {
             "samples": int(eps.size),
             "mean": float(eps.mean()),
@@ -115,7 +119,9 @@ class Ensemble:
         }
 
     def to_dict(self) -> dict:
-        """JSON-ready: per-sample numbers, the summary and the temperature in both units."""
+        """JSON-ready: the summary of epsilon, the temperature in both units, and per sample
+        ``epsilon``, ``mode_energy_before``, ``mode_energy_after`` (sums over the modes),
+        ``kinetic_energy_before``, ``kinetic_energy_after`` (fractions of ``E0``)."""
         return {
             "v": self.v,
             "alpha": self.alpha,
@@ -126,12 +132,10 @@ class Ensemble:
                 "per_mode_fraction_of_E0": self.temperature_fraction,
                 "v_over_v_thermal": self.v_over_v_thermal,
             },
-            **{
-                f"epsilon_{k}" if k in ("mean", "spread") else k: v
-                for k, v in self.summary().items()
-            },  # fmt: skip
-            "max_energy_drift": float(self.energy_drift.max()),
-            "samples_detail": [
+            **self.summary(),
+            "max_energy_drift": float(self.energy_drift.max()) if self.epsilon.size else None,
+            "failures": list(self.failures),
+            "per_sample": [
                 {
                     "epsilon": float(e),
                     "mode_energy_before": float(b),

@@ -198,10 +198,12 @@ def bounce(
         n_modes=len(modes),
         v=np.array([r.v for r, _, _ in rows]),
         epsilon=np.array([r.epsilon for r, _, _ in rows]),
-        vibration_before=np.array([r.mode_energy_before.sum() * e for (r, _, _), e
-                                   in zip(rows, e_unit, strict=True)]),  # fmt: skip
-        vibration_after=np.array([r.mode_energy_after.sum() * e for (r, _, _), e
-                                  in zip(rows, e_unit, strict=True)]),  # fmt: skip
+        vibration_before=np.array(
+            [r.mode_energy_before.sum() * e for (r, _, _), e in zip(rows, e_unit, strict=True)]
+        ),  # fmt: skip
+        vibration_after=np.array(
+            [r.mode_energy_after.sum() * e for (r, _, _), e in zip(rows, e_unit, strict=True)]
+        ),  # fmt: skip
         contact_time=np.array([r.contact_time for r, _, _ in rows]),
         energy_drift=np.array([r.energy_drift for r, _, _ in rows]),
         time=np.array([c for _, _, c in rows]),
