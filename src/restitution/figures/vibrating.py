@@ -188,7 +188,8 @@ def plot_bounce(data: BounceData, path: str | Path, note: str = "") -> None:
     k = np.arange(seq.v.size)
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(6.4, 6.4), sharex=True)
     ax.semilogy(k, seq.v / seq.v[0], "o-", ms=3, label="vibrations carried over")
-    ax.semilogy(k, data.memoryless / seq.v[0], "s--", ms=3, label="at rest at every impact")
+    if np.all(np.isfinite(data.memoryless)):
+        ax.semilogy(k, data.memoryless / seq.v[0], "s--", ms=3, label="at rest at every impact")
     ax.semilogy(k, data.constant / seq.v[0], "k:",
                 label=f"constant eps = {data.epsilon_constant:.4f}")  # fmt: skip
     ax.set_ylabel("impact speed / first impact speed")
