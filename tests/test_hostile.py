@@ -573,3 +573,19 @@ def test_errors_are_exported():
     for name in ("CollisionError", "StoreError", "CacheError", "ModeError", "InputError"):
         err = getattr(restitution, name)
         assert issubclass(err, RestitutionError) and name in restitution.__all__
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (("collide", "--v", "0.1", "--modes", "10", "--excite", "thermal", "--temperature", "-2"),
+         "--temperature"),
+        (("collide", "--v", "0.1", "--modes", "10", "--excite", "thermal", "--temperature", "1",
+          "--samples", "0"), "--samples"),
+        (("collide", "--v", "0.1", "--modes", "10", "--excite", "loud"), "unknown --excite"),
+        (("bounce", "--v", "0.1", "--modes", "10", "--walls-distance", "0.5"), "--walls-distance"),
+    ],
+)  # fmt: skip
+def test_bad_vibrating_input_is_one_line(capsys, no_integration, args, words):
+    code, _, err = cli(capsys, *args)
+    one_line_error(code, err, words)

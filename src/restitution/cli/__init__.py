@@ -36,6 +36,7 @@ def cli() -> None:
 
 
 def _register() -> None:
+    from restitution.cli import bounce as _bounce
     from restitution.cli import collide as _collide
     from restitution.cli import epsilon as _epsilon
     from restitution.cli import fem_compare as _fem_compare
@@ -46,6 +47,7 @@ def _register() -> None:
 
     cli.add_command(_modes.modes)
     cli.add_command(_collide.collide)
+    cli.add_command(_bounce.bounce)
     cli.add_command(_quasistatic.quasistatic)
     cli.add_command(_epsilon.epsilon)
     cli.add_command(_epsilon.curve)

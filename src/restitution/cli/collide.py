@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 import time
 import warnings
+from pathlib import Path
 
 import click
 
@@ -24,6 +25,17 @@ from restitution.cli._common import (
     strict_option,
 )
 from restitution.errors import InputError
+
+_EXCITE_OPTIONS = {
+    "mode_index": "--mode-index",
+    "amplitude": "--amplitude",
+    "phase": "--phase",
+    "temperature": "--temperature",
+    "samples": "--samples",
+    "seed": "--seed",
+    "plot": "--plot",
+}
+_EXCITATIONS = ("none", "mode", "thermal")
 
 _LONG_RUN_STEPS = 200_000
 """Runs expected to take more steps than this are announced with their estimate."""
@@ -119,6 +131,57 @@ def _print_summary(result, top: int = 10) -> None:
     show_default=True,
     help="Largest accepted relative energy drift; the step is refined until met.",
 )
+@click.option(
+    "--excite",
+    default="none",
+    show_default=True,
+    help="Vibrations of the disk when its centre passes the start position: none (at rest), "
+    "mode (one mode, --mode-index/--amplitude/--phase) or thermal (every mode canonical at "
+    "--temperature; --samples collisions). See docs/vibrating.md.",
+)
+@click.option(
+    "--mode-index",
+    type=int,
+    default=None,
+    help="--excite mode: index of the mode in the set (0: lowest frequency).",
+)
+@click.option(
+    "--amplitude",
+    type=float,
+    default=None,
+    help="--excite mode: the mode's energy, fraction of (m/2) v^2.",
+)
+@click.option(
+    "--phase",
+    type=float,
+    default=None,
+    help="--excite mode: phase in radians (Q = A cos phase, P = -m omega A sin phase).",
+)
+@click.option(
+    "--temperature",
+    type=float,
+    default=None,
+    help="--excite thermal: mean energy per mode, fraction of (m/2) v^2 "
+    "(= (v_th/v)^2 with (m/2) v_th^2 = T).",
+)
+@click.option(
+    "--samples",
+    type=int,
+    default=None,
+    help="--excite thermal: number of collisions, each from its own thermal state [default: 1].",
+)
+@click.option(
+    "--seed",
+    type=int,
+    default=None,
+    help="--excite thermal: seed of the thermal states [default: 0].",
+)
+@click.option(
+    "--plot",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    help="--excite thermal: draw the histogram of epsilon to this file.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
 @strict_option
 @quiet_option
@@ -135,15 +198,27 @@ def collide(
     method,
     mesh_refine,
     energy_tol,
+    excite,
+    mode_index,
+    amplitude,
+    phase,
+    temperature,
+    samples,
+    seed,
+    plot,
     as_json,
     strict,
 ):
     """Head-on collision of an elastic disk with a hard wall: epsilon and where the energy goes.
 
     Units: E = rho = R = 1; v in c, times in R/c; mode energies as fractions of the initial
-    kinetic energy.
+    kinetic energy. With --excite the disk vibrates before the impact (docs/vibrating.md).
     """
     material = material_from(nu, plane)
+    if excite != "none":
+        return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
+                        energy_tol, excite, as_json, strict)  # fmt: skip
+    refuse_ignored(ctx, _EXCITE_OPTIONS, "without --excite mode or --excite thermal")
     if not (0 < v < 1):
         raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
     positive_finite("--alpha", alpha)
@@ -236,3 +311,152 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
             f"(simulated time {est.t_end:.3g} R/c, dt = {est.dt:.3g} R/c); this may take a while"
         )
     return est.steps > _LONG_RUN_STEPS
+
+
+def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method, energy_tol,
+             excite, as_json, strict):  # fmt: skip
+    """``collide --excite mode|thermal``: a vibrating disk (thin layer over
+    :mod:`restitution.vibration` and :mod:`restitution.ensemble`)."""
+    import math
+
+    p = ctx.params
+    if excite not in _EXCITATIONS:
+        raise InputError(f"unknown --excite {excite!r}; choose one of {', '.join(_EXCITATIONS)}")
+    if method != "modal":
+        raise InputError("--excite needs --method modal (the FEM path starts at rest)")
+    if select != "lowest":
+        raise InputError("--excite uses the lowest modes; --select ranked has no effect there")
+    if not (0 < v < 1):
+        raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
+    positive_finite("--alpha", alpha)
+    positive_finite("--energy-tol", energy_tol)
+    if n_modes < 1:
+        raise InputError(f"--modes must be at least 1, got {n_modes}")
+    check_mode_request(material.nu, n_modes)
+    if excite == "mode":
+        names = ("temperature", "samples", "seed", "plot")
+        refuse_ignored(ctx, {k: _EXCITE_OPTIONS[k] for k in names}, "with --excite mode")
+        if p["amplitude"] is None:
+            raise InputError("--excite mode needs --amplitude (the mode's energy / (m/2) v^2)")
+        if not (math.isfinite(p["amplitude"]) and p["amplitude"] >= 0):
+            raise InputError(f"--amplitude must be a number >= 0, got {p['amplitude']}")
+    else:
+        names = ("mode_index", "amplitude", "phase")
+        refuse_ignored(ctx, {k: _EXCITE_OPTIONS[k] for k in names}, "with --excite thermal")
+        if p["temperature"] is None:
+            raise InputError("--excite thermal needs --temperature (energy per mode / (m/2) v^2)")
+        if not (math.isfinite(p["temperature"]) and p["temperature"] >= 0):
+            raise InputError(f"--temperature must be a number >= 0, got {p['temperature']}")
+        if p["samples"] is not None and p["samples"] < 1:
+            raise InputError(f"--samples must be at least 1, got {p['samples']}")
+        if p["plot"] is not None:
+            from restitution.cli._common import check_figure_file
+
+            check_figure_file(p["plot"], "--plot")
+    ms = get_modes(material, count=n_modes)
+    from restitution.vibration import kinetic_energy
+
+    e0 = float(kinetic_energy(ms, v))
+    inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "method": method,
+              "modes": n_modes, "select": select, "integrator": integrator,
+              "energy_tol": energy_tol, "excite": excite}  # fmt: skip
+    start = time.perf_counter()
+    if excite == "mode":
+        from restitution.collision import collide as run
+        from restitution.vibration import single_mode_state
+
+        index = 0 if p["mode_index"] is None else p["mode_index"]
+        phase = 0.0 if p["phase"] is None else p["phase"]
+        Q, P = single_mode_state(ms, index, p["amplitude"] * e0, phase)
+        _announce(ms, v, alpha, integrator, energy_tol)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol,
+                         initial=(Q, P))  # fmt: skip
+        inputs.update(mode_index=index, amplitude=p["amplitude"], phase=phase)
+        if as_json:
+            d = envelope("collide", inputs, result.to_dict(), status=result.status,
+                         advice=result.advice)  # fmt: skip
+            d["excited_mode"] = {"index": index, "n": int(ms.n[index]), "l": int(ms.l[index]),
+                                 "omega": float(ms.omega[index])}  # fmt: skip
+            d["wall_time_s"] = time.perf_counter() - start
+            click.echo(dumps(d))
+        else:
+            _print_summary(result)
+        status = result.status
+    else:
+        from restitution.ensemble import thermal_ensemble
+
+        samples = 1 if p["samples"] is None else p["samples"]
+        seed = 0 if p["seed"] is None else p["seed"]
+        _announce(ms, v, alpha, integrator, energy_tol)
+        with warnings.catch_warnings(), _progress_bar(samples) as advance:
+            warnings.simplefilter("ignore")
+            ens = thermal_ensemble(ms, v, alpha, p["temperature"] * e0, samples, seed,
+                                   integrator=integrator, energy_tol=energy_tol,
+                                   progress=advance)  # fmt: skip
+        inputs.update(temperature=p["temperature"], samples=samples, seed=seed)
+        status = "ok" if not ens.failures else "failed-samples"
+        advice = None if not ens.failures else (
+            f"{len(ens.failures)} samples could not be integrated (see 'failures'); they are "
+            "left out of the statistics")  # fmt: skip
+        if p["plot"] is not None:
+            from restitution.figures.vibrating import plot_histogram
+
+            plot_histogram(ens, p["plot"])
+            note(f"wrote {p['plot']}")
+        if as_json:
+            d = envelope("collide", inputs, ens.to_dict(), status=status, advice=advice)
+            d["wall_time_s"] = time.perf_counter() - start
+            click.echo(dumps(d))
+        else:
+            _print_ensemble(ens)
+    if status != "ok":
+        if not as_json:
+            note(f"warning: status {status}")
+        if strict:
+            sys.exit(EXIT_NOT_CONVERGED)
+
+
+def _progress_bar(total: int):
+    """A rich progress bar over the collisions of an ensemble on stderr (terminals only, not
+    with --quiet); yields the callback that takes the number done."""
+    import contextlib
+
+    @contextlib.contextmanager
+    def bar():
+        if quiet() or not sys.stderr.isatty() or total < 2:
+            yield None
+            return
+        from rich.console import Console
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeElapsedColumn,
+            TimeRemainingColumn,
+        )
+
+        with Progress(TextColumn("collisions"), BarColumn(), MofNCompleteColumn(),
+                      TimeElapsedColumn(), TextColumn("ETA"), TimeRemainingColumn(),
+                      console=Console(stderr=True)) as prog:  # fmt: skip
+            task = prog.add_task("collisions", total=total)
+            yield lambda done: prog.update(task, completed=done)
+
+    return bar()
+
+
+def _print_ensemble(ens) -> None:
+    s = ens.summary()
+    if not s["samples"]:
+        click.echo("no sample could be integrated")
+        return
+    click.echo(
+        f"epsilon over {s['samples']} thermal samples: mean {s['mean']:.6f} "
+        f"(+- {s['mean_error'] or 0:.2g}), spread {s['spread']:.4g}, "
+        f"min {s['min']:.4f}, max {s['max']:.4f}, fraction above 1: {s['fraction_above_1']:.3f}\n"
+        f"temperature {ens.temperature:.4g} E R^2 per mode = {ens.temperature_fraction:.4g} "
+        f"(m/2) v^2; v / v_thermal = {ens.v_over_v_thermal:.4g}; {ens.n_modes} modes, "
+        f"v = {ens.v} c, alpha = {ens.alpha}, seed {ens.seed}"
+    )
