@@ -11,7 +11,7 @@ from numpy.testing import assert_allclose
 import restitution
 from restitution.cli import main
 from restitution.errors import InputError
-from restitution.law_nu import shipped_nus
+from restitution.law_nu import law_for, shipped_nus
 from restitution.si_law import STATUSES, si_law
 from restitution.units import Grain, partner_factor
 
@@ -115,16 +115,37 @@ def test_speed_above_the_range_has_no_value(capsys):
     assert p["status"] == "outside" and p["epsilon"] is None
 
 
-def test_steel_is_refused_with_the_command_that_computes_it(capsys):
-    if len(shipped_nus()) >= 3:
-        pytest.skip("a nu grid is shipped; steel is served by interpolation")
-    args = ["law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--geometry", "cylinder"]
+def test_steel_cylinder_is_interpolated_between_its_grid_neighbours(capsys):
+    """Steel as a long cylinder has nu_2d = 0.3 / 0.7 = 0.4286, between shipped laws: served by
+    PCHIP in nu, which never leaves the interval of its two neighbours' values."""
+    nus = shipped_nus()
+    nu2 = 0.3 / 0.7
+    lo = max(n for n in nus if n < nu2)
+    hi = min(n for n in nus if n > nu2)
+    args = ["--E", "210e9", "--nu", "0.3", "--rho", "7850", "--geometry", "cylinder"]
+    out = run_json(capsys, [*args, "--against", "wall", "--speed", "1", "50", "1000"])
+    assert_allclose(out["nu_2d"], nu2, rtol=1e-12)
+    c = c_plane_strain(210e9, 0.3, 7850.0)
+    for p, w in zip(out["points"], [1.0, 50.0, 1000.0], strict=True):
+        v = w / c
+        a, b = restitution.law(lo).epsilon(v), restitution.law(hi).epsilon(v)
+        assert p["status"].startswith("interpolated")
+        assert_allclose(p["epsilon"], law_for(nu2).epsilon(v), rtol=1e-12)
+        assert min(a, b) - 1e-12 <= p["epsilon"] <= max(a, b) + 1e-12
+        # The error covers at least the interpolated point errors of the two neighbours.
+        floor = min(restitution.law(lo).epsilon_err(v), restitution.law(hi).epsilon_err(v))
+        assert p["epsilon_err"] >= floor
+
+
+def test_nu_beyond_the_grid_is_refused_with_the_command_that_computes_it(capsys):
+    """A nearly incompressible cylinder (3D nu = 0.49, nu_2d = 0.96) lies beyond the grid."""
+    args = ["law", "--E", "5e6", "--nu", "0.49", "--rho", "1100", "--geometry", "cylinder"]
     with pytest.raises(SystemExit) as info:
         main([*args, "--against", "wall", "--speed", "1"])
     assert info.value.code == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "Traceback" not in err
-    assert "restitution curve --nu 0.428571" in err and "grid: 0.33, 0.9" in err
+    assert "restitution curve --nu 0.960784" in err
 
 
 def test_python_api_matches_the_command(capsys):

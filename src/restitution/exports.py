@@ -209,11 +209,26 @@ class ClosedForm:
         }
 
 
+def _decreasing_tail(eps: np.ndarray) -> int:
+    """Index of the law's last maximum: from there on ``epsilon`` falls at every point."""
+    k = eps.size - 1
+    while k > 0 and eps[k - 1] > eps[k]:
+        k -= 1
+    return k
+
+
 def fit_closed_form(s: SILaw) -> ClosedForm:
-    """Fit :class:`ClosedForm` to the law's computed points, weighted by their errors."""
+    """Fit :class:`ClosedForm` to the law's computed points, weighted by their errors.
+
+    The form falls monotonically with the speed; the two-dimensional law does not (it has a
+    maximum near ``v = 0.002 - 0.02 c``, docs/results.md). The fit therefore takes the points
+    from the law's last maximum up, and its validity range says so: below it, use the table.
+    """
     v = np.asarray(s.law.v, dtype=float)
     eps = np.asarray(s.law.epsilon_points, dtype=float)
     err = np.asarray(s.law.epsilon_err_points, dtype=float)
+    start = _decreasing_tail(eps)
+    v, eps, err = v[start:], eps[start:], err[start:]
     if v.size < 4:
         raise InputError(f"a three-parameter fit needs at least 4 points, the law has {v.size}")
     sigma = np.maximum(err, 1e-6)

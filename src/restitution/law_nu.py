@@ -9,9 +9,9 @@ The package ships laws ``epsilon(v)`` on a grid of 2D Poisson numbers
   at each speed the grid laws are interpolated in ``nu`` by a monotone cubic (PCHIP), and the
   error adds, in quadrature to the interpolated point errors, a leave-one-out estimate of the
   interpolation error: at every interior grid value the law is predicted from the others and
-  compared with the computed one; a ``nu`` between two grid values gets the larger of its two
-  neighbours' leave-one-out errors (conservative: the left-out prediction spans twice the
-  spacing);
+  compared with the computed one, and every ``nu`` gets the largest of these at its speed
+  (conservative: the left-out prediction spans twice the spacing; and a single neighbour's
+  leave-one-out error can vanish by accident at one speed, as at 0.7 for ``v = 1e-3``);
 * else an :class:`~restitution.errors.InputError` that names the shipped values and the command
   that computes the law (``restitution curve --nu NU --out DIR``), whose JSON is then served with
   ``path=``.
@@ -126,10 +126,10 @@ class NuInterpolatedLaw:
         return out
 
     def interpolation_err(self, v, *, outside: str = "raise"):
-        """Leave-one-out estimate of the interpolation error at ``self.nu``, speed(s) ``v``."""
+        """Leave-one-out estimate of the interpolation error at ``self.nu``, speed(s) ``v``: the
+        largest leave-one-out error of the grid at that speed (module docstring)."""
         loo = self.leave_one_out(v, outside=outside)
-        j = int(np.searchsorted(self.grid, self.nu)) - 1  # grid[j] < nu < grid[j + 1]
-        out = np.fmax(loo[j], loo[j + 1])  # fmax skips the nan of an end law
+        out = np.nanmax(loo, axis=0)  # the two end laws have no leave-one-out value (nan)
         return float(out[0]) if np.ndim(v) == 0 else out
 
     def epsilon(self, v, *, outside: str = "raise"):

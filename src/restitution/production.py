@@ -116,10 +116,7 @@ def main(argv=None) -> None:
     n = _count(SETTINGS_GROUPS, SHIPPED_NUS)
     for path in files:
         print(f"wrote {path}")
-    print(
-        f"{n} collisions (stored ones reused) in {elapsed:.0f} s, "
-        f"{n / elapsed:.2f} collisions/s"
-    )
+    print(f"{n} collisions (stored ones reused) in {elapsed:.0f} s, {n / elapsed:.2f} collisions/s")
     if args.figures:
         for path in draw_figures(files, args.figures):
             print(f"wrote {path}")
