@@ -93,3 +93,22 @@ def test_bad_initial_state_is_refused_in_one_line(modes):
         collide(modes, 0.1, 500, initial=(np.full(N, np.nan), np.zeros(N)))
     with pytest.raises(InputError, match="pair"):
         collide(modes, 0.1, 500, initial=np.zeros(N))
+
+
+def test_a_vibrating_disk_that_leaves_slowly_is_not_cut_off():
+    """A thermal member of this batch leaves about 18 times slower than it came (epsilon 0.054):
+    the time bound of a disk at rest (201 R/c) stopped it before the vibrating disk's bound."""
+    from restitution.fluctuation import flux_speeds
+    from restitution.vibration import thermal_state
+
+    ms = get_modes(0.33, count=10)
+    T = 0.5 * ms.mass * 0.1**2
+    rng = np.random.default_rng(1)
+    v = flux_speeds(ms, T, (0.05, 0.2), 64, rng)
+    Q, P = thermal_state(ms, T, rng, size=64)
+    res = collide_batch(ms, v, 200, initial=(Q, P))
+    slow = min(res, key=lambda r: r.epsilon)
+    assert slow.epsilon < 0.1 and slow.t_end > 201
+    before = 1.0 + slow.mode_energy_before.sum()
+    after = slow.epsilon**2 + slow.mode_energy_after.sum()
+    assert abs(after - before) <= 2 * slow.energy_drift * before + 1e-12

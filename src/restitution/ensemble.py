@@ -163,9 +163,9 @@ def collide_states(
     """Collide a batch from the states ``(Q[i], P[i])``; a member that fails gives its error
     message (a string) in place of its result, and never loses the others.
 
-    A vibrating disk can leave the wall so slowly (``v' << v``) that its run outlasts the
-    solver's bound on the simulated time, which is set from the incoming speed; such members
-    come back as messages.
+    A vibrating disk can leave the wall very slowly (``v' << v``); the solver allows it 100
+    times the time bound of a disk at rest (``collision._start``), and a member that still
+    does not separate within that bound or ``max_steps`` comes back as its message.
     """
     v = np.broadcast_to(np.asarray(v, dtype=float), (len(Q),))
     try:
