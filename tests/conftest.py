@@ -25,3 +25,21 @@ def client():
         distributed.Client(cluster) as c,
     ):
         yield c
+
+
+@pytest.fixture
+def cli(capsys):
+    """Run the command line in this process: ``cli(*args) -> (exit status, stdout, stderr)``."""
+    from restitution.cli import _common, main
+
+    def run(*args):
+        _common._state["quiet"] = False
+        try:
+            main(list(args))
+            code = 0
+        except SystemExit as exc:
+            code = exc.code
+        out, err = capsys.readouterr()
+        return code, out, err
+
+    return run

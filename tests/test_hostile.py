@@ -28,7 +28,7 @@ import pytest
 import restitution
 from restitution import get_modes
 from restitution.cache import MAX_MODES, CacheError, cache_dir
-from restitution.cli import _common, main
+from restitution.cli import _common
 from restitution.collision import (
     CollisionSettings,
     collide,
@@ -41,18 +41,6 @@ from restitution.store import PointSpec, Store, StoreError
 from restitution.sweep import DEFAULTS, grid, run_sweep
 
 # -- helpers -------------------------------------------------------------------------------
-
-
-def cli(capsys, *args):
-    """Run the command line in this process; returns (exit status, stdout, stderr)."""
-    _common._state["quiet"] = False
-    try:
-        main(list(args))
-        code = 0
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def one_line_error(code, err, *words):
@@ -178,8 +166,8 @@ def test_hopeless_collisions_are_refused_with_the_estimate(small, no_integration
     assert "max_steps = 2000000" in str(info.value) and cause in str(info.value)
 
 
-def test_hopeless_collision_at_the_command_line(capsys, no_integration):
-    code, out, err = cli(capsys, "collide", "--v", "1e-9", "--modes", "20", "--json")
+def test_hopeless_collision_at_the_command_line(cli, no_integration):
+    code, out, err = cli("collide", "--v", "1e-9", "--modes", "20", "--json")
     one_line_error(code, err, "time steps", "raise v or alpha")
     assert out == ""
 
@@ -202,14 +190,14 @@ def test_work_estimate_is_near_the_steps_taken(small):
         ("compare-fem", "--modes", "20,1000000"),
     ],
 )
-def test_a_million_modes_is_refused_up_front(capsys, monkeypatch, args):
+def test_a_million_modes_is_refused_up_front(cli, monkeypatch, args):
     import restitution.cache as cache
 
     def refuse(*a, **k):
         raise AssertionError("modes were computed instead of refused")
 
     monkeypatch.setattr(cache, "compute_modes", refuse)
-    code, _, err = cli(capsys, *args)
+    code, _, err = cli(*args)
     one_line_error(code, err, str(MAX_MODES))
 
 
@@ -256,10 +244,10 @@ def test_bad_scheduler_addresses(address, words):
         probe_scheduler(address, timeout=1.0)
 
 
-def test_scheduler_errors_at_the_command_line(capsys, tmp_path):
+def test_scheduler_errors_at_the_command_line(cli, tmp_path):
     store = str(tmp_path / "s.sqlite")
     args = ("epsilon", "--nu", "0.33", "--v", "0.1", "--modes", "10", "14", "20")
-    code, _, err = cli(capsys, *args, "--store", store, "--scheduler", "notanaddress")
+    code, _, err = cli(*args, "--store", store, "--scheduler", "notanaddress")
     one_line_error(code, err, "tcp://HOST:8786")
 
 
@@ -271,42 +259,42 @@ def test_a_live_scheduler_passes_the_probe(client):
 
 
 @pytest.mark.parametrize("alpha", ["1e300", "1e14"])
-def test_absurd_wall_hardness(capsys, no_integration, alpha):
-    code, _, err = cli(capsys, "collide", "--v", "0.1", "--alpha", alpha, "--modes", "20")
+def test_absurd_wall_hardness(cli, no_integration, alpha):
+    code, _, err = cli("collide", "--v", "0.1", "--alpha", alpha, "--modes", "20")
     one_line_error(code, err, "GiB")
 
 
-def test_unknown_figure_format(capsys, tmp_path):
-    code, _, err = cli(capsys, "modes", "--count", "20", "--plot-spectrum", str(tmp_path / "x.xyz"))
+def test_unknown_figure_format(cli, tmp_path):
+    code, _, err = cli("modes", "--count", "20", "--plot-spectrum", str(tmp_path / "x.xyz"))
     one_line_error(code, err, "unknown figure format", ".png")
 
 
-def test_output_into_a_missing_directory(capsys, tmp_path):
+def test_output_into_a_missing_directory(cli, tmp_path):
     target = tmp_path / "missing" / "m.csv"
-    code, _, err = cli(capsys, "modes", "--count", "20", "--output", str(target))
+    code, _, err = cli("modes", "--count", "20", "--output", str(target))
     one_line_error(code, err, "does not exist")
 
 
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
-def test_output_to_a_full_disk(capsys):
-    code, _, err = cli(capsys, "modes", "--count", "20", "--output", "/dev/full")
+def test_output_to_a_full_disk(cli):
+    code, _, err = cli("modes", "--count", "20", "--output", "/dev/full")
     one_line_error(code, err, "No space left")
 
 
-def test_output_into_a_read_only_directory(capsys, tmp_path):
+def test_output_into_a_read_only_directory(cli, tmp_path):
     folder = tmp_path / "ro"
     folder.mkdir()
     with read_only(folder):
-        code, _, err = cli(capsys, "modes", "--count", "20", "--output", str(folder / "m.csv"))
+        code, _, err = cli("modes", "--count", "20", "--output", str(folder / "m.csv"))
     one_line_error(code, err, "cannot write --output")
 
 
-def test_curve_refuses_an_unwritable_out_before_computing(capsys, tmp_path):
+def test_curve_refuses_an_unwritable_out_before_computing(cli, tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("")
     store = tmp_path / "s.sqlite"
     args = ("curve", "--nu", "0.33", "--v", "0.1", "--modes", "10", "14", "20")
-    code, _, err = cli(capsys, *args, "--store", str(store), "--out", str(blocker / "out"))
+    code, _, err = cli(*args, "--store", str(store), "--out", str(blocker / "out"))
     one_line_error(code, err, "--out")
     assert not store.exists()  # nothing was computed
 
@@ -323,7 +311,7 @@ def _damaged_store(path):
             fh.write(rng.bytes(2000))
 
 
-def test_damaged_store_is_one_clear_error(capsys, tmp_path):
+def test_damaged_store_is_one_clear_error(cli, tmp_path):
     path = tmp_path / "damaged.sqlite"
     _damaged_store(path)
     before = path.read_bytes()
@@ -333,11 +321,11 @@ def test_damaged_store_is_one_clear_error(capsys, tmp_path):
     assert "delete" not in str(info.value).lower() and ".recover" in str(info.value)
     assert path.read_bytes() == before
     args = ("epsilon", "--nu", "0.33", "--v", "0.1", "--modes", "10", "14", "20")
-    code, _, err = cli(capsys, *args, "--store", str(path))
+    code, _, err = cli(*args, "--store", str(path))
     one_line_error(code, err, "damaged")
 
 
-def test_cache_dir_that_is_a_file(capsys, tmp_path, monkeypatch):
+def test_cache_dir_that_is_a_file(cli, tmp_path, monkeypatch):
     bad = tmp_path / "not-a-dir"
     bad.write_text("")
     monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(bad))
@@ -346,7 +334,7 @@ def test_cache_dir_that_is_a_file(capsys, tmp_path, monkeypatch):
     with pytest.warns(UserWarning, match="without the cache"):
         modes = get_modes(0.33, count=5)  # the cache is optional
     assert len(modes) == 5
-    code, _, err = cli(capsys, "epsilon", "--nu", "0.33", "--v", "0.1")
+    code, _, err = cli("epsilon", "--nu", "0.33", "--v", "0.1")
     one_line_error(code, err, "RESTITUTION_CACHE_DIR")
 
 
@@ -467,38 +455,38 @@ def failing_store(tmp_path_factory):
     return path, spec
 
 
-def test_failed_points_make_curve_and_epsilon_exit_non_zero(capsys, tmp_path, failing_store):
+def test_failed_points_make_curve_and_epsilon_exit_non_zero(cli, tmp_path, failing_store):
     path, spec = failing_store
     base = ("--nu", "0.33", "--v", "0.2", *GRID, "--store", str(path), "--no-progress")
-    code, out, err = cli(capsys, "curve", *base, "--out", str(tmp_path / "out"))
+    code, out, err = cli("curve", *base, "--out", str(tmp_path / "out"))
     assert code == 1, err
     assert "synthetic failure" in err and "--retry-failed" in err
     assert (tmp_path / "out" / "fig01_epsilon.png").exists()  # the rest is still written
-    code, out, err = cli(capsys, "epsilon", *base, "--json")
+    code, out, err = cli("epsilon", *base, "--json")
     assert code == 1
     doc = json.loads(out)
     assert doc["status"] == "points-failed" and "--retry-failed" in doc["advice"]
-    code, out, err = cli(capsys, "epsilon", *base, "--retry-failed", "--json")
+    code, out, err = cli("epsilon", *base, "--retry-failed", "--json")
     assert code == 0, err
     assert json.loads(out)["status"] in ("ok", "not-asymptotic")
     with Store(path) as db:
         assert db.get(spec).ok
 
 
-def test_two_mode_counts_give_no_error_bar_and_strict_fails(capsys, failing_store):
+def test_two_mode_counts_give_no_error_bar_and_strict_fails(cli, failing_store):
     path, _ = failing_store
     args = ("epsilon", "--nu", "0.33", "--v", "0.2", "--alphas", "20", "30")
     args += ("--alpha-scale", "absolute", "--modes", "10", "14", "--store", str(path))
-    code, out, err = cli(capsys, *args, "--no-progress")
+    code, out, err = cli(*args, "--no-progress")
     assert code == 0 and "+- unknown" in out and "0.000000" not in out
     assert "not-asymptotic" in err
-    code, out, err = cli(capsys, *args, "--no-progress", "--strict")
+    code, out, err = cli(*args, "--no-progress", "--strict")
     assert code == _common.EXIT_NOT_CONVERGED
 
 
-def test_repeated_mode_counts_are_refused(capsys, tmp_path):
+def test_repeated_mode_counts_are_refused(cli, tmp_path):
     args = ("epsilon", "--nu", "0.33", "--v", "0.1", "--modes", "20", "20", "20")
-    code, _, err = cli(capsys, *args, "--store", str(tmp_path / "s.sqlite"))
+    code, _, err = cli(*args, "--store", str(tmp_path / "s.sqlite"))
     one_line_error(code, err, "repeated")
 
 
@@ -512,8 +500,8 @@ def test_repeated_mode_counts_are_refused(capsys, tmp_path):
         (("collide", "--v", "0.1", "--mesh-refine", "2"), "--mesh-refine"),
     ],
 )  # fmt: skip
-def test_ignored_options_are_refused(capsys, args, words):
-    code, _, err = cli(capsys, *args)
+def test_ignored_options_are_refused(cli, args, words):
+    code, _, err = cli(*args)
     one_line_error(code, err, words, "no effect" if args[0] == "collide" else "one or the other")
 
 
@@ -550,8 +538,8 @@ ENVELOPE = {"version", "command", "units", "inputs", "status", "advice"}
         ("quasistatic", "--v", "0.05", "--modes", "20", "--json"),
     ],
 )
-def test_every_json_has_the_same_envelope(capsys, args):
-    code, out, err = cli(capsys, *args)
+def test_every_json_has_the_same_envelope(cli, args):
+    code, out, err = cli(*args)
     assert code == 0, err
     doc = json.loads(out, parse_constant=lambda name: pytest.fail(f"bare {name}"))
     assert ENVELOPE <= doc.keys()
@@ -560,12 +548,12 @@ def test_every_json_has_the_same_envelope(capsys, args):
     assert doc["inputs"]["nu"] == pytest.approx(0.33)
 
 
-def test_quiet_silences_stderr(capsys):
+def test_quiet_silences_stderr(cli):
     args = ("collide", "--v", "0.35", "--alpha", "100", "--modes", "10", "--energy-tol", "1e-4")
-    code, _, err = cli(capsys, *args, "--json")
+    code, _, err = cli(*args, "--json")
     assert code == 0 and "linear elasticity" in err
     for quiet in (("--quiet", *args, "--json"), (*args, "--json", "-q")):
-        code, out, err = cli(capsys, *quiet)
+        code, out, err = cli(*quiet)
         assert code == 0 and err == "" and json.loads(out)["epsilon"] > 0
 
 
@@ -586,6 +574,6 @@ def test_errors_are_exported():
         (("bounce", "--v", "0.1", "--modes", "10", "--walls-distance", "0.5"), "--walls-distance"),
     ],
 )  # fmt: skip
-def test_bad_vibrating_input_is_one_line(capsys, no_integration, args, words):
-    code, _, err = cli(capsys, *args)
+def test_bad_vibrating_input_is_one_line(cli, no_integration, args, words):
+    code, _, err = cli(*args)
     one_line_error(code, err, words)

@@ -11,25 +11,13 @@ import pytest
 
 import restitution
 from restitution import get_modes
-from restitution.cli import _common, main
 from restitution.collision import collide
 from restitution.vibration import kinetic_energy, single_mode_state
 
 
-def cli(capsys, *args):
-    _common._state["quiet"] = False
-    try:
-        main(list(args))
-        code = 0
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def test_thermal_ensemble_json(capsys, tmp_path):
+def test_thermal_ensemble_json(cli, tmp_path):
     fig = tmp_path / "hist.png"
-    code, out, err = cli(capsys, "collide", "--v", "0.1", "--modes", "10", "--excite",
+    code, out, err = cli("collide", "--v", "0.1", "--modes", "10", "--excite",
                          "thermal", "--temperature", "0.25", "--samples", "6", "--seed", "2",
                          "--energy-tol", "1e-5", "--plot", str(fig), "--json")  # fmt: skip
     assert code == 0, err
@@ -55,9 +43,9 @@ def test_thermal_ensemble_json(capsys, tmp_path):
     assert fig.stat().st_size > 5000
 
 
-def test_single_mode_matches_the_library(capsys):
+def test_single_mode_matches_the_library(cli):
     args = ("--excite", "mode", "--mode-index", "2", "--amplitude", "0.05", "--phase", "1.0")
-    code, out, err = cli(capsys, "collide", "--v", "0.1", "--modes", "12", *args, "--json")
+    code, out, err = cli("collide", "--v", "0.1", "--modes", "12", *args, "--json")
     assert code == 0, err
     d = json.loads(out)
     ms = get_modes(0.33, count=12)
@@ -67,8 +55,8 @@ def test_single_mode_matches_the_library(capsys):
     assert d["excited_mode"]["n"] == int(ms.n[2])
 
 
-def test_bounce_json(capsys):
-    code, out, err = cli(capsys, "bounce", "--v", "0.1", "--alpha", "400", "--modes", "10",
+def test_bounce_json(cli):
+    code, out, err = cli("bounce", "--v", "0.1", "--alpha", "400", "--modes", "10",
                          "--collisions", "3", "--gravity", "1e-5", "--json")  # fmt: skip
     assert code == 0, err
     d = json.loads(out)
@@ -93,8 +81,8 @@ def test_bounce_json(capsys):
         (("--excite", "thermal", "--temperature", "1", "--method", "fem"), "--method modal"),
     ],
 )
-def test_bad_excitations_are_one_line(capsys, args, words):
-    code, _, err = cli(capsys, "collide", "--v", "0.1", "--modes", "10", *args)
+def test_bad_excitations_are_one_line(cli, args, words):
+    code, _, err = cli("collide", "--v", "0.1", "--modes", "10", *args)
     lines = [x for x in err.splitlines() if x.strip()]
     assert code == 2 and len(lines) == 1 and lines[0].startswith("error: "), err
     assert words in lines[0]
@@ -110,8 +98,8 @@ def test_bad_excitations_are_one_line(capsys, args, words):
         (("--gravity", "1e-5", "--collisions", "0"), "--collisions"),
     ],
 )
-def test_bad_bounces_are_one_line(capsys, args, words):
-    code, _, err = cli(capsys, "bounce", "--v", "0.1", "--modes", "10", *args)
+def test_bad_bounces_are_one_line(cli, args, words):
+    code, _, err = cli("bounce", "--v", "0.1", "--modes", "10", *args)
     lines = [x for x in err.splitlines() if x.strip()]
     assert code == 2 and len(lines) == 1 and lines[0].startswith("error: "), err
     assert words in lines[0]
