@@ -49,6 +49,19 @@ its drop-one spread and the shift of its limit to a quadratic fit -- is below ``
 times the second stage's *own* error (its standard error and drop-one spread, without the
 errors propagated from the first stage, so the rule is not circular). The waiver is recorded
 in ``CombinedLimit.notes``; the fit's error is still propagated into the combined error.
+
+**Flat first stages: window stability.** Both relative tests divide by something that can be
+zero within its own error: the drop-one test by the extrapolated step, the curvature test by
+the slope. Where a first-stage fit's slope is zero within two standard errors (the loss does
+not resolve a direction of convergence in ``N``; it only wiggles, as at ``nu = 0.9``,
+``v = 5e-4``, where it moves by 7e-5 over ``N = 12800-102400``), the two ratios mean nothing.
+Such a fit (with at least 4 points, so that a window without one member can still be judged)
+is not held against the combined limit if the *whole answer* is stable within its stated
+error against the window: the combined limit recomputed without the window's least
+asymptotic member, and without its most asymptotic member (the answer before that member was
+added), must both lie within ``limit_err`` of the full window's limit. Fits whose slope is
+resolved keep the relative tests; a stable window does not rescue them. The outcome is
+recorded in ``CombinedLimit.notes`` (passed) or ``message`` (failed) with the numbers.
 """
 
 from __future__ import annotations
@@ -503,6 +516,7 @@ def combined_limit(
     loss: np.ndarray,
     *,
     order: str = "modes_first",
+    stability: bool = True,
     **kwargs,
 ) -> CombinedLimit:
     """Extrapolate a grid of energy losses to ``alpha -> infinity`` and ``N -> infinity``.
@@ -517,6 +531,9 @@ def combined_limit(
         ``1 - epsilon^2`` at ``(alpha_i, N_j)``; ``nan`` marks a missing point.
     order : {"modes_first", "alpha_first"}
         Primary order of the two limits; the other is computed as a check.
+    stability : bool
+        Judge flat first-stage fits by window stability (module docstring). ``False`` flags
+        them like any other failing fit (used for the reduced windows of that very test).
     **kwargs
         Passed to :func:`linear_limit` (``drop_tol``, ``curvature_tol``).
 
@@ -546,6 +563,7 @@ def combined_limit(
     stage1 = "N" if primary else "alpha"
     own = math.hypot(second.stat_err, second.drop_spread)
     drop_tol = kwargs.get("drop_tol", DROP_TOL)
+    flat = []
     for fit, value in zip(first, alpha if primary else n_modes, strict=True):
         if fit.asymptotic_ok:
             continue
@@ -557,8 +575,32 @@ def combined_limit(
                 f"extrapolation moves the loss by at most {reach:.2g} < {drop_tol:g} x the "
                 f"second stage's own error {own:.2g} ({fit.message})"
             )
+        elif _flat(fit):
+            flat.append(
+                f"{stage1} -> inf at {name} = {value:g}: slope {fit.slope:.2g} +- "
+                f"{fit.slope_err:.2g} is zero within 2 standard errors ({fit.message})"
+            )
         else:
             problems.append(f"{stage1} -> inf at {name} = {value:g}: {fit.message}")
+    if flat and stability:
+        shifts = _window_shifts(alpha, n_modes, loss, order, second.limit, kwargs)
+        verdict = (
+            f"the combined limit moves by {shifts[0]:.2g} without the window's least "
+            f"asymptotic member and by {shifts[1]:.2g} without its most asymptotic member"
+        )
+        if max(shifts) <= err:
+            notes.extend(
+                f"{text}; relative tests ill-posed, window stable: {verdict}, within the "
+                f"error {err:.2g}"
+                for text in flat
+            )
+        else:
+            problems.extend(
+                f"{text}; window not stable: {verdict}, more than the error {err:.2g}"
+                for text in flat
+            )
+    elif flat:
+        problems.extend(flat)
     if not second.asymptotic_ok:
         problems.append(f"{'alpha' if primary else 'N'} -> inf: {second.message}")
     # Round-off floor: on a complete grid the two orders agree to machine precision.
@@ -597,3 +639,44 @@ def _consequence(fit: LinearLimit) -> float:
         return math.inf
     quadratic = float(np.polyfit(fit.x, fit.y, 2)[2])
     return max(abs(fit.limit - fit.y[0]), fit.drop_spread, abs(quadratic - fit.limit))
+
+
+def _flat(fit: LinearLimit) -> bool:
+    """A fit of at least 4 points whose slope is zero within two standard errors."""
+    return (
+        fit.y.size >= MIN_POINTS + 1
+        and math.isfinite(fit.slope_err)
+        and abs(fit.slope) <= 2.0 * fit.slope_err
+    )
+
+
+def _window_shifts(
+    alpha: np.ndarray,
+    n_modes: np.ndarray,
+    loss: np.ndarray,
+    order: str,
+    limit: float,
+    kwargs: dict,
+) -> tuple[float, float]:
+    """How far the combined limit moves when the first stage's window loses its least
+    asymptotic member and when it loses its most asymptotic one."""
+    if order == "modes_first":
+        keep = np.argsort(n_modes)  # most modes = most asymptotic last
+        least, most = keep[0], keep[-1]
+
+        def without(j):
+            m = np.arange(n_modes.size) != j
+            return combined_limit(
+                alpha, n_modes[m], loss[:, m], order=order, stability=False, **kwargs
+            )
+    else:
+        keep = np.argsort(alpha)  # hardest wall = most asymptotic last
+        least, most = keep[0], keep[-1]
+
+        def without(j):
+            m = np.arange(alpha.size) != j
+            return combined_limit(
+                alpha[m], n_modes, loss[m], order=order, stability=False, **kwargs
+            )
+
+    return abs(without(least).limit - limit), abs(without(most).limit - limit)
