@@ -89,8 +89,16 @@ def test_fig12_compute_and_plot(tmp_path):
     data = fig12_rayleigh.compute(
         NU, n_modes=60, n_v=4, v_min=1e-4, v_max=1e-2, dynamic=([0.01], [0.02])
     )
+    assert data.dynamic_ok.tolist() == [True]  # no statuses given: all counted as checked
     fig12_rayleigh.plot(data, tmp_path / "fig12.png")
     assert (tmp_path / "fig12.png").stat().st_size > 1000
+    marked = fig12_rayleigh.compute(
+        NU, n_modes=60, n_v=4, v_min=1e-4, v_max=1e-2,
+        dynamic=([0.005, 0.01], [0.03, 0.02], [False, True]),
+    )  # fmt: skip
+    assert marked.dynamic_ok.tolist() == [False, True]
+    fig12_rayleigh.plot(marked, tmp_path / "fig12_marked.png")
+    assert (tmp_path / "fig12_marked.png").stat().st_size > 1000
     ref = rayleigh_energy(get_modes(NU, count=60), 1e-4).energy_fraction
     assert_allclose(data.total[0], ref, rtol=1e-12)
     assert np.all(data.quadrupole <= data.total)

@@ -344,12 +344,13 @@ def compute_paper(
 
         def fig12_stage():
             c = curves[float(s.nu)] if float(s.nu) in curves else None
-            dv, dl = [], []
+            dv, dl, ok = [], [], []
             if c is not None:
                 for v, lim in zip(c.velocities, c.limits, strict=True):
                     if v <= s.rayleigh_v_max and math.isfinite(lim.limit):
                         dv.append(float(v))
                         dl.append(float(lim.limit))
+                        ok.append(bool(lim.asymptotic_ok))
             return fig12_rayleigh.compute(
                 s.nu,
                 law=s.law,
@@ -357,7 +358,7 @@ def compute_paper(
                 v_min=s.rayleigh_v_min,
                 v_max=s.rayleigh_v_max,
                 n_v=s.rayleigh_points,
-                dynamic=(dv, dl),
+                dynamic=(dv, dl, ok),
             )
 
         f12 = stages.run("fig12", fig12_stage)
