@@ -14,11 +14,15 @@ batch   32 speeds 0.02-0.3 at alpha = 500 on one mode set (N = 1600): one compil
 large   N = 1e4, v = 0.01, alpha = 1634: compiled kernel against the NumPy path.
 huge    N = 1e5 at v = 1e-4 (alpha = 40 / delta_max): mode build and one collision, in a
         subprocess whose peak memory (max RSS) is reported.
+kernel  The fused kernel against the previous one (``--kernel-rev``, default: the last commit
+        before the fusion), loaded from git under another module name, on the same inputs
+        (captured from ``collide``): one collision at N = 1600, v = 0.1, alpha = 500 and one at
+        N = 1e4, v = 0.01, alpha = 1634; alternating rounds, |eps difference| printed.
 modes   Building 1e4 modes at nu = 0.33: the scale-free Bessel-pair scan against the previous
         scipy-jv scan, loaded from git (``--baseline-rev``, default: the last commit before
         the change).
 
-Run: python benchmarks/bench_kernel.py [single batch large huge modes] [--rounds 3]
+Run: python benchmarks/bench_kernel.py [single batch large huge kernel modes] [--rounds 3]
 """
 
 from __future__ import annotations
@@ -44,6 +48,7 @@ from restitution.sweep import quasistatic_compression  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
 BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
+KERNEL_REV = "45e1558"  # last commit before the fused kernel passes
 
 
 def _load() -> str:
@@ -179,6 +184,72 @@ def huge(rounds: int) -> None:
     print(f"  {_load()}")
 
 
+def _baseline_kernel(rev: str):
+    """``restitution.kernel`` of revision ``rev``, as module ``baseline_kernel``."""
+    root = Path(__file__).resolve().parent.parent
+    text = subprocess.run(
+        ["git", "show", f"{rev}:src/restitution/kernel.py"],
+        cwd=root,
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+    tmp = Path(tempfile.mkdtemp(prefix="bench-kernel-"))
+    (tmp / "baseline_kernel.py").write_text(text)
+    spec = importlib.util.spec_from_file_location("baseline_kernel", tmp / "baseline_kernel.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["baseline_kernel"] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def _kernel_inputs(modes, v: float, alpha: float):
+    """The arguments of the last ``run_batch`` call of ``collide`` (its accepted step)."""
+    import restitution.kernel as kernel
+
+    calls = []
+    run = kernel.run_batch
+
+    def spy(*args, **kwargs):
+        calls.append((args, kwargs))
+        return run(*args, **kwargs)
+
+    kernel.run_batch = spy
+    try:
+        collide(modes, v, alpha, backend="compiled")
+    finally:
+        kernel.run_batch = run
+    return calls[-1]
+
+
+def kernel(rounds: int, rev: str) -> None:
+    import restitution.kernel as new
+
+    print(f"== fused kernel against the kernel of {rev}, same inputs; {_load()}")
+    old = _baseline_kernel(rev)
+    args, kwargs = _kernel_inputs(get_modes(NU, count=20), V, ALPHA)
+    old.run_batch(*args, **kwargs)  # compile (or load) outside the timing
+    for n, v, alpha in ((1600, 0.1, 500.0), (10_000, 0.01, 1634.0)):
+        args, kwargs = _kernel_inputs(get_modes(NU, count=n), v, alpha)
+        times: dict[str, list[float]] = {"old": [], "new": []}
+        sides = [("old", old.run_batch), ("new", new.run_batch)]
+        for i in range(rounds):
+            out = {}
+            # Alternate which side runs first, so that neither always finds warm caches.
+            for name, run in sides if i % 2 == 0 else sides[::-1]:
+                t, out[name] = _timed(lambda run=run, a=args, kw=kwargs: run(*a, **kw))
+                times[name].append(t)
+            d_eps = abs(out["old"]["epsilon"][0] - out["new"]["epsilon"][0])
+            print(
+                f"  N = {n}, v = {v}, alpha = {alpha:g}, round {i + 1}: "
+                f"old {times['old'][-1]:.3f} s, new {times['new'][-1]:.3f} s, "
+                f"{out['new']['steps'][0]} steps (old "
+                f"{out['old']['steps'][0]}), |eps difference| {d_eps:.1e}; {_load()}",
+                flush=True,
+            )
+        _summary(f"N = {n}: old / new", list(np.array(times["old"]) / np.array(times["new"])))
+
+
 def _baseline_modes(rev: str):
     """``compute_modes`` of revision ``rev`` (its modes.py and frequency_equation.py)."""
     root = Path(__file__).resolve().parent.parent
@@ -224,10 +295,11 @@ def modes(rounds: int, rev: str) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
-        "sections", nargs="*", default=["single", "batch", "large", "huge", "modes"]
+        "sections", nargs="*", default=["single", "batch", "large", "huge", "kernel", "modes"]
     )
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--baseline-rev", default=BASELINE_REV)
+    parser.add_argument("--kernel-rev", default=KERNEL_REV)
     args = parser.parse_args()
     # Compile (or load) the serial and the threaded kernel once, outside every timing.
     collide(get_modes(NU, count=20), V, ALPHA)
@@ -235,6 +307,8 @@ def main() -> None:
     for name in args.sections:
         if name == "modes":
             modes(args.rounds, args.baseline_rev)
+        elif name == "kernel":
+            kernel(args.rounds, args.kernel_rev)
         else:
             {"single": single, "batch": batch, "large": large, "huge": huge}[name](args.rounds)
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024

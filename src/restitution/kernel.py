@@ -8,14 +8,16 @@ per batch member and entirely in compiled code, exactly the arithmetic of the Nu
 path (:mod:`restitution.integrators`, :mod:`restitution.wall` and ``collision._run``):
 
 * the wall terms order by order (eqs. 40-42, 45) over the prefix of provably active nodes;
-* the half kicks of the wall and the exact harmonic free flow;
+* the half kicks of the wall and the exact harmonic free flow (the two half kicks between
+  substeps merged into one, fused with the flow and the order sums in one pass over the
+  modes);
 * energy drift, contact time, compression, force, contact-averaged and closest mode energies;
 * the rigorous stop test every ``CHECK_EVERY`` steps.
 
-Only the summation order of reductions differs from the NumPy path, so the two agree to
-round-off (checked to 1e-12 in ``tests/test_kernel.py``). Members of a batch are independent and
-run in parallel threads (``numba.prange``); each has its own step, so a member's result never
-depends on which other points share its batch.
+Only the summation order of reductions and the merged kicks differ from the NumPy path, so the
+two agree to round-off (checked to 1e-12 in ``tests/test_kernel.py``). Members of a batch are
+independent and run in parallel threads (``numba.prange``); each has its own step, so a member's
+result never depends on which other points share its batch.
 """
 
 from __future__ import annotations
@@ -44,16 +46,9 @@ _FAST = {"reassoc", "contract", "nsz"}
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f):
-    """Wall potential ``V``, force ``F`` and generalised forces ``f`` (written in place).
-
-    Modes are ordered by angular order here: those of order column ``i`` are the contiguous
-    slice ``starts[i]:starts[i + 1]``, so the per-order sums need no scattered writes.
-    """
-    N = Q.size
-    M = cos_phi.size
-    K2 = trig.shape[1]
-    K = K2 // 2
+def _order_sums(Q, C, S, starts, ab):
+    """Per-order amplitudes ``a_i = sum Q_k C_k``, ``b_i = sum Q_k S_k`` into ``ab``."""
+    K = starts.size - 1
     for i in range(K):
         a = 0.0
         b = 0.0
@@ -62,6 +57,18 @@ def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f):
             b += Q[k] * S[k]
         ab[i] = a
         ab[K + i] = b
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, x, e):
+    """Wall potential ``V`` and force ``F`` from the per-order amplitudes ``ab``.
+
+    Writes the per-order cosine/sine sums ``cs`` of the edge force; the generalised force of
+    mode ``k`` of order column ``i`` is ``C_k cs[i] + S_k cs[K + i]`` (formed where it is used,
+    never stored). ``x`` and ``e`` are work arrays of the quadrature's size.
+    """
+    M = cos_phi.size
+    K2 = ab.size
     reach = x0
     for i in range(K2):
         reach += abs(ab[i])
@@ -70,49 +77,73 @@ def _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f):
     while J < M and cos_phi[J] >= bound:
         J += 1
     if J == 0:
-        for k in range(N):
-            f[k] = 0.0
+        cs[:] = 0.0
         return 0.0, 0.0
     # The two products over the active nodes are BLAS matrix-vector products (gemv).
-    x = np.dot(trig[:J], ab)
-    e = np.empty(J)
+    np.dot(trig[:J], ab, x[:J])
     F = 0.0
     # The prefix bound J is loose; past the last node whose exponent exceeds -_NEGLIGIBLE the
     # terms are below exp(-40) of the force and the second product can stop there.
     last = 0
     for j in range(J):
         ax = alpha * (x0 + cos_phi[j] + x[j])
-        e[j] = math.exp(ax) * weight[j]
-        F += e[j]
+        ej = math.exp(ax) * weight[j]
+        e[j] = ej
+        F += ej
         if ax > -_NEGLIGIBLE:
             last = j + 1
-    cs[:] = np.dot(e[:last], trig[:last])
-    for i in range(K):
-        c_i = cs[i]
-        s_i = cs[K + i]
-        for k in range(starts[i], starts[i + 1]):
-            f[k] = C[k] * c_i + S[k] * s_i
+    if last == 0:
+        cs[:] = 0.0
+    else:
+        np.dot(e[:last], trig[:last], cs)
     return F / alpha, F
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _strang(h_dt, x0, p0, Q, P, V, F, f, rot_c, rot_so, rot_st, mass, alpha, quad, ab, cs):
-    """One Strang step of length ``h_dt``: half kick, exact free flow, wall, half kick."""
-    cos_phi, weight, trig, C, S, starts, _ = quad
-    half = 0.5 * h_dt
-    p0 = p0 - half * F
-    N = Q.size
-    for k in range(N):
-        pk = P[k] - half * f[k]
-        qk = Q[k]
-        Q[k] = qk * rot_c[k] + pk * rot_so[k]
-        P[k] = pk * rot_c[k] - qk * rot_st[k]
-    x0 = x0 + p0 * (h_dt / mass)
-    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f)
-    p0 = p0 - half * F
-    for k in range(N):
-        P[k] = P[k] - half * f[k]
-    return x0, p0, V, F
+def _kick_flow(kick, Q, P, C, S, starts, cs, rot_c, rot_so, rot_st, ab):
+    """Kick ``P -= kick f`` (``f`` from ``cs``), exact free flow, and the per-order sums of
+    the new ``Q`` for the next wall evaluation, in one pass over the modes.
+
+    Modes are ordered by angular order here: those of order column ``i`` are the contiguous
+    slice ``starts[i]:starts[i + 1]``. ``starts`` is unsigned: with signed bounds numba wraps
+    negative indices, which keeps LLVM from vectorising these loops (2x slower).
+    """
+    K = starts.size - 1
+    for i in range(K):
+        c_i = cs[i]
+        s_i = cs[K + i]
+        a = 0.0
+        b = 0.0
+        for k in range(starts[i], starts[i + 1]):
+            ck = C[k]
+            sk = S[k]
+            pk = P[k] - kick * (ck * c_i + sk * s_i)
+            qk = Q[k]
+            qn = qk * rot_c[k] + pk * rot_so[k]
+            Q[k] = qn
+            P[k] = pk * rot_c[k] - qk * rot_st[k]
+            a += qn * ck
+            b += qn * sk
+        ab[i] = a
+        ab[K + i] = b
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _close(half, Q, P, C, S, starts, cs, omega, m, out_e):
+    """Closing half kick of a step fused with the mode energies (into ``out_e``); returns
+    their sum."""
+    K = starts.size - 1
+    esum = 0.0
+    for i in range(K):
+        c_i = cs[i]
+        s_i = cs[K + i]
+        for k in range(starts[i], starts[i + 1]):
+            pk = P[k] - half * (C[k] * c_i + S[k] * s_i)
+            P[k] = pk
+            ek = pk * pk / (2.0 * m) + 0.5 * m * (omega[k] * Q[k]) ** 2
+            out_e[k] = ek
+            esum += ek
+    return esum
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
@@ -127,6 +158,7 @@ def _member(
     quad,
     weights,
     rotations,
+    rot_of,
     max_steps,
     abort_drift,
     stop_log,
@@ -139,18 +171,30 @@ def _member(
 ):
     """Integrate one collision from the modal state ``(Q, P)`` (advanced in place to the final
     state); returns (status, epsilon, drift, contact, max_comp, max_force, steps, t, x0). Mode
-    energies after, contact-summed and at closest approach go to ``out_*``."""
+    energies after, contact-summed and at closest approach go to ``out_*``.
+
+    A step of ``n`` Strang substeps makes ``n + 1`` passes over the modes: ``n`` of
+    :func:`_kick_flow` (the closing half kick of a substep and the opening half kick of the
+    next use the same wall evaluation and are one kick of ``(h_s + h_{s+1}) / 2``) and
+    :func:`_close` (the step's last half kick with the energies), so that the bookkeeping, the
+    stop test and a return always see the state after the full step. The contact mean and the
+    closest copy stay flat loops over ``out_e`` after the stability tests (fused into the
+    closing pass they were slower and would touch them before an unstable return).
+    """
     cos_phi, weight, trig, C, S, starts, g_max = quad
     N = omega.size
     K2 = trig.shape[1]
-    f = np.zeros(N)
+    M = cos_phi.size
     ab = np.zeros(K2)
     cs = np.zeros(K2)
+    xw = np.empty(M)
+    ew = np.empty(M)
     m = mass
     e0 = 0.5 * m * v * v
     x0 = x_start
     p0 = m * v
-    V, F = _wall(x0, Q, alpha, cos_phi, weight, trig, C, S, starts, ab, cs, f)
+    _order_sums(Q, C, S, starts, ab)
+    V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, xw, ew)
     h0 = p0 * p0 / (2.0 * m) + V
     for k in range(N):
         h0 += P[k] * P[k] / (2.0 * m) + 0.5 * m * (omega[k] * Q[k]) ** 2
@@ -168,38 +212,22 @@ def _member(
     while True:
         if steps >= max_steps or t > t_max:
             return STATUS_TIMEOUT, 0.0, drift, contact, max_comp, max_force, steps, t, x0
+        kick = 0.5 * (weights[0] * dt)
         for s in range(n_sub):
-            x0, p0, V, F = _strang(
-                weights[s] * dt,
-                x0,
-                p0,
-                Q,
-                P,
-                V,
-                F,
-                f,
-                rotations[s, 0],
-                rotations[s, 1],
-                rotations[s, 2],
-                m,
-                alpha,
-                quad,
-                ab,
-                cs,
+            h_dt = weights[s] * dt
+            p0 = p0 - kick * F
+            r = rot_of[s]
+            _kick_flow(
+                kick, Q, P, C, S, starts, cs, rotations[r, 0], rotations[r, 1], rotations[r, 2], ab
             )
-            t = t + weights[s] * dt
+            x0 = x0 + p0 * (h_dt / m)
+            V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, xw, ew)
+            t = t + h_dt
+            if s + 1 < n_sub:
+                kick = 0.5 * h_dt + 0.5 * (weights[s + 1] * dt)
+        half = 0.5 * (weights[n_sub - 1] * dt)
+        p0 = p0 - half * F
         steps += 1
-        esum = 0.0
-        for k in range(N):
-            ek = P[k] * P[k] / (2.0 * m) + 0.5 * m * (omega[k] * Q[k]) ** 2
-            out_e[k] = ek
-            esum += ek
-        h = p0 * p0 / (2.0 * m) + esum + V
-        if not math.isfinite(h):
-            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
-        drift = max(drift, abs(h - h0) / h0)
-        if abort_drift > 0.0 and drift > abort_drift:
-            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
         comp = x0 + 1.0
         if comp > 0.0 and comp_prev > 0.0:
             frac = 1.0
@@ -209,6 +237,13 @@ def _member(
             frac = comp_prev / (comp_prev - comp)
         else:
             frac = 0.0
+        esum = _close(half, Q, P, C, S, starts, cs, omega, m, out_e)
+        h = p0 * p0 / (2.0 * m) + esum + V
+        if not math.isfinite(h):
+            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
+        drift = max(drift, abs(h - h0) / h0)
+        if abort_drift > 0.0 and drift > abort_drift:
+            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
         contact += frac * dt
         if frac > 0.0:
             w = frac * dt
@@ -258,8 +293,18 @@ def _one(
     ``out_Q[b]``, ``out_P[b]`` hold the member's initial modal state and receive its final one.
     """
     N = omega.size
+    # Substeps of equal weight share one rotation (Yoshida's first and last): fewer arrays to
+    # keep in cache.
+    rot_of = np.arange(weights.size)
+    for s in range(weights.size):
+        for r in range(s):
+            if weights[r] == weights[s]:
+                rot_of[s] = rot_of[r]
+                break
     rotations = np.empty((weights.size, 3, N))
     for s in range(weights.size):
+        if rot_of[s] != s:
+            continue
         for k in range(N):
             arg = omega[k] * (weights[s] * dt[b])
             sn = math.sin(arg)
@@ -278,6 +323,7 @@ def _one(
         quad,
         weights,
         rotations,
+        rot_of,
         max_steps,
         abort_drift,
         stop_log,
@@ -385,7 +431,7 @@ def run_batch(
     # Modes sorted by order (stable, so each order keeps its original sequence); results are
     # mapped back to the caller's order at the end.
     perm = np.argsort(quad.column, kind="stable")
-    starts = np.searchsorted(quad.column[perm], np.arange(quad.n_orders + 1)).astype(np.int64)
+    starts = np.searchsorted(quad.column[perm], np.arange(quad.n_orders + 1)).astype(np.uint64)
     out_Q = np.zeros((B, N)) if Q0 is None else np.array(np.asarray(Q0, float)[:, perm])
     out_P = np.zeros((B, N)) if P0 is None else np.array(np.asarray(P0, float)[:, perm])
     out_e = np.zeros((B, N))
