@@ -184,16 +184,21 @@ def huge(rounds: int) -> None:
     print(f"  {_load()}")
 
 
-def _baseline_kernel(rev: str):
-    """``restitution.kernel`` of revision ``rev``, as module ``baseline_kernel``."""
+def _git_show(rev: str, name: str) -> str:
+    """Source of ``src/restitution/<name>.py`` at revision ``rev``."""
     root = Path(__file__).resolve().parent.parent
-    text = subprocess.run(
-        ["git", "show", f"{rev}:src/restitution/kernel.py"],
+    return subprocess.run(
+        ["git", "show", f"{rev}:src/restitution/{name}.py"],
         cwd=root,
         check=True,
         capture_output=True,
         text=True,
     ).stdout
+
+
+def _baseline_kernel(rev: str):
+    """``restitution.kernel`` of revision ``rev``, as module ``baseline_kernel``."""
+    text = _git_show(rev, "kernel")
     tmp = Path(tempfile.mkdtemp(prefix="bench-kernel-"))
     (tmp / "baseline_kernel.py").write_text(text)
     spec = importlib.util.spec_from_file_location("baseline_kernel", tmp / "baseline_kernel.py")
@@ -252,17 +257,9 @@ def kernel(rounds: int, rev: str) -> None:
 
 def _baseline_modes(rev: str):
     """``compute_modes`` of revision ``rev`` (its modes.py and frequency_equation.py)."""
-    root = Path(__file__).resolve().parent.parent
     tmp = Path(tempfile.mkdtemp(prefix="bench-baseline-"))
     for name in ("modes", "frequency_equation"):
-        text = subprocess.run(
-            ["git", "show", f"{rev}:src/restitution/{name}.py"],
-            cwd=root,
-            check=True,
-            capture_output=True,
-            text=True,
-        ).stdout
-        text = text.replace(
+        text = _git_show(rev, name).replace(
             "from restitution.frequency_equation", "from baseline_frequency_equation"
         )
         (tmp / f"baseline_{name}.py").write_text(text)
