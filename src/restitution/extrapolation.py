@@ -660,23 +660,17 @@ def _window_shifts(
 ) -> tuple[float, float]:
     """How far the combined limit moves when the first stage's window loses its least
     asymptotic member and when it loses its most asymptotic one."""
-    if order == "modes_first":
-        keep = np.argsort(n_modes)  # most modes = most asymptotic last
-        least, most = keep[0], keep[-1]
+    # The first stage's axis: N (more modes = more asymptotic) or alpha (harder = more).
+    axis = 1 if order == "modes_first" else 0
+    members = n_modes if axis == 1 else alpha
+    by_order = np.argsort(members)
 
-        def without(j):
-            m = np.arange(n_modes.size) != j
-            return combined_limit(
-                alpha, n_modes[m], loss[:, m], order=order, stability=False, **kwargs
-            )
-    else:
-        keep = np.argsort(alpha)  # hardest wall = most asymptotic last
-        least, most = keep[0], keep[-1]
+    def shift(j: int) -> float:
+        grid = dict(alpha=alpha, n_modes=n_modes)
+        grid["n_modes" if axis == 1 else "alpha"] = np.delete(members, j)
+        reduced = combined_limit(
+            **grid, loss=np.delete(loss, j, axis=axis), order=order, stability=False, **kwargs
+        )
+        return abs(reduced.limit - limit)
 
-        def without(j):
-            m = np.arange(alpha.size) != j
-            return combined_limit(
-                alpha[m], n_modes, loss[m], order=order, stability=False, **kwargs
-            )
-
-    return abs(without(least).limit - limit), abs(without(most).limit - limit)
+    return shift(by_order[0]), shift(by_order[-1])
