@@ -16,17 +16,19 @@ path (:mod:`restitution.integrators`, :mod:`restitution.wall` and ``collision._r
 
 Only the summation order of reductions and the merged kicks differ from the NumPy path, so the
 two agree to round-off (checked to 1e-12 in ``tests/test_kernel.py``). Members of a batch are
-independent and run in parallel threads (``numba.prange``); each has its own step, so a member's
-result never depends on which other points share its batch.
+independent: a pool of threads (``numba.get_num_threads()`` of them) takes them one at a time,
+and each has its own step, so a member's result never depends on which other points share its
+batch or which thread ran it (the same compiled function runs every member, bit for bit).
 """
 
 from __future__ import annotations
 
 import math
+from concurrent.futures import ThreadPoolExecutor
 
 import numba
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 __all__ = ["CHECK_EVERY", "STATUS_OK", "STATUS_UNSTABLE", "STATUS_TIMEOUT", "run_batch"]
 
@@ -346,35 +348,6 @@ def _one(
     out_scalar[b, 8] = x_end
 
 
-@njit(cache=True, parallel=True, fastmath=_FAST)
-def _batch_parallel(
-    v, alpha, x_start, dt, t_max, omega, mass, cos_phi, weight, trig, C, S, starts, g_max,
-    weights, max_steps, abort_drift, stop_log, contact_tol, out_Q, out_P, out_e, out_mean,
-    out_closest, out_scalar,
-):  # fmt: skip
-    # Parallel regions take arrays, not tuples of arrays: the quadrature travels unpacked.
-    quad = (cos_phi, weight, trig, C, S, starts, g_max)
-    for b in prange(v.size):
-        _one(
-            b, v, alpha, x_start, dt, t_max, omega, mass, quad, weights, max_steps, abort_drift,
-            stop_log, contact_tol, out_Q, out_P, out_e, out_mean, out_closest, out_scalar,
-        )  # fmt: skip
-
-
-@njit(cache=True, nogil=True, fastmath=_FAST)
-def _batch_serial(
-    v, alpha, x_start, dt, t_max, omega, mass, cos_phi, weight, trig, C, S, starts, g_max,
-    weights, max_steps, abort_drift, stop_log, contact_tol, out_Q, out_P, out_e, out_mean,
-    out_closest, out_scalar,
-):  # fmt: skip
-    quad = (cos_phi, weight, trig, C, S, starts, g_max)
-    for b in range(v.size):
-        _one(
-            b, v, alpha, x_start, dt, t_max, omega, mass, quad, weights, max_steps, abort_drift,
-            stop_log, contact_tol, out_Q, out_P, out_e, out_mean, out_closest, out_scalar,
-        )  # fmt: skip
-
-
 def run_batch(
     omega: np.ndarray,
     mass: float,
@@ -447,9 +420,6 @@ def run_batch(
         starts,
         np.ascontiguousarray(quad.g_max[perm], dtype=np.float64),
     )
-    # Threads only pay for several members; a single collision runs without the thread pool.
-    # Members differ in cost (slow speeds take many more steps), so the threads take them one
-    # at a time instead of in fixed halves.
     args = (
         np.ascontiguousarray(v, dtype=np.float64),
         np.ascontiguousarray(alpha, dtype=np.float64),
@@ -458,7 +428,7 @@ def run_batch(
         np.ascontiguousarray(t_max, dtype=np.float64),
         np.ascontiguousarray(omega[perm], dtype=np.float64),
         float(mass),
-        *quad_arrays,
+        quad_arrays,
         np.asarray(weights, dtype=np.float64),
         int(max_steps),
         -1.0 if abort_drift is None else float(abort_drift),
@@ -471,12 +441,21 @@ def run_batch(
         out_closest,
         out_scalar,
     )
-    run = _batch_parallel if B > 1 else _batch_serial
-    previous_chunk = numba.set_parallel_chunksize(1)
-    try:
-        run(*args)
-    finally:
-        numba.set_parallel_chunksize(previous_chunk)
+
+    def member(b: int) -> None:
+        _one(b, *args)
+
+    # Members differ in cost (slow speeds take many more steps), so the threads take them one
+    # at a time, in the caller's order; the compiled member releases the GIL. (A numba prange
+    # splits the members into fixed contiguous halves whatever the chunk size, which left one
+    # core idle for a third of a sorted 32-speed batch.)
+    workers = min(numba.get_num_threads(), B)
+    if workers == 1:
+        for b in range(B):
+            member(b)
+    else:
+        with ThreadPoolExecutor(max_workers=workers) as pool:
+            list(pool.map(member, range(B)))
     back = np.empty_like(perm)
     back[perm] = np.arange(N)
     return {
