@@ -14,10 +14,12 @@ batch   32 speeds 0.02-0.3 at alpha = 500 on one mode set (N = 1600): one compil
 large   N = 1e4, v = 0.01, alpha = 1634: compiled kernel against the NumPy path.
 huge    N = 1e5 at v = 1e-4 (alpha = 40 / delta_max): mode build and one collision, in a
         subprocess whose peak memory (max RSS) is reported.
-kernel  The fused kernel against the previous one (``--kernel-rev``, default: the last commit
-        before the fusion), loaded from git under another module name, on the same inputs
-        (captured from ``collide``): one collision at N = 1600, v = 0.1, alpha = 500 and one at
-        N = 1e4, v = 0.01, alpha = 1634; alternating rounds, |eps difference| printed.
+kernel  This kernel against an earlier one (``--kernel-rev``, default: the last commit before
+        the thread-pool batches and written-out wall products; 45e1558 is the last before the
+        fused passes), loaded from git under another module name, on the same inputs (captured
+        from ``collide`` and ``collide_batch``): one collision at N = 1600, v = 0.1,
+        alpha = 500, one at N = 1e4, v = 0.01, alpha = 1634, and the 32-speed batch of "batch";
+        alternating rounds, max |eps difference| printed.
 modes   Building 1e4 modes at nu = 0.33: the scale-free Bessel-pair scan against the previous
         scipy-jv scan, loaded from git (``--baseline-rev``, default: the last commit before
         the change).
@@ -48,7 +50,7 @@ from restitution.sweep import quasistatic_compression  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
 BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
-KERNEL_REV = "45e1558"  # last commit before the fused kernel passes
+KERNEL_REV = "68ac2fc"  # last commit before the thread-pool batches (45e1558: before fusion)
 
 
 def _load() -> str:
@@ -208,8 +210,8 @@ def _baseline_kernel(rev: str):
     return module
 
 
-def _kernel_inputs(modes, v: float, alpha: float):
-    """The arguments of the last ``run_batch`` call of ``collide`` (its accepted step)."""
+def _kernel_inputs(modes, v, alpha):
+    """The arguments of the last ``run_batch`` call of ``collide_batch`` (its accepted steps)."""
     import restitution.kernel as kernel
 
     calls = []
@@ -221,7 +223,7 @@ def _kernel_inputs(modes, v: float, alpha: float):
 
     kernel.run_batch = spy
     try:
-        collide(modes, v, alpha, backend="compiled")
+        collide_batch(modes, v, alpha, backend="compiled")
     finally:
         kernel.run_batch = run
     return calls[-1]
@@ -230,11 +232,21 @@ def _kernel_inputs(modes, v: float, alpha: float):
 def kernel(rounds: int, rev: str) -> None:
     import restitution.kernel as new
 
-    print(f"== fused kernel against the kernel of {rev}, same inputs; {_load()}")
+    print(f"== this kernel against the kernel of {rev}, same inputs; {_load()}")
     old = _baseline_kernel(rev)
     args, kwargs = _kernel_inputs(get_modes(NU, count=20), V, ALPHA)
     old.run_batch(*args, **kwargs)  # compile (or load) outside the timing
-    for n, v, alpha in ((1600, 0.1, 500.0), (10_000, 0.01, 1634.0)):
+    cases = (
+        ("one collision, N = 1600, v = 0.1, alpha = 500", 1600, V, ALPHA),
+        ("one collision, N = 1e4, v = 0.01, alpha = 1634", 10_000, 0.01, 1634.0),
+        (
+            "32 speeds 0.02-0.3 batched, N = 1600, alpha = 500",
+            1600,
+            np.linspace(0.02, 0.3, 32),
+            ALPHA,
+        ),
+    )
+    for label, n, v, alpha in cases:
         args, kwargs = _kernel_inputs(get_modes(NU, count=n), v, alpha)
         times: dict[str, list[float]] = {"old": [], "new": []}
         sides = [("old", old.run_batch), ("new", new.run_batch)]
@@ -244,15 +256,16 @@ def kernel(rounds: int, rev: str) -> None:
             for name, run in sides if i % 2 == 0 else sides[::-1]:
                 t, out[name] = _timed(lambda run=run, a=args, kw=kwargs: run(*a, **kw))
                 times[name].append(t)
-            d_eps = abs(out["old"]["epsilon"][0] - out["new"]["epsilon"][0])
+            d_eps = np.max(np.abs(out["old"]["epsilon"] - out["new"]["epsilon"]))
+            same_steps = np.array_equal(out["old"]["steps"], out["new"]["steps"])
             print(
-                f"  N = {n}, v = {v}, alpha = {alpha:g}, round {i + 1}: "
-                f"old {times['old'][-1]:.3f} s, new {times['new'][-1]:.3f} s, "
-                f"{out['new']['steps'][0]} steps (old "
-                f"{out['old']['steps'][0]}), |eps difference| {d_eps:.1e}; {_load()}",
+                f"  {label}, round {i + 1}: old {times['old'][-1]:.3f} s, "
+                f"new {times['new'][-1]:.3f} s, {out['new']['steps'].sum()} steps "
+                f"({'same' if same_steps else 'NOT the same'} as old), "
+                f"max |eps difference| {d_eps:.1e}; {_load()}",
                 flush=True,
             )
-        _summary(f"N = {n}: old / new", list(np.array(times["old"]) / np.array(times["new"])))
+        _summary(f"{label}: old / new", list(np.array(times["old"]) / np.array(times["new"])))
 
 
 def _baseline_modes(rev: str):

@@ -62,6 +62,68 @@ def _order_sums(Q, C, S, starts, ab):
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
+def _rows_dot(trig, J, ab, x):
+    """``x[j] = trig[j] . ab`` for ``j < J``, four rows at a time (four independent sums
+    sharing each load of ``ab``)."""
+    K2 = ab.size
+    j = 0
+    while j + 4 <= J:
+        r0 = trig[j]
+        r1 = trig[j + 1]
+        r2 = trig[j + 2]
+        r3 = trig[j + 3]
+        s0 = 0.0
+        s1 = 0.0
+        s2 = 0.0
+        s3 = 0.0
+        for i in range(K2):
+            t = ab[i]
+            s0 += r0[i] * t
+            s1 += r1[i] * t
+            s2 += r2[i] * t
+            s3 += r3[i] * t
+        x[j] = s0
+        x[j + 1] = s1
+        x[j + 2] = s2
+        x[j + 3] = s3
+        j += 4
+    while j < J:
+        row = trig[j]
+        s0 = 0.0
+        for i in range(K2):
+            s0 += row[i] * ab[i]
+        x[j] = s0
+        j += 1
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _rows_sum(e, trig, J, cs):
+    """``cs = sum_{j < J} e[j] trig[j]``, four rows per pass over ``cs``."""
+    K2 = cs.size
+    for i in range(K2):
+        cs[i] = 0.0
+    j = 0
+    while j + 4 <= J:
+        r0 = trig[j]
+        r1 = trig[j + 1]
+        r2 = trig[j + 2]
+        r3 = trig[j + 3]
+        e0 = e[j]
+        e1 = e[j + 1]
+        e2 = e[j + 2]
+        e3 = e[j + 3]
+        for i in range(K2):
+            cs[i] += e0 * r0[i] + e1 * r1[i] + e2 * r2[i] + e3 * r3[i]
+        j += 4
+    while j < J:
+        row = trig[j]
+        ej = e[j]
+        for i in range(K2):
+            cs[i] += ej * row[i]
+        j += 1
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
 def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, x, e):
     """Wall potential ``V`` and force ``F`` from the per-order amplitudes ``ab``.
 
@@ -81,8 +143,10 @@ def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, x, e):
     if J == 0:
         cs[:] = 0.0
         return 0.0, 0.0
-    # The two products over the active nodes are BLAS matrix-vector products (gemv).
-    np.dot(trig[:J], ab, x[:J])
+    # The two products over the active nodes are written out, four rows at a time, instead of
+    # BLAS gemv calls: as fast on one thread, and BLAS called from both threads of a batch
+    # contends (old / new 1.09-1.22x on the 32-speed batch, benchmarks/bench_kernel.py).
+    _rows_dot(trig, J, ab, x)
     F = 0.0
     # The prefix bound J is loose; past the last node whose exponent exceeds -_NEGLIGIBLE the
     # terms are below exp(-40) of the force and the second product can stop there.
@@ -97,7 +161,7 @@ def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, x, e):
     if last == 0:
         cs[:] = 0.0
     else:
-        np.dot(e[:last], trig[:last], cs)
+        _rows_sum(e, trig, last, cs)
     return F / alpha, F
 
 
