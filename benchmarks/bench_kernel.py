@@ -234,8 +234,12 @@ def kernel(rounds: int, rev: str) -> None:
 
     print(f"== this kernel against the kernel of {rev}, same inputs; {_load()}")
     old = _baseline_kernel(rev)
-    args, kwargs = _kernel_inputs(get_modes(NU, count=20), V, ALPHA)
-    old.run_batch(*args, **kwargs)  # compile (or load) outside the timing
+    # Compile (or load) both sides outside the timing, single and batched (the old kernel has
+    # a separate parallel function for batches).
+    for v in (V, [V, 2 * V]):
+        args, kwargs = _kernel_inputs(get_modes(NU, count=20), v, ALPHA)
+        old.run_batch(*args, **kwargs)
+        new.run_batch(*args, **kwargs)
     cases = (
         ("one collision, N = 1600, v = 0.1, alpha = 500", 1600, V, ALPHA),
         ("one collision, N = 1e4, v = 0.01, alpha = 1634", 10_000, 0.01, 1634.0),
