@@ -85,3 +85,62 @@ def test_backend_choice():
         collide(modes, 0.1, 500.0, integrator="rk4", backend="compiled")
     with pytest.raises(InputError, match="unknown backend"):
         CollisionSettings(backend="gpu")
+
+
+def _split_runs(monkeypatch, modes, v, alpha, **kw):
+    """The same collision on one thread and split over two (kernel.SPLIT_MIN_MODES lowered);
+    returns ({threads: result}, {threads: parts run})."""
+    import restitution.kernel as kernel
+
+    monkeypatch.setattr(kernel, "SPLIT_MIN_MODES", 100)
+    one = kernel._one
+    results, parts = {}, {}
+    for threads in (1, 2):
+        seen = []
+
+        def spy(b, part, *args, seen=seen):
+            seen.append(part)
+            return one(b, part, *args)
+
+        monkeypatch.setattr(kernel, "_one", spy)
+        monkeypatch.setattr(kernel, "_threads", lambda t=threads: t)
+        results[threads] = collide(modes, v, alpha, backend="compiled", **kw)
+        parts[threads] = sorted(seen)
+    return results, parts
+
+
+def test_two_threads_give_one_threads_collision_bit_for_bit(monkeypatch):
+    # One large collision runs on two threads, one group of orders each, meeting at every
+    # wall evaluation; the grouping depends on the mode set only, so the bits are the same.
+    modes = get_modes(0.33, count=300)
+    results, parts = _split_runs(monkeypatch, modes, 0.02, 3000.0)
+    assert parts == {1: [-1], 2: [0, 1]}  # really split
+    one, two = results[1], results[2]
+    assert one.epsilon == two.epsilon
+    for name in ARRAYS:
+        assert_array_equal(getattr(one, name), getattr(two, name), err_msg=name)
+    for name in FIELDS:
+        assert getattr(one, name) == getattr(two, name), name
+    _assert_same(two, collide(modes, 0.02, 3000.0, backend="numpy"))
+
+
+def test_two_threads_stop_together_on_a_timeout(monkeypatch):
+    # Every decision (here: out of steps) is taken by both threads from the same sums, so
+    # neither is left waiting for the other, and both modes stop at the same step.
+    import restitution.kernel as kernel
+
+    monkeypatch.setattr(kernel, "SPLIT_MIN_MODES", 100)
+    calls = []
+    run = kernel.run_batch
+    monkeypatch.setattr(kernel, "run_batch", lambda *a: calls.append(a) or run(*a))
+    collide(get_modes(0.33, count=300), 0.02, 3000.0, backend="compiled")
+    args = list(calls[-1])
+    args[9] = 50  # max_steps
+    got = {}
+    for threads in (1, 2):
+        monkeypatch.setattr(kernel, "_threads", lambda t=threads: t)
+        got[threads] = run(*args)
+    for threads in (1, 2):
+        assert got[threads]["status"][0] == kernel.STATUS_TIMEOUT
+        assert got[threads]["steps"][0] == 50
+    assert_array_equal(got[1]["final_Q"], got[2]["final_Q"])
