@@ -51,9 +51,11 @@ SPLIT_MIN_MODES = 2000
 """A single collision with at least this many modes runs on two threads when numba has two
 (measured in ``benchmarks/bench_kernel.py``; below it the meetings cost more than they save)."""
 
-# Cost of one order column in the wall products of a step, in modes' worth of mode passes
-# (three wall evaluations over ~170 active rows against four passes over the modes, N = 1e4).
-_COLUMN_COST = 30.0
+# Work of one order between two meetings, in modes' worth: its two columns of the second wall
+# product (about 80 rows at N = 1e4, about 0.13 ns per element) against 4/3 passes over a mode
+# (about 1.2 ns each) per wall evaluation. The first product is split by columns instead
+# (_dot_split). Only speed depends on it; spin counts at 8, 15 and 30 were within the noise.
+_COLUMN_COST = 12.0
 
 # Nodes whose exponent is certainly below -_NEGLIGIBLE are skipped (see wall.active_nodes).
 _NEGLIGIBLE = 40.0
@@ -197,17 +199,18 @@ def _rows_sum(e, trig, J, cs, c0, c1):
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, g0, g1, sync):
+def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, dcols, g0, g1, sync):
     """Wall potential ``V`` and force ``F`` from the per-order amplitudes ``ab``.
 
-    The orders form two groups; group ``g`` has the orders ``cols[g] <= i <
-    cols[g + 1]`` and the contiguous columns ``ucols[g] <= c < ucols[g + 1]`` (``ucols = 2
-    cols``) of ``trig``, ``ab`` and ``cs``: first its cosine, then its sine columns (see
+    The orders form two groups; group ``g`` has the orders ``cols[g] <= i < cols[g + 1]``
+    and the contiguous columns ``ucols[g] <= c < ucols[g + 1]`` (``ucols = 2 cols``) of
+    ``trig``, ``ab`` and ``cs``: first its cosine, then its sine columns (see
     :func:`_order_sums`). This call writes the per-order cosine/sine sums ``cs`` of the edge
     force for this thread's groups ``g0 <= g < g1``; the generalised force of mode ``k`` of
     order ``i`` in group ``[lo, hi)`` is ``C_k cs[lo + i] + S_k cs[hi + i]`` (formed where it is
-    used, never stored).
-    ``e`` is a work array of the quadrature's size.
+    used, never stored). The first product, the edge displacement, is summed in two parts over
+    the columns ``dcols[p] <= c < dcols[p + 1]`` (:func:`_dot_split`), part ``p`` by thread
+    ``p`` when two threads share the collision. ``e`` is a work array of the quadrature's size.
 
     Both groups' partial sums meet in ``sync = (flags, me, nthreads, red, xs)`` (see
     :func:`_meet`) and are always added in group order, so the result is the same whether one
@@ -236,9 +239,9 @@ def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, g0, g1, sync):
     # contends (old / new 1.09-1.22x on the 32-speed batch, benchmarks/bench_kernel.py).
     par = (flags[me * LINE] + 1) & 1
     if g1 - g0 == 2:
-        _rows_dot2(trig, J, ab, xs[par, 0], xs[par, 1], ucols[0], ucols[1], ucols[2])
+        _rows_dot2(trig, J, ab, xs[par, 0], xs[par, 1], dcols[0], dcols[1], dcols[2])
     else:
-        _rows_dot(trig, J, ab, xs[par, g0], ucols[g0], ucols[g1])
+        _rows_dot(trig, J, ab, xs[par, g0], dcols[g0], dcols[g1])
     barrier(flags, me, nthreads)
     x_a = xs[par, 0]
     x_b = xs[par, 1]
@@ -346,6 +349,7 @@ def _member(
     out_e,
     out_mean,
     out_closest,
+    ab,
     g0,
     g1,
     sync,
@@ -359,7 +363,8 @@ def _member(
     in ``sync`` to add their partial wall and energy sums (:func:`_wall`, :func:`_meet`). The
     centre of mass, the bookkeeping and every decision are computed by both threads from the
     same sums, so they take the same path and return the same result, bit for bit, as one
-    thread would.
+    thread would. ``ab`` (the per-order amplitudes, in the columns of ``trig``) is shared:
+    each thread writes its groups' columns, and the first wall product reads them all.
 
     A step of ``n`` Strang substeps makes ``n + 1`` passes over the modes: ``n`` of
     :func:`_kick_flow` (the closing half kick of a substep and the opening half kick of the
@@ -369,12 +374,11 @@ def _member(
     closest copy stay flat loops over ``out_e`` after the stability tests (fused into the
     closing pass they were slower and would touch them before an unstable return).
     """
-    cos_phi, weight, trig, C, S, starts, g_max, cols, ucols = quad
+    cos_phi, weight, trig, C, S, starts, g_max, cols, ucols, dcols = quad
     K2 = trig.shape[1]
     M = cos_phi.size
     k0 = starts[cols[g0]]
     k1 = starts[cols[g1]]
-    ab = np.zeros(K2)
     cs = np.zeros(K2)
     ew = np.empty(M)
     parts = np.zeros(2)
@@ -385,7 +389,7 @@ def _member(
     for g in range(g0, g1):
         lo, hi = cols[g], cols[g + 1]
         _order_sums(Q, C, S, starts[lo : hi + 1], ab[2 * lo : 2 * hi])
-    V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, g0, g1, sync)
+    V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, dcols, g0, g1, sync)
     for g in range(g0, g1):
         h = 0.0
         for k in range(starts[cols[g]], starts[cols[g + 1]]):
@@ -427,7 +431,7 @@ def _member(
                     ab[2 * lo : 2 * hi],
                 )
             x0 = x0 + p0 * (h_dt / m)
-            V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, g0, g1, sync)
+            V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, dcols, g0, g1, sync)
             t = t + h_dt
             if s + 1 < n_sub:
                 kick = 0.5 * h_dt + 0.5 * (weights[s + 1] * dt)
@@ -506,7 +510,7 @@ def _one(
 
     ``part`` is -1 for a member run by one thread (both groups of orders); 0 or 1 for the two
     threads that share a member, each advancing one group and meeting the other through the
-    ``shared`` arrays ``(flags, red, xs)`` (fresh zeros, unused when ``part`` is -1).
+    ``shared`` arrays ``(flags, red, xs, ab)`` (fresh zeros, unused when ``part`` is -1).
     ``out_Q[b]``, ``out_P[b]`` hold the member's initial modal state and receive its final one.
     """
     N = omega.size
@@ -518,9 +522,10 @@ def _one(
         flags = np.zeros(2 * LINE, dtype=np.int64)
         red = np.zeros((2, 2, 4))
         xs = np.zeros((2, 2, M))
+        ab = np.zeros(quad[2].shape[1])
     else:
         g0, g1, me, nthreads = part, part + 1, part, 2
-        flags, red, xs = shared
+        flags, red, xs, ab = shared
     sync = (flags, me, nthreads, red, xs)
     # Substeps of equal weight share one rotation (Yoshida's first and last): fewer arrays to
     # keep in cache. Each thread fills the rotations of its own modes only.
@@ -562,6 +567,7 @@ def _one(
         out_e[b],
         out_mean[b],
         out_closest[b],
+        ab,
         g0,
         g1,
         sync,
@@ -600,6 +606,19 @@ def _order_groups(counts: np.ndarray) -> np.ndarray:
     cost = np.cumsum(counts + _COLUMN_COST)
     kc = int(np.searchsorted(cost, 0.5 * cost[-1]))
     return np.array([0, kc, K], dtype=np.int64)
+
+
+def _dot_split(cols: np.ndarray) -> np.ndarray:
+    """Column ranges of the two partial sums of the first wall product, ``[0, D, 2K]``.
+
+    Split at the middle column rather than between the order groups: all of ``ab`` is
+    published before that product, and equal halves keep the two threads level between
+    meetings (split by order groups, the thread with fewer columns waited at every wall
+    evaluation). No split (``D = 2K``) when the second group is empty.
+    """
+    K = int(cols[-1])
+    middle = K if cols[1] < K else 2 * K
+    return np.array([0, middle, 2 * K], dtype=np.uint64)
 
 
 def _group_columns(cols: np.ndarray) -> np.ndarray:
@@ -689,6 +708,7 @@ def run_batch(
         np.ascontiguousarray(quad.g_max[perm], dtype=np.float64),
         cols,
         (2 * cols).astype(np.uint64),
+        _dot_split(cols),
     )
     args = (
         np.ascontiguousarray(v, dtype=np.float64),
@@ -718,6 +738,7 @@ def run_batch(
             np.zeros(2 * LINE, dtype=np.int64),
             np.zeros((2, 2, 4)),
             np.zeros((2, 2, quad.cos_phi.size)),
+            np.zeros(quad_arrays[2].shape[1]),
         )
         with ThreadPoolExecutor(max_workers=2) as pool:
             list(pool.map(lambda part: _one(0, part, *args, shared), (0, 1)))
@@ -727,7 +748,12 @@ def run_batch(
         # releases the GIL. (A numba prange splits the members into fixed contiguous halves
         # whatever the chunk size, which left one core idle for a third of a sorted 32-speed
         # batch.)
-        unused = (np.zeros(2 * LINE, dtype=np.int64), np.zeros((2, 2, 4)), np.zeros((2, 2, 1)))
+        unused = (
+            np.zeros(2 * LINE, dtype=np.int64),
+            np.zeros((2, 2, 4)),
+            np.zeros((2, 2, 1)),
+            np.zeros(1),
+        )
 
         def member(b: int) -> None:
             _one(b, -1, *args, unused)
