@@ -238,7 +238,10 @@ def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, dcols, g0, g1, syn
     # BLAS gemv calls: as fast on one thread, and BLAS called from both threads of a batch
     # contends (old / new 1.09-1.22x on the 32-speed batch, benchmarks/bench_kernel.py).
     par = (flags[me * LINE] + 1) & 1
-    if g1 - g0 == 2:
+    if dcols[1] == dcols[2]:
+        # No second part (fewer than SPLIT_MIN_MODES modes): xs[., 1] stays zero.
+        _rows_dot(trig, J, ab, xs[par, 0], dcols[0], dcols[2])
+    elif g1 - g0 == 2:
         _rows_dot2(trig, J, ab, xs[par, 0], xs[par, 1], dcols[0], dcols[1], dcols[2])
     else:
         _rows_dot(trig, J, ab, xs[par, g0], dcols[g0], dcols[g1])
@@ -417,6 +420,8 @@ def _member(
             r = rot_of[s]
             for g in range(g0, g1):
                 lo, hi = cols[g], cols[g + 1]
+                if lo == hi:
+                    continue
                 _kick_flow(
                     kick,
                     Q,
@@ -449,6 +454,8 @@ def _member(
             frac = 0.0
         for g in range(g0, g1):
             lo, hi = cols[g], cols[g + 1]
+            if lo == hi:
+                continue  # parts[g] stays 0.0
             parts[g] = _close(
                 half, Q, P, C, S, starts[lo : hi + 1], cs[2 * lo : 2 * hi], omega, m, out_e
             )
