@@ -11,15 +11,17 @@ single  One collision, nu = 0.33, v = 0.1, alpha = 500, 1600 lowest modes, |eps 
         order-by-order wall evaluation as the modal solver.
 batch   32 speeds 0.02-0.3 at alpha = 500 on one mode set (N = 1600): one compiled batch
         against DOP853 one collision at a time (8 of the 32 speeds timed, times 4).
-large   N = 1e4, v = 0.01, alpha = 1634: compiled kernel against the NumPy path.
+large   N = 1e4, v = 0.01, alpha = 1634: compiled kernel against the NumPy path; the kernel
+        both as it runs (two threads when numba has two) and on one thread. The NumPy path gets
+        one BLAS thread unless OPENBLAS_NUM_THREADS is set (set it to 2 to give it both cores).
 huge    N = 1e5 at v = 1e-4 (alpha = 40 / delta_max): mode build and one collision, in a
         subprocess whose peak memory (max RSS) is reported.
 kernel  This kernel against an earlier one (``--kernel-rev``, default: the last commit before
-        the thread-pool batches and written-out wall products; 45e1558 is the last before the
-        fused passes), loaded from git under another module name, on the same inputs (captured
-        from ``collide`` and ``collide_batch``): one collision at N = 1600, v = 0.1,
-        alpha = 500, one at N = 1e4, v = 0.01, alpha = 1634, and the 32-speed batch of "batch";
-        alternating rounds, max |eps difference| printed.
+        single collisions on two threads; 68ac2fc is the last before the thread-pool batches,
+        45e1558 the last before the fused passes), loaded from git under another module name,
+        on the same inputs (captured from ``collide`` and ``collide_batch``): one collision at
+        N = 1600, v = 0.1, alpha = 500, one at N = 1e4, v = 0.01, alpha = 1634, and the
+        32-speed batch of "batch"; alternating rounds, max |eps difference| printed.
 modes   Building 1e4 modes at nu = 0.33: the scale-free Bessel-pair scan against the previous
         scipy-jv scan, loaded from git (``--baseline-rev``, default: the last commit before
         the change).
@@ -50,7 +52,7 @@ from restitution.sweep import quasistatic_compression  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
 BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
-KERNEL_REV = "68ac2fc"  # last commit before the thread-pool batches (45e1558: before fusion)
+KERNEL_REV = "84c90a9"  # last commit before two-thread single collisions (68ac2fc: batches)
 
 
 def _load() -> str:
@@ -150,19 +152,34 @@ def batch(rounds: int) -> None:
 
 
 def large(rounds: int) -> None:
-    print(f"== N = 1e4, v = 0.01, alpha = 1634; {_load()}")
+    import numba
+
+    threads = numba.get_num_threads()
+    blas = os.environ.get("OPENBLAS_NUM_THREADS")
+    print(f"== N = 1e4, v = 0.01, alpha = 1634; NumPy path with {blas} BLAS thread(s); {_load()}")
     modes = get_modes(NU, count=10_000)
-    ratios = []
+    times: dict[str, list[float]] = {"compiled": [], "one thread": [], "numpy": []}
     for i in range(rounds):
         t_c, rc = _timed(lambda: collide(modes, 0.01, 1634.0, backend="compiled"))
+        numba.set_num_threads(1)
+        try:
+            t_1, r1 = _timed(lambda: collide(modes, 0.01, 1634.0, backend="compiled"))
+        finally:
+            numba.set_num_threads(threads)
         t_n, rn = _timed(lambda: collide(modes, 0.01, 1634.0, backend="numpy"))
-        ratios.append(t_n / t_c)
+        for name, t in (("compiled", t_c), ("one thread", t_1), ("numpy", t_n)):
+            times[name].append(t)
         print(
-            f"  round {i + 1}: compiled {t_c:.2f} s, numpy {t_n:.2f} s, {rc.n_steps} steps, "
-            f"|eps difference| {abs(rc.epsilon - rn.epsilon):.1e}; {_load()}",
+            f"  round {i + 1}: compiled {t_c:.2f} s ({threads} threads), on one thread "
+            f"{t_1:.2f} s, numpy {t_n:.2f} s, {rc.n_steps} steps, |eps difference| "
+            f"{abs(rc.epsilon - rn.epsilon):.1e}, one thread / two bit for bit: "
+            f"{rc.epsilon == r1.epsilon}; {_load()}",
             flush=True,
         )
-    _summary("numpy / compiled", ratios)
+    t = {name: np.array(v) for name, v in times.items()}
+    _summary(f"numpy / compiled ({threads} threads)", list(t["numpy"] / t["compiled"]))
+    _summary("numpy / compiled on one thread", list(t["numpy"] / t["one thread"]))
+    _summary("compiled: one thread / as run", list(t["one thread"] / t["compiled"]))
 
 
 _HUGE = """
