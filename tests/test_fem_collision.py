@@ -143,7 +143,7 @@ def test_fem_agrees_with_modal_extrapolation_at_nu_033():
 
 # At nu = 0.9, v = 0.3 the window 800-3200 fails the extrapolation's own checks (dropping
 # N = 800 moves the limit by 1.0e-3; the slope changes by 211%), so it cannot be the test's
-# reference. The next window, 1600-6400, passes them (measured, issue 14): losses 0.4382484,
+# reference. The next window, 1600-6400, passes them (measured): losses 0.4382484,
 # 0.4367624, 0.4357336 at N = 1600, 3200, 6400; eps = 0.7528530 +- 2.9e-5.
 MODAL_COUNTS_NU09 = [1600, 3200, 6400]
 
@@ -151,7 +151,7 @@ MODAL_COUNTS_NU09 = [1600, 3200, 6400]
 @pytest.mark.slow
 @pytest.mark.xfail(
     strict=True,
-    reason="open (issue 14): the modal fit over N = 1600-6400 passes its own checks, but "
+    reason="open: the modal fit over N = 1600-6400 passes its own checks, but "
     "eps = 0.7528530 +- 2.9e-5 lies 2.27 combined errors above the FEM's 0.7526889 +- 6.6e-5 "
     "(measured, 263 s); windows 400-1600, 800-3200, 1600-6400 give 0.75163, 0.75221, 0.75285: "
     "the 1/sqrt(N) limit still drifts with N at nu = 0.9, v = 0.3",
