@@ -21,9 +21,9 @@ paper: $(STAMP)
 paper-quick: $(STAMP)
 	$(BIN)/restitution paper --quick --out $(OUT)
 
-# Recompute the shipped epsilon(v) laws (src/restitution/data) with the current code.
+# Recompute the shipped epsilon(v) laws (src/restitution/laws/data) with the current code.
 law: $(STAMP)
-	$(BIN)/python -m restitution.production --figures docs/figures
+	$(BIN)/python -m restitution.laws.production --figures docs/figures
 
 test: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q

@@ -2,7 +2,7 @@
 
 Setting of issue 3: nu = 0.33, v = 0.1, alpha = 500, 1600 lowest modes. Both solvers integrate
 the same Hamiltonian with the same edge nodes; the baseline evaluates the wall terms the
-straightforward way (dense g_k(phi_j) matrix, restitution.reference). The reference epsilon
+straightforward way (dense g_k(phi_j) matrix, restitution.dynamics.reference). The reference epsilon
 comes from split4 at a tiny energy tolerance. Each solver's tolerance (our energy_tol, DOP853's
 rtol) is tightened tenfold from a loose start until its epsilon is within 1e-6 of the
 reference, and the times of those runs are compared. Also printed: our default settings, and
@@ -23,7 +23,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from restitution import collide, collide_batch, get_modes  # noqa: E402
-from restitution.reference import collide_dop853  # noqa: E402
+from restitution.dynamics.reference import collide_dop853  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
 

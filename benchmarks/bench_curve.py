@@ -1,7 +1,7 @@
 """Benchmark: the full Fig. 1 grid from a cold (temporary) result store.
 
 Both Poisson numbers (0.33, 0.9) x the paper's velocities x the default alpha and N sets of
-:data:`restitution.sweep.DEFAULTS`, on local processes (all cores) unless ``--workers`` or
+:data:`restitution.limits.sweep.DEFAULTS`, on local processes (all cores) unless ``--workers`` or
 ``--scheduler`` says otherwise. Prints the total time, collisions per second, and epsilon at
 every speed. The budget of the issue is 10 minutes on a 2-core machine.
 
@@ -24,17 +24,17 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from restitution.curves import compute_curves
-from restitution.store import Store
-from restitution.sweep import DEFAULTS
+from restitution.limits.curves import compute_curves
+from restitution.limits.store import Store
+from restitution.limits.sweep import DEFAULTS
 
 BUDGET_S = 600.0
 
 
 def numpy_points(specs):
     """Sweep task on the NumPy reference path (the production path before the kernel)."""
-    from restitution.cache import get_modes
-    from restitution.collision import CollisionSettings, collide_batch
+    from restitution.bodies.cache import get_modes
+    from restitution.dynamics.collision import CollisionSettings, collide_batch
 
     first = specs[0]
     settings = CollisionSettings(

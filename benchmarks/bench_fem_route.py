@@ -24,12 +24,12 @@ import sys
 import time
 from pathlib import Path
 
-from restitution.extrapolation import epsilon_from_loss
+from restitution.bodies.material import Material
 from restitution.fem.graded import graded_settings, mesh_summary
 from restitution.fem.impact import fem_collide, model_for
 from restitution.fem.richardson import richardson_limit
-from restitution.material import Material
-from restitution.sweep import quasistatic_compression
+from restitution.limits.extrapolation import epsilon_from_loss
+from restitution.limits.sweep import quasistatic_compression
 
 sys.path.insert(0, str(Path(__file__).parent))
 from bench_fem_vs_modal import modal_until  # noqa: E402

@@ -4,7 +4,7 @@ Both methods refine until their own error estimate of epsilon is below ``--tol``
 
 * FEM: mesh levels 0, 1, 2, ...; error = last Cauchy difference |eps_K - eps_(K-1)|.
 * modal: N = 100, 200, 400, ... lowest modes; 1 - eps^2 extrapolated linearly in 1/sqrt(N)
-  through the last three N (:func:`restitution.extrapolation.extrapolate_modes`); error = the
+  through the last three N (:func:`restitution.limits.extrapolation.extrapolate_modes`); error = the
   extrapolation's error estimate, accepted only when the fit looks asymptotic.
 
 The time of a method is the sum over its sequence (a user needs the whole sequence for the
@@ -24,11 +24,11 @@ import warnings
 
 import numpy as np
 
-from restitution.collision import collide
-from restitution.extrapolation import epsilon_from_loss, extrapolate_modes
+from restitution.bodies.disk.modes import compute_modes
+from restitution.bodies.material import Material
+from restitution.dynamics.collision import collide
 from restitution.fem import fem_collide
-from restitution.material import Material
-from restitution.modes import compute_modes
+from restitution.limits.extrapolation import epsilon_from_loss, extrapolate_modes
 
 
 def fem_until(material: Material, v: float, alpha: float, tol: float, max_level: int):

@@ -7,7 +7,7 @@ single  One collision, nu = 0.33, v = 0.1, alpha = 500, 1600 lowest modes, |eps 
         Each solver's tolerance is first tightened tenfold until its epsilon is within 1e-6 of a
         reference (split4 at energy_tol 1e-10); then those settings are timed. Sides: the
         compiled kernel, the NumPy reference path, scipy's DOP853 with a dense right-hand side
-        (restitution.reference, as a user would write it) and DOP853 given the same
+        (restitution.dynamics.reference, as a user would write it) and DOP853 given the same
         order-by-order wall evaluation as the modal solver.
 batch   32 speeds 0.02-0.3 at alpha = 500 on one mode set (N = 1600): one compiled batch
         against DOP853 one collision at a time (8 of the 32 speeds timed, times 4).
@@ -47,8 +47,8 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from restitution import collide, collide_batch, compute_modes, get_modes  # noqa: E402
-from restitution.reference import collide_dop853  # noqa: E402
-from restitution.sweep import quasistatic_compression  # noqa: E402
+from restitution.dynamics.reference import collide_dop853  # noqa: E402
+from restitution.limits.sweep import quasistatic_compression  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
 BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
@@ -216,7 +216,7 @@ def _git_show(rev: str, name: str) -> str:
 
 
 def _baseline_kernel(rev: str):
-    """``restitution.kernel`` of revision ``rev``, as module ``baseline_kernel``."""
+    """``restitution.dynamics.kernel`` of revision ``rev``, as module ``baseline_kernel``."""
     text = _git_show(rev, "kernel")
     tmp = Path(tempfile.mkdtemp(prefix="bench-kernel-"))
     (tmp / "baseline_kernel.py").write_text(text)
@@ -229,7 +229,7 @@ def _baseline_kernel(rev: str):
 
 def _kernel_inputs(modes, v, alpha):
     """The arguments of the last ``run_batch`` call of ``collide_batch`` (its accepted steps)."""
-    import restitution.kernel as kernel
+    import restitution.dynamics.kernel as kernel
 
     calls = []
     run = kernel.run_batch
@@ -247,7 +247,7 @@ def _kernel_inputs(modes, v, alpha):
 
 
 def kernel(rounds: int, rev: str) -> None:
-    import restitution.kernel as new
+    import restitution.dynamics.kernel as new
 
     print(f"== this kernel against the kernel of {rev}, same inputs; {_load()}")
     old = _baseline_kernel(rev)
@@ -294,7 +294,7 @@ def _baseline_modes(rev: str):
     tmp = Path(tempfile.mkdtemp(prefix="bench-baseline-"))
     for name in ("modes", "frequency_equation"):
         text = _git_show(rev, name).replace(
-            "from restitution.frequency_equation", "from baseline_frequency_equation"
+            "from restitution.bodies.disk.frequency_equation", "from baseline_frequency_equation"
         )
         (tmp / f"baseline_{name}.py").write_text(text)
     sys.path.insert(0, str(tmp))

@@ -6,7 +6,7 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.special import jv
 
-from restitution.bessel_ratio import scaled_pairs, scaled_pairs_grid
+from restitution.bodies.disk.bessel_ratio import scaled_pairs, scaled_pairs_grid
 
 
 def _scipy_pairs(n, x):

@@ -7,10 +7,10 @@ import pytest
 from numpy.testing import assert_allclose
 
 from restitution import get_modes
-from restitution.collision import CollisionError, collide, collide_batch
-from restitution.integrators import INTEGRATORS, System, initial_state
-from restitution.reference import collide_dop853
-from restitution.wall import wall_quadrature
+from restitution.dynamics.collision import CollisionError, collide, collide_batch
+from restitution.dynamics.integrators import INTEGRATORS, System, initial_state
+from restitution.dynamics.reference import collide_dop853
+from restitution.dynamics.wall import wall_quadrature
 
 V, ALPHA = 0.1, 500.0
 

@@ -16,11 +16,11 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.special import gamma
 
-from restitution import exports
 from restitution.errors import InputError, RestitutionError
-from restitution.law import EpsilonLaw
-from restitution.si_law import STATUSES, SILaw, si_law
-from restitution.units import Grain
+from restitution.laws import exports
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.si_law import STATUSES, SILaw, si_law
+from restitution.laws.units import Grain
 
 GRAIN = Grain(E=63e9, nu=0.25, rho=2500.0, geometry="thin-disk")  # nu_2d = 0.25
 V = np.linspace(0.005, 0.3, 40)
@@ -290,7 +290,7 @@ def test_distribution_constant_weights_by_dissipation():
 
 
 def test_exports_take_a_law_interpolated_in_nu(tmp_path):
-    from restitution.law_nu import NuInterpolatedLaw, law_for
+    from restitution.laws.law_nu import NuInterpolatedLaw, law_for
 
     grid = [
         EpsilonLaw.from_points(nu, V, closed(V, 0.5 + nu, 1.5, 0.85), np.full(V.size, 1e-4))

@@ -10,7 +10,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from restitution.errors import InputError
-from restitution.extrapolation import (
+from restitution.limits.extrapolation import (
     combined_limit,
     epsilon_from_loss,
     extrapolate_alpha,

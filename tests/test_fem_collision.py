@@ -1,7 +1,7 @@
 """The finite-element impact solver: conservation, mesh convergence, agreement with the modes.
 
 Reference numbers come from runs of :func:`restitution.fem.fem_collide` and of the modal solver
-:func:`restitution.collision.collide` on the development machine (Nov 2026); each is quoted
+:func:`restitution.dynamics.collision.collide` on the development machine (Nov 2026); each is quoted
 where it is used. At nu = 0.33, v = 0.1, alpha = 500 the FEM gives (default mesh family)
 
     refine   dofs    epsilon     1 - eps^2   steps
@@ -106,8 +106,8 @@ def test_bad_input_is_rejected(kwargs):
 def _modal_limit(nu: float, v: float, alpha: float, counts: list[int]):
     """Modal epsilon at the N lowest modes and its N -> infinity limit with error."""
     from restitution import get_modes
-    from restitution.collision import collide
-    from restitution.extrapolation import epsilon_from_loss, extrapolate_modes
+    from restitution.dynamics.collision import collide
+    from restitution.limits.extrapolation import epsilon_from_loss, extrapolate_modes
 
     pool = get_modes(nu, count=max(counts))
     with warnings.catch_warnings():

@@ -25,7 +25,7 @@ from restitution.fem.limits import fem_epsilon
 from restitution.fem.mesh import ARC
 from restitution.fem.reference import ReferencePoint, load_reference
 from restitution.fem.richardson import richardson_limit
-from restitution.sweep import quasistatic_compression
+from restitution.limits.sweep import quasistatic_compression
 
 NU = 0.33
 
@@ -233,8 +233,8 @@ def test_fem_agrees_with_the_modal_route_at_low_speed():
     import warnings
 
     from restitution import get_modes
-    from restitution.collision import collide
-    from restitution.extrapolation import epsilon_from_loss, extrapolate_modes
+    from restitution.dynamics.collision import collide
+    from restitution.limits.extrapolation import epsilon_from_loss, extrapolate_modes
 
     v = 0.01
     alpha = 40.0 / quasistatic_compression(v)
@@ -326,7 +326,7 @@ def test_judge_reports_differences_in_combined_errors_and_coverage():
 
 
 def test_judge_accepts_the_package_law():
-    from restitution.law import law
+    from restitution.laws.law import law
 
     served = law(0.33)
     own = next(p for p in served.points if p.v == 0.1)
@@ -347,7 +347,7 @@ def test_shipped_reference_has_provenance_and_the_issue_points():
     assert all(math.isfinite(p.epsilon) and p.epsilon_err > 0 for p in points)
     from importlib import resources
 
-    path = resources.files("restitution").joinpath("data", "fem_reference.json")
+    path = resources.files("restitution.laws").joinpath("data", "fem_reference.json")
     doc = json.loads(path.read_text())
     assert len(doc["git_commit"]) == 40
     for run in doc["runs"]:
@@ -394,7 +394,7 @@ def test_shipped_reference_point_is_reproduced():
     from importlib import resources
 
     doc = json.loads(
-        resources.files("restitution").joinpath("data", "fem_reference.json").read_text()
+        resources.files("restitution.laws").joinpath("data", "fem_reference.json").read_text()
     )
     stored = next(p for p in doc["points"] if p["nu"] == 0.9 and p["v"] == 0.3)
     again = fem_epsilon(0.9, 0.3, levels=stored["settings"]["levels"])

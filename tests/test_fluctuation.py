@@ -13,8 +13,8 @@ import pytest
 from scipy import stats
 
 from restitution import get_modes
-from restitution.fluctuation import detailed_balance_test, flux_speeds, symmetry_test
-from restitution.vibration import kinetic_energy
+from restitution.vibrating.fluctuation import detailed_balance_test, flux_speeds, symmetry_test
+from restitution.vibrating.vibration import kinetic_energy
 
 N, ALPHA, V_TH, WINDOW = 4, 200.0, 0.1, (0.05, 0.2)
 

@@ -15,7 +15,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from restitution.errors import InputError
-from restitution.hertz import (
+from restitution.quasistatic.hertz import (
     contact_law,
     contact_time_rate,
     quasistatic_collision,
@@ -164,7 +164,7 @@ def test_eq61_is_the_leading_order(paper):
 
 
 def test_fig11_compute_and_plot(tmp_path):
-    from restitution.figures import fig11_contact
+    from restitution.reproduction.figures import fig11_contact
 
     data = fig11_contact.compute(NU, v_min=1e-6, n_v=12, dynamic=([0.1], [5.4]))
     fig11_contact.plot(data, tmp_path / "fig11.png")
@@ -181,8 +181,8 @@ def test_dynamic_contact_time_approaches_quasistatic():
     # quasistatic one of the centre-of-mass law as v decreases. Run 2026-11: tau = 5.449 at
     # v = 0.1 (law 4.994, 9% off) and 6.616 at v = 0.02 (law 6.642, 0.4% off; eq. 57 as
     # printed gives 6.962). docs/quasistatic.md.
-    from restitution.cache import get_modes
-    from restitution.collision import collide
+    from restitution.bodies.cache import get_modes
+    from restitution.dynamics.collision import collide
 
     modes = get_modes(NU, count=200)
     centre = contact_law(NU, "centre")

@@ -27,18 +27,18 @@ import pytest
 
 import restitution
 from restitution import get_modes
-from restitution.cache import MAX_MODES, CacheError, cache_dir
+from restitution.bodies.cache import MAX_MODES, CacheError, cache_dir
 from restitution.cli import _common
-from restitution.collision import (
+from restitution.dynamics.collision import (
     CollisionSettings,
     collide,
     collide_batch,
     estimate_work,
 )
 from restitution.errors import InputError, RestitutionError, SchedulerError
-from restitution.executors import probe_scheduler
-from restitution.store import PointSpec, Store, StoreError
-from restitution.sweep import DEFAULTS, grid, run_sweep
+from restitution.limits.executors import probe_scheduler
+from restitution.limits.store import PointSpec, Store, StoreError
+from restitution.limits.sweep import DEFAULTS, grid, run_sweep
 
 # -- helpers -------------------------------------------------------------------------------
 
@@ -56,7 +56,7 @@ def one_line_error(code, err, *words):
 @pytest.fixture
 def no_integration(monkeypatch):
     """Make any time integration fail the test: refusals must come before it."""
-    import restitution.collision as collision
+    import restitution.dynamics.collision as collision
 
     def refuse(*args, **kwargs):
         raise AssertionError("the collision was integrated instead of refused up front")
@@ -191,7 +191,7 @@ def test_work_estimate_is_near_the_steps_taken(small):
     ],
 )
 def test_a_million_modes_is_refused_up_front(cli, monkeypatch, args):
-    import restitution.cache as cache
+    import restitution.bodies.cache as cache
 
     def refuse(*a, **k):
         raise AssertionError("modes were computed instead of refused")

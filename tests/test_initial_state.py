@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from restitution import get_modes
-from restitution.collision import collide, collide_batch, start_position
+from restitution.dynamics.collision import collide, collide_batch, start_position
+from restitution.dynamics.integrators import free_modes
 from restitution.errors import InputError
-from restitution.integrators import free_modes
 
 N = 120
 
@@ -98,8 +98,8 @@ def test_bad_initial_state_is_refused_in_one_line(modes):
 def test_a_vibrating_disk_that_leaves_slowly_is_not_cut_off():
     """A thermal member of this batch leaves about 18 times slower than it came (epsilon 0.054):
     the time bound of a disk at rest (201 R/c) stopped it before the vibrating disk's bound."""
-    from restitution.fluctuation import flux_speeds
-    from restitution.vibration import thermal_state
+    from restitution.vibrating.fluctuation import flux_speeds
+    from restitution.vibrating.vibration import thermal_state
 
     ms = get_modes(0.33, count=10)
     T = 0.5 * ms.mass * 0.1**2

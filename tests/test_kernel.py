@@ -4,7 +4,7 @@ import pytest
 from numpy.testing import assert_allclose, assert_array_equal
 
 from restitution import get_modes
-from restitution.collision import CollisionSettings, collide, collide_batch
+from restitution.dynamics.collision import CollisionSettings, collide, collide_batch
 from restitution.errors import InputError
 
 # (nu, N, v, alpha): soft and hard walls, slow and fast, both Poisson numbers of the paper.
@@ -90,7 +90,7 @@ def test_backend_choice():
 def _split_runs(monkeypatch, modes, v, alpha, **kw):
     """The same collision on one thread and split over two (kernel.SPLIT_MIN_MODES lowered);
     returns ({threads: result}, {threads: parts run})."""
-    import restitution.kernel as kernel
+    import restitution.dynamics.kernel as kernel
 
     monkeypatch.setattr(kernel, "SPLIT_MIN_MODES", 100)
     one = kernel._one
@@ -127,7 +127,7 @@ def test_two_threads_give_one_threads_collision_bit_for_bit(monkeypatch):
 def test_two_threads_stop_together_on_a_timeout(monkeypatch):
     # Every decision (here: out of steps) is taken by both threads from the same sums, so
     # neither is left waiting for the other, and both modes stop at the same step.
-    import restitution.kernel as kernel
+    import restitution.dynamics.kernel as kernel
 
     monkeypatch.setattr(kernel, "SPLIT_MIN_MODES", 100)
     calls = []

@@ -18,12 +18,12 @@ from numpy.testing import assert_allclose
 from restitution import get_modes
 from restitution.cli.epsilon import curve as curve_command
 from restitution.cli.epsilon import epsilon as epsilon_command
-from restitution.collision import collide
-from restitution.curves import compute_curves, epsilon_at
+from restitution.dynamics.collision import collide
 from restitution.errors import InputError, RestitutionError
-from restitution.figures import fig01_epsilon, fig07_alpha, fig08_modes
-from restitution.law import EpsilonLaw, law
-from restitution.sweep import SweepSettings
+from restitution.laws.law import EpsilonLaw, law
+from restitution.limits.curves import compute_curves, epsilon_at
+from restitution.limits.sweep import SweepSettings
+from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes
 
 V = np.array([0.01, 0.05, 0.1, 0.2, 0.3])
 EPS = np.array([0.999, 0.99, 0.96, 0.88, 0.8])

@@ -7,8 +7,8 @@ from numpy.testing import assert_allclose
 from scipy.interpolate import PchipInterpolator
 
 from restitution.errors import InputError
-from restitution.law import EpsilonLaw
-from restitution.law_nu import NuInterpolatedLaw, law_for, shipped_nus
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_nu import NuInterpolatedLaw, law_for, shipped_nus
 
 V = np.linspace(0.01, 0.3, 30)
 GRID = [0.1, 0.3, 0.5, 0.7, 0.9]

@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 from scipy.optimize import brentq
 
 from restitution import Material, compute_modes, get_modes, weyl_count
-from restitution.frequency_equation import boundary_matrix, eq25, normalized_determinant
+from restitution.bodies.disk.frequency_equation import boundary_matrix, eq25, normalized_determinant
 
 
 @pytest.fixture(scope="module")
@@ -211,7 +211,7 @@ def test_rayleigh_speed_closed_form():
     # nu = 0 in 2D plane stress: s^2 = 1/2 and the Rayleigh cubic in eta = xi^2 reads
     # eta^3 - 8 eta^2 + 16 eta - 8 = (eta - 2)(eta^2 - 6 eta + 4); the root below 1 is
     # eta = 3 - sqrt(5), so c_R = sqrt(3 - sqrt 5) c_s with c_s = 1/sqrt(2).
-    from restitution.modes import rayleigh_speed
+    from restitution.bodies.disk.modes import rayleigh_speed
 
     assert rayleigh_speed(0.0) == pytest.approx(
         math.sqrt(3.0 - math.sqrt(5.0)) / math.sqrt(2.0), rel=1e-13

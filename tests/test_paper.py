@@ -19,12 +19,12 @@ from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 from scipy.special import jv, jvp
 
-from restitution.claims.sec4_epsilon import epsilon_rows
-from restitution.claims.verdict import compare_value
 from restitution.cli.paper import paper
-from restitution.figures.fig01_epsilon import Fig01Data
-from restitution.paper import FIGURE_STEMS, QUICK, speed_factor
-from restitution.report import (
+from restitution.reproduction.claims.sec4_epsilon import epsilon_rows
+from restitution.reproduction.claims.verdict import compare_value
+from restitution.reproduction.figures.fig01_epsilon import Fig01Data
+from restitution.reproduction.paper import FIGURE_STEMS, QUICK, speed_factor
+from restitution.reproduction.report import (
     Figure,
     Heading,
     Paragraph,
@@ -156,15 +156,15 @@ def test_report_compares_with_the_paper_and_records_the_run(run):
     # A quick run says so at the top of the report (first paragraph after the title).
     assert md.splitlines()[2].startswith("**QUICK RUN")
     assert "Which unit of speed reproduces which claim" in md
-    from restitution import __version__
+    from restitution._version import __version__
 
     assert f"restitution {__version__}" in md
     assert run.record.is_file() and run.run_time_s > 0
 
 
 def test_second_run_reuses_the_store(run, tmp_path):
-    from restitution.store import Store
-    from restitution.sweep import grid, run_sweep
+    from restitution.limits.store import Store
+    from restitution.limits.sweep import grid, run_sweep
 
     s = QUICK
     assert run.data.sweep_report.failed == ()
@@ -246,7 +246,7 @@ def test_fig10_law_solves_printed_eq57(run):
 
 
 def test_fig11_contact_time_against_dop853(run):
-    from restitution.hertz import contact_law
+    from restitution.quasistatic.hertz import contact_law
 
     f11 = run.data.fig11
     law = contact_law(f11.nu, "paper")
@@ -273,7 +273,7 @@ def test_fig11_contact_time_against_dop853(run):
 
 def test_fig12_quadrupole_against_dop853(run):
     from restitution import get_modes
-    from restitution.hertz import contact_law, quasistatic_trajectory
+    from restitution.quasistatic.hertz import contact_law, quasistatic_trajectory
 
     f12 = run.data.fig12
     k = int(np.argmin(np.abs(np.log(f12.v / 1e-3))))
@@ -313,7 +313,7 @@ def test_paper_settings_refuse_what_they_cannot_run():
     from dataclasses import replace
 
     from restitution.errors import InputError
-    from restitution.paper import PaperSettings
+    from restitution.reproduction.paper import PaperSettings
 
     with pytest.raises(InputError, match="start with"):
         PaperSettings(speed_units=("c_L",))
@@ -351,7 +351,7 @@ def test_every_figure_of_a_quick_run_says_so(run):
 
 
 def test_fig01_in_c_L_ran_at_the_converted_speeds(run):
-    from restitution.curves import epsilon_at
+    from restitution.limits.curves import epsilon_at
 
     d = run.data
     f = d.fig01_units["c_L"]
@@ -420,18 +420,18 @@ def test_value_verdict_needs_a_checked_point_and_a_small_error():
 
 def test_results_doc_states_what_the_shipped_laws_say():
     # docs/results.md carries a block generated from the shipped laws; when the laws change,
-    # regenerate it with `python -m restitution.claims.shipped docs/results.md`.
+    # regenerate it with `python -m restitution.reproduction.claims.shipped docs/results.md`.
     from pathlib import Path
 
-    from restitution.claims.shipped import BEGIN, END, law_summary
+    from restitution.reproduction.claims.shipped import BEGIN, END, law_summary
 
     doc = Path(__file__).resolve().parents[1] / "docs" / "results.md"
     text = doc.read_text()
     block = text.split(BEGIN, 1)[1].split(END, 1)[0]
     assert block.strip() == law_summary().strip(), (
-        "docs/results.md is stale: run `python -m restitution.claims.shipped docs/results.md`"
+        "docs/results.md is stale: run `python -m restitution.reproduction.claims.shipped docs/results.md`"
     )
     # The generated statements come from the data: the shipped nu = 0.33 law is not monotone.
-    from restitution.law import law
+    from restitution.laws.law import law
 
     assert ("not monotone" in block) == (not law(0.33).monotone)

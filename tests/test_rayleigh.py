@@ -15,10 +15,10 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.integrate import solve_ivp
 
-from restitution.cache import get_modes
+from restitution.bodies.cache import get_modes
 from restitution.errors import InputError
-from restitution.hertz import contact_law, quasistatic_trajectory
-from restitution.rayleigh import rayleigh_energy
+from restitution.quasistatic.hertz import contact_law, quasistatic_trajectory
+from restitution.quasistatic.rayleigh import rayleigh_energy
 
 NU = 0.33
 
@@ -84,7 +84,7 @@ def test_bad_input(modes):
 
 
 def test_fig12_compute_and_plot(tmp_path):
-    from restitution.figures import fig12_rayleigh
+    from restitution.reproduction.figures import fig12_rayleigh
 
     data = fig12_rayleigh.compute(
         NU, n_modes=60, n_v=4, v_min=1e-4, v_max=1e-2, dynamic=([0.01], [0.02])

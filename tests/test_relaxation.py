@@ -13,10 +13,10 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from restitution.cache import get_modes
+from restitution.bodies.cache import get_modes
 from restitution.errors import InputError
-from restitution.hertz import contact_law
-from restitution.relaxation import centre_offset, default_n_phi, relax, relaxation_curve
+from restitution.quasistatic.hertz import contact_law
+from restitution.quasistatic.relaxation import centre_offset, default_n_phi, relax, relaxation_curve
 
 NU = 0.33
 
@@ -34,7 +34,7 @@ def _effective_constant(curve):
 
 
 def test_minimum_is_stationary_and_force_is_energy_slope(modes):
-    from restitution.relaxation import _Problem
+    from restitution.quasistatic.relaxation import _Problem
 
     small = modes.lowest(100)
     st = relax(small, 0.1, 500.0)
@@ -108,7 +108,7 @@ def test_bad_input(modes):
 
 
 def test_fig10_compute_and_plot(tmp_path):
-    from restitution.figures import fig10_force
+    from restitution.reproduction.figures import fig10_force
 
     loop = (0.1, np.array([0.0, 0.1, 0.15, 0.1, 0.0]), np.array([0.0, 0.15, 0.3, 0.1, 0.0]))
     data = fig10_force.compute(NU, n_modes=60, n_delta=4, delta_max=0.15, dynamic=[loop])

@@ -32,7 +32,7 @@ def run(tmp_path_factory):
         pytest.fail(
             "headless Chromium not installed: run `make test-slow` (it installs Debian's chromium)"
         )
-    from restitution.paper import QUICK, build_paper
+    from restitution.reproduction.paper import QUICK, build_paper
 
     root = tmp_path_factory.mktemp("paper")
     return build_paper(root / "out", QUICK, store=root / "results.sqlite", progress=False)
@@ -64,7 +64,7 @@ def test_report_renders_every_figure(run, tmp_path):
     done = _chromium(tmp_path, "--virtual-time-budget=10000", "--dump-dom", url)
     assert done.returncode == 0, done.stderr[-2000:]
     dom = done.stdout
-    # The page's own script marks each image once the page has loaded (restitution.report).
+    # The page's own script marks each image once the page has loaded (restitution.reproduction.report).
     body = re.search(r"<body([^>]*)>", dom)
     assert body is not None, dom[:2000]
     n = len(run.figures)

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from restitution import get_modes
-from restitution.collision import collide, start_position
-from restitution.integrators import free_modes
-from restitution.sequences import bounce, constant_epsilon_speeds, memoryless_speeds
+from restitution.dynamics.collision import collide, start_position
+from restitution.dynamics.integrators import free_modes
+from restitution.vibrating.sequences import bounce, constant_epsilon_speeds, memoryless_speeds
 
 V, ALPHA, G = 0.1, 400.0, 1e-5
 

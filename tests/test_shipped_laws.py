@@ -1,9 +1,9 @@
 """The shipped epsilon(v) laws cannot go stale silently.
 
-Every law file in ``restitution/data`` is loaded and checked against the current code:
+Every law file in ``restitution/laws/data`` is loaded and checked against the current code:
 
 * no epsilon above 1, every error finite and positive;
-* every point's extrapolation, redone by the current :mod:`restitution.extrapolation` from the
+* every point's extrapolation, redone by the current :mod:`restitution.limits.extrapolation` from the
   energy-loss grid stored in the file, gives the stored epsilon and the stored verdict, so a point
   that fails its checks cannot be served unflagged;
 * a sample of the cheapest stored collisions (the smallest mode count, softest wall, at three
@@ -24,11 +24,11 @@ import numpy as np
 import pytest
 
 from restitution import get_modes
-from restitution.collision import CollisionSettings, collide
-from restitution.extrapolation import combined_limit
-from restitution.store import code_version
+from restitution.dynamics.collision import CollisionSettings, collide
+from restitution.limits.extrapolation import combined_limit
+from restitution.limits.store import code_version
 
-_DATA = resources.files("restitution").joinpath("data")
+_DATA = resources.files("restitution.laws").joinpath("data")
 LAW_FILES = sorted(p.name for p in _DATA.iterdir() if p.name.startswith("law_nu"))
 
 

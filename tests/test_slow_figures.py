@@ -3,12 +3,12 @@
 import numpy as np
 import pytest
 
-from restitution.cache import get_modes
-from restitution.extrapolation import extrapolate_modes
-from restitution.figures import slow_convergence, slow_routes
-from restitution.hertz import contact_law
-from restitution.law import law
-from restitution.rayleigh import rayleigh_energy
+from restitution.bodies.cache import get_modes
+from restitution.laws.law import law
+from restitution.limits.extrapolation import extrapolate_modes
+from restitution.quasistatic.hertz import contact_law
+from restitution.quasistatic.rayleigh import rayleigh_energy
+from restitution.reproduction.figures import slow_convergence, slow_routes
 
 
 def test_slow_convergence_shows_the_served_numbers(tmp_path):

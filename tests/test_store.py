@@ -7,8 +7,8 @@ import sqlite3
 import numpy as np
 import pytest
 
-from restitution import store as store_module
-from restitution.store import PointSpec, Store, StoreError, default_store_path
+from restitution.limits import store as store_module
+from restitution.limits.store import PointSpec, Store, StoreError, default_store_path
 
 SPEC = PointSpec(nu=0.33, v=0.1, alpha=500.0, n_modes=40, options={"energy_tol": 1e-6})
 

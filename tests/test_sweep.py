@@ -19,8 +19,8 @@ import pytest
 from numpy.testing import assert_array_equal
 
 from restitution.errors import InputError
-from restitution.store import PointSpec, Store
-from restitution.sweep import (
+from restitution.limits.store import PointSpec, Store
+from restitution.limits.sweep import (
     DEFAULTS,
     PAPER_VELOCITIES,
     SweepSettings,
@@ -187,7 +187,7 @@ def test_dask_local_cluster_matches_local_processes(tmp_path):
 
 _SCRIPT = """
 import sys
-from restitution.sweep import SweepSettings, grid, run_sweep
+from restitution.limits.sweep import SweepSettings, grid, run_sweep
 
 if __name__ == "__main__":
     settings = SweepSettings(

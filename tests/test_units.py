@@ -11,9 +11,9 @@ from numpy.testing import assert_allclose
 import restitution
 from restitution.cli import main
 from restitution.errors import InputError
-from restitution.law_nu import law_for, shipped_nus
-from restitution.si_law import STATUSES, si_law
-from restitution.units import Grain, partner_factor
+from restitution.laws.law_nu import law_for, shipped_nus
+from restitution.laws.si_law import STATUSES, si_law
+from restitution.laws.units import Grain, partner_factor
 
 # A glass whose Poisson number, 0.2481 (commercial glasses: about 0.20-0.25), maps in a long
 # cylinder onto the shipped law nu_2d = 0.33: 0.2481 / 0.7519 = 0.32996.
@@ -156,7 +156,7 @@ def test_python_api_matches_the_command(capsys):
 
 
 def test_si_law_refuses_a_law_for_another_nu():
-    from restitution.si_law import SILaw
+    from restitution.laws.si_law import SILaw
 
     grain = Grain(E=1.0, nu=0.3, rho=1.0, geometry="thin-disk")
     with pytest.raises(InputError, match="nu_2d"):
@@ -167,8 +167,10 @@ def test_docstring_examples():
     import doctest
     import importlib
 
-    # restitution.si_law is also the function's name in the package namespace (as law is).
-    for module in map(importlib.import_module, ("restitution.units", "restitution.si_law")):
+    # restitution.laws.si_law is also the function's name in the package namespace (as law is).
+    for module in map(
+        importlib.import_module, ("restitution.laws.units", "restitution.laws.si_law")
+    ):
         result = doctest.testmod(module)
         assert result.attempted > 0 and result.failed == 0
 

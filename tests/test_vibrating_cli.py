@@ -11,8 +11,8 @@ import pytest
 
 import restitution
 from restitution import get_modes
-from restitution.collision import collide
-from restitution.vibration import kinetic_energy, single_mode_state
+from restitution.dynamics.collision import collide
+from restitution.vibrating.vibration import kinetic_energy, single_mode_state
 
 
 def test_thermal_ensemble_json(cli, tmp_path):

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from restitution import get_modes
-from restitution.collision import collide
-from restitution.figures import vibrating
+from restitution.dynamics.collision import collide
+from restitution.reproduction.figures import vibrating
 
 
 def test_distribution_figure(tmp_path):

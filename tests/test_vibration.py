@@ -13,11 +13,16 @@ import pytest
 from scipy import stats
 
 from restitution import get_modes
-from restitution.collision import collide, start_position
-from restitution.ensemble import fit_sinusoid, phase_scan, temperature_for, thermal_ensemble
+from restitution.dynamics.collision import collide, start_position
+from restitution.dynamics.integrators import free_modes
 from restitution.errors import InputError
-from restitution.integrators import free_modes
-from restitution.vibration import (
+from restitution.vibrating.ensemble import (
+    fit_sinusoid,
+    phase_scan,
+    temperature_for,
+    thermal_ensemble,
+)
+from restitution.vibrating.vibration import (
     after_flight,
     kinetic_energy,
     mirror_state,

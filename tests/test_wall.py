@@ -5,7 +5,7 @@ from numpy.testing import assert_allclose
 from scipy.integrate import quad as adaptive
 
 from restitution import get_modes
-from restitution.wall import dense_edge_matrix, wall_quadrature, wall_terms
+from restitution.dynamics.wall import dense_edge_matrix, wall_quadrature, wall_terms
 
 
 def _state(modes, seed=3):

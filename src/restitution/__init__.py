@@ -1,27 +1,31 @@
-"""restitution: the coefficient of restitution of elastic disks from their vibrational modes.
+"""restitution: the coefficient of restitution of elastic bodies from their vibrational modes.
 
 Reproduces and extends F. Gerl and A. Zippelius, "Coefficient of restitution for elastic disks".
-Units throughout: two-dimensional Young modulus E = 1, mass per area rho = 1, radius R = 1, so
-velocities are in units of c = sqrt(E / rho) and the disk mass is pi.
+Reduced units throughout: two-dimensional Young modulus E = 1, mass per area rho = 1, radius
+R = 1, so velocities are in units of c = sqrt(E / rho) and the disk mass is pi
+(:data:`UNITS`). SI units enter only through :func:`si_law` and :class:`Grain`.
+
+The package is layered (docs/architecture.md): bodies -> dynamics -> vibrating, quasistatic ->
+limits -> laws -> reproduction, fem, cli. No module imports this root; it only re-exports.
 """
 
-__version__ = "0.1.0"
-
-from restitution.cache import CacheError, get_modes  # noqa: E402
-from restitution.collision import (  # noqa: E402
+from restitution._version import __version__
+from restitution.bodies.cache import CacheError, get_modes
+from restitution.bodies.disk.modes import ModeError, ModeSet, compute_modes, weyl_count
+from restitution.bodies.material import Material, MaterialError
+from restitution.dynamics.collision import (
     CollisionError,
     CollisionSettings,
     collide,
     collide_batch,
 )
-from restitution.errors import InputError, RestitutionError  # noqa: E402
-from restitution.law import EpsilonLaw, law  # noqa: E402
-from restitution.material import Material, MaterialError  # noqa: E402
-from restitution.modes import ModeError, ModeSet, compute_modes, weyl_count  # noqa: E402
-from restitution.results import UNITS, CollisionResult  # noqa: E402
-from restitution.si_law import SILaw, si_law  # noqa: E402
-from restitution.store import StoreError  # noqa: E402
-from restitution.units import Grain  # noqa: E402
+from restitution.dynamics.results import UNITS, CollisionResult
+from restitution.errors import InputError, RestitutionError
+from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.si_law import SILaw, si_law
+from restitution.laws.units import Grain
+from restitution.limits.curves import PointEpsilon, epsilon_at
+from restitution.limits.store import StoreError
 
 __all__ = [
     "__version__",
@@ -37,12 +41,14 @@ __all__ = [
     "MaterialError",
     "ModeError",
     "ModeSet",
+    "PointEpsilon",
     "RestitutionError",
     "SILaw",
     "StoreError",
     "collide",
     "collide_batch",
     "compute_modes",
+    "epsilon_at",
     "get_modes",
     "law",
     "si_law",

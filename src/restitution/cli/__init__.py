@@ -14,7 +14,7 @@ import sys
 
 import click
 
-from restitution import __version__
+from restitution._version import __version__
 from restitution.cli._common import quiet_option
 from restitution.errors import RestitutionError
 

@@ -15,10 +15,10 @@ from pathlib import Path
 
 import click
 
-from restitution import __version__
+from restitution._version import __version__
+from restitution.bodies.material import Material
+from restitution.dynamics.results import UNITS
 from restitution.errors import InputError, OutputError
-from restitution.material import Material
-from restitution.results import UNITS
 
 EXIT_FAILED_POINTS = 1
 """Exit status when collisions of a sweep failed (their messages are printed)."""
@@ -184,7 +184,7 @@ def envelope(
 ) -> dict:
     """The keys every JSON output starts with, then ``payload``.
 
-    ``version`` (package version), ``command``, ``units`` (:data:`restitution.results.UNITS`),
+    ``version`` (package version), ``command``, ``units`` (:data:`restitution.dynamics.results.UNITS`),
     ``inputs`` (every option that determines the result), ``status`` (``"ok"`` or what is
     wrong) and ``advice`` (what to do when the status is not ``"ok"``).
     """
@@ -212,7 +212,7 @@ def _finite(obj):
 
 def dumps(obj) -> str:
     """Strict JSON (``NaN`` and infinities become ``null``), numpy values included."""
-    from restitution.store import json_default
+    from restitution.limits.store import json_default
 
     plain = json.loads(json.dumps(obj, default=json_default, allow_nan=True))
     return json.dumps(_finite(plain), indent=2, allow_nan=False)

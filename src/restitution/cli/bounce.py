@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from restitution.cache import check_mode_request, get_modes
+from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
     check_figure_file,
     dumps,
@@ -69,8 +69,8 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
     check_mode_request(material.nu, n_modes)
     if plot is not None:
         check_figure_file(plot, "--plot")
-    from restitution.sequences import bounce as run
-    from restitution.sequences import constant_epsilon_speeds
+    from restitution.vibrating.sequences import bounce as run
+    from restitution.vibrating.sequences import constant_epsilon_speeds
 
     ms = get_modes(material, count=n_modes)
     with warnings.catch_warnings():
@@ -79,7 +79,7 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
                   energy_tol=energy_tol)  # fmt: skip
     constant = constant_epsilon_speeds(v, float(seq.epsilon[0]), collisions)
     if plot is not None:
-        from restitution.figures.vibrating import BounceData, plot_bounce
+        from restitution.reproduction.figures.vibrating import BounceData, plot_bounce
 
         plot_bounce(BounceData(seq, constant, memoryless=constant * math.nan,
                                epsilon_constant=float(seq.epsilon[0])), plot)  # fmt: skip

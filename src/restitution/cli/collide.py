@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from restitution.cache import check_mode_request, get_modes
+from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
     dumps,
@@ -249,8 +249,8 @@ def collide(
 
             result = fem_collide(material, v, alpha, refine=mesh_refine)
         else:
-            from restitution.collision import collide as run
-            from restitution.collision import rank_modes
+            from restitution.dynamics.collision import collide as run
+            from restitution.dynamics.collision import rank_modes
 
             if select == "ranked":
                 pool = get_modes(material, count=2 * n_modes)
@@ -301,7 +301,7 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
     """Say the estimated work of a long run before it starts; returns whether it is long."""
     import numpy as np
 
-    from restitution.collision import CollisionSettings, check_work
+    from restitution.dynamics.collision import CollisionSettings, check_work
 
     settings = CollisionSettings(integrator=integrator, energy_tol=energy_tol)
     est = check_work(modes, np.array([v]), np.array([alpha]), settings)  # refuses the infeasible
@@ -316,7 +316,7 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
 def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method, energy_tol,
              excite, as_json, strict):  # fmt: skip
     """``collide --excite mode|thermal``: a vibrating disk (thin layer over
-    :mod:`restitution.vibration` and :mod:`restitution.ensemble`)."""
+    :mod:`restitution.vibrating.vibration` and :mod:`restitution.vibrating.ensemble`)."""
     import math
 
     p = ctx.params
@@ -354,7 +354,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
 
             check_figure_file(p["plot"], "--plot")
     ms = get_modes(material, count=n_modes)
-    from restitution.vibration import kinetic_energy
+    from restitution.vibrating.vibration import kinetic_energy
 
     e0 = float(kinetic_energy(ms, v))
     inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "method": method,
@@ -362,8 +362,8 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
               "energy_tol": energy_tol, "excite": excite}  # fmt: skip
     start = time.perf_counter()
     if excite == "mode":
-        from restitution.collision import collide as run
-        from restitution.vibration import single_mode_state
+        from restitution.dynamics.collision import collide as run
+        from restitution.vibrating.vibration import single_mode_state
 
         index = 0 if p["mode_index"] is None else p["mode_index"]
         phase = 0.0 if p["phase"] is None else p["phase"]
@@ -385,7 +385,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
             _print_summary(result)
         status = result.status
     else:
-        from restitution.ensemble import thermal_ensemble
+        from restitution.vibrating.ensemble import thermal_ensemble
 
         samples = 1 if p["samples"] is None else p["samples"]
         seed = 0 if p["seed"] is None else p["seed"]
@@ -401,7 +401,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
             f"{len(ens.failures)} samples could not be integrated (see 'failures'); they are "
             "left out of the statistics")  # fmt: skip
         if p["plot"] is not None:
-            from restitution.figures.vibrating import plot_histogram
+            from restitution.reproduction.figures.vibrating import plot_histogram
 
             plot_histogram(ens, p["plot"])
             note(f"wrote {p['plot']}")

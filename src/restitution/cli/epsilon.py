@@ -1,6 +1,6 @@
 """Commands ``restitution epsilon`` (one speed) and ``restitution curve`` (Figs. 1, 7, 8).
 
-Thin layer over :mod:`restitution.law`, :mod:`restitution.sweep` and the figure modules. List
+Thin layer over :mod:`restitution.laws.law`, :mod:`restitution.limits.sweep` and the figure modules. List
 options accept several values after one flag (``--nu 0.33 0.9``) or a repeated flag.
 """
 
@@ -13,6 +13,7 @@ from pathlib import Path
 
 import click
 
+from restitution.bodies.material import Material
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
@@ -26,8 +27,7 @@ from restitution.cli._common import (
     writing,
 )
 from restitution.errors import InputError
-from restitution.material import Material
-from restitution.sweep import DEFAULTS, SweepSettings
+from restitution.limits.sweep import DEFAULTS, SweepSettings
 
 _V_HELP = (
     "speed of the disk towards the wall before the collision, in units of the 2D sound speed "
@@ -190,8 +190,8 @@ def epsilon(
     grid are computed (or read from the store) first. Exit status 1 when grid points failed;
     with --strict, 3 when the extrapolation is not asymptotic.
     """
-    from restitution.curves import epsilon_at
-    from restitution.sweep import grid
+    from restitution.limits.curves import epsilon_at
+    from restitution.limits.sweep import grid
 
     nu = _check_nu(nu)
     if alpha is not None and (alphas or alpha_scale):
@@ -255,7 +255,7 @@ def _err(value: float, settings: SweepSettings) -> str:
 
 
 def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
-    from restitution.sweep import run_sweep
+    from restitution.limits.sweep import run_sweep
 
     return run_sweep(
         points,
@@ -392,11 +392,11 @@ def curve(
     table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out. Exit status 1
     when collisions failed; with --strict, 3 when a speed is not asymptotic.
     """
-    from restitution.curves import compute_curves
-    from restitution.figures import fig01_epsilon, fig07_alpha, fig08_modes
-    from restitution.law import EpsilonLaw, law_filename
-    from restitution.store import Store
-    from restitution.sweep import grid
+    from restitution.laws.law import EpsilonLaw, law_filename
+    from restitution.limits.curves import compute_curves
+    from restitution.limits.store import Store
+    from restitution.limits.sweep import grid
+    from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes
 
     nus = tuple(_check_nu(nu) for nu in (nus or (0.33, 0.9)))
     settings = _settings(velocities=velocities, alphas=alphas, modes=modes, alpha_scale=alpha_scale)

@@ -7,7 +7,7 @@ import sys
 
 import click
 
-from restitution.cache import check_mode_request
+from restitution.bodies.cache import check_mode_request
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
     dumps,

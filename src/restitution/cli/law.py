@@ -1,6 +1,6 @@
 """Command ``restitution law``: epsilon of a real material at speeds in m/s, and exports.
 
-Thin layer over :mod:`restitution.si_law` and :mod:`restitution.exports`.
+Thin layer over :mod:`restitution.laws.si_law` and :mod:`restitution.laws.exports`.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from pathlib import Path
 import click
 
 from restitution.cli.epsilon import _ListCommand
-from restitution.store import json_default
+from restitution.limits.store import json_default
 
 
 class _LawCommand(_ListCommand):
@@ -94,9 +94,9 @@ def law(
     restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
         --against wall --speed 0.5 1 5
     """
-    from restitution import exports
     from restitution.errors import InputError
-    from restitution.si_law import si_law
+    from restitution.laws import exports
+    from restitution.laws.si_law import si_law
 
     if reference_speed is not None and maxwell_temperature is not None:
         raise InputError("give --reference-speed or --maxwell-temperature, not both")
@@ -141,7 +141,7 @@ def law(
 
 
 def _export(s, constant, out: Path) -> list[Path]:
-    from restitution import exports
+    from restitution.laws import exports
 
     out.mkdir(parents=True, exist_ok=True)
     fit = exports.fit_closed_form(s)

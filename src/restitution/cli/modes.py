@@ -8,7 +8,7 @@ from pathlib import Path
 
 import click
 
-from restitution.cache import check_mode_request, get_modes
+from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
     check_figure_file,
     check_output_file,
@@ -110,7 +110,7 @@ def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
         text = _table(records)
     write_text(text, output)
     if plot_spectrum is not None:
-        from restitution.figures import fig03_spectrum
+        from restitution.reproduction.figures import fig03_spectrum
 
         top = float(omega_max) if omega_max is not None else float(min(ms.omega.max(), 20.0))
         data = fig03_spectrum.compute(material.nu, omega_max=top)
@@ -118,7 +118,7 @@ def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
             fig03_spectrum.plot(data, plot_spectrum)
         note(f"wrote {plot_spectrum}")
     if plot_shapes is not None:
-        from restitution.figures import fig02_shapes
+        from restitution.reproduction.figures import fig02_shapes
 
         data = fig02_shapes.compute(material.nu)
         with writing(plot_shapes, "--plot-shapes"):

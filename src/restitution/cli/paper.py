@@ -1,6 +1,6 @@
 """Command ``restitution paper``: regenerate every computed figure, Table 1 and the report.
 
-Thin layer over :func:`restitution.paper.build_paper`; progress is shown with rich on stderr.
+Thin layer over :func:`restitution.reproduction.paper.build_paper`; progress is shown with rich on stderr.
 """
 
 from __future__ import annotations
@@ -130,7 +130,7 @@ def paper(quick, out, store, workers, scheduler, fmt, c_only, progress):
     """
     from dataclasses import replace
 
-    from restitution.paper import FULL, QUICK, STAGES, build_paper
+    from restitution.reproduction.paper import FULL, QUICK, STAGES, build_paper
 
     settings = QUICK if quick else FULL
     if c_only:
@@ -146,7 +146,7 @@ def paper(quick, out, store, workers, scheduler, fmt, c_only, progress):
             progress=progress,
             on_stage=reporter,
         )
-    from restitution.claims import counts
+    from restitution.reproduction.claims import counts
 
     n = counts(run.comparisons)
     sr = run.data.sweep_report

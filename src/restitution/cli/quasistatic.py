@@ -6,7 +6,7 @@ import math
 
 import click
 
-from restitution.cache import check_mode_request
+from restitution.bodies.cache import check_mode_request
 from restitution.cli._common import (
     dumps,
     envelope,
@@ -17,15 +17,20 @@ from restitution.cli._common import (
     positive_finite,
     quiet_option,
 )
+from restitution.dynamics.results import UNITS
 from restitution.errors import InputError
-from restitution.hertz import LAWS, contact_law, contact_time_rate, quasistatic_collision
-from restitution.results import UNITS
+from restitution.quasistatic.hertz import (
+    LAWS,
+    contact_law,
+    contact_time_rate,
+    quasistatic_collision,
+)
 
 
 def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 400) -> dict:
     """Everything the command reports, as a JSON-ready dict (units in the key names' docs)."""
-    from restitution.cache import get_modes
-    from restitution.rayleigh import rayleigh_energy
+    from restitution.bodies.cache import get_modes
+    from restitution.quasistatic.rayleigh import rayleigh_energy
 
     hl = contact_law(nu, law)
     q = quasistatic_collision(hl, v)

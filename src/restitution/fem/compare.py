@@ -6,7 +6,7 @@ For one ``(material, v, alpha)`` the FEM runs at increasing mesh refinement; its
 estimated by the last Cauchy difference ``|eps_K - eps_(K-1)|`` (an overestimate when the
 differences fall quickly, as they do: 8-30x per level at nu = 0.33, v = 0.1, alpha = 500).
 The modal solver runs with the ``N`` lowest modes for several ``N`` and ``1 - eps^2`` is
-extrapolated linearly in ``1/sqrt(N)`` (:func:`restitution.extrapolation.extrapolate_modes`,
+extrapolated linearly in ``1/sqrt(N)`` (:func:`restitution.limits.extrapolation.extrapolate_modes`,
 paper Fig. 8) at the same ``alpha``. Neither side is extrapolated in ``alpha``: both solve the
 same soft-wall problem.
 """
@@ -19,13 +19,13 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from restitution.cache import get_modes
+from restitution.bodies.cache import get_modes
+from restitution.bodies.material import Material
+from restitution.dynamics.results import CollisionResult
 from restitution.errors import InputError
-from restitution.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_modes
 from restitution.fem.elasticity import as_material
 from restitution.fem.impact import FemSettings, fem_collide, model_for
-from restitution.material import Material
-from restitution.results import CollisionResult
+from restitution.limits.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_modes
 
 __all__ = ["Comparison", "compare_fem_modal", "fem_refinement", "modal_extrapolation"]
 
@@ -125,7 +125,7 @@ def modal_extrapolation(
     epsilon, error : float
         Extrapolated epsilon and its error (the last run's epsilon and ``nan`` with one ``N``).
     """
-    from restitution.collision import collide
+    from restitution.dynamics.collision import collide
 
     counts = sorted(int(n) for n in counts)
     pool = get_modes(material, count=counts[-1])

@@ -23,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as sla
 
+from restitution.bodies.material import Material
 from restitution.errors import InputError, RestitutionError
 from restitution.fem.elasticity import (
     Discretisation,
@@ -31,7 +32,6 @@ from restitution.fem.elasticity import (
     assemble_half_disk,
 )
 from restitution.fem.mesh import uniform_half_disk
-from restitution.material import Material
 
 __all__ = [
     "fem_count_below",

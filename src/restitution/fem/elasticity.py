@@ -47,9 +47,9 @@ from skfem import (
 from skfem.helpers import dot
 from skfem.models.elasticity import linear_elasticity
 
+from restitution.bodies.material import Material
 from restitution.errors import InputError
 from restitution.fem.mesh import DIAMETER
-from restitution.material import Material
 
 __all__ = ["Discretisation", "HalfDisk", "assemble_half_disk", "as_material"]
 

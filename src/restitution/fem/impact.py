@@ -24,7 +24,7 @@ with ``p_max`` estimated in advance (:func:`pressure_estimate`); the run monitor
 and a run that met a pressure beyond the stability limit of its step, or whose relative energy
 drift exceeds ``energy_tol``, is repeated with a smaller step.
 
-Start and stop follow the modal solver (:mod:`restitution.collision`): the undeformed disk
+Start and stop follow the modal solver (:mod:`restitution.dynamics.collision`): the undeformed disk
 starts where its wall energy is ``CONTACT_TOL`` times its kinetic energy, and the run ends when
 the centre moves away, the wall energy is below that fraction, and no free vibration can bring
 the edge back: the ``u_x`` of an arc node ``j`` relative to the centre of mass is bounded by
@@ -42,12 +42,12 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from restitution.bodies.material import Material
+from restitution.dynamics.results import CollisionResult, History
 from restitution.errors import InputError, RestitutionError
 from restitution.fem.contact import wall_terms
 from restitution.fem.elasticity import as_material
 from restitution.fem.model import FemModel, fem_model
-from restitution.material import Material
-from restitution.results import CollisionResult, History
 
 __all__ = [
     "CONTACT_TOL",
@@ -129,7 +129,7 @@ def _hertz_estimate(v: float) -> tuple[float, float]:
     """Quasistatic largest force (``E R``) and contact half-width (``R``) at speed ``v``.
 
     The force is ``F ~ 2 E0 / delta`` with ``E0 = pi v^2 / 2`` and the compression
-    ``delta = v sqrt(ln(4/v))`` (eq. 61, as in :func:`restitution.collision.initial_step`); the
+    ``delta = v sqrt(ln(4/v))`` (eq. 61, as in :func:`restitution.dynamics.collision.initial_step`); the
     two-dimensional Hertz half-width is ``a = sqrt(4 F R / (pi E))``.
     """
     force = math.pi * v / math.sqrt(math.log(4.0 / v))

@@ -7,7 +7,7 @@ difference ``eps_ref - law.epsilon(v)`` is expressed in units of the combined er
 ``sqrt(err_ref^2 + law.epsilon_err(v)^2)``; the coverage is the fraction of points within 1 and
 2 combined errors (about 68 % and 95 % if both error bars are honest 1-sigma errors). Any
 object with ``epsilon(v)`` and ``epsilon_err(v)`` serves as a law (e.g.
-:class:`restitution.law.EpsilonLaw`).
+:class:`restitution.laws.law.EpsilonLaw`).
 """
 
 from __future__ import annotations
@@ -182,7 +182,7 @@ def judge_law(points: Iterable, laws: Mapping[float, LawLike] | LawLike) -> LawJ
 def judge_shipped_law(reference_path=None) -> LawJudgement:
     """The shipped FEM reference against the shipped modal laws (``restitution.law(nu)``)."""
     from restitution.fem.reference import load_reference
-    from restitution.law import law
+    from restitution.laws.law import law
 
     points = load_reference(reference_path)
     laws = {nu: law(nu) for nu in sorted({p.nu for p in points})}

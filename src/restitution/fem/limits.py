@@ -9,13 +9,13 @@ The FEM route has no modal truncation; its two limits are
    levels ``0, 1, 2``, each halving all element sizes) and a Richardson extrapolation of the
    energy loss ``1 - eps^2`` (:func:`restitution.fem.richardson.richardson_limit`);
 2. ``alpha -> infinity`` of those limits, linear in ``1/alpha``, with the package's
-   extrapolation (:func:`restitution.extrapolation.extrapolate_alpha`, errors propagated).
+   extrapolation (:func:`restitution.limits.extrapolation.extrapolate_alpha`, errors propagated).
 
-The ``alpha`` are those of the modal sweeps (:class:`restitution.sweep.SweepSettings`, by default
+The ``alpha`` are those of the modal sweeps (:class:`restitution.limits.sweep.SweepSettings`, by default
 ``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))``), so both routes
 extrapolate from the same walls. As a check the other order is taken too (``alpha -> inf`` at
 every level, then Richardson); the error is the larger of the two orders' errors combined in
-quadrature with their difference, as in :func:`restitution.extrapolation.combined_limit`.
+quadrature with their difference, as in :func:`restitution.limits.extrapolation.combined_limit`.
 """
 
 from __future__ import annotations
@@ -27,15 +27,15 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from restitution import __version__
+from restitution._version import __version__
+from restitution.bodies.material import Material
 from restitution.errors import InputError
-from restitution.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
 from restitution.fem.elasticity import as_material
 from restitution.fem.graded import ContactGrading, graded_settings, mesh_summary
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide, model_for
 from restitution.fem.richardson import MeshLimit, richardson_limit
-from restitution.material import Material
-from restitution.sweep import DEFAULTS
+from restitution.limits.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
+from restitution.limits.sweep import DEFAULTS
 
 __all__ = ["FemEpsilon", "FemRun", "fem_epsilon"]
 
@@ -165,7 +165,7 @@ class FemEpsilon:
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary with the keys of the modal route's
-        :meth:`restitution.law.PointEpsilon.to_dict` (``grid`` and ``fits`` hold the FEM's
+        :meth:`restitution.laws.law.PointEpsilon.to_dict` (``grid`` and ``fits`` hold the FEM's
         levels and fits in place of mode counts)."""
         alphas = self.alphas
         table = {(r.alpha, r.level): r for r in self.runs}
@@ -274,7 +274,7 @@ def fem_epsilon(
         sweeps' ``alpha * delta_max(v) = 40, 80, 160``.
     alpha_scale : {"absolute", "compression"}, optional
         ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; default as
-        :data:`restitution.sweep.DEFAULTS`.
+        :data:`restitution.limits.sweep.DEFAULTS`.
     levels : sequence of int
         Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level).
     grading : ContactGrading, optional

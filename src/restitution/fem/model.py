@@ -22,10 +22,10 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
+from restitution.bodies.material import Material
 from restitution.fem.contact import ArcQuadrature, arc_quadrature
 from restitution.fem.elasticity import HalfDisk, assemble_half_disk
 from restitution.fem.mesh import graded_half_disk
-from restitution.material import Material
 
 __all__ = ["FemModel", "fem_model"]
 

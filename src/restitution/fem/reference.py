@@ -6,7 +6,7 @@ Units: ``E = rho = R = 1``; ``v`` in ``c`` (speed towards the wall), ``alpha`` i
 ``(nu, v)`` and writes a JSON file after every point (a long run that is stopped keeps what it
 finished): the inputs, the mesh sizes, every level's epsilon, drift, step and time, both fits,
 the code version (a digest of the FEM sources and what they import) and the package versions.
-The shipped file is ``restitution/data/fem_reference.json``; :func:`load_reference` reads it.
+The shipped file is ``restitution/laws/data/fem_reference.json``; :func:`load_reference` reads it.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from restitution import __version__
+from restitution._version import __version__
 from restitution.errors import InputError
 from restitution.fem.graded import ContactGrading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
@@ -59,8 +59,8 @@ _SOURCES = (
     "restitution.fem.mesh",
     "restitution.fem.model",
     "restitution.fem.richardson",
-    "restitution.extrapolation",
-    "restitution.material",
+    "restitution.limits.extrapolation",
+    "restitution.bodies.material",
 )
 
 
@@ -199,7 +199,9 @@ def merge_reference(docs: list[dict]) -> dict:
 def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]:
     """The FEM reference points from ``path`` (default: the shipped file)."""
     if path is None:
-        text = resources.files("restitution").joinpath("data", "fem_reference.json").read_text()
+        text = (
+            resources.files("restitution.laws").joinpath("data", "fem_reference.json").read_text()
+        )
     else:
         text = Path(path).read_text()
     try:

@@ -1,0 +1,121 @@
+"""Reference solution of the disk-wall collision with scipy's DOP853 (adaptive, order 8).
+
+The same Hamiltonian as :mod:`restitution.dynamics.collision`, written as a plain first-order system
+``y = (x0, p0, Q, P)`` with no splitting, for tests and benchmarks. Slow: the adaptive steps
+must follow every mode's oscillation.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from restitution.bodies.disk.modes import ModeSet
+from restitution.dynamics.collision import CONTACT_TOL, _start_position
+from restitution.dynamics.wall import default_n_phi, dense_edge_matrix, wall_quadrature, wall_terms
+from restitution.errors import InputError
+
+__all__ = ["collide_dop853"]
+
+
+def collide_dop853(
+    modes: ModeSet,
+    v: float,
+    alpha: float,
+    *,
+    t_end: float | None = None,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+    n_phi: int | None = None,
+    wall: str = "dense",
+) -> dict:
+    """Integrate one collision with ``solve_ivp(method="DOP853")``.
+
+    The wall terms are evaluated the straightforward way, with the dense matrix ``g_k(phi_j)``
+    of eq. (40) over all quadrature nodes (no grouping by order, no skipping of inactive
+    nodes): an independent implementation of the same equations and the natural baseline.
+
+    Parameters
+    ----------
+    modes : ModeSet
+    v, alpha : float
+        Speed towards the wall (``c``) and wall hardness (``1 / R``).
+    t_end : float, optional
+        End time (``R / c``); by default the time for the disk to travel back to its start
+        position at half its initial speed, long after separation for any epsilon > 0.5.
+    rtol, atol : float
+        Tolerances of DOP853.
+    n_phi : int, optional
+        Edge quadrature nodes (default as in the modal solver).
+    wall : {"dense", "orders"}
+        ``dense`` (default) as described above; ``orders`` uses the modal solver's own
+        order-by-order wall terms with inactive nodes skipped
+        (:func:`restitution.dynamics.wall.wall_terms`), so that a benchmark can separate the gain of the
+        integrator from that of the wall evaluation.
+
+    Returns
+    -------
+    dict
+        ``epsilon``, ``energy_after`` (per mode, fraction of E0), ``energy_drift``, ``nfev``,
+        ``wall_time_s``, ``t_end``.
+    """
+    m, w = modes.mass, modes.omega
+    N = len(modes)
+    quad = wall_quadrature(modes, n_phi or default_n_phi(alpha, int(modes.n.max())))
+    a = np.array([alpha], float)
+    e0 = 0.5 * m * v**2
+    x_start = float(_start_position(a, np.array([e0]), quad)[0])
+    if t_end is None:
+        t_end = 2.0 * (-1.0 - x_start) / v + 20.0
+
+    if wall not in ("dense", "orders"):
+        raise InputError(f"wall must be 'dense' or 'orders', got {wall!r}")
+    G = dense_edge_matrix(modes, quad.phi) if wall == "dense" else None
+
+    def wall_terms_dense(x0, Q):
+        e = np.exp(alpha * (x0 + quad.cos_phi + G @ Q)) * quad.weight
+        F = e.sum()
+        return F / alpha, F, e @ G
+
+    def wall_terms_orders(x0, Q):
+        V, F, f = wall_terms(quad, a, np.array([x0]), Q[None, :])
+        return V[0], F[0], f[0]
+
+    wall = wall_terms_dense if G is not None else wall_terms_orders
+
+    def rhs(_t, y):
+        x0, p0, Q, P = y[0], y[1], y[2 : 2 + N], y[2 + N :]
+        _, F, f = wall(x0, Q)
+        return np.concatenate(([p0 / m, -F], P / m, -m * w**2 * Q - f))
+
+    def energy(y):
+        Q, P = y[2 : 2 + N], y[2 + N :]
+        V, _, _ = wall(y[0], Q)
+        return y[1] ** 2 / (2 * m) + np.sum(P**2 / (2 * m) + 0.5 * m * (w * Q) ** 2) + V
+
+    y0 = np.zeros(2 + 2 * N)
+    y0[0], y0[1] = x_start, m * v
+    start = time.perf_counter()
+    sol = solve_ivp(
+        rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=atol, dense_output=False
+    )
+    elapsed = time.perf_counter() - start
+    y = sol.y[:, -1]
+    Q, P = y[2 : 2 + N], y[2 + N :]
+    e_modes = (P**2 / (2 * m) + 0.5 * m * (w * Q) ** 2) / e0
+    h = np.array(
+        [energy(sol.y[:, i]) for i in range(0, sol.y.shape[1], max(1, sol.y.shape[1] // 200))]
+    )
+    _, F_end, _ = wall(y[0], Q)
+    if F_end > CONTACT_TOL * e0 * alpha:
+        raise RuntimeError("DOP853 reference ended while still in contact; increase t_end")
+    return {
+        "epsilon": float(-y[1] / (m * v)),
+        "energy_after": e_modes,
+        "energy_drift": float(np.max(np.abs(h - h[0])) / h[0]),
+        "nfev": int(sol.nfev),
+        "wall_time_s": elapsed,
+        "t_end": t_end,
+    }

@@ -1,0 +1,258 @@
+"""epsilon(v) at any two-dimensional Poisson number: shipped laws and their interpolation in nu.
+
+The package ships laws ``epsilon(v)`` on a grid of 2D Poisson numbers
+(``restitution/laws/data/law_nu<nu>.json``, :func:`restitution.laws.law`). :func:`law_for` serves
+
+* a shipped law when ``nu`` is within :data:`NU_MATCH` of a grid value (the 3D Poisson number is
+  never known that well, and the JSON of every served point names the law's own ``nu``);
+* otherwise, inside the grid and with at least three grid values, :class:`NuInterpolatedLaw`:
+  at each speed the grid laws are interpolated in ``nu`` by a monotone cubic (PCHIP), and the
+  error adds, in quadrature to the interpolated point errors, a leave-one-out estimate of the
+  interpolation error: at every interior grid value the law is predicted from the others and
+  compared with the computed one, and every ``nu`` gets the largest of these at its speed
+  (conservative: the left-out prediction spans twice the spacing; and a single neighbour's
+  leave-one-out error can vanish by accident at one speed, as at 0.7 for ``v = 1e-3``);
+* else an :class:`~restitution.errors.InputError` that names the shipped values and the command
+  that computes the law (``restitution curve --nu NU --out DIR``), whose JSON is then served with
+  ``path=``.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+from importlib import resources
+
+import numpy as np
+from scipy.interpolate import PchipInterpolator
+
+from restitution.errors import InputError
+from restitution.laws.law import EpsilonLaw, law, law_filename
+
+__all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_nus"]
+
+NU_MATCH = 1e-4
+"""Largest ``|nu_2d - nu_law|`` for which a shipped law serves ``nu_2d`` as it is."""
+
+
+def shipped_nus() -> list[float]:
+    """The 2D Poisson numbers with a law in ``restitution/laws/data``, increasing."""
+    data = resources.files("restitution.laws").joinpath("data")
+    out = []
+    try:
+        for p in data.iterdir():
+            name = p.name
+            if name.startswith("law_nu") and name.endswith(".json"):
+                try:
+                    out.append(float(name[len("law_nu") : -len(".json")]))
+                except ValueError:
+                    continue
+    except (FileNotFoundError, NotADirectoryError, OSError):
+        return []
+    return sorted(out)
+
+
+def _pchip(x: np.ndarray, y: np.ndarray, at: float) -> np.ndarray:
+    """PCHIP through ``(x, y[:, j])`` for every column ``j``, at ``at``; linear for 2 nodes."""
+    return PchipInterpolator(x, y, axis=0, extrapolate=True)(at)
+
+
+@dataclass(frozen=True, eq=False)
+class NuInterpolatedLaw:
+    """epsilon(v) at a Poisson number between grid laws, with a leave-one-out error.
+
+    Attributes
+    ----------
+    nu : float
+        The 2D Poisson number served.
+    nodes : tuple of EpsilonLaw
+        Grid laws, at least three, increasing in ``nu``, with ``nodes[0].nu < nu <
+        nodes[-1].nu``.
+
+    Notes
+    -----
+    Exposes the evaluation API of :class:`restitution.laws.law.EpsilonLaw` (``epsilon``,
+    ``epsilon_err``, ``valid_range``, ``v``, ``epsilon_points``, ``epsilon_err_points``,
+    ``asymptotic_ok``) so that exports take either.
+    """
+
+    nu: float
+    nodes: tuple
+
+    def __post_init__(self) -> None:
+        nus = np.array([n.nu for n in self.nodes])
+        if len(nus) < 3 or np.any(np.diff(nus) <= 0):
+            raise InputError("interpolation in nu needs at least three laws, increasing in nu")
+        if not nus[0] < self.nu < nus[-1]:
+            raise InputError(
+                f"nu = {self.nu:g} is outside the grid {nus[0]:g} ... {nus[-1]:g}; "
+                "interpolation does not extrapolate"
+            )
+
+    @property
+    def grid(self) -> np.ndarray:
+        """The grid's Poisson numbers, shape (M,)."""
+        return np.array([n.nu for n in self.nodes])
+
+    @property
+    def valid_range(self) -> tuple[float, float]:
+        """The speeds every grid law covers, units of ``c``."""
+        return (
+            max(n.valid_range[0] for n in self.nodes),
+            min(n.valid_range[1] for n in self.nodes),
+        )
+
+    def _node_values(self, v: np.ndarray, outside: str) -> tuple[np.ndarray, np.ndarray]:
+        eps = np.array([np.atleast_1d(n.epsilon(v, outside=outside)) for n in self.nodes])
+        err = np.array([np.atleast_1d(n.epsilon_err(v, outside=outside)) for n in self.nodes])
+        return eps, err
+
+    def leave_one_out(self, v, *, outside: str = "raise") -> np.ndarray:
+        """``|prediction without node k - node k|`` at speed(s) ``v``.
+
+        Returns
+        -------
+        numpy.ndarray, shape (M, K)
+            One row per grid law; ``nan`` for the two end laws (no extrapolation).
+        """
+        v = np.atleast_1d(np.asarray(v, dtype=float))
+        eps, _ = self._node_values(v, outside)
+        x = self.grid
+        out = np.full(eps.shape, np.nan)
+        for k in range(1, len(x) - 1):
+            keep = np.arange(len(x)) != k
+            out[k] = np.abs(_pchip(x[keep], eps[keep], x[k]) - eps[k])
+        return out
+
+    def interpolation_err(self, v, *, outside: str = "raise"):
+        """Leave-one-out estimate of the interpolation error at ``self.nu``, speed(s) ``v``: the
+        largest leave-one-out error of the grid at that speed (module docstring)."""
+        loo = self.leave_one_out(v, outside=outside)
+        out = np.nanmax(loo, axis=0)  # the two end laws have no leave-one-out value (nan)
+        return float(out[0]) if np.ndim(v) == 0 else out
+
+    def epsilon(self, v, *, outside: str = "raise"):
+        """Interpolated ``epsilon`` at speed(s) ``v`` towards the wall (units of ``c``)."""
+        arr = np.atleast_1d(np.asarray(v, dtype=float))
+        eps, _ = self._node_values(arr, outside)
+        out = _pchip(self.grid, eps, self.nu)
+        return float(out[0]) if np.ndim(v) == 0 else out
+
+    def epsilon_err(self, v, *, outside: str = "raise"):
+        """Error of :meth:`epsilon`: interpolated point error (+) leave-one-out error."""
+        arr = np.atleast_1d(np.asarray(v, dtype=float))
+        _, err = self._node_values(arr, outside)
+        point = np.abs(_pchip(self.grid, err, self.nu))
+        out = np.hypot(point, self.interpolation_err(arr, outside=outside))
+        return float(out[0]) if np.ndim(v) == 0 else out
+
+    __call__ = epsilon
+
+    # -- the points behind the law, as EpsilonLaw has them --------------------------------
+
+    @property
+    def v(self) -> np.ndarray:
+        """Speeds computed for every grid law (inside the common range), increasing."""
+        common = set(np.round(self.nodes[0].v, 12))
+        for n in self.nodes[1:]:
+            common &= set(np.round(n.v, 12))
+        hi = self.valid_range[1]
+        return np.array(sorted(x for x in common if x <= hi))
+
+    @property
+    def epsilon_points(self) -> np.ndarray:
+        return np.atleast_1d(self.epsilon(self.v))
+
+    @property
+    def epsilon_err_points(self) -> np.ndarray:
+        return np.atleast_1d(self.epsilon_err(self.v))
+
+    @property
+    def asymptotic_ok(self) -> np.ndarray:
+        """A point is asymptotic when it is in every grid law."""
+        ok = np.ones(self.v.size, bool)
+        for n in self.nodes:
+            idx = np.searchsorted(n.v, self.v)
+            ok &= np.asarray(n.asymptotic_ok)[np.clip(idx, 0, n.v.size - 1)]
+        return ok
+
+    @property
+    def source(self) -> str:
+        return (
+            f"PCHIP in nu between the laws for nu = {', '.join(f'{x:g}' for x in self.grid)} "
+            "(error includes the leave-one-out interpolation error)"
+        )
+
+
+def _refusal(nu: float, shipped: list[float], why: str) -> InputError:
+    name = law_filename(nu)
+    return InputError(
+        f"no law for nu_2d = {nu:.6g}: {why} (grid: "
+        f"{', '.join(f'{x:g}' for x in shipped) or 'none'}); compute it with "
+        f"`restitution curve --nu {nu:.6g} --out DIR` and pass the file DIR/{name} "
+        "(--law-file, or path= from Python)"
+    )
+
+
+def law_for(
+    nu: float,
+    *,
+    path: str | os.PathLike | None = None,
+    laws: list[EpsilonLaw] | None = None,
+) -> EpsilonLaw | NuInterpolatedLaw:
+    """The law ``epsilon(v)`` for the 2D Poisson number ``nu``.
+
+    Parameters
+    ----------
+    nu : float
+        Two-dimensional Poisson number.
+    path : path, optional
+        A law JSON file (written by ``restitution curve``); its ``nu`` must match within
+        :data:`NU_MATCH`.
+    laws : list of EpsilonLaw, optional
+        The grid to serve from instead of the shipped laws (for tests and for a user's own
+        grid).
+
+    Returns
+    -------
+    EpsilonLaw or NuInterpolatedLaw
+
+    Raises
+    ------
+    InputError
+        When ``nu`` is neither on nor inside a grid of at least three laws; the message names
+        the grid and the command that computes the law.
+    """
+    nu = float(nu)
+    if not math.isfinite(nu):
+        raise InputError(f"nu must be a finite number, got {nu}")
+    if path is not None:
+        one = EpsilonLaw.from_json(path)
+        if abs(one.nu - nu) > NU_MATCH:
+            raise InputError(
+                f"the law file {path} is for nu_2d = {one.nu:g}, not {nu:.6g}; compute it with "
+                f"`restitution curve --nu {nu:.6g} --out DIR`"
+            )
+        return one
+    if laws is None:
+        shipped = shipped_nus()
+        nearest = min(shipped, key=lambda x: abs(x - nu), default=None)
+        if nearest is not None and abs(nearest - nu) <= NU_MATCH:
+            return law(nearest)
+        _check_inside(nu, shipped, "shipped")
+        laws = [law(x) for x in shipped]
+    grid = sorted(laws, key=lambda a: a.nu)
+    nus = [a.nu for a in grid]
+    nearest = min(range(len(grid)), key=lambda i: abs(nus[i] - nu))
+    if abs(nus[nearest] - nu) <= NU_MATCH:
+        return grid[nearest]
+    _check_inside(nu, nus, "given")
+    return NuInterpolatedLaw(nu, tuple(grid))
+
+
+def _check_inside(nu: float, nus: list[float], which: str) -> None:
+    if len(nus) < 3:
+        raise _refusal(nu, nus, f"fewer than three {which} laws, so none is interpolated")
+    if not nus[0] < nu < nus[-1]:
+        raise _refusal(nu, nus, f"outside the {which} grid")

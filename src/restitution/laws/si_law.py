@@ -1,0 +1,238 @@
+"""The coefficient of restitution at impact speeds in m/s, for a named material and partner.
+
+:func:`si_law` joins a :class:`~restitution.laws.units.Grain` (3D constants in SI units and a
+geometry), a collision partner (``"wall"`` or ``"grain"``) and the reduced-unit law for the
+grain's 2D Poisson number (:func:`restitution.laws.law_nu.law_for`). :meth:`SILaw.points` evaluates
+it at SI speeds and says, for every point, where its number comes from (:data:`STATUSES`).
+
+Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2d = 0.33)::
+
+    >>> from restitution.laws.si_law import si_law
+    >>> s = si_law(E=63e9, nu=0.2481, rho=2500, geometry="cylinder", against="wall")
+    >>> round(s.grain.c_m_s)
+    5182
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+
+import numpy as np
+
+from restitution.errors import InputError
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for
+from restitution.laws.units import PARTNERS, Grain, partner_factor
+
+__all__ = ["STATUSES", "SILaw", "SIPoint", "si_law"]
+
+STATUSES: dict[str, str] = {
+    "computed": "at a computed speed; its extrapolation passed the asymptotic checks",
+    "computed-not-asymptotic": (
+        "at a computed speed; its extrapolation did not pass every asymptotic check (the error "
+        "bar is the fit's, read it as indicative)"
+    ),
+    "interpolated": "between two computed speeds whose extrapolations passed their checks",
+    "interpolated-not-asymptotic": (
+        "between two computed speeds, at least one of which did not pass every asymptotic check"
+    ),
+    "outside": "outside the computed range of the law; no value (the law never extrapolates)",
+}
+"""Status of a point -> what it means."""
+
+_SAME = 1e-9  # relative tolerance for "at a computed speed"
+
+
+@dataclass(frozen=True)
+class SIPoint:
+    """epsilon at one SI speed.
+
+    Attributes
+    ----------
+    speed_m_s : float
+        Impact speed ``w``, m/s (towards the wall, or relative normal speed of two grains).
+    v_over_c : float
+        Reduced speed ``v`` towards the wall, units of ``c``.
+    epsilon, epsilon_err : float or None
+        Coefficient of restitution and its error; ``None`` when ``status == "outside"``.
+    status : str
+        One of :data:`STATUSES`.
+    note : str
+        Why, when the status is not ``"computed"``.
+    """
+
+    speed_m_s: float
+    v_over_c: float
+    epsilon: float | None
+    epsilon_err: float | None
+    status: str
+    note: str = ""
+
+    def to_dict(self) -> dict:
+        return {
+            "speed_m_s": self.speed_m_s,
+            "v_over_c": self.v_over_c,
+            "epsilon": self.epsilon,
+            "epsilon_err": self.epsilon_err,
+            "status": self.status,
+            "note": self.note,
+        }
+
+
+def _status(law, v: float) -> tuple[str, str]:
+    pts = np.asarray(law.v, dtype=float)
+    ok = np.asarray(law.asymptotic_ok, dtype=bool)
+    at = np.flatnonzero(np.abs(pts - v) <= _SAME * pts)
+    if at.size:
+        if ok[at[0]]:
+            return "computed", ""
+        return "computed-not-asymptotic", STATUSES["computed-not-asymptotic"]
+    if v < pts[0]:
+        return "outside", f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
+    j = int(np.searchsorted(pts, v))
+    if j >= pts.size:
+        return "outside", f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
+    good = bool(ok[j - 1] and ok[j])
+    if good:
+        return "interpolated", ""
+    return "interpolated-not-asymptotic", STATUSES["interpolated-not-asymptotic"]
+
+
+@dataclass(frozen=True, eq=False)
+class SILaw:
+    """epsilon(w) for a grain in SI units against a named partner.
+
+    Attributes
+    ----------
+    grain : Grain
+        Material (3D constants, SI) and geometry.
+    against : {"wall", "grain"}
+        Collision partner: ``w`` is the speed towards a rigid wall, or the relative normal speed
+        of two identical grains.
+    law : EpsilonLaw or NuInterpolatedLaw
+        The reduced-unit law for ``grain.nu_2d``.
+    """
+
+    grain: Grain
+    against: str
+    law: EpsilonLaw | NuInterpolatedLaw
+
+    def __post_init__(self) -> None:
+        partner_factor(self.against)  # validates
+        if abs(float(self.law.nu) - self.grain.nu_2d) > NU_MATCH:
+            raise InputError(
+                f"the law is for nu_2d = {float(self.law.nu):g}, the grain has nu_2d = "
+                f"{self.grain.nu_2d:.6g}"
+            )
+
+    @property
+    def speed_scale_m_s(self) -> float:
+        """``k c``: ``w = k c v`` with ``k = 1`` (wall) or 2 (grain), m/s."""
+        return self.grain.speed_scale(self.against)
+
+    @property
+    def speed_range_m_s(self) -> tuple[float, float]:
+        """Speeds in m/s the law covers: its computed range times ``k c``."""
+        lo, hi = self.law.valid_range
+        return lo * self.speed_scale_m_s, hi * self.speed_scale_m_s
+
+    @property
+    def computed_range_m_s(self) -> tuple[float, float]:
+        """Lowest and highest computed speeds in m/s (the law serves nothing outside)."""
+        return (
+            float(self.law.v[0]) * self.speed_scale_m_s,
+            float(self.law.v[-1]) * self.speed_scale_m_s,
+        )
+
+    @property
+    def law_source(self) -> str:
+        if isinstance(self.law, NuInterpolatedLaw):
+            return self.law.source
+        return str(self.law.metadata.get("source", "law"))
+
+    def epsilon(self, speed_m_s):
+        """epsilon at SI speed(s) ``w`` (m/s); raises outside the law's range."""
+        return self.law.epsilon(self.grain.v_over_c(speed_m_s, self.against))
+
+    def epsilon_err(self, speed_m_s):
+        """Error of :meth:`epsilon` at ``w`` (m/s)."""
+        return self.law.epsilon_err(self.grain.v_over_c(speed_m_s, self.against))
+
+    def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
+        """epsilon, its error and its status at every speed (m/s); never raises for range."""
+        out = []
+        for w in np.atleast_1d(np.asarray(speeds_m_s, dtype=float)):
+            v = self.grain.v_over_c(float(w), self.against)
+            status, note = _status(self.law, v)
+            eps = err = None
+            if status != "outside":
+                try:
+                    eps = float(self.law.epsilon(v))
+                    err = float(self.law.epsilon_err(v))
+                except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
+                    status, note = "outside", str(exc)
+            out.append(SIPoint(float(w), v, eps, err, status, note))
+        return tuple(out)
+
+    def to_dict(self, speeds_m_s) -> dict:
+        """The JSON of ``restitution law``: constants, partner, and the points."""
+        lo, hi = self.computed_range_m_s
+        return {
+            "c_m_s": self.grain.c_m_s,
+            "nu_2d": self.grain.nu_2d,
+            "geometry": self.grain.geometry,
+            "against": self.against,
+            "against_meaning": PARTNERS[self.against],
+            "material": self.grain.to_dict(),
+            "law": {
+                "nu_2d": float(self.law.nu),
+                "source": self.law_source,
+                "computed_speeds_m_s": [lo, hi],
+                "v_units": "v = w / (k c), speed towards the wall in units of c; k = "
+                f"{partner_factor(self.against):g} ({self.against})",
+            },
+            "statuses": STATUSES,
+            "points": [p.to_dict() for p in self.points(speeds_m_s)],
+        }
+
+
+def si_law(
+    E: float,
+    nu: float,
+    rho: float,
+    geometry: str,
+    against: str,
+    *,
+    path: str | os.PathLike | None = None,
+) -> SILaw:
+    """epsilon at SI speeds for a material given by its 3D constants.
+
+    Parameters
+    ----------
+    E : float
+        Three-dimensional Young modulus, Pa.
+    nu : float
+        Three-dimensional Poisson number.
+    rho : float
+        Density, kg/m^3.
+    geometry : {"cylinder", "thin-disk"}
+        Long cylinder (plane strain) or thin disk (plane stress).
+    against : {"wall", "grain"}
+        Rigid wall at speed ``w``, or two identical grains at relative normal speed ``w``.
+    path : path, optional
+        A law file for the grain's ``nu_2d`` (from ``restitution curve``).
+
+    Returns
+    -------
+    SILaw
+
+    Raises
+    ------
+    InputError
+        For constants out of range, or when no law serves the grain's ``nu_2d`` (the message
+        names the command that computes it).
+    """
+    grain = Grain(E=float(E), nu=float(nu), rho=float(rho), geometry=geometry)
+    partner_factor(against)
+    return SILaw(grain, against, law_for(grain.nu_2d, path=path))

@@ -1,0 +1,284 @@
+"""Computing epsilon(v): sweeps of collisions extrapolated to a hard wall and to many modes.
+
+Paper Fig. 1. For every speed ``v`` (the disk's speed towards the wall, units of
+``c = sqrt(E/rho)``) the energy loss ``1 - epsilon^2`` is computed on a grid of wall hardness
+``alpha`` and mode counts ``N`` (:mod:`restitution.limits.sweep`) and extrapolated to
+``alpha, N -> infinity`` (:mod:`restitution.limits.extrapolation`). :func:`compute_curves` does this for
+a whole grid of speeds, :func:`epsilon_at` for one speed. Serving the result as a law and its
+exports is :mod:`restitution.laws.law`'s job.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Iterable
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from restitution._version import __version__
+from restitution.errors import InputError
+from restitution.limits.extrapolation import (
+    CombinedLimit,
+    LinearLimit,
+    combined_limit,
+    epsilon_from_loss,
+    extrapolate_modes,
+)
+from restitution.limits.store import Store
+from restitution.limits.sweep import (
+    DEFAULTS,
+    SweepSettings,
+    collide_points,
+    grid,
+    load_grid,
+    run_sweep,
+)
+
+__all__ = ["Curve", "PointEpsilon", "compute_curves", "epsilon_at"]
+
+
+@dataclass(frozen=True, eq=False)
+class Curve:
+    """Extrapolated epsilon at several speeds for one Poisson number.
+
+    Attributes
+    ----------
+    nu : float
+        Two-dimensional Poisson number.
+    settings : SweepSettings
+        Grid and solver settings behind the points.
+    velocities : numpy.ndarray, shape (K,)
+        Speeds towards the wall, units of ``c``.
+    limits : tuple of CombinedLimit
+        The extrapolation at each speed (grid and fits included).
+    """
+
+    nu: float
+    settings: SweepSettings
+    velocities: np.ndarray
+    limits: tuple[CombinedLimit, ...]
+
+    @property
+    def epsilon(self) -> np.ndarray:
+        return np.array([c.epsilon for c in self.limits])
+
+    @property
+    def epsilon_err(self) -> np.ndarray:
+        return np.array([c.epsilon_err for c in self.limits])
+
+
+def compute_curves(
+    nus: Iterable[float],
+    settings: SweepSettings = DEFAULTS,
+    *,
+    store: Store | str | os.PathLike | None = None,
+    run: bool = True,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    client: Any = None,
+    progress: bool | None = None,
+    batch_function=collide_points,
+) -> dict[float, Curve]:
+    """Run (or read) the sweep of ``settings`` for every ``nu`` and extrapolate every speed.
+
+    Parameters
+    ----------
+    nus : iterable of float
+        Poisson numbers.
+    settings : SweepSettings
+        Velocities, ``alpha`` and ``N`` sets, solver settings (default :data:`DEFAULTS`).
+    store : Store or path, optional
+        Result store (default :func:`restitution.limits.store.default_store_path`).
+    run : bool
+        Compute missing points first; with ``False`` only the store is read (missing points
+        become ``nan`` and are flagged).
+    workers, scheduler, client, progress, batch_function
+        Passed to :func:`restitution.limits.sweep.run_sweep`.
+
+    Returns
+    -------
+    dict of float to Curve
+    """
+    nus = [float(nu) for nu in nus]
+    own = not isinstance(store, Store)
+    db = Store(store) if own else store
+    try:
+        if run:
+            run_sweep(
+                grid(nus, settings),
+                store=db,
+                workers=workers,
+                scheduler=scheduler,
+                client=client,
+                batch_size=settings.batch_size,
+                batch_function=batch_function,
+                progress=progress,
+            )
+        curves = {}
+        for nu in nus:
+            limits = []
+            for v in settings.velocities:
+                data = load_grid(db, nu, v, settings)
+                limit = combined_limit(data.alpha, data.n_modes, data.loss, order=settings.order)
+                lost = len(data.missing) + len(data.failures)
+                if lost:
+                    note = f"{len(data.failures)} failed and {len(data.missing)} missing point(s)"
+                    limit = replace(
+                        limit,
+                        asymptotic_ok=False,
+                        message="; ".join(filter(None, [limit.message, note])),
+                    )
+                limits.append(limit)
+            curves[nu] = Curve(nu, settings, np.array(settings.velocities), tuple(limits))
+        return curves
+    finally:
+        if own:
+            db.close()
+
+
+@dataclass(frozen=True, eq=False)
+class PointEpsilon:
+    """epsilon at one speed, with the grid and fits behind it.
+
+    Attributes
+    ----------
+    nu, v : float
+        Poisson number and speed towards the wall (units of ``c``).
+    alpha : float or None
+        The fixed wall hardness (``1/R``) when only ``N -> infinity`` was taken; ``None`` when
+        both limits were taken.
+    epsilon, epsilon_err : float
+        Extrapolated coefficient of restitution and its error.
+    energy_loss, energy_loss_err : float
+        ``1 - epsilon^2`` and its error.
+    asymptotic_ok : bool
+        Whether the extrapolation passed its checks; ``message`` says why not.
+    message : str
+        Empty when asymptotic.
+    fit : CombinedLimit or LinearLimit
+        The extrapolation (grid and fits).
+    settings : SweepSettings
+        Grid and solver settings.
+    failures : tuple of (float, int, str)
+        ``(alpha, N, message)`` of grid points that failed.
+    """
+
+    nu: float
+    v: float
+    alpha: float | None
+    epsilon: float
+    epsilon_err: float
+    energy_loss: float
+    energy_loss_err: float
+    asymptotic_ok: bool
+    message: str
+    fit: CombinedLimit | LinearLimit
+    settings: SweepSettings
+    failures: tuple = ()
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary: epsilon, epsilon_err, the grid and the fits."""
+        if isinstance(self.fit, CombinedLimit):
+            grid_d = {
+                "alpha": self.fit.to_dict(fits=False)["alpha"],
+                "n_modes": [int(n) for n in self.fit.n_modes],
+                "energy_loss": self.fit.to_dict(fits=False)["energy_loss_grid"],
+            }
+            fits = self.fit.to_dict()["fits"]
+        else:
+            grid_d = {
+                "alpha": [self.alpha],
+                "n_modes": [int(n) for n in self.fit.parameter],
+                "energy_loss": [self.fit.to_dict()["y"]],
+            }
+            fits = {"N": self.fit.to_dict()}
+        return {
+            "nu": self.nu,
+            "v": self.v,
+            "v_units": "c (speed of the disk towards the wall)",
+            "alpha": self.alpha,
+            "limits": ["N"] if self.alpha is not None else ["alpha", "N"],
+            "epsilon": _finite(self.epsilon),
+            "epsilon_err": _finite(self.epsilon_err),
+            "energy_loss": _finite(self.energy_loss),
+            "energy_loss_err": _finite(self.energy_loss_err),
+            "asymptotic_ok": bool(self.asymptotic_ok),
+            "message": self.message,
+            "grid": grid_d,
+            "fits": fits,
+            "failed_points": [
+                {"alpha": a, "n_modes": n, "message": m} for a, n, m in self.failures
+            ],
+            "settings": self.settings.to_dict(),
+            "version": __version__,
+        }
+
+
+def _finite(x: float) -> float | None:
+    return float(x) if math.isfinite(x) else None
+
+
+def epsilon_at(
+    nu: float,
+    v: float,
+    *,
+    alpha: float | None = None,
+    settings: SweepSettings = DEFAULTS,
+    store: Store | str | os.PathLike | None = None,
+    run: bool = True,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    client: Any = None,
+    progress: bool | None = None,
+    batch_function=collide_points,
+) -> PointEpsilon:
+    """epsilon at one speed ``v`` (units of ``c``, towards the wall).
+
+    With ``alpha`` only ``N -> infinity`` is taken at that wall hardness; without it both limits
+    on the grid ``settings.alphas_at(v) x settings.n_modes``. Missing collisions are computed first
+    (unless ``run=False``); the executor keywords go to :func:`restitution.limits.sweep.run_sweep`.
+    """
+    if alpha is not None and not (alpha > 0 and math.isfinite(alpha)):
+        raise InputError(f"the wall hardness alpha must be positive (1/R), got {alpha}")
+    settings = replace(settings, velocities=(float(v),))
+    if alpha is not None:
+        settings = replace(settings, alphas=(float(alpha),), alpha_scale="absolute")
+    own = not isinstance(store, Store)
+    db = Store(store) if own else store
+    try:
+        if run:
+            run_sweep(
+                grid([nu], settings),
+                store=db,
+                workers=workers,
+                scheduler=scheduler,
+                client=client,
+                batch_size=settings.batch_size,
+                batch_function=batch_function,
+                progress=progress,
+            )
+        data = load_grid(db, nu, v, settings)
+    finally:
+        if own:
+            db.close()
+    failures = tuple((s.alpha, s.n_modes, m) for s, m in data.failures)
+    if alpha is None:
+        fit = combined_limit(data.alpha, data.n_modes, data.loss, order=settings.order)
+        loss, loss_err, ok, msg = fit.limit, fit.limit_err, fit.asymptotic_ok, fit.message
+        eps, eps_err = fit.epsilon, fit.epsilon_err
+    else:
+        fit = extrapolate_modes(data.n_modes, data.loss[0])
+        loss, loss_err, ok, msg = fit.limit, fit.limit_err, fit.asymptotic_ok, fit.message
+        eps, eps_err = epsilon_from_loss(loss, loss_err)
+        if not math.isfinite(eps):
+            ok = False
+            msg = "; ".join(filter(None, [msg, f"energy loss {loss:.4g} is outside [0, 1)"]))
+    if failures:
+        ok = False
+        msg = "; ".join(filter(None, [msg, f"{len(failures)} grid point(s) failed"]))
+    return PointEpsilon(
+        float(nu), float(v), alpha, eps, eps_err, loss, loss_err, ok, msg, fit, settings, failures
+    )

@@ -1,0 +1,211 @@
+"""Where the tasks of a sweep run, and how their infrastructure fails.
+
+Executors (library interfaces only, no home-made distribution), all driven through
+:func:`concurrent.futures.as_completed` by :mod:`restitution.limits.sweep`:
+
+* default: :class:`concurrent.futures.ProcessPoolExecutor` on all cores (spawned processes);
+* ``workers=N``: a :class:`distributed.LocalCluster` with ``N`` single-threaded workers;
+* ``scheduler=ADDRESS``: an existing Dask cluster, probed first (:func:`probe_scheduler`) so
+  that a wrong address fails at once with one clear message instead of hanging;
+* ``client=``: an existing :class:`distributed.Client`.
+
+A task that dies with its worker (``BrokenProcessPool``, a lost Dask worker) says nothing about
+its points: :func:`is_infrastructure_failure` tells such failures from the solver's.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import concurrent.futures as cf
+import contextlib
+import multiprocessing
+import os
+import threading
+import time
+from collections.abc import Iterator
+from typing import Any
+
+from restitution.errors import InputError, SchedulerError
+
+__all__ = [
+    "INFRASTRUCTURE_RETRIES",
+    "SCHEDULER_TIMEOUT_S",
+    "executor",
+    "infrastructure_message",
+    "is_infrastructure_failure",
+    "probe_scheduler",
+]
+
+
+@contextlib.contextmanager
+def _single_threaded_children() -> Iterator[None]:
+    """One BLAS/OpenMP thread in worker processes started inside this block.
+
+    The workers already fill the cores; threaded BLAS in each would oversubscribe them. The
+    variables are inherited by processes spawned now and restored afterwards.
+    """
+    names = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
+    saved = {k: os.environ.get(k) for k in names}
+    os.environ.update({k: "1" for k in names})
+    try:
+        yield
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+
+
+def _exit_with_parent(parent: int) -> None:
+    """Worker initializer: end this worker when the sweep process is gone (e.g. ``kill -9``).
+
+    Pool workers would otherwise wait for work forever: every worker holds both ends of the
+    task queue, so the parent's death never reaches them as end-of-file.
+    """
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(1.0)
+        os._exit(1)
+
+    threading.Thread(target=watch, daemon=True, name="exit-with-parent").start()
+
+
+def _cpu_count() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # pragma: no cover - not Linux
+        return os.cpu_count() or 1
+
+
+SCHEDULER_TIMEOUT_S = 10.0
+"""Seconds to wait for a Dask scheduler to accept a connection and answer."""
+
+
+def probe_scheduler(address: str, timeout: float = SCHEDULER_TIMEOUT_S) -> dict:
+    """Ask ``address`` for its identity; returns it if it is a Dask scheduler.
+
+    ``distributed.Client`` waits forever for the handshake of a server that accepts the
+    connection but never answers (say, a dashboard or web port given by mistake); this probe
+    has one overall deadline.
+
+    Raises
+    ------
+    SchedulerError
+        If the address is malformed, nothing answers within ``timeout`` seconds, or the server
+        is not a Dask scheduler; the message says what to do.
+    """
+    from distributed.comm import connect
+
+    async def ask() -> dict:
+        comm = await connect(address, timeout=timeout)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    hint = "give the scheduler's address, e.g. tcp://HOST:8786 (not the dashboard's)"
+    try:
+        reply = asyncio.run(asyncio.wait_for(ask(), timeout + 1.0))
+    except ValueError as exc:
+        raise SchedulerError(
+            f"{address!r} is not a Dask scheduler address ({exc}); {hint}"
+        ) from None
+    except TimeoutError:
+        raise SchedulerError(
+            f"{address} did not answer as a Dask scheduler within {timeout:g} s; {hint}"
+        ) from None
+    except OSError as exc:
+        raise SchedulerError(f"cannot reach Dask scheduler {address}: {exc}; {hint}") from None
+    except Exception as exc:  # noqa: BLE001 - a server speaking another protocol
+        raise SchedulerError(
+            f"{address} did not answer as a Dask scheduler ({type(exc).__name__}: {exc}); {hint}"
+        ) from None
+    if not isinstance(reply, dict) or reply.get("type") != "Scheduler":
+        kind = reply.get("type") if isinstance(reply, dict) else type(reply).__name__
+        raise SchedulerError(f"{address} is a Dask {kind}, not a scheduler; {hint}")
+    return reply
+
+
+@contextlib.contextmanager
+def executor(
+    workers: int | None, scheduler: str | None, client: Any
+) -> Iterator[tuple[cf.Executor, str]]:
+    if client is not None:
+        yield client.get_executor(pure=False), f"dask client {client.scheduler.address}"
+        return
+    if scheduler is not None:
+        from distributed import Client
+
+        probe_scheduler(scheduler)
+        try:
+            c = Client(scheduler, timeout=SCHEDULER_TIMEOUT_S)
+        except (OSError, ValueError) as exc:
+            raise SchedulerError(f"cannot connect to Dask scheduler {scheduler}: {exc}") from None
+        with c:
+            yield c.get_executor(pure=False), f"dask scheduler {scheduler}"
+        return
+    if workers is not None:
+        if workers < 1:
+            raise InputError("workers must be >= 1")
+        from distributed import Client, LocalCluster
+
+        with (
+            _single_threaded_children(),
+            LocalCluster(
+                n_workers=workers,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=":0",  # any free port; never collide with 8787
+            ) as cluster,
+            Client(cluster) as c,
+        ):
+            yield c.get_executor(pure=False), f"dask LocalCluster, {workers} workers"
+        return
+    n = _cpu_count()
+    with _single_threaded_children():
+        context = multiprocessing.get_context("spawn")  # safe with the parent's threads
+        pool = cf.ProcessPoolExecutor(
+            max_workers=n,
+            mp_context=context,
+            initializer=_exit_with_parent,
+            initargs=(os.getpid(),),
+        )
+        try:
+            yield pool, f"local processes, {n} workers"
+        except BaseException:
+            # Interrupted: stop the workers now instead of letting them finish their batches
+            # (their results could no longer be stored anyway).
+            processes = list((getattr(pool, "_processes", None) or {}).values())
+            pool.shutdown(wait=False, cancel_futures=True)
+            for process in processes:
+                process.terminate()
+            raise
+        pool.shutdown(wait=True)
+
+
+INFRASTRUCTURE_RETRIES = 3
+"""How often a batch lost to an infrastructure failure (a dead worker) is resubmitted."""
+
+_INFRASTRUCTURE_ERRORS = frozenset(
+    {"KilledWorker", "CommClosedError", "StreamClosedError", "FutureCancelledError"}
+)
+
+
+def is_infrastructure_failure(exc: BaseException) -> bool:
+    """Whether a task died for reasons outside the computation (a killed or lost worker).
+
+    Such a task says nothing about its points, so they are retried, never stored as failed.
+    """
+    return (
+        isinstance(exc, cf.BrokenExecutor | cf.CancelledError | ConnectionError)
+        or type(exc).__name__ in _INFRASTRUCTURE_ERRORS
+    )
+
+
+def infrastructure_message(message: str | None) -> bool:
+    """A stored failure message that names an infrastructure failure (older code stored them)."""
+    head = (message or "").split(":", 1)[0]
+    return head in _INFRASTRUCTURE_ERRORS or head in ("BrokenProcessPool", "CancelledError")

@@ -1,0 +1,637 @@
+"""SQLite store of collision results, keyed by every input and the code version.
+
+One row per collision: the inputs (a :class:`PointSpec`), the status (``"ok"`` or ``"failed"``
+with the error message), the scalar results and the JSON of
+:meth:`restitution.dynamics.results.CollisionResult.to_dict`. The key is a SHA-256 of the canonical JSON
+of the inputs and the code version (:func:`code_version`: ``restitution.__version__`` plus a
+digest of the solver's source files), so changed code never reuses old numbers, even between
+releases.
+
+The default file is ``restitution.bodies.cache.cache_dir() / "results.sqlite"``. The database runs in
+WAL mode with a busy timeout; every write is its own short transaction and inserts on the key
+(``ON CONFLICT``), so several processes may write to one store at once and a killed writer
+loses at most its uncommitted row. A successful row is never replaced; a failed row is replaced
+when the point is retried and succeeds.
+
+A file that is not SQLite, or SQLite without this store's schema marker, is refused with a
+:class:`StoreError` naming the file; it is never overwritten.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import importlib.util
+import json
+import math
+import sqlite3
+import time
+from collections.abc import Iterable, Iterator
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from restitution._version import __version__
+from restitution.errors import InputError, RestitutionError
+
+__all__ = [
+    "PointSpec",
+    "Store",
+    "StoreError",
+    "StoredPoint",
+    "code_version",
+    "default_store_path",
+]
+
+_MARKER = "restitution-results"
+_SCHEMA_VERSION = "1"
+_SQLITE_MAGIC = b"SQLite format 3\x00"
+_BUSY_TIMEOUT_S = 120.0
+
+_SCALARS = (
+    "epsilon",
+    "energy_loss",
+    "energy_drift",
+    "contact_time",
+    "max_compression",
+    "max_force",
+    "n_steps",
+    "dt",
+    "wall_time_s",
+)
+
+_SCHEMA = f"""
+CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS collisions (
+    key TEXT PRIMARY KEY,
+    code_version TEXT NOT NULL,
+    inputs TEXT NOT NULL,
+    nu REAL NOT NULL,
+    v REAL NOT NULL,
+    alpha REAL NOT NULL,
+    n_modes INTEGER NOT NULL,
+    selection TEXT NOT NULL,
+    integrator TEXT NOT NULL,
+    status TEXT NOT NULL CHECK (status IN ('ok', 'failed')),
+    error TEXT,
+    {", ".join(f"{name} REAL" for name in _SCALARS)},
+    result TEXT,
+    created_at TEXT NOT NULL
+);
+CREATE INDEX IF NOT EXISTS collisions_lookup
+    ON collisions (nu, n_modes, alpha, v, code_version);
+"""
+
+
+# Modules whose source determines a collision's numbers.
+_SOLVER_MODULES = (
+    "restitution.dynamics.collision",
+    "restitution.dynamics.integrators",
+    "restitution.dynamics.kernel",
+    "restitution.dynamics.wall",
+    "restitution.bodies.disk.modes",
+    "restitution.bodies.disk.frequency_equation",
+    "restitution.bodies.disk.bessel_ratio",
+    "restitution.bodies.material",
+    "restitution.dynamics.results",
+)
+
+
+@functools.cache
+def code_version() -> str:
+    """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
+
+    Any edit of the solver modules changes it, so a store never serves numbers of other code.
+    Without readable sources (e.g. a zip install) it is ``__version__`` alone.
+    """
+    digest = hashlib.sha256()
+    for name in _SOLVER_MODULES:
+        spec = importlib.util.find_spec(name)
+        origin = getattr(spec, "origin", None)
+        try:
+            with open(origin, "rb") as fh:
+                digest.update(name.encode() + b"\0" + fh.read())
+        except (OSError, TypeError):
+            return __version__
+    return f"{__version__}+{digest.hexdigest()[:12]}"
+
+
+class StoreError(RestitutionError):
+    """The result store cannot be used; the message names the file and what to do."""
+
+
+def default_store_path() -> Path:
+    """``cache_dir() / "results.sqlite"`` (see :func:`restitution.bodies.cache.cache_dir`)."""
+    from restitution.bodies.cache import cache_dir
+
+    return cache_dir() / "results.sqlite"
+
+
+def _canonical(value: Any) -> Any:
+    """Exact, JSON-ready form of an input: floats as ``float.hex``, sequences as lists."""
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return value
+    if isinstance(value, int | np.integer):
+        return int(value)
+    if isinstance(value, float | np.floating):
+        return float(value).hex()
+    if isinstance(value, tuple | list):
+        return [_canonical(v) for v in value]
+    if isinstance(value, dict):
+        return {str(k): _canonical(v) for k, v in sorted(value.items())}
+    raise InputError(f"option value {value!r} cannot be part of a store key")
+
+
+@dataclass(frozen=True)
+class PointSpec:
+    """Every input of one collision; the store's key.
+
+    Build points with :func:`restitution.limits.sweep.grid`, which fills in every numerical setting
+    of the solver; the defaults here only make small keys convenient.
+
+    Attributes
+    ----------
+    nu : float
+        Two-dimensional Poisson number.
+    v : float
+        Speed of the disk towards the wall before the collision, units of ``c``.
+    alpha : float
+        Wall hardness, ``1/R``.
+    n_modes : int
+        Number of modes.
+    select : str
+        How the modes are chosen (``"lowest"``: the ``n_modes`` lowest frequencies).
+    integrator : str
+        Time integrator name.
+    options : tuple of (str, value) pairs
+        Further solver keywords (tolerances, ...), sorted by name; hashable.
+    """
+
+    nu: float
+    v: float
+    alpha: float
+    n_modes: int
+    select: str = "lowest"
+    integrator: str = "split4"
+    options: tuple[tuple[str, Any], ...] = ()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "nu", float(self.nu))
+        object.__setattr__(self, "v", float(self.v))
+        object.__setattr__(self, "alpha", float(self.alpha))
+        object.__setattr__(self, "n_modes", int(self.n_modes))
+        opts = self.options.items() if isinstance(self.options, dict) else self.options
+        object.__setattr__(self, "options", tuple(sorted((str(k), v) for k, v in opts)))
+
+    @property
+    def group(self) -> tuple:
+        """Everything but ``(v, alpha)``: points of one group share a mode set."""
+        return (self.nu, self.n_modes, self.select, self.integrator, self.options)
+
+    def inputs(self) -> dict:
+        """Canonical JSON-ready inputs including the code version (exact floats as hex)."""
+        d = asdict(self)
+        d["options"] = {k: v for k, v in self.options}
+        d["code_version"] = code_version()
+        return _canonical(d)
+
+    def key(self) -> str:
+        """SHA-256 of the canonical inputs."""
+        text = json.dumps(self.inputs(), sort_keys=True, separators=(",", ":"))
+        return hashlib.sha256(text.encode()).hexdigest()
+
+
+@dataclass(frozen=True)
+class StoredPoint:
+    """One row of the store.
+
+    Attributes
+    ----------
+    spec : PointSpec
+        Inputs.
+    status : str
+        ``"ok"`` or ``"failed"``.
+    error : str or None
+        Error message of a failed point.
+    epsilon, energy_loss, energy_drift, contact_time, max_compression, max_force, dt,
+    wall_time_s : float
+        Scalar results (``nan`` for a failed point); units as in
+        :class:`restitution.dynamics.results.CollisionResult`.
+    n_steps : int
+        Time steps (0 for a failed point).
+    result : dict or None
+        ``CollisionResult.to_dict()``.
+    code_version : str
+        Package version that computed the row.
+    created_at : str
+        UTC time of writing, ISO 8601.
+    """
+
+    spec: PointSpec
+    status: str
+    error: str | None
+    epsilon: float
+    energy_loss: float
+    energy_drift: float
+    contact_time: float
+    max_compression: float
+    max_force: float
+    n_steps: int
+    dt: float
+    wall_time_s: float
+    result: dict | None
+    code_version: str
+    created_at: str
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "ok"
+
+
+def json_default(obj: Any) -> Any:
+    """``json.dumps`` default for numpy scalars and arrays."""
+    if isinstance(obj, np.integer):
+        return int(obj)
+    if isinstance(obj, np.floating):
+        return float(obj)
+    if isinstance(obj, np.ndarray):
+        return obj.tolist()
+    raise TypeError(f"{type(obj).__name__} is not JSON serialisable")
+
+
+def _now() -> str:
+    return time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+
+
+class Store:
+    """A result store in one SQLite file.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path, optional
+        Database file; created with its directory if missing. Default
+        :func:`default_store_path`.
+
+    Raises
+    ------
+    StoreError
+        If the file is not a SQLite database or lacks this store's schema marker.
+
+    Notes
+    -----
+    Open one ``Store`` per process (SQLite connections must not cross processes); use it as a
+    context manager or call :meth:`close`.
+    """
+
+    def __init__(self, path: str | Path | None = None) -> None:
+        self.path = Path(path) if path is not None else default_store_path()
+        self._check_file()
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise StoreError(
+                f"cannot create the directory of result store {self.path} "
+                f"({exc.strerror or exc}); pass --store PATH in a writable directory"
+            ) from None
+        try:
+            self._conn = sqlite3.connect(
+                self.path, timeout=_BUSY_TIMEOUT_S, isolation_level=None, check_same_thread=False
+            )
+        except sqlite3.Error as exc:
+            raise StoreError(f"cannot open result store {self.path}: {exc}") from exc
+        try:
+            self._conn.execute(f"PRAGMA busy_timeout = {int(_BUSY_TIMEOUT_S * 1000)}")
+            self._init_schema()
+        except sqlite3.DatabaseError as exc:
+            self._conn.close()
+            raise self._error(exc, opening=True) from None
+        except StoreError:
+            self._conn.close()
+            raise
+
+    # -- opening -----------------------------------------------------------------------------
+
+    def _foreign(self, what: str) -> StoreError:
+        return StoreError(
+            f"result store {self.path} is not a restitution store: {what}. Pass another path "
+            "(--store PATH), or move the file away if it is not needed"
+        )
+
+    def _error(self, exc: sqlite3.Error, *, opening: bool = False) -> StoreError:
+        """A :class:`StoreError` for an SQLite error, with advice that fits its cause.
+
+        Only a file that SQLite cannot recognise is called foreign; a valid store that cannot
+        be written, is locked or is damaged is never called foreign, and deleting a store is
+        never advised.
+        """
+        name = getattr(exc, "sqlite_errorname", "")
+        text = str(exc)
+        if "locked" in text or name in ("SQLITE_BUSY", "SQLITE_LOCKED"):
+            return StoreError(
+                f"result store {self.path} stayed locked by another process for "
+                f"{_BUSY_TIMEOUT_S:g} s; try again, or pass another path (--store PATH)"
+            )
+        if name == "SQLITE_NOTADB" or "not a database" in text:
+            return self._foreign(f"SQLite cannot read it ({text})")
+        if name == "SQLITE_CORRUPT" or "malformed" in text:
+            return StoreError(
+                f"result store {self.path} is damaged ({text}); its readable rows may be "
+                f"saved with `sqlite3 {self.path} .recover`; pass another path (--store PATH) "
+                "to compute afresh"
+            )
+        if name == "SQLITE_FULL" or "full" in text:
+            return StoreError(
+                f"result store {self.path}: the disk is full ({text}); free space and rerun "
+                "(stored points are kept), or pass --store PATH on another disk"
+            )
+        action = "opened" if opening else "written"
+        return StoreError(
+            f"result store {self.path} cannot be {action} ({text}): make the file and its "
+            "directory writable, or pass --store PATH to a writable location (a copy of this "
+            "file keeps its results)"
+        )
+
+    def check_writable(self) -> None:
+        """Write one row of metadata now, so that a sweep fails before computing, not after.
+
+        Raises
+        ------
+        StoreError
+            If the store cannot be written; the message says what to do.
+        """
+        try:
+            with self._write():
+                self._conn.execute(
+                    "INSERT INTO meta VALUES ('last_write_check', ?) "
+                    "ON CONFLICT(key) DO UPDATE SET value = excluded.value",
+                    (_now(),),
+                )
+        except sqlite3.Error as exc:
+            raise self._error(exc) from None
+
+    def _check_file(self) -> None:
+        if not self.path.exists():
+            return
+        if self.path.is_dir():
+            raise self._foreign("it is a directory")
+        try:
+            with open(self.path, "rb") as fh:
+                head = fh.read(len(_SQLITE_MAGIC))
+        except OSError as exc:
+            raise StoreError(
+                f"cannot read result store {self.path} ({exc.strerror or exc}); make it "
+                "readable or pass another path (--store PATH)"
+            ) from None
+        if head and head != _SQLITE_MAGIC:
+            raise self._foreign("not a SQLite database")
+
+    def _init_schema(self) -> None:
+        # Check and create in one write transaction, so that two processes opening a new file
+        # at once never see each other's half-made schema. The journal mode is switched to WAL
+        # only once the file is known to be ours: a foreign file is left untouched.
+        conn = self._conn
+        with self._write():
+            tables = {
+                r[0] for r in conn.execute("SELECT name FROM sqlite_master WHERE type = 'table'")
+            }
+            if tables:
+                self._check_marker(tables)
+            else:
+                for statement in _SCHEMA.split(";"):
+                    if statement.strip():
+                        conn.execute(statement)
+                conn.executemany(
+                    "INSERT INTO meta VALUES (?, ?)",
+                    [
+                        ("schema", _MARKER),
+                        ("schema_version", _SCHEMA_VERSION),
+                        ("created_by", __version__),
+                        ("created_at", _now()),
+                    ],
+                )
+        conn.execute("PRAGMA journal_mode = WAL")
+
+    def _check_marker(self, tables: set[str]) -> None:
+        if "meta" not in tables or "collisions" not in tables:
+            raise self._foreign(f"a SQLite database with other tables {sorted(tables)}")
+        meta = dict(self._conn.execute("SELECT key, value FROM meta"))
+        if meta.get("schema") != _MARKER:
+            raise self._foreign("a SQLite database without this store's schema marker")
+        if meta.get("schema_version") != _SCHEMA_VERSION:
+            raise StoreError(
+                f"result store {self.path} has schema version {meta.get('schema_version')}, "
+                f"this code reads version {_SCHEMA_VERSION}; pass another path (--store PATH) "
+                "and keep this file for the code version that wrote it"
+            )
+
+    def _write(self):
+        return _Transaction(self._conn)
+
+    def close(self) -> None:
+        """Close the connection."""
+        self._conn.close()
+
+    def __enter__(self) -> Store:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __repr__(self) -> str:
+        return f"Store({str(self.path)!r})"
+
+    # -- writing -----------------------------------------------------------------------------
+
+    def put(self, spec: PointSpec, result: Any) -> None:
+        """Store a successful collision.
+
+        Parameters
+        ----------
+        spec : PointSpec
+            Inputs.
+        result : CollisionResult or dict
+            The result, or its ``to_dict()``.
+        """
+        d = result if isinstance(result, dict) else result.to_dict()
+        scalars = [_as_real(d.get(name)) for name in _SCALARS]
+        if scalars[1] is None and scalars[0] is not None:
+            scalars[1] = 1.0 - scalars[0] ** 2
+        blob = json.dumps(d, default=json_default, allow_nan=True)
+        self._upsert(spec, "ok", None, scalars, blob)
+
+    def put_failure(self, spec: PointSpec, message: str) -> None:
+        """Record a failed collision with its error message (never replaces a success)."""
+        self._upsert(spec, "failed", str(message), [None] * len(_SCALARS), None)
+
+    def _upsert(self, spec, status, error, scalars, blob) -> None:
+        # A new row is inserted; an existing failed row is replaced (a retry); an existing
+        # successful row is kept, so a repeated or concurrent write never duplicates a point.
+        cols = (
+            "key, code_version, inputs, nu, v, alpha, n_modes, selection, integrator, status, "
+            f"error, {', '.join(_SCALARS)}, result, created_at"
+        )
+        values = [
+            spec.key(),
+            code_version(),
+            json.dumps(spec.inputs(), sort_keys=True),
+            spec.nu,
+            spec.v,
+            spec.alpha,
+            spec.n_modes,
+            spec.select,
+            spec.integrator,
+            status,
+            error,
+            *scalars,
+            blob,
+            _now(),
+        ]
+        update = ", ".join(
+            f"{c} = excluded.{c}" for c in ["status", "error", *_SCALARS, "result", "created_at"]
+        )
+        sql = (
+            f"INSERT INTO collisions ({cols}) VALUES ({', '.join('?' * len(values))}) "
+            f"ON CONFLICT(key) DO UPDATE SET {update} WHERE collisions.status = 'failed'"
+        )
+        try:
+            with self._write():
+                self._conn.execute(sql, values)
+        except sqlite3.Error as exc:
+            raise self._error(exc) from None
+
+    # -- reading -----------------------------------------------------------------------------
+
+    def get(self, spec: PointSpec) -> StoredPoint | None:
+        """The stored row of ``spec`` (this code version), or None."""
+        row = self._read(f"SELECT {_ROW} FROM collisions WHERE key = ?", (spec.key(),))
+        row = row[0] if row else None
+        return None if row is None else _row_to_point(row)
+
+    def status(self, specs: Iterable[PointSpec]) -> dict[str, str]:
+        """Map key -> status for those of ``specs`` that are stored."""
+        keys = [s.key() for s in specs]
+        out: dict[str, str] = {}
+        for start in range(0, len(keys), 500):
+            chunk = keys[start : start + 500]
+            marks = ",".join("?" * len(chunk))
+            out.update(
+                self._read(f"SELECT key, status FROM collisions WHERE key IN ({marks})", chunk)
+            )
+        return out
+
+    def errors(self, specs: Iterable[PointSpec]) -> dict[str, str]:
+        """Map key -> error message for those of ``specs`` that are stored as failed."""
+        keys = [s.key() for s in specs]
+        out: dict[str, str] = {}
+        for start in range(0, len(keys), 500):
+            chunk = keys[start : start + 500]
+            marks = ",".join("?" * len(chunk))
+            out.update(
+                self._read(
+                    f"SELECT key, error FROM collisions WHERE status = 'failed' AND key IN "
+                    f"({marks})",
+                    chunk,
+                )
+            )
+        return out
+
+    def points(self, *, all_versions: bool = False, **filters: Any) -> list[StoredPoint]:
+        """Stored rows, optionally filtered by exact ``nu``, ``v``, ``alpha``, ``n_modes``,
+        ``selection``, ``integrator`` or ``status``; by default only this code version
+        (:func:`code_version`)."""
+        allowed = {"nu", "v", "alpha", "n_modes", "selection", "integrator", "status"}
+        unknown = set(filters) - allowed
+        if unknown:
+            raise InputError(f"unknown store filter(s) {sorted(unknown)}; use {sorted(allowed)}")
+        where = [f"{k} = ?" for k in filters]
+        args = list(filters.values())
+        if not all_versions:
+            where.append("code_version = ?")
+            args.append(code_version())
+        clause = f" WHERE {' AND '.join(where)}" if where else ""
+        rows = self._read(
+            f"SELECT {_ROW} FROM collisions{clause} ORDER BY nu, v, alpha, n_modes", args
+        )
+        return [_row_to_point(r) for r in rows]
+
+    def _read(self, sql: str, args: Any = ()) -> list[tuple]:
+        try:
+            return self._conn.execute(sql, args).fetchall()
+        except sqlite3.Error as exc:
+            raise self._error(exc) from None
+
+    def __iter__(self) -> Iterator[StoredPoint]:
+        return iter(self.points(all_versions=True))
+
+    def __len__(self) -> int:
+        return int(self._read("SELECT COUNT(*) FROM collisions")[0][0])
+
+
+_ROW = f"inputs, status, error, {', '.join(_SCALARS)}, result, code_version, created_at"
+
+
+def _as_real(value: Any) -> float | None:
+    if value is None:
+        return None
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def _row_to_point(row: tuple) -> StoredPoint:
+    inputs, status, error, *rest = row
+    scalars, (blob, version, created) = rest[: len(_SCALARS)], rest[len(_SCALARS) :]
+    d = json.loads(inputs)
+
+    def num(v):
+        return float.fromhex(v) if isinstance(v, str) else v
+
+    options = tuple(
+        (k, num(v) if isinstance(v, str) and v.startswith(("0x", "-0x")) else v)
+        for k, v in sorted(d["options"].items())
+    )
+    spec = PointSpec(
+        nu=num(d["nu"]),
+        v=num(d["v"]),
+        alpha=num(d["alpha"]),
+        n_modes=d["n_modes"],
+        select=d["select"],
+        integrator=d["integrator"],
+        options=options,
+    )
+    values = dict(zip(_SCALARS, scalars, strict=True))
+    nan = float("nan")
+    return StoredPoint(
+        spec=spec,
+        status=status,
+        error=error,
+        epsilon=nan if values["epsilon"] is None else values["epsilon"],
+        energy_loss=nan if values["energy_loss"] is None else values["energy_loss"],
+        energy_drift=nan if values["energy_drift"] is None else values["energy_drift"],
+        contact_time=nan if values["contact_time"] is None else values["contact_time"],
+        max_compression=nan if values["max_compression"] is None else values["max_compression"],
+        max_force=nan if values["max_force"] is None else values["max_force"],
+        n_steps=0 if values["n_steps"] is None else int(values["n_steps"]),
+        dt=nan if values["dt"] is None else values["dt"],
+        wall_time_s=nan if values["wall_time_s"] is None else values["wall_time_s"],
+        result=None if blob is None else json.loads(blob),
+        code_version=version,
+        created_at=created,
+    )
+
+
+class _Transaction:
+    """``BEGIN IMMEDIATE`` ... ``COMMIT`` (rollback on error): one short write transaction."""
+
+    def __init__(self, conn: sqlite3.Connection) -> None:
+        self._conn = conn
+
+    def __enter__(self) -> None:
+        self._conn.execute("BEGIN IMMEDIATE")
+
+    def __exit__(self, exc_type, exc, tb) -> None:
+        if exc_type is None:
+            self._conn.execute("COMMIT")
+        else:
+            self._conn.execute("ROLLBACK")

@@ -1,0 +1,588 @@
+"""Grids of collisions run through an executor, with results in the store (paper section 4).
+
+A sweep is a list of :class:`restitution.limits.store.PointSpec`. Points already in the store (for
+this code version) are skipped. The rest are grouped by mode set (``nu``, ``N``, selection,
+integrator, options), sorted by ``(alpha, v)`` inside a group so that a batch shares a similar
+time step, cut into batches of ``batch_size`` points and submitted to an executor; each batch
+calls :func:`restitution.dynamics.collision.collide_batch` on one mode set. The parent process writes
+every finished batch to the store at once, so Ctrl-C or ``kill -9`` loses at most the points in
+flight. A point that failed in the solver is stored with its error message without losing the
+others; a task that died with its worker (``kill -9`` of a pool process, a lost Dask worker) is
+resubmitted (:data:`restitution.limits.executors.INFRASTRUCTURE_RETRIES` times) and never stored as
+failed. The store is checked for writability before anything is computed.
+
+Where the tasks run is :mod:`restitution.limits.executors`: local processes (default), a Dask
+``LocalCluster`` (``workers=N``), an existing scheduler (``scheduler=ADDRESS``) or client.
+
+The default extrapolation sets (velocities, ``alpha`` and ``N`` values) live in ONE place,
+:data:`DEFAULTS`; change them with :func:`dataclasses.replace`.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import math
+import os
+import sys
+import time
+from collections import defaultdict
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field, fields
+from typing import Any
+
+import numpy as np
+
+from restitution.errors import InputError
+from restitution.limits.executors import (
+    INFRASTRUCTURE_RETRIES,
+    executor,
+    infrastructure_message,
+    is_infrastructure_failure,
+)
+from restitution.limits.store import PointSpec, Store
+
+__all__ = [
+    "DEFAULTS",
+    "PAPER_VELOCITIES",
+    "GridData",
+    "SweepReport",
+    "SweepSettings",
+    "collide_points",
+    "grid",
+    "load_grid",
+    "run_sweep",
+]
+
+PAPER_VELOCITIES: tuple[float, ...] = (0.005, 0.01, 0.02) + tuple(
+    round(0.04 + 0.02 * k, 2) for k in range(14)
+)
+"""Speeds towards the wall of Figs. 1 and 7, units of ``c``: 0.005, 0.01, 0.02, 0.04, 0.06, ...,
+0.30 (the caption's sequence; it has 17 members)."""
+
+RANKING_POOL = 1600
+"""Pool size for ``select="ranked"`` (the paper ranked 1600 modes, Table 1)."""
+
+
+@dataclass(frozen=True)
+class SweepSettings:
+    """Everything that defines a curve computation except ``nu``; the defaults live here.
+
+    Attributes
+    ----------
+    velocities : tuple of float
+        Speeds towards the wall, units of ``c``.
+    alphas : tuple of float
+        Wall hardness values for the ``alpha -> infinity`` extrapolation: ``alpha`` in ``1/R``
+        (``alpha_scale="absolute"``) or the products ``alpha * delta_max(v)``
+        (``alpha_scale="compression"``).
+    alpha_scale : {"absolute", "compression"}
+        ``"absolute"``: the same ``alpha`` at every speed (as the paper's Fig. 7 appears to
+        use). ``"compression"``: ``alpha = alphas[k] / delta_max(v)`` with the quasistatic
+        maximal compression ``delta_max = v sqrt(ln(4/v))`` (eq. 61, units ``R``), so that the
+        wall's decay length is the same fraction of the compression at every speed; slow
+        collisions then get the harder walls the paper asks for (section 4, Fig. 7 discussion).
+    n_modes : tuple of int
+        Mode counts for the ``N -> infinity`` extrapolation (the paper: 300, 400, 600, 940).
+    select : str
+        Mode selection: ``"lowest"`` (the ``N`` lowest frequencies) or ``"ranked"`` (the paper's
+        ranking by average energy in a preliminary run with :data:`RANKING_POOL` modes).
+    integrator : str or None
+        Time integrator of :mod:`restitution.dynamics.collision`; ``None``: the solver's default.
+    options : tuple of (str, value)
+        :class:`restitution.dynamics.collision.CollisionSettings` fields (e.g. ``energy_tol``). The
+        solver's defaults of all other fields are filled in, so that every numerical setting
+        is part of the store key even if a default changes.
+    order : str
+        Primary order of the two limits (:func:`restitution.limits.extrapolation.combined_limit`).
+    batch_size : int
+        Collisions per task; they share one mode set (each keeps its own time step, so a
+        stored point does not depend on its batch).
+    """
+
+    velocities: tuple[float, ...] = PAPER_VELOCITIES
+    # alpha * delta_max(v) = 40, 80, 160: at v = 0.1 that is alpha = 210, 420, 840; slow
+    # collisions get harder walls (v = 0.005: alpha = 3100-12300) while alpha * v stays below
+    # ~65, where epsilon(dt) converges smoothly (at alpha v = 200, N = 100 the hard-wall
+    # dynamics are chaotic: epsilon jumps by 1e-3 with dt; docs/numerics.md).
+    alphas: tuple[float, ...] = (40.0, 80.0, 160.0)
+    alpha_scale: str = "compression"
+    n_modes: tuple[int, ...] = (300, 400, 600, 940)
+    select: str = "lowest"
+    integrator: str | None = None
+    # A drift of 1e-5 of E0 moves epsilon by < 1e-4 (measured at nu = 0.9, v = 0.3, N = 300,
+    # alpha = 500 against 1e-6), far below the extrapolation errors (>= 1e-3), at half the steps.
+    options: tuple[tuple[str, Any], ...] = (("energy_tol", 1e-5),)
+    order: str = "modes_first"
+    batch_size: int = 4
+
+    def __post_init__(self) -> None:
+        for name in ("velocities", "alphas", "n_modes"):
+            values = getattr(self, name)
+            if len(values) == 0:
+                raise InputError(f"{name} must not be empty")
+        object.__setattr__(self, "velocities", tuple(float(v) for v in self.velocities))
+        object.__setattr__(self, "alphas", tuple(float(a) for a in self.alphas))
+        object.__setattr__(self, "n_modes", tuple(int(n) for n in self.n_modes))
+        for name in ("velocities", "alphas", "n_modes"):
+            values = getattr(self, name)
+            if len(set(values)) != len(values):
+                raise InputError(
+                    f"{name} has repeated values {list(values)}; give distinct values "
+                    "(a repeated point adds nothing to an extrapolation)"
+                )
+        integrator, options = _solver_settings(self.integrator, self.options)
+        object.__setattr__(self, "integrator", integrator)
+        object.__setattr__(self, "options", options)
+        if any(not (0 < v < 1) for v in self.velocities):
+            raise InputError(
+                "speeds v must lie in (0, 1): the disk's speed towards the wall in units of c"
+            )
+        if any(not (a > 0 and math.isfinite(a)) for a in self.alphas):
+            raise InputError("wall hardness alpha must be positive (units 1/R)")
+        if any(n < 1 for n in self.n_modes):
+            raise InputError("numbers of modes must be >= 1")
+        if self.alpha_scale not in ("absolute", "compression"):
+            raise InputError(
+                f"alpha_scale must be 'absolute' or 'compression', not {self.alpha_scale!r}"
+            )
+        if self.select not in ("lowest", "ranked"):
+            raise InputError(f"select must be 'lowest' or 'ranked', not {self.select!r}")
+        if self.batch_size < 1:
+            raise InputError("batch_size must be >= 1")
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary."""
+        return {
+            "velocities": list(self.velocities),
+            "alphas": list(self.alphas),
+            "alpha_scale": self.alpha_scale,
+            "n_modes": list(self.n_modes),
+            "select": self.select,
+            "integrator": self.integrator,
+            "options": {k: v for k, v in self.options},
+            "order": self.order,
+            "batch_size": self.batch_size,
+        }
+
+    def alphas_at(self, v: float, alphas: Iterable[float] | None = None) -> tuple[float, ...]:
+        """Wall hardness values (``1/R``) used at speed ``v`` (units of ``c``)."""
+        values = self.alphas if alphas is None else tuple(float(a) for a in alphas)
+        if self.alpha_scale == "absolute":
+            return values
+        delta = quasistatic_compression(v)
+        return tuple(a / delta for a in values)
+
+
+# Not part of a stored point's key: the integrator is keyed separately, histories are not
+# stored, and the two backends give the same numbers to round-off (tests/test_kernel.py).
+_NOT_KEYED = ("integrator", "record", "record_interval", "backend")
+
+
+def _solver_settings(integrator: str | None, options: Any) -> tuple[str, tuple]:
+    """Integrator name and the full sorted tuple of the solver's numerical settings."""
+    from restitution.dynamics.collision import CollisionSettings
+
+    opts = dict(options.items() if isinstance(options, dict) else options)
+    known = {f.name for f in fields(CollisionSettings)} - set(_NOT_KEYED)
+    bad = sorted(set(opts) - known)
+    if bad:
+        raise InputError(
+            f"unknown solver option(s) {bad}; use fields of CollisionSettings except "
+            f"{', '.join(_NOT_KEYED)}"
+        )
+    if integrator is not None:
+        opts["integrator"] = integrator
+    resolved = CollisionSettings(**opts)
+    full = tuple(
+        (f.name, getattr(resolved, f.name))
+        for f in sorted(fields(CollisionSettings), key=lambda f: f.name)
+        if f.name not in _NOT_KEYED
+    )
+    return resolved.integrator, full
+
+
+def quasistatic_compression(v: float) -> float:
+    """Maximal compression ``v sqrt(ln(4/v))`` of eq. (61), units ``R`` (``v`` in ``c``)."""
+    return float(v) * math.sqrt(math.log(4.0 / float(v)))
+
+
+DEFAULTS = SweepSettings()
+"""The package's default sweep (tuned to the 10-minute budget of the full Fig. 1 grid)."""
+
+
+def grid(
+    nus: Iterable[float],
+    settings: SweepSettings = DEFAULTS,
+    *,
+    velocities: Iterable[float] | None = None,
+    alphas: Iterable[float] | None = None,
+    n_modes: Iterable[int] | None = None,
+) -> list[PointSpec]:
+    """All points ``nu x v x alpha x N`` of a sweep.
+
+    Parameters
+    ----------
+    nus : iterable of float
+        Poisson numbers.
+    settings : SweepSettings
+        Velocities, ``alpha`` and ``N`` sets, selection, integrator and options.
+    velocities, alphas, n_modes : iterable, optional
+        Override the sets of ``settings`` (``alphas`` interpreted by ``settings.alpha_scale``).
+    """
+    vs = settings.velocities if velocities is None else tuple(velocities)
+    ns = settings.n_modes if n_modes is None else tuple(n_modes)
+    return [
+        PointSpec(nu, v, a, n, settings.select, settings.integrator, settings.options)
+        for nu in nus
+        for n in ns
+        for v in vs
+        for a in settings.alphas_at(v, alphas)
+    ]
+
+
+# -- the work done by one task -------------------------------------------------------------
+
+
+def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
+    """Run collisions that share one mode set; the default work of a sweep task.
+
+    Parameters
+    ----------
+    specs : sequence of PointSpec
+        Points with equal :attr:`PointSpec.group`.
+
+    Returns
+    -------
+    list of (status, payload)
+        ``("ok", CollisionResult.to_dict())`` or ``("failed", message)`` per point, in order.
+        If the batch as a whole fails, every point is retried alone, so one bad point never
+        costs the others.
+    """
+    from restitution.bodies.cache import get_modes
+    from restitution.dynamics.collision import CollisionSettings, collide, collide_batch, rank_modes
+
+    first = specs[0]
+    if any(s.group != first.group for s in specs):
+        raise InputError("collide_points needs points that share nu, N, selection and options")
+    settings = CollisionSettings(integrator=first.integrator, **dict(first.options))
+    if first.select == "ranked":
+        pool = get_modes(first.nu, count=max(RANKING_POOL, first.n_modes))
+        out = []
+        for s in specs:
+            out.append(
+                _guard(
+                    lambda s=s: collide(
+                        rank_modes(pool, s.n_modes, s.v, s.alpha, settings), s.v, s.alpha, settings
+                    )
+                )
+            )
+        return out
+    modes = get_modes(first.nu, count=first.n_modes)
+    if len(specs) > 1:
+        try:
+            results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)
+            return [("ok", r.to_dict()) for r in results]
+        except Exception:  # noqa: BLE001 - retried point by point below
+            pass
+    return [_guard(lambda s=s: collide(modes, s.v, s.alpha, settings)) for s in specs]
+
+
+def _guard(run: Callable[[], Any]) -> tuple[str, Any]:
+    try:
+        return ("ok", run().to_dict())
+    except Exception as exc:  # noqa: BLE001 - a failed point is data, not a crash
+        return ("failed", f"{type(exc).__name__}: {exc}")
+
+
+def _run_task(batch_function: Callable, specs: list[PointSpec]) -> list[tuple[str, Any]]:
+    out = batch_function(specs)
+    if len(out) != len(specs):
+        raise RuntimeError(f"batch function returned {len(out)} outcomes for {len(specs)} points")
+    return list(out)
+
+
+# -- the parent loop -----------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class SweepReport:
+    """What a sweep did.
+
+    Attributes
+    ----------
+    total : int
+        Points asked for.
+    skipped : int
+        Points already in the store.
+    computed : int
+        Points computed successfully now.
+    failed : tuple of (PointSpec, str)
+        Points that failed now, with their error messages (also stored).
+    wall_time_s : float
+        Wall-clock time, seconds.
+    executor : str
+        Description of the executor used.
+    lost : tuple of (PointSpec, str)
+        Points whose worker died (infrastructure failure) on every one of
+        :data:`INFRASTRUCTURE_RETRIES` + 1 attempts; not stored, so a rerun computes them.
+    """
+
+    total: int
+    skipped: int
+    computed: int
+    failed: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
+    wall_time_s: float = 0.0
+    executor: str = ""
+    lost: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
+
+    @property
+    def complete(self) -> bool:
+        """Whether every point of this run is now stored as a success."""
+        return not self.failed and not self.lost
+
+    @property
+    def rate(self) -> float:
+        """Collisions computed per second of wall-clock time."""
+        n = self.computed + len(self.failed)
+        return n / self.wall_time_s if self.wall_time_s > 0 else float("nan")
+
+
+def _cost(batch: list[PointSpec]) -> float:
+    # Steps grow with the wall stiffness and every step costs ~N: a rough LPT key.
+    return sum(s.n_modes * math.sqrt(s.alpha) for s in batch)
+
+
+def _batches(specs: list[PointSpec], batch_size: int) -> list[list[PointSpec]]:
+    groups: dict[tuple, list[PointSpec]] = defaultdict(list)
+    for s in specs:
+        groups[s.group].append(s)
+    out = []
+    for members in groups.values():
+        members.sort(key=lambda s: (s.alpha, s.v))
+        out += [members[i : i + batch_size] for i in range(0, len(members), batch_size)]
+    out.sort(key=_cost, reverse=True)  # longest first balances the workers
+    return out
+
+
+def _progress(enabled: bool | None, total: int):
+    from rich.console import Console
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    console = Console(stderr=True)
+    if enabled is None:
+        enabled = sys.stderr.isatty()
+    return Progress(
+        TextColumn("collisions"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        TextColumn("ETA"),
+        TimeRemainingColumn(),
+        console=console,
+        disable=not enabled,
+        transient=False,
+    )
+
+
+def run_sweep(
+    points: Iterable[PointSpec],
+    *,
+    store: Store | str | os.PathLike | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    client: Any = None,
+    batch_size: int = DEFAULTS.batch_size,
+    batch_function: Callable[[list[PointSpec]], list[tuple[str, Any]]] = collide_points,
+    progress: bool | None = None,
+    retry_failed: bool = False,
+) -> SweepReport:
+    """Compute every point not yet in the store.
+
+    Parameters
+    ----------
+    points : iterable of PointSpec
+        The grid (see :func:`grid`); duplicates are computed once.
+    store : Store or path, optional
+        Result store; default :func:`restitution.limits.store.default_store_path`.
+    workers : int, optional
+        Run on a Dask ``LocalCluster`` with this many single-threaded worker processes.
+    scheduler : str, optional
+        Address of an existing Dask scheduler (e.g. ``"tcp://host:8786"``).
+    client : distributed.Client, optional
+        An existing Dask client.
+    batch_size : int
+        Points per task (they share a mode set and a time step).
+    batch_function : callable
+        ``f(list[PointSpec]) -> list[(status, payload)]`` run in the workers; the default
+        :func:`collide_points` runs the real solver. Must be picklable (a module-level
+        function).
+    progress : bool, optional
+        Show a progress bar with ETA on stderr; default: only when stderr is a terminal.
+    retry_failed : bool
+        Also recompute points stored as failed. Points whose task died with its worker
+        (``BrokenProcessPool``, a lost Dask worker) are never stored as failed; they are
+        resubmitted up to :data:`INFRASTRUCTURE_RETRIES` times and otherwise left for the next
+        run (:attr:`SweepReport.lost`).
+
+    Returns
+    -------
+    SweepReport
+    """
+    if sum(x is not None for x in (workers, scheduler, client)) > 1:
+        raise InputError("give at most one of workers, scheduler and client")
+    if batch_size < 1:
+        raise InputError("batch_size must be >= 1")
+    own_store = not isinstance(store, Store)
+    db = Store(store) if own_store else store
+    t0 = time.perf_counter()
+    try:
+        unique = list(dict.fromkeys(points))
+        status = db.status(unique)
+        errors = db.errors(s for s in unique if status.get(s.key()) == "failed")
+        todo = [
+            s
+            for s in unique
+            if status.get(s.key()) is None
+            or (
+                status[s.key()] == "failed"
+                and (retry_failed or infrastructure_message(errors.get(s.key())))
+            )
+        ]
+        skipped = len(unique) - len(todo)
+        computed, failed, lost, name = 0, [], [], "none"
+        if todo:
+            db.check_writable()  # fail now, not after computing
+            computed, failed, lost, name = _execute(
+                db, todo, batch_size, batch_function, workers, scheduler, client, progress
+            )
+        return SweepReport(
+            total=len(unique),
+            skipped=skipped,
+            computed=computed,
+            failed=tuple(failed),
+            lost=tuple(lost),
+            wall_time_s=time.perf_counter() - t0,
+            executor=name,
+        )
+    finally:
+        if own_store:
+            db.close()
+
+
+def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, progress):
+    pending = _batches(todo, batch_size)
+    computed, failed, lost, name = 0, [], [], "none"
+    with _progress(progress, len(todo)) as bar:
+        task = bar.add_task("sweep", total=len(todo))
+        for attempt in range(INFRASTRUCTURE_RETRIES + 1):
+            retry = []
+            with executor(workers, scheduler, client) as (pool, name):
+                futures = {pool.submit(_run_task, batch_function, b): b for b in pending}
+                try:
+                    for future in cf.as_completed(futures):
+                        batch = futures.pop(future)
+                        try:
+                            outcomes = future.result()
+                        except Exception as exc:  # noqa: BLE001 - the whole task died
+                            if is_infrastructure_failure(exc):
+                                retry.append((batch, f"{type(exc).__name__}: {exc}"))
+                                continue
+                            outcomes = [("failed", f"{type(exc).__name__}: {exc}")] * len(batch)
+                        for spec, (state, payload) in zip(batch, outcomes, strict=True):
+                            if state == "ok":
+                                db.put(spec, payload)
+                                computed += 1
+                            else:
+                                db.put_failure(spec, str(payload))
+                                failed.append((spec, str(payload)))
+                        bar.advance(task, len(batch))
+                except BaseException:
+                    # Ctrl-C (or any error in the parent): drop the queued work; what is
+                    # stored stays.
+                    for future in futures:
+                        future.cancel()
+                    raise
+            if not retry:
+                break
+            pending = [batch for batch, _ in retry]
+            points = sum(len(b) for b in pending)
+            if attempt < INFRASTRUCTURE_RETRIES:
+                bar.console.print(
+                    f"warning: {points} point(s) lost with a worker ({retry[0][1][:120]}); "
+                    f"retrying ({attempt + 1}/{INFRASTRUCTURE_RETRIES})"
+                )
+        else:
+            # Still lost after every retry: not stored, so the next run computes them.
+            lost = [(spec, message) for batch, message in retry for spec in batch]
+    return computed, failed, lost, name
+
+
+# -- reading a grid back ---------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False)
+class GridData:
+    """Energy losses of one ``(nu, v)`` on the ``alpha x N`` grid, read from the store.
+
+    Attributes
+    ----------
+    nu, v : float
+        Poisson number and speed towards the wall (units of ``c``).
+    alpha : numpy.ndarray, shape (A,)
+        Wall hardness, ``1/R``.
+    n_modes : numpy.ndarray of int, shape (M,)
+        Mode counts.
+    loss : numpy.ndarray, shape (A, M)
+        ``1 - epsilon^2``; ``nan`` where the point is missing or failed.
+    drift : numpy.ndarray, shape (A, M)
+        Relative energy drift of each run.
+    missing : tuple of PointSpec
+        Points not in the store.
+    failures : tuple of (PointSpec, str)
+        Points stored as failed, with their messages.
+    """
+
+    nu: float
+    v: float
+    alpha: np.ndarray
+    n_modes: np.ndarray
+    loss: np.ndarray
+    drift: np.ndarray
+    missing: tuple[PointSpec, ...]
+    failures: tuple[tuple[PointSpec, str], ...]
+
+
+def load_grid(
+    store: Store,
+    nu: float,
+    v: float,
+    settings: SweepSettings = DEFAULTS,
+    *,
+    alphas: Sequence[float] | None = None,
+    n_modes: Sequence[int] | None = None,
+) -> GridData:
+    """The ``alpha x N`` grid of one ``(nu, v)`` from the store (this code version)."""
+    als = np.asarray(settings.alphas_at(v, alphas), dtype=float)
+    ns = np.asarray(settings.n_modes if n_modes is None else n_modes, dtype=int)
+    loss = np.full((als.size, ns.size), np.nan)
+    drift = np.full_like(loss, np.nan)
+    missing, failures = [], []
+    for i, a in enumerate(als):
+        for j, n in enumerate(ns):
+            spec = PointSpec(nu, v, a, n, settings.select, settings.integrator, settings.options)
+            row = store.get(spec)
+            if row is None:
+                missing.append(spec)
+            elif not row.ok:
+                failures.append((spec, row.error or ""))
+            else:
+                loss[i, j] = row.energy_loss
+                drift[i, j] = row.energy_drift
+    return GridData(float(nu), float(v), als, ns, loss, drift, tuple(missing), tuple(failures))
