@@ -10,7 +10,6 @@ from restitution import get_modes
 from restitution.dynamics.collision import CollisionError, collide, collide_batch
 from restitution.dynamics.integrators import INTEGRATORS, System, initial_state
 from restitution.dynamics.reference import collide_dop853
-from restitution.dynamics.wall import wall_quadrature
 
 V, ALPHA = 0.1, 500.0
 
@@ -37,7 +36,7 @@ def test_energy_conservation_and_bookkeeping(medium):
 def test_time_reversibility(small):
     # The symplectic splittings are symmetric: stepping back with flipped momenta retraces
     # the trajectory to round-off, also through the stiff contact.
-    quad = wall_quadrature(small, 300)
+    quad = small.surface_quadrature(300)
     system = System(omega=small.omega, mass=small.mass, quad=quad, alpha=np.array([ALPHA]))
     s0 = initial_state(system, np.array([-1.01]), np.array([small.mass * V]))
     for name in ("split", "split4"):
@@ -67,7 +66,7 @@ def test_convergence_order(small, name):
     # Fitted order of the state error at a fixed time deep in the contact matches the declared
     # order (reference: the same integrator at a 4x finer step than the finest used).
     integ = INTEGRATORS[name]
-    quad = wall_quadrature(small, 300)
+    quad = small.surface_quadrature(300)
     system = System(omega=small.omega, mass=small.mass, quad=quad, alpha=np.array([ALPHA]))
     s0 = initial_state(system, np.array([-1.01]), np.array([small.mass * V]))
     t_end = 2.0  # 0.1 R/c to contact, then 1.9 R/c of compression

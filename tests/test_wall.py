@@ -5,7 +5,8 @@ from numpy.testing import assert_allclose
 from scipy.integrate import quad as adaptive
 
 from restitution import get_modes
-from restitution.dynamics.wall import dense_edge_matrix, wall_quadrature, wall_terms
+from restitution.bodies.disk.surface import dense_edge_matrix
+from restitution.dynamics.wall import wall_terms
 
 
 def _state(modes, seed=3):
@@ -19,7 +20,7 @@ def test_potential_matches_adaptive_quadrature():
     modes = get_modes(0.33, count=60)
     x0, Q = _state(modes)
     alpha = np.array([300.0])
-    V, F, f = wall_terms(wall_quadrature(modes, 800), alpha, x0, Q)
+    V, F, f = wall_terms(modes.surface_quadrature(800), alpha, x0, Q)
 
     def x(phi):
         g = modes.C * np.cos(modes.n * phi) * np.cos(phi) - modes.S * np.sin(
@@ -45,7 +46,7 @@ def test_potential_matches_adaptive_quadrature():
 def test_forces_are_derivatives_of_the_potential():
     modes = get_modes(0.33, count=40)
     x0, Q = _state(modes)
-    quad = wall_quadrature(modes, 600)
+    quad = modes.surface_quadrature(600)
     alpha = np.array([200.0])
     _, F, f = wall_terms(quad, alpha, x0, Q)
     h = 1e-7
@@ -61,15 +62,15 @@ def test_forces_are_derivatives_of_the_potential():
 
 def test_active_node_truncation_is_exact_to_roundoff():
     modes = get_modes(0.33, count=200)
-    quad = wall_quadrature(modes, 1200)
+    quad = modes.surface_quadrature(1200)
     for x0c, alpha in ((-0.99, 2000.0), (-0.9, 500.0), (-0.6, 100.0), (-1.2, 500.0)):
         x0, Q = _state(modes)
         x0 = np.array([x0c])
         V, F, f = wall_terms(quad, np.array([alpha]), x0, Q)
         # Full sum over all nodes, written out independently.
         # Full dense sum over all nodes and modes (eq. 40 written out), no order grouping.
-        G = dense_edge_matrix(modes, quad.phi)
-        x = x0[:, None] + quad.cos_phi + Q @ G.T
+        G = dense_edge_matrix(modes, quad.nodes)
+        x = x0[:, None] + quad.height + Q @ G.T
         e = np.exp(alpha * x) * quad.weight
         # Skipped nodes contribute at most exp(-40) * pi = 1.3e-17 in force units (E).
         assert_allclose(F, e.sum(axis=1), rtol=1e-12, atol=1.3e-17)

@@ -19,7 +19,8 @@ from typing import ClassVar, Protocol
 
 import numpy as np
 
-from restitution.dynamics.wall import WallQuadrature, wall_terms
+from restitution.bodies.base import SurfaceQuadrature
+from restitution.dynamics.wall import wall_terms
 
 __all__ = [
     "System",
@@ -46,7 +47,7 @@ class System:
         Mode frequencies, ``c / R``.
     mass : float
         Disk mass ``m = pi``.
-    quad : WallQuadrature
+    quad : SurfaceQuadrature
         Edge quadrature of the wall integral for these modes.
     alpha : numpy.ndarray, shape (B,)
         Wall hardness per batch member, ``1 / R``.
@@ -54,7 +55,7 @@ class System:
 
     omega: np.ndarray
     mass: float
-    quad: WallQuadrature
+    quad: SurfaceQuadrature
     alpha: np.ndarray
     # Memo of the harmonic rotation (cos, sin, m omega sin, sin/(m omega)) per step size.
     _rotations: dict = field(default_factory=dict, repr=False, compare=False)

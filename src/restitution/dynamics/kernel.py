@@ -5,7 +5,7 @@ Units: ``E = rho = R = 1``; times in ``R / c``.
 This is the production path of :func:`restitution.dynamics.collision.collide_batch` for the symplectic
 splittings ``split`` (Strang, second order) and ``split4`` (Yoshida, fourth order). It performs,
 per batch member and entirely in compiled code, exactly the arithmetic of the NumPy reference
-path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynamics.wall` and ``collision._run``):
+path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynamics.wall` and :mod:`restitution.dynamics.numpy_path`):
 
 * the wall terms order by order (eqs. 40-42, 45) over the prefix of provably active nodes;
 * the half kicks of the wall and the exact harmonic free flow (the two half kicks between
@@ -665,7 +665,7 @@ def run_batch(
         Mode frequencies, ``c / R``.
     mass : float
         Disk mass.
-    quad : restitution.dynamics.wall.WallQuadrature
+    quad : restitution.bodies.base.SurfaceQuadrature
         Edge quadrature for these modes.
     v, alpha, x_start, dt, t_max : numpy.ndarray, shape (B,)
         Speed towards the wall (``c``), wall hardness (``1/R``), start position of the centre
@@ -706,9 +706,9 @@ def run_batch(
     out_closest = np.zeros((B, N))
     out_scalar = np.zeros((B, 9))
     quad_arrays = (
-        np.ascontiguousarray(quad.cos_phi, dtype=np.float64),
+        np.ascontiguousarray(quad.height, dtype=np.float64),
         np.ascontiguousarray(quad.weight, dtype=np.float64),
-        np.ascontiguousarray(quad.trig[:, _group_columns(cols)], dtype=np.float64),
+        np.ascontiguousarray(quad.basis[:, _group_columns(cols)], dtype=np.float64),
         np.ascontiguousarray(quad.C[perm], dtype=np.float64),
         np.ascontiguousarray(quad.S[perm], dtype=np.float64),
         starts,
@@ -744,7 +744,7 @@ def run_batch(
         shared = (
             np.zeros(2 * LINE, dtype=np.int64),
             np.zeros((2, 2, 4)),
-            np.zeros((2, 2, quad.cos_phi.size)),
+            np.zeros((2, 2, quad.height.size)),
             np.zeros(quad_arrays[2].shape[1]),
         )
         with ThreadPoolExecutor(max_workers=2) as pool:

@@ -12,16 +12,17 @@ import time
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from restitution.bodies.disk.modes import ModeSet
-from restitution.dynamics.collision import CONTACT_TOL, _start_position
-from restitution.dynamics.wall import default_n_phi, dense_edge_matrix, wall_quadrature, wall_terms
+from restitution.bodies.base import ModalBody
+from restitution.dynamics.settings import CONTACT_TOL
+from restitution.dynamics.start import start_position_of
+from restitution.dynamics.wall import wall_terms
 from restitution.errors import InputError
 
 __all__ = ["collide_dop853"]
 
 
 def collide_dop853(
-    modes: ModeSet,
+    body: ModalBody,
     v: float,
     alpha: float,
     *,
@@ -39,7 +40,7 @@ def collide_dop853(
 
     Parameters
     ----------
-    modes : ModeSet
+    body : ModalBody
     v, alpha : float
         Speed towards the wall (``c``) and wall hardness (``1 / R``).
     t_end : float, optional
@@ -61,21 +62,21 @@ def collide_dop853(
         ``epsilon``, ``energy_after`` (per mode, fraction of E0), ``energy_drift``, ``nfev``,
         ``wall_time_s``, ``t_end``.
     """
-    m, w = modes.mass, modes.omega
-    N = len(modes)
-    quad = wall_quadrature(modes, n_phi or default_n_phi(alpha, int(modes.n.max())))
+    m, w = body.mass, body.omega
+    N = len(body)
+    quad = body.surface_quadrature(n_phi or body.default_nodes(alpha))
     a = np.array([alpha], float)
     e0 = 0.5 * m * v**2
-    x_start = float(_start_position(a, np.array([e0]), quad)[0])
+    x_start = float(start_position_of(a, np.array([e0]), quad)[0])
     if t_end is None:
         t_end = 2.0 * (-1.0 - x_start) / v + 20.0
 
     if wall not in ("dense", "orders"):
         raise InputError(f"wall must be 'dense' or 'orders', got {wall!r}")
-    G = dense_edge_matrix(modes, quad.phi) if wall == "dense" else None
+    G = body.surface_matrix(quad.nodes) if wall == "dense" else None
 
     def wall_terms_dense(x0, Q):
-        e = np.exp(alpha * (x0 + quad.cos_phi + G @ Q)) * quad.weight
+        e = np.exp(alpha * (x0 + quad.height + G @ Q)) * quad.weight
         F = e.sum()
         return F / alpha, F, e @ G
 

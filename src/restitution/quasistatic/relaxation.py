@@ -37,7 +37,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.bodies.disk.modes import ModeSet
-from restitution.dynamics.wall import dense_edge_matrix, wall_quadrature
 from restitution.errors import InputError, RestitutionError
 
 __all__ = [
@@ -72,9 +71,9 @@ def default_n_phi(alpha: float, n_max: int) -> int:
 
 def _edge(modes: ModeSet, n_phi: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Nodes, weights, ``cos(phi)`` and the dense edge matrix ``g_k(phi_j)`` of the wall."""
-    quad = wall_quadrature(modes, n_phi)
-    G = dense_edge_matrix(modes, quad.phi)
-    return quad.phi, quad.weight, quad.cos_phi, np.ascontiguousarray(G)
+    quad = modes.surface_quadrature(n_phi)
+    G = modes.surface_matrix(quad.nodes)
+    return quad.nodes, quad.weight, quad.height, np.ascontiguousarray(G)
 
 
 @dataclass(frozen=True, eq=False)

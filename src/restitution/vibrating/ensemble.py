@@ -164,7 +164,7 @@ def collide_states(
     message (a string) in place of its result, and never loses the others.
 
     A vibrating disk can leave the wall very slowly (``v' << v``); the solver allows it 100
-    times the time bound of a disk at rest (``collision._start``), and a member that still
+    times the time bound of a disk at rest (:func:`restitution.dynamics.start.start_of`), and a member that still
     does not separate within that bound or ``max_steps`` comes back as its message.
     """
     v = np.broadcast_to(np.asarray(v, dtype=float), (len(Q),))

@@ -27,12 +27,15 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from scipy.optimize import brentq
 from scipy.optimize.elementwise import find_minimum, find_root
 from scipy.special import jv
 
+from restitution.bodies.base import SurfaceQuadrature
+from restitution.bodies.disk import contact, surface
 from restitution.bodies.disk.bessel_ratio import scaled_pairs
 from restitution.bodies.disk.frequency_equation import (
     bessel_and_derivative,
@@ -64,7 +67,12 @@ class ModeError(RestitutionError):
 
 @dataclass(frozen=True, eq=False)
 class ModeSet:
-    """A set of normalised symmetric eigenmodes, sorted by frequency.
+    """A set of normalised symmetric eigenmodes of the disk, sorted by frequency.
+
+    The disk's implementation of the body protocol
+    (:class:`restitution.bodies.base.ModalBody`): its order is ``n``, its surface quadrature
+    the edge quadrature of :mod:`restitution.bodies.disk.surface`, its contact scales those of
+    eq. (61) (:mod:`restitution.bodies.disk.contact`).
 
     Attributes
     ----------
@@ -93,6 +101,8 @@ class ModeSet:
     C: np.ndarray
     S: np.ndarray
 
+    geometry: ClassVar[str] = "disk"
+
     def __len__(self) -> int:
         return int(self.omega.size)
 
@@ -100,6 +110,28 @@ class ModeSet:
     def mass(self) -> float:
         """Disk mass ``m = pi`` in units ``rho R^2``."""
         return math.pi
+
+    @property
+    def order(self) -> np.ndarray:
+        """Angular order of every mode: the number ``n`` of directional nodes."""
+        return self.n
+
+    def default_nodes(self, alpha: float) -> int:
+        """Edge nodes on ``[0, pi/2]`` for a wall of hardness ``alpha``
+        (:func:`restitution.bodies.disk.surface.default_n_phi`)."""
+        return surface.default_n_phi(float(alpha), int(self.n.max()))
+
+    def surface_quadrature(self, n_nodes: int) -> SurfaceQuadrature:
+        """The edge quadrature with ``n_nodes`` nodes on ``[0, pi/2]`` (eqs. 40-41)."""
+        return surface.edge_quadrature(self, n_nodes)
+
+    def surface_matrix(self, nodes: np.ndarray) -> np.ndarray:
+        """``g_k(phi_j)`` of eq. (40), shape (M, N)."""
+        return surface.dense_edge_matrix(self, nodes)
+
+    def contact_time_estimate(self, v):
+        """Quasistatic contact time ``pi sqrt(ln(4/v))`` of eq. (61), ``R / c``."""
+        return contact.contact_time_estimate(v)
 
     def take(self, index: np.ndarray) -> ModeSet:
         """Subset of modes at ``index`` (integer or boolean array), in the order given."""

@@ -1,0 +1,153 @@
+"""The time step of a collision and the work it will take, known before anything runs.
+
+Units: ``E = rho = R = 1``; times in ``R / c``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from restitution.bodies.base import ModalBody
+from restitution.dynamics.integrators import INTEGRATORS
+from restitution.dynamics.settings import CONTACT_TOL, CollisionSettings
+from restitution.errors import InputError
+
+__all__ = ["MAX_MEMORY_BYTES", "WorkEstimate", "check_work", "estimate_work", "initial_step"]
+
+# Step coefficient c of dt = c * min(1 / (alpha v), 1 / omega_max) that gives an energy drift
+# of about 1e-6, measured per integrator at nu = 0.33 (v = 0.005-0.3, alpha = 500-4000,
+# N = 400-1600); see docs/numerics.md.
+_STEP_COEFF = {"split4": 0.2, "split": 0.03, "rk4": 0.2}
+
+
+def initial_step(
+    body: ModalBody, v: np.ndarray, alpha: np.ndarray, integrator: str, energy_tol: float
+) -> np.ndarray:
+    """First guess of the step for each collision, ``R / c``.
+
+    Two time scales limit the step. An edge point arriving at the wall with speed ``~v`` is
+    stopped within the decay length ``1/alpha`` of the exponential potential, in a time
+    ``1 / (alpha v)``; and the wall force, which depends on every mode, varies on the period
+    of the fastest mode, ``1 / omega_max``. The step is ``c`` times the smaller, with ``c``
+    calibrated per integrator for a drift of 1e-6 and scaled as ``energy_tol^(1/order)``.
+    The driver measures the actual drift and refines the step when needed.
+    """
+    order = INTEGRATORS[integrator].order
+    coeff = _STEP_COEFF[integrator] * (energy_tol / 1e-6) ** (1.0 / order)
+    w_max = float(body.omega.max())
+    return coeff * np.minimum(1.0 / (alpha * v), 1.0 / w_max)
+
+
+MAX_MEMORY_BYTES = 4 * 2**30
+"""Largest working memory (quadrature and batch arrays) a collision run may plan to use."""
+
+
+@dataclass(frozen=True)
+class WorkEstimate:
+    """Up-front estimate of the work of one batch (the largest member).
+
+    Attributes
+    ----------
+    steps : float
+        Expected time steps of one run: (approach + contact + departure time) / dt.
+    t_end : float
+        Expected simulated time, ``R / c``: the approach from the start position and back at
+        speed ``v`` plus the quasistatic contact time.
+    dt : float
+        First step, ``R / c``.
+    n_phi : int
+        Nodes of the edge quadrature.
+    memory_bytes : float
+        Working memory of the quadrature and the batch arrays, bytes.
+    limit : str
+        What makes it large: ``"approach"`` (the start is far from the wall for this ``v`` and
+        ``alpha``), ``"wall"`` (``alpha v`` forces a tiny step) or ``"body"`` (the fastest
+        mode forces a tiny step).
+    """
+
+    steps: float
+    t_end: float
+    dt: float
+    n_phi: int
+    memory_bytes: float
+    limit: str
+
+
+def estimate_work(
+    body: ModalBody, v: np.ndarray, alpha: np.ndarray, settings: CollisionSettings
+) -> WorkEstimate:
+    """Estimate steps and memory of :func:`collide_batch` before anything is allocated.
+
+    The start position solves ``V(x0) = CONTACT_TOL E0`` with the wall integral approximated
+    by ``min(pi/2, sqrt(pi / (2 alpha)))`` (the Gaussian peak at ``phi = 0``); the disk flies
+    that distance at ``v`` in and out, and touches for the quasistatic time of eq. (61).
+    """
+    v = np.asarray(v, dtype=float)
+    alpha = np.asarray(alpha, dtype=float)
+    e0 = 0.5 * body.mass * v**2
+    integral = np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / alpha))
+    with np.errstate(over="ignore", divide="ignore"):
+        gap = np.maximum(0.0, -np.log(CONTACT_TOL * e0 * alpha / integral) / alpha)
+    flight = 2.0 * gap / v
+    t_end = flight + body.contact_time_estimate(v)
+    if settings.dt is not None:
+        dt = np.full(v.size, settings.dt)
+    else:
+        dt = settings.step_safety * initial_step(
+            body, v, alpha, settings.integrator, settings.energy_tol
+        )
+    steps = t_end / dt
+    worst = int(np.argmax(steps))
+    if flight[worst] > 0.5 * t_end[worst]:
+        limit = "approach"
+    elif alpha[worst] * v[worst] > float(body.omega.max()):
+        limit = "wall"
+    else:
+        limit = "body"
+    n_phi = settings.n_phi or body.default_nodes(float(alpha.max()))
+    orders = np.unique(body.order).size
+    # trig (n_phi x 2K) and a few (B x n_phi) and (B x N) work arrays, 8 bytes each.
+    memory = 8.0 * (n_phi * (2 * orders + 4) + 6 * v.size * (n_phi + len(body)))
+    return WorkEstimate(
+        steps=float(steps[worst]),
+        t_end=float(t_end[worst]),
+        dt=float(dt[worst]),
+        n_phi=int(n_phi),
+        memory_bytes=float(memory),
+        limit=limit,
+    )
+
+
+def check_work(
+    body: ModalBody, v: np.ndarray, alpha: np.ndarray, settings: CollisionSettings
+) -> WorkEstimate:
+    """Refuse a batch whose estimated work exceeds ``settings.max_steps`` or the memory bound.
+
+    Raises
+    ------
+    InputError
+        Saying the estimate and what to change.
+    """
+    est = estimate_work(body, v, alpha, settings)
+    if est.memory_bytes > MAX_MEMORY_BYTES:
+        raise InputError(
+            f"alpha up to {float(np.max(alpha)):.3g} needs {est.n_phi:.3g} edge quadrature "
+            f"nodes, about {est.memory_bytes / 2**30:.3g} GiB (limit "
+            f"{MAX_MEMORY_BYTES / 2**30:g} GiB); lower alpha or set a smaller n_phi"
+        )
+    if est.steps > settings.max_steps:
+        advice = {
+            "approach": "the disk starts where the wall energy is 1e-12 of E0 and needs that "
+            "long to arrive: raise v or alpha (alpha * v of order 1-100 is typical)",
+            "wall": "the step must resolve 1/(alpha v): lower alpha",
+            "body": "the step must resolve the fastest mode: use fewer body",
+        }[est.limit]
+        raise InputError(
+            f"this collision would need about {est.steps:.2g} time steps (simulated time "
+            f"{est.t_end:.3g} R/c at dt = {est.dt:.3g} R/c), more than max_steps = "
+            f"{settings.max_steps}; {advice}"
+        )
+    return est
