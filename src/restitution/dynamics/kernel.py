@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 from concurrent.futures import ThreadPoolExecutor
+from typing import NamedTuple
 
 import numba
 import numpy as np
@@ -59,6 +60,62 @@ _COLUMN_COST = 12.0
 
 # Nodes whose exponent is certainly below -_NEGLIGIBLE are skipped (see wall.active_nodes).
 _NEGLIGIBLE = 40.0
+
+
+class _Quadrature(NamedTuple):
+    """The body's surface quadrature in the kernel's layout: modes sorted by order, the columns
+    of ``basis`` grouped (:func:`_group_columns`)."""
+
+    height: np.ndarray  # (M,) undeformed surface position along the axis, R
+    weight: np.ndarray  # (M,) quadrature weights
+    basis: np.ndarray  # (M, 2K) basis values, columns group by group
+    C: np.ndarray  # (N,) normal surface amplitudes, modes sorted by order
+    S: np.ndarray  # (N,) tangential surface amplitudes
+    starts: np.ndarray  # (K + 1,) uint64: modes of order column i are starts[i]:starts[i+1]
+    g_max: np.ndarray  # (N,) |C| + |S|
+    cols: np.ndarray  # (3,) int64: order columns of the two groups, [0, kc, K]
+    ucols: np.ndarray  # (3,) uint64: 2 cols, the groups' column ranges of basis, ab and cs
+    dcols: np.ndarray  # (3,) uint64: the two parts of the first wall product (_dot_split)
+
+
+class _Control(NamedTuple):
+    """Stepping and stop control shared by every member."""
+
+    weights: np.ndarray  # Strang substep weights of one step
+    max_steps: int
+    abort_drift: float  # stop as unstable above this drift; <= 0: never
+    stop_log: float  # stop when alpha * gap > stop_log ...
+    contact_tol: float  # ... and V < contact_tol * E0
+
+
+class _Members(NamedTuple):
+    """Per-member inputs, shape (B,) each."""
+
+    v: np.ndarray  # speed towards the wall, c
+    alpha: np.ndarray  # wall hardness, 1/R
+    x_start: np.ndarray  # centre position at the start, R
+    dt: np.ndarray  # step, R/c
+    t_max: np.ndarray  # bound of the simulated time, R/c
+
+
+class _Outputs(NamedTuple):
+    """Per-member results: modal arrays (B, N) in the kernel's mode order, scalars (B,)."""
+
+    Q: np.ndarray  # initial state in, final state out
+    P: np.ndarray
+    energy: np.ndarray  # mode energies at the end
+    energy_sum: np.ndarray  # contact-time integral of the mode energies
+    energy_closest: np.ndarray  # mode energies at the closest approach
+    status: np.ndarray  # int64: STATUS_*
+    epsilon: np.ndarray
+    drift: np.ndarray
+    contact_time: np.ndarray
+    max_compression: np.ndarray
+    max_force: np.ndarray
+    steps: np.ndarray  # int64
+    t_end: np.ndarray
+    x_end: np.ndarray
+
 
 # Reassociation lets the compiler vectorise the sums over orders and modes; it changes results
 # only at round-off. No "nnan"/"ninf": the overflow test relies on isfinite.
@@ -331,35 +388,10 @@ def _close(half, Q, P, C, S, starts, cs, omega, m, out_e):
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _member(
-    v,
-    alpha,
-    x_start,
-    dt,
-    t_max,
-    omega,
-    mass,
-    quad,
-    weights,
-    rotations,
-    rot_of,
-    max_steps,
-    abort_drift,
-    stop_log,
-    contact_tol,
-    Q,
-    P,
-    out_e,
-    out_mean,
-    out_closest,
-    ab,
-    g0,
-    g1,
-    sync,
-):
-    """Integrate one collision from the modal state ``(Q, P)`` (advanced in place to the final
-    state); returns (status, epsilon, drift, contact, max_comp, max_force, steps, t, x0). Mode
-    energies after, contact-summed and at closest approach go to ``out_*``.
+def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, g1, sync):
+    """Integrate member ``b`` from its modal state ``out.Q[b], out.P[b]`` (advanced in place to
+    the final state); returns (status, epsilon, drift, contact, max_comp, max_force, steps, t,
+    x0). Mode energies after, contact-summed and at closest approach go to ``out``.
 
     The order columns form two groups (``cols`` in ``quad``); this call advances the modes of
     groups ``g0 <= g < g1``: both groups on one thread, or one each on two threads that meet
@@ -378,6 +410,21 @@ def _member(
     closing pass they were slower and would touch them before an unstable return).
     """
     cos_phi, weight, trig, C, S, starts, g_max, cols, ucols, dcols = quad
+    weights = ctl.weights
+    max_steps = ctl.max_steps
+    abort_drift = ctl.abort_drift
+    stop_log = ctl.stop_log
+    contact_tol = ctl.contact_tol
+    v = members.v[b]
+    alpha = members.alpha[b]
+    x_start = members.x_start[b]
+    dt = members.dt[b]
+    t_max = members.t_max[b]
+    Q = out.Q[b]
+    P = out.P[b]
+    out_e = out.energy[b]
+    out_mean = out.energy_sum[b]
+    out_closest = out.energy_closest[b]
     K2 = trig.shape[1]
     M = cos_phi.size
     k0 = starts[cols[g0]]
@@ -489,47 +536,25 @@ def _member(
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _one(
-    b,
-    part,
-    v,
-    alpha,
-    x_start,
-    dt,
-    t_max,
-    omega,
-    mass,
-    quad,
-    weights,
-    max_steps,
-    abort_drift,
-    stop_log,
-    contact_tol,
-    out_Q,
-    out_P,
-    out_e,
-    out_mean,
-    out_closest,
-    out_scalar,
-    shared,
-):
+def _one(b, part, omega, mass, quad, ctl, members, out, shared):
     """Member ``b`` of a batch: its rotations for its own step, then :func:`_member`.
 
     ``part`` is -1 for a member run by one thread (both groups of orders); 0 or 1 for the two
     threads that share a member, each advancing one group and meeting the other through the
     ``shared`` arrays ``(flags, red, xs, ab)`` (fresh zeros, unused when ``part`` is -1).
-    ``out_Q[b]``, ``out_P[b]`` hold the member's initial modal state and receive its final one.
+    ``out.Q[b]``, ``out.P[b]`` hold the member's initial modal state and receive its final one.
     """
     N = omega.size
-    M = quad[0].size
-    starts = quad[5]
-    cols = quad[7]
+    M = quad.height.size
+    starts = quad.starts
+    cols = quad.cols
+    weights = ctl.weights
     if part < 0:
         g0, g1, me, nthreads = 0, 2, 0, 1
         flags = np.zeros(2 * LINE, dtype=np.int64)
         red = np.zeros((2, 2, 4))
         xs = np.zeros((2, 2, M))
-        ab = np.zeros(quad[2].shape[1])
+        ab = np.zeros(quad.basis.shape[1])
     else:
         g0, g1, me, nthreads = part, part + 1, part, 2
         flags, red, xs, ab = shared
@@ -547,50 +572,25 @@ def _one(
         if rot_of[s] != s:
             continue
         for k in range(starts[cols[g0]], starts[cols[g1]]):
-            arg = omega[k] * (weights[s] * dt[b])
+            arg = omega[k] * (weights[s] * members.dt[b])
             sn = math.sin(arg)
             mw = mass * omega[k]
             rotations[s, 0, k] = math.cos(arg)
             rotations[s, 1, k] = sn / mw
             rotations[s, 2, k] = mw * sn
-    res = _member(
-        v[b],
-        alpha[b],
-        x_start[b],
-        dt[b],
-        t_max[b],
-        omega,
-        mass,
-        quad,
-        weights,
-        rotations,
-        rot_of,
-        max_steps,
-        abort_drift,
-        stop_log,
-        contact_tol,
-        out_Q[b],
-        out_P[b],
-        out_e[b],
-        out_mean[b],
-        out_closest[b],
-        ab,
-        g0,
-        g1,
-        sync,
-    )
+    res = _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, g1, sync)
     if g0 > 0:
         return
     status, eps, drift, contact, max_comp, max_force, steps, t_end, x_end = res
-    out_scalar[b, 0] = status
-    out_scalar[b, 1] = eps
-    out_scalar[b, 2] = drift
-    out_scalar[b, 3] = contact
-    out_scalar[b, 4] = max_comp
-    out_scalar[b, 5] = max_force
-    out_scalar[b, 6] = steps
-    out_scalar[b, 7] = t_end
-    out_scalar[b, 8] = x_end
+    out.status[b] = status
+    out.epsilon[b] = eps
+    out.drift[b] = drift
+    out.contact_time[b] = contact
+    out.max_compression[b] = max_comp
+    out.max_force[b] = max_force
+    out.steps[b] = steps
+    out.t_end[b] = t_end
+    out.x_end[b] = x_end
 
 
 def _threads() -> int:
@@ -699,44 +699,52 @@ def run_batch(
     counts = np.bincount(quad.column, minlength=quad.n_orders)
     starts = np.r_[0, np.cumsum(counts)].astype(np.uint64)
     cols = _order_groups(counts)
-    out_Q = np.zeros((B, N)) if Q0 is None else np.array(np.asarray(Q0, float)[:, perm])
-    out_P = np.zeros((B, N)) if P0 is None else np.array(np.asarray(P0, float)[:, perm])
-    out_e = np.zeros((B, N))
-    out_mean = np.zeros((B, N))
-    out_closest = np.zeros((B, N))
-    out_scalar = np.zeros((B, 9))
-    quad_arrays = (
-        np.ascontiguousarray(quad.height, dtype=np.float64),
-        np.ascontiguousarray(quad.weight, dtype=np.float64),
-        np.ascontiguousarray(quad.basis[:, _group_columns(cols)], dtype=np.float64),
-        np.ascontiguousarray(quad.C[perm], dtype=np.float64),
-        np.ascontiguousarray(quad.S[perm], dtype=np.float64),
-        starts,
-        np.ascontiguousarray(quad.g_max[perm], dtype=np.float64),
-        cols,
-        (2 * cols).astype(np.uint64),
-        _dot_split(cols),
+    scalar = np.zeros(B)
+    out = _Outputs(
+        Q=np.zeros((B, N)) if Q0 is None else np.array(np.asarray(Q0, float)[:, perm]),
+        P=np.zeros((B, N)) if P0 is None else np.array(np.asarray(P0, float)[:, perm]),
+        energy=np.zeros((B, N)),
+        energy_sum=np.zeros((B, N)),
+        energy_closest=np.zeros((B, N)),
+        status=np.zeros(B, dtype=np.int64),
+        epsilon=scalar.copy(),
+        drift=scalar.copy(),
+        contact_time=scalar.copy(),
+        max_compression=scalar.copy(),
+        max_force=scalar.copy(),
+        steps=np.zeros(B, dtype=np.int64),
+        t_end=scalar.copy(),
+        x_end=scalar.copy(),
+    )
+    kquad = _Quadrature(
+        height=np.ascontiguousarray(quad.height, dtype=np.float64),
+        weight=np.ascontiguousarray(quad.weight, dtype=np.float64),
+        basis=np.ascontiguousarray(quad.basis[:, _group_columns(cols)], dtype=np.float64),
+        C=np.ascontiguousarray(quad.C[perm], dtype=np.float64),
+        S=np.ascontiguousarray(quad.S[perm], dtype=np.float64),
+        starts=starts,
+        g_max=np.ascontiguousarray(quad.g_max[perm], dtype=np.float64),
+        cols=cols,
+        ucols=(2 * cols).astype(np.uint64),
+        dcols=_dot_split(cols),
+    )
+    ctl = _Control(
+        weights=np.asarray(weights, dtype=np.float64),
+        max_steps=int(max_steps),
+        abort_drift=-1.0 if abort_drift is None else float(abort_drift),
+        stop_log=float(stop_log),
+        contact_tol=float(contact_tol),
+    )
+    members = _Members(
+        *(np.ascontiguousarray(a, dtype=np.float64) for a in (v, alpha, x_start, dt, t_max))
     )
     args = (
-        np.ascontiguousarray(v, dtype=np.float64),
-        np.ascontiguousarray(alpha, dtype=np.float64),
-        np.ascontiguousarray(x_start, dtype=np.float64),
-        np.ascontiguousarray(dt, dtype=np.float64),
-        np.ascontiguousarray(t_max, dtype=np.float64),
         np.ascontiguousarray(omega[perm], dtype=np.float64),
         float(mass),
-        quad_arrays,
-        np.asarray(weights, dtype=np.float64),
-        int(max_steps),
-        -1.0 if abort_drift is None else float(abort_drift),
-        float(stop_log),
-        float(contact_tol),
-        out_Q,
-        out_P,
-        out_e,
-        out_mean,
-        out_closest,
-        out_scalar,
+        kquad,
+        ctl,
+        members,
+        out,
     )
     threads = _threads()
     if B == 1 and threads >= 2 and N >= SPLIT_MIN_MODES:
@@ -745,7 +753,7 @@ def run_batch(
             np.zeros(2 * LINE, dtype=np.int64),
             np.zeros((2, 2, 4)),
             np.zeros((2, 2, quad.height.size)),
-            np.zeros(quad_arrays[2].shape[1]),
+            np.zeros(kquad.basis.shape[1]),
         )
         with ThreadPoolExecutor(max_workers=2) as pool:
             list(pool.map(lambda part: _one(0, part, *args, shared), (0, 1)))
@@ -775,18 +783,18 @@ def run_batch(
     back = np.empty_like(perm)
     back[perm] = np.arange(N)
     return {
-        "status": out_scalar[:, 0].astype(int),
-        "epsilon": out_scalar[:, 1],
-        "drift": out_scalar[:, 2],
-        "contact_time": out_scalar[:, 3],
-        "max_compression": out_scalar[:, 4],
-        "max_force": out_scalar[:, 5],
-        "steps": out_scalar[:, 6].astype(int),
-        "t_end": out_scalar[:, 7],
-        "energy": out_e[:, back],
-        "energy_sum": out_mean[:, back],
-        "energy_closest": out_closest[:, back],
-        "final_Q": out_Q[:, back],
-        "final_P": out_P[:, back],
-        "final_x0": out_scalar[:, 8],
+        "status": out.status.astype(int),
+        "epsilon": out.epsilon,
+        "drift": out.drift,
+        "contact_time": out.contact_time,
+        "max_compression": out.max_compression,
+        "max_force": out.max_force,
+        "steps": out.steps.astype(int),
+        "t_end": out.t_end,
+        "energy": out.energy[:, back],
+        "energy_sum": out.energy_sum[:, back],
+        "energy_closest": out.energy_closest[:, back],
+        "final_Q": out.Q[:, back],
+        "final_P": out.P[:, back],
+        "final_x0": out.x_end,
     }
