@@ -40,6 +40,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
@@ -203,16 +204,46 @@ def huge(rounds: int) -> None:
     print(f"  {_load()}")
 
 
+# Where a module lived before the layer subpackages (the baselines predate them), and where it
+# lives now; a baseline's imports of moved modules are pointed at their new homes.
+_MOVED = {
+    "kernel": "dynamics/kernel",
+    "spin": "dynamics/spin",
+    "modes": "bodies/disk/modes",
+    "frequency_equation": "bodies/disk/frequency_equation",
+    "bessel_ratio": "bodies/disk/bessel_ratio",
+    "material": "bodies/material",
+}
+
+
 def _git_show(rev: str, name: str) -> str:
-    """Source of ``src/restitution/<name>.py`` at revision ``rev``."""
+    """Source of module ``name`` (a key of ``_MOVED``) at revision ``rev``, in either layout,
+    with imports of moved modules rewritten to the current layout."""
     root = Path(__file__).resolve().parent.parent
-    return subprocess.run(
-        ["git", "show", f"{rev}:src/restitution/{name}.py"],
-        cwd=root,
-        check=True,
-        capture_output=True,
-        text=True,
-    ).stdout
+    for path in (_MOVED[name], name):
+        got = subprocess.run(
+            ["git", "show", f"{rev}:src/restitution/{path}.py"],
+            cwd=root,
+            capture_output=True,
+            text=True,
+        )
+        if got.returncode == 0:
+            text = got.stdout
+            for old, new in _MOVED.items():
+                text = text.replace(
+                    f"from restitution.{old} ", f"from restitution.{new.replace('/', '.')} "
+                )
+            return text
+    raise SystemExit(f"no module {name} at revision {rev}")
+
+
+def _old_quadrature(quad):
+    """``quad`` with the attribute names of the kernels before the body protocol as well
+    (``cos_phi``, ``trig``, ``phi``: now ``height``, ``basis``, ``nodes``)."""
+    fields = {name: getattr(quad, name) for name in quad.__dataclass_fields__}
+    return SimpleNamespace(
+        **fields, n_orders=quad.n_orders, cos_phi=quad.height, trig=quad.basis, phi=quad.nodes
+    )
 
 
 def _baseline_kernel(rev: str):
@@ -246,6 +277,11 @@ def _kernel_inputs(modes, v, alpha):
     return calls[-1]
 
 
+def _old_args(args: tuple) -> tuple:
+    """``run_batch`` arguments for a baseline kernel: the quadrature (third) with old names."""
+    return (*args[:2], _old_quadrature(args[2]), *args[3:])
+
+
 def kernel(rounds: int, rev: str) -> None:
     import restitution.dynamics.kernel as new
 
@@ -255,7 +291,7 @@ def kernel(rounds: int, rev: str) -> None:
     # a separate parallel function for batches).
     for v in (V, [V, 2 * V]):
         args, kwargs = _kernel_inputs(get_modes(NU, count=20), v, ALPHA)
-        old.run_batch(*args, **kwargs)
+        old.run_batch(*_old_args(args), **kwargs)
         new.run_batch(*args, **kwargs)
     cases = (
         ("one collision, N = 1600, v = 0.1, alpha = 500", 1600, V, ALPHA),
@@ -270,7 +306,10 @@ def kernel(rounds: int, rev: str) -> None:
     for label, n, v, alpha in cases:
         args, kwargs = _kernel_inputs(get_modes(NU, count=n), v, alpha)
         times: dict[str, list[float]] = {"old": [], "new": []}
-        sides = [("old", old.run_batch), ("new", new.run_batch)]
+        sides = [
+            ("old", lambda *a, **kw: old.run_batch(*_old_args(a), **kw)),
+            ("new", new.run_batch),
+        ]
         for i in range(rounds):
             out = {}
             # Alternate which side runs first, so that neither always finds warm caches.
