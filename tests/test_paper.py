@@ -429,7 +429,8 @@ def test_results_doc_states_what_the_shipped_laws_say():
     text = doc.read_text()
     block = text.split(BEGIN, 1)[1].split(END, 1)[0]
     assert block.strip() == law_summary().strip(), (
-        "docs/results.md is stale: run `python -m restitution.reproduction.claims.shipped docs/results.md`"
+        "docs/results.md is stale: run "
+        "`python -m restitution.reproduction.claims.shipped docs/results.md`"
     )
     # The generated statements come from the data: the shipped nu = 0.33 law is not monotone.
     from restitution.laws.law import law

@@ -64,7 +64,8 @@ def test_report_renders_every_figure(run, tmp_path):
     done = _chromium(tmp_path, "--virtual-time-budget=10000", "--dump-dom", url)
     assert done.returncode == 0, done.stderr[-2000:]
     dom = done.stdout
-    # The page's own script marks each image once the page has loaded (restitution.reproduction.report).
+    # The page's own script marks each image once the page has loaded
+    # (restitution.reproduction.report).
     body = re.search(r"<body([^>]*)>", dom)
     assert body is not None, dom[:2000]
     n = len(run.figures)

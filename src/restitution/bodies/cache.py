@@ -139,8 +139,8 @@ def get_modes(
 ) -> ModeSet:
     """Symmetric eigenmodes of the free disk, from the disk cache when possible.
 
-    Same parameters as :func:`restitution.bodies.disk.modes.compute_modes`; ``use_cache=False`` bypasses
-    the cache entirely.
+    Same parameters as :func:`restitution.bodies.disk.modes.compute_modes`;
+    ``use_cache=False`` bypasses the cache entirely.
     """
     nu = require_reduced(material, "the modal path")
     check_mode_request(nu, count, omega_max)

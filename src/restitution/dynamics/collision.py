@@ -19,11 +19,11 @@ is the *free-flight* state at the moment the centre passes the start position ab
 translation and its free oscillation, without the wall. The integration begins earlier by the
 vibration's reach (the bound on the edge displacement that the stop test uses), so that no edge
 point is closer to the wall than the undeformed disk's edge at the start position, with the
-state carried back by the exact free oscillation (:func:`~restitution.dynamics.integrators.free_modes`):
-the same physics, defined independently of where the integration begins. Every
-result carries the final state (``final_Q``, ``final_P`` at centre position ``final_x0`` and time
-``t_end`` after the start position was passed) so collisions can be chained. A zero initial state
-is today's collision, bit for bit.
+state carried back by the exact free oscillation
+(:func:`~restitution.dynamics.integrators.free_modes`): the same physics, defined independently of
+where the integration begins. Every result carries the final state (``final_Q``, ``final_P`` at
+centre position ``final_x0`` and time ``t_end`` after the start position was passed) so collisions
+can be chained. A zero initial state is today's collision, bit for bit.
 """
 
 from __future__ import annotations
@@ -165,8 +165,8 @@ def collide_batch(
 
     The batch shares the mode set; every member keeps its own step, step refinements and edge
     quadrature, so its result does not depend on the other members. The compiled kernel
-    (:mod:`restitution.dynamics.kernel`) runs the members on all cores; the NumPy reference path runs
-    them one after the other.
+    (:mod:`restitution.dynamics.kernel`) runs the members on all cores; the NumPy reference path
+    runs them one after the other.
 
     Parameters
     ----------
@@ -283,13 +283,13 @@ def collide(
 
 
 def rank_modes(
-    pool: ModeSet,
+    pool: ModalBody,
     count: int,
     v: float,
     alpha: float,
     settings: CollisionSettings | None = None,
     **overrides,
-) -> ModeSet:
+) -> ModalBody:
     """The paper's mode selection: the ``count`` body of ``pool`` with the largest average
     energy during the contact of a preliminary run with the whole pool (section 4)."""
     if count > len(pool):

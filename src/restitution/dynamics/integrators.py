@@ -7,8 +7,8 @@ harmonic oscillator)::
 
     H_free = p0^2 / (2m) + sum_k [P_k^2 / (2m) + (m/2) omega_k^2 Q_k^2]
 
-and the wall potential ``V(x0, Q)`` of :mod:`restitution.dynamics.wall`. Every integrator implements the
-same tiny interface: ``step(system, state, dt) -> state`` with class attributes ``order`` and
+and the wall potential ``V(x0, Q)`` of :mod:`restitution.dynamics.wall`. Every integrator implements
+the same tiny interface: ``step(system, state, dt) -> state`` with class attributes ``order`` and
 ``symplectic``. States hold a batch of ``B`` independent collisions sharing one mode set.
 """
 

@@ -2,10 +2,11 @@
 
 Units: ``E = rho = R = 1``; times in ``R / c``.
 
-This is the production path of :func:`restitution.dynamics.collision.collide_batch` for the symplectic
-splittings ``split`` (Strang, second order) and ``split4`` (Yoshida, fourth order). It performs,
-per batch member and entirely in compiled code, exactly the arithmetic of the NumPy reference
-path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynamics.wall` and :mod:`restitution.dynamics.numpy_path`):
+This is the production path of :func:`restitution.dynamics.collision.collide_batch` for the
+symplectic splittings ``split`` (Strang, second order) and ``split4`` (Yoshida, fourth order). It
+performs, per batch member and entirely in compiled code, exactly the arithmetic of the NumPy
+reference path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynamics.wall` and
+:mod:`restitution.dynamics.numpy_path`):
 
 * the wall terms order by order (eqs. 40-42, 45) over the prefix of provably active nodes;
 * the half kicks of the wall and the exact harmonic free flow (the two half kicks between

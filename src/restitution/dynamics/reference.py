@@ -53,8 +53,8 @@ def collide_dop853(
     wall : {"dense", "orders"}
         ``dense`` (default) as described above; ``orders`` uses the modal solver's own
         order-by-order wall terms with inactive nodes skipped
-        (:func:`restitution.dynamics.wall.wall_terms`), so that a benchmark can separate the gain of the
-        integrator from that of the wall evaluation.
+        (:func:`restitution.dynamics.wall.wall_terms`), so that a benchmark can separate the gain of
+        the integrator from that of the wall evaluation.
 
     Returns
     -------

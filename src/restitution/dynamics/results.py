@@ -12,6 +12,8 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
+from restitution.status import Status
+
 __all__ = ["UNITS", "CollisionResult", "History"]
 
 UNITS: dict[str, str] = {
@@ -134,25 +136,25 @@ class CollisionResult:
     t_end: float = float("nan")
 
     @property
-    def status(self) -> str:
-        """``"ok"``, ``"drift-exceeded"`` (a fixed step broke ``energy_tol``) or
-        ``"not-finite"``; :attr:`advice` says what to do."""
+    def status(self) -> Status:
+        """``ok``, ``drift-exceeded`` (a fixed step broke ``energy_tol``) or ``not-finite``
+        (:class:`restitution.status.Status`); :attr:`advice` says what to do."""
         if not math.isfinite(self.epsilon) or not math.isfinite(self.energy_drift):
-            return "not-finite"
+            return Status.NOT_FINITE
         if self.energy_tol is not None and self.energy_drift > self.energy_tol:
-            return "drift-exceeded"
-        return "ok"
+            return Status.DRIFT_EXCEEDED
+        return Status.OK
 
     @property
     def advice(self) -> str | None:
-        """What to change when :attr:`status` is not ``"ok"``; ``None`` when it is."""
-        if self.status == "drift-exceeded":
+        """What to change when :attr:`status` is not ``ok``; ``None`` when it is."""
+        if self.status == Status.DRIFT_EXCEEDED:
             return (
                 f"energy drift {self.energy_drift:.2g} exceeds energy_tol = "
                 f"{self.energy_tol:.2g}: epsilon may be off by about the drift; use a smaller "
                 "fixed dt, or dt=None to choose and refine the step automatically"
             )
-        if self.status == "not-finite":
+        if self.status == Status.NOT_FINITE:
             return "the run produced no finite epsilon; use a smaller step"
         return None
 

@@ -182,7 +182,8 @@ def rayleigh_energy(
     v : float
         Incoming speed towards the wall, ``c`` (below the law's ``max_speed``).
     law : HertzLaw or str
-        Contact law, or its name for :func:`restitution.quasistatic.hertz.contact_law` at ``modes.nu``.
+        Contact law, or its name for :func:`restitution.quasistatic.hertz.contact_law` at
+        ``modes.nu``.
     method : {"duhamel", "ivp"}
         Exact Duhamel integral with quadrature (default) or DOP853 on eqs. (65)-(67).
     rtol : float

@@ -394,8 +394,8 @@ def centre_offset(modes: ModeSet) -> tuple[float, float]:
     (conditionally). Returns the Cesaro mean of the partial sums over the upper half of the
     mode set and their standard deviation there (the uncertainty).
 
-    The result matches ``-2/pi - nu/4`` (the ``"centre"`` law of :mod:`restitution.quasistatic.hertz`
-    minus the ``"diameter"`` law); see ``docs/quasistatic.md``.
+    The result matches ``-2/pi - nu/4`` (the ``"centre"`` law of
+    :mod:`restitution.quasistatic.hertz` minus the ``"diameter"`` law); see ``docs/quasistatic.md``.
 
     Parameters
     ----------

@@ -2,10 +2,10 @@
 phase dependence of epsilon on one excited mode.
 
 Every collision of an ensemble starts from its own canonical modal state
-(:func:`restitution.vibrating.vibration.thermal_state`) at the reference instant and at the same speed
-``v``; the ensemble's epsilon is then a random variable. Energies are reported as fractions of
-the initial kinetic energy ``E0 = (m/2) v^2``, per sample summed over the modes; the
-temperature is given both in reduced units (``E R^2``) and as a fraction of ``E0``.
+(:func:`restitution.vibrating.vibration.thermal_state`) at the reference instant and at the same
+speed ``v``; the ensemble's epsilon is then a random variable. Energies are reported as fractions of
+the initial kinetic energy ``E0 = (m/2) v^2``, per sample summed over the modes; the temperature is
+given both in reduced units (``E R^2``) and as a fraction of ``E0``.
 """
 
 from __future__ import annotations
@@ -164,8 +164,9 @@ def collide_states(
     message (a string) in place of its result, and never loses the others.
 
     A vibrating disk can leave the wall very slowly (``v' << v``); the solver allows it 100
-    times the time bound of a disk at rest (:func:`restitution.dynamics.start.start_of`), and a member that still
-    does not separate within that bound or ``max_steps`` comes back as its message.
+    times the time bound of a disk at rest (:func:`restitution.dynamics.start.start_of`), and a
+    member that still does not separate within that bound or ``max_steps`` comes back as its
+    message.
     """
     v = np.broadcast_to(np.asarray(v, dtype=float), (len(Q),))
     try:

@@ -1,7 +1,7 @@
 """Vibrating disks: modal states, excitations and the hand-over from one collision to the next.
 
-A collision of :func:`restitution.dynamics.collision.collide` may start from a modal state ``(Q, P)``
-(``Q`` in ``R``, ``P`` in ``m c``, in the order of the mode set). That state is the
+A collision of :func:`restitution.dynamics.collision.collide` may start from a modal state ``(Q,
+P)`` (``Q`` in ``R``, ``P`` in ``m c``, in the order of the mode set). That state is the
 *free-flight* state of the disk at the **reference instant**: the moment its centre passes the
 start position :func:`restitution.dynamics.collision.start_position` of the speed ``v`` and wall
 ``alpha`` of that collision, moving towards the wall (the wall is at ``x = 0``, the undeformed
@@ -238,8 +238,8 @@ def next_initial_state(
     The run stopped at ``result.final_x0`` moving away from the wall at ``u = epsilon v``; the
     next collision's state is the free-flight state when the centre passes *its* start
     position ``start_position(modes, v_next, alpha)`` (same wall hardness). In between the
-    modes oscillate freely (:func:`~restitution.dynamics.integrators.free_modes`) for the flight time,
-    computed exactly for one of three flights (give exactly one):
+    modes oscillate freely (:func:`~restitution.dynamics.integrators.free_modes`) for the flight
+    time, computed exactly for one of three flights (give exactly one):
 
     ``reverse=True``
         Time reversal: every momentum (translation and modes) is reversed at the stop; the

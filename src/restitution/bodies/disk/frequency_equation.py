@@ -130,8 +130,8 @@ def normalized_determinant(n: int | np.ndarray, omega: np.ndarray | float, nu: f
     Dividing each column by its (positive) norm keeps the zeros and removes the enormous
     scale differences between ``J_n(kappa)`` and ``J_n(kappa')`` at large ``n``; the result is
     a smooth function with values in ``[-1, 1]`` (the sine of the angle between the columns).
-    It is computed from unit Bessel pairs (:mod:`restitution.bodies.disk.bessel_ratio`), so it stays exact
-    where ``J_n`` itself underflows.
+    It is computed from unit Bessel pairs (:mod:`restitution.bodies.disk.bessel_ratio`), so it stays
+    exact where ``J_n`` itself underflows.
     """
     n, omega = np.broadcast_arrays(np.asarray(n), np.asarray(omega, dtype=float))
     k, kp = wavenumbers(omega, nu)
