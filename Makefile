@@ -21,9 +21,11 @@ paper: $(STAMP)
 paper-quick: $(STAMP)
 	$(BIN)/restitution paper --quick --out $(OUT)
 
-# Recompute the shipped epsilon(v) laws (src/restitution/laws/data) with the current code.
+# Recompute the shipped epsilon(v) laws (src/restitution/laws/data) with the current code,
+# then draw their slow-point figures into docs/figures.
 law: $(STAMP)
-	$(BIN)/python -m restitution.laws.production --figures docs/figures
+	$(BIN)/python -m restitution.laws.production
+	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
 
 test: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q

@@ -61,7 +61,7 @@ def no_integration(monkeypatch):
     def refuse(*args, **kwargs):
         raise AssertionError("the collision was integrated instead of refused up front")
 
-    monkeypatch.setattr(collision, "_run", refuse)
+    monkeypatch.setattr(collision, "_attempt", refuse)  # every integration attempt goes through it
 
 
 @pytest.fixture(scope="module")

@@ -20,6 +20,7 @@ from restitution.cli.epsilon import curve as curve_command
 from restitution.cli.epsilon import epsilon as epsilon_command
 from restitution.dynamics.collision import collide
 from restitution.errors import InputError, RestitutionError
+from restitution.laws.build import law_from_store
 from restitution.laws.law import EpsilonLaw, law
 from restitution.limits.curves import compute_curves, epsilon_at
 from restitution.limits.sweep import SweepSettings
@@ -69,6 +70,16 @@ def test_points_status_and_repr():
     assert "\n" not in text and "5 points" in text and "4 pass their checks" in text
     # Between a flagged point and its neighbours the interpolant is not "checked".
     assert law_.checked([0.02, 0.07, 0.15]).tolist() == [False, False, True]
+
+
+def test_law_file_of_another_nu_is_refused(synthetic, tmp_path):
+    path = synthetic.to_json(tmp_path / "law.json")  # nu = 0.33
+    assert law(0.33, path=path).nu == 0.33 and law(path=path).nu == 0.33
+    with pytest.raises(InputError) as info:
+        law(0.9, path=path)
+    message = str(info.value)
+    assert "\n" not in message and "nu = 0.33" in message and "nu = 0.9" in message
+    assert "restitution curve --nu 0.9" in message
 
 
 def test_exports_round_trip(synthetic, tmp_path):
@@ -130,7 +141,7 @@ def test_law_from_store_recovers_the_known_limit(tmp_path, client, scale):
     expected = np.sqrt(1.0 - known_limit(np.array(settings.velocities)))
     assert_allclose(curves[0.5].epsilon, expected, rtol=1e-12)
     assert all(c.asymptotic_ok for c in curves[0.5].limits)
-    loaded = law(0.5, store=path, settings=settings)  # reads only
+    loaded = law_from_store(0.5, path, settings=settings)  # reads only
     assert_allclose(loaded.epsilon(0.1), expected[1], rtol=1e-12)
     assert loaded.metadata["parameters"]["alphas"] == [100.0, 200.0, 400.0]
     assert loaded.metadata["parameters"]["alpha_scale"] == scale

@@ -3,9 +3,9 @@
 Every law file in ``restitution/laws/data`` is loaded and checked against the current code:
 
 * no epsilon above 1, every error finite and positive;
-* every point's extrapolation, redone by the current :mod:`restitution.limits.extrapolation` from the
-  energy-loss grid stored in the file, gives the stored epsilon and the stored verdict, so a point
-  that fails its checks cannot be served unflagged;
+* every point's extrapolation, redone by the current :mod:`restitution.limits.extrapolation`
+  from the energy-loss grid stored in the file, gives the stored epsilon and the stored verdict,
+  so a point that fails its checks cannot be served unflagged;
 * a sample of the cheapest stored collisions (the smallest mode count, softest wall, at three
   speeds), recomputed with the current solver and the file's own settings, has moved by less
   than a tenth of its point's error. A changed solver hash with unmoved numbers is only
@@ -26,7 +26,7 @@ import pytest
 from restitution import get_modes
 from restitution.dynamics.collision import CollisionSettings, collide
 from restitution.limits.extrapolation import combined_limit
-from restitution.limits.store import code_version
+from restitution.provenance import code_version
 
 _DATA = resources.files("restitution.laws").joinpath("data")
 LAW_FILES = sorted(p.name for p in _DATA.iterdir() if p.name.startswith("law_nu"))

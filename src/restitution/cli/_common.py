@@ -19,6 +19,8 @@ from restitution._version import __version__
 from restitution.bodies.material import Material
 from restitution.dynamics.results import UNITS
 from restitution.errors import InputError, OutputError
+from restitution.jsonable import finite_tree, json_default
+from restitution.status import Status
 
 EXIT_FAILED_POINTS = 1
 """Exit status when collisions of a sweep failed (their messages are printed)."""
@@ -179,14 +181,15 @@ def envelope(
     inputs: dict,
     payload: dict | None = None,
     *,
-    status: str = "ok",
+    status: str = Status.OK,
     advice: str | None = None,
 ) -> dict:
     """The keys every JSON output starts with, then ``payload``.
 
-    ``version`` (package version), ``command``, ``units`` (:data:`restitution.dynamics.results.UNITS`),
-    ``inputs`` (every option that determines the result), ``status`` (``"ok"`` or what is
-    wrong) and ``advice`` (what to do when the status is not ``"ok"``).
+    ``version`` (package version), ``command``, ``units``
+    (:data:`restitution.dynamics.results.UNITS`), ``inputs`` (every option that determines the
+    result), ``status`` (``"ok"`` or what is wrong, :class:`restitution.status.Status`) and
+    ``advice`` (what to do when the status is not ``"ok"``).
     """
     head = {
         "version": __version__,
@@ -199,20 +202,7 @@ def envelope(
     return {**head, **{k: v for k, v in (payload or {}).items() if k not in head}}
 
 
-def _finite(obj):
-    """``obj`` with every non-finite float replaced by ``None`` (JSON has no NaN)."""
-    if isinstance(obj, float):
-        return obj if math.isfinite(obj) else None
-    if isinstance(obj, dict):
-        return {k: _finite(v) for k, v in obj.items()}
-    if isinstance(obj, list | tuple):
-        return [_finite(v) for v in obj]
-    return obj
-
-
 def dumps(obj) -> str:
     """Strict JSON (``NaN`` and infinities become ``null``), numpy values included."""
-    from restitution.limits.store import json_default
-
     plain = json.loads(json.dumps(obj, default=json_default, allow_nan=True))
-    return json.dumps(_finite(plain), indent=2, allow_nan=False)
+    return json.dumps(finite_tree(plain), indent=2, allow_nan=False)

@@ -51,11 +51,13 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
     Units: E = rho = R = 1; speeds in c, times in R/c, energies in E R^2 (m = pi), gravity in
     c^2/R. Per collision: impact speed, epsilon, vibrational energy, contact time, flight time.
     """
+    from restitution.dynamics.collision import CollisionSettings
+
     material = material_from(nu, plane)
     if not (0 < v < 1):
         raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
     positive_finite("--alpha", alpha)
-    positive_finite("--energy-tol", energy_tol)
+    CollisionSettings(energy_tol=energy_tol)  # the library's check of --energy-tol, up front
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     if collisions < 1:

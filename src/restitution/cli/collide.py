@@ -25,6 +25,7 @@ from restitution.cli._common import (
     strict_option,
 )
 from restitution.errors import InputError
+from restitution.status import Status
 
 _EXCITE_OPTIONS = {
     "mode_index": "--mode-index",
@@ -70,7 +71,7 @@ def _print_summary(result, top: int = 10) -> None:
                 f"{result.mode_energy_closest[i]:.7f}",
             )
         console.print(table)
-    if result.status != "ok":
+    if result.status != Status.OK:
         console.print(f"[yellow]status {result.status}: {result.advice}[/yellow]")
 
 
@@ -219,10 +220,7 @@ def collide(
         return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
                         energy_tol, excite, as_json, strict)  # fmt: skip
     refuse_ignored(ctx, _EXCITE_OPTIONS, "without --excite mode or --excite thermal")
-    if not (0 < v < 1):
-        raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
-    positive_finite("--alpha", alpha)
-    positive_finite("--energy-tol", energy_tol)
+    _check_up_front(v, alpha, integrator, energy_tol)
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     if method == "fem":
@@ -279,11 +277,28 @@ def collide(
         click.echo(dumps(d))
     else:
         _print_summary(result)
-    if result.status != "ok":
+    if result.status != Status.OK:
         if not as_json:  # the JSON says it in "status"
             note(f"warning: status {result.status}: {result.advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
+
+
+def _check_up_front(v: float, alpha: float, integrator: str, energy_tol: float) -> None:
+    """Refuse bad collision inputs before any mode is computed.
+
+    The solver settings (``--integrator``, ``--energy-tol``) are checked by the library's
+    :class:`restitution.dynamics.collision.CollisionSettings`. ``--v`` and ``--alpha`` are
+    checked here because the library checks them only once the modes exist (after
+    :func:`restitution.bodies.cache.get_modes`), and its work estimate would otherwise meet a
+    speed of 0 first.
+    """
+    from restitution.dynamics.collision import CollisionSettings
+
+    if not (0 < v < 1):
+        raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
+    positive_finite("--alpha", alpha)
+    CollisionSettings(integrator=integrator, energy_tol=energy_tol)
 
 
 def _elapsed(enabled: bool):
@@ -326,10 +341,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
         raise InputError("--excite needs --method modal (the FEM path starts at rest)")
     if select != "lowest":
         raise InputError("--excite uses the lowest modes; --select ranked has no effect there")
-    if not (0 < v < 1):
-        raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
-    positive_finite("--alpha", alpha)
-    positive_finite("--energy-tol", energy_tol)
+    _check_up_front(v, alpha, integrator, energy_tol)
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     check_mode_request(material.nu, n_modes)
@@ -396,7 +408,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
                                    integrator=integrator, energy_tol=energy_tol,
                                    progress=advance)  # fmt: skip
         inputs.update(temperature=p["temperature"], samples=samples, seed=seed)
-        status = "ok" if not ens.failures else "failed-samples"
+        status = Status.OK if not ens.failures else Status.FAILED_SAMPLES
         advice = None if not ens.failures else (
             f"{len(ens.failures)} samples could not be integrated (see 'failures'); they are "
             "left out of the statistics")  # fmt: skip
@@ -411,7 +423,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
             click.echo(dumps(d))
         else:
             _print_ensemble(ens)
-    if status != "ok":
+    if status != Status.OK:
         if not as_json:
             note(f"warning: status {status}")
         if strict:

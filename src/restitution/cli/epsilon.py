@@ -1,7 +1,7 @@
 """Commands ``restitution epsilon`` (one speed) and ``restitution curve`` (Figs. 1, 7, 8).
 
-Thin layer over :mod:`restitution.laws.law`, :mod:`restitution.limits.sweep` and the figure modules. List
-options accept several values after one flag (``--nu 0.33 0.9``) or a repeated flag.
+Thin layer over :mod:`restitution.laws.law`, :mod:`restitution.limits.sweep` and the figure
+modules. List options accept several values after one flag (``--nu 0.33 0.9``) or a repeated flag.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ from restitution.cli._common import (
 )
 from restitution.errors import InputError
 from restitution.limits.sweep import DEFAULTS, SweepSettings
+from restitution.status import Status
 
 _V_HELP = (
     "speed of the disk towards the wall before the collision, in units of the 2D sound speed "
@@ -206,9 +207,7 @@ def epsilon(
         return
     settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
     swept = replace(settings, velocities=(float(v),))
-    if alpha is not None:
-        if not (alpha > 0 and math.isfinite(alpha)):
-            raise InputError(f"--alpha must be a positive number (1/R), got {alpha}")
+    if alpha is not None:  # SweepSettings refuses a wall hardness that is not positive
         swept = replace(swept, alphas=(float(alpha),), alpha_scale="absolute")
     report = _sweep(grid([nu], swept), swept, store, workers, scheduler, progress, retry_failed)
     result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
@@ -295,7 +294,7 @@ def _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progres
         on_run=report if progress else None,
     )
     status, advice = _status(result.asymptotic_ok, result.message, 0)
-    if status != "ok":
+    if status != Status.OK:
         advice = f"{result.message}; refine the meshes or add harder walls (--alphas)"
     inputs = {"nu": nu, "v": v, "alpha": alpha, "method": "fem", "alphas": list(alphas) or None,
               "alpha_scale": alpha_scale}  # fmt: skip
@@ -311,18 +310,21 @@ def _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progres
 def _status(asymptotic: bool, message: str, failed: int) -> tuple[str, str | None]:
     if failed:
         why = f" ({message})" if message else ""
-        return "points-failed", (
+        return Status.POINTS_FAILED, (
             f"{failed} collision(s) of the grid failed{why}; see the messages, change the "
             "settings, or rerun with --retry-failed"
         )
     if not asymptotic:
-        return "not-asymptotic", f"{message}; use larger N (--modes) and harder walls (--alphas)"
-    return "ok", None
+        return (
+            Status.NOT_ASYMPTOTIC,
+            f"{message}; use larger N (--modes) and harder walls (--alphas)",
+        )
+    return Status.OK, None
 
 
 def _finish(status, advice, failures, report, strict, as_json=False) -> None:
     """Print what went wrong (JSON says it in 'status') and exit with the documented status."""
-    if status == "ok":
+    if status == Status.OK:
         return
     if not as_json:
         note(f"warning: {status}: {advice}")
@@ -333,7 +335,7 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
                 f"  lost (worker died; rerun to retry): v = {spec.v:g}, "
                 f"alpha = {spec.alpha:g}, N = {spec.n_modes}: {m}"
             )
-    if status == "points-failed":
+    if status == Status.POINTS_FAILED:
         sys.exit(EXIT_FAILED_POINTS)
     if strict:
         sys.exit(EXIT_NOT_CONVERGED)

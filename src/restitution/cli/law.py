@@ -11,7 +11,8 @@ from pathlib import Path
 import click
 
 from restitution.cli.epsilon import _ListCommand
-from restitution.limits.store import json_default
+from restitution.jsonable import json_default
+from restitution.status import Status
 
 
 class _LawCommand(_ListCommand):
@@ -127,7 +128,7 @@ def law(
         eps = "-" if p.epsilon is None else f"{p.epsilon:.6f}"
         err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.6f}"
         click.echo(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>10}  {err:>9}   {p.status}")
-        if p.status not in ("computed", "interpolated"):
+        if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
             notes[p.status] = result["statuses"][p.status]
     for status, text in notes.items():
         click.echo(f"note: {status}: {text}", err=True)

@@ -1,6 +1,7 @@
 """Command ``restitution paper``: regenerate every computed figure, Table 1 and the report.
 
-Thin layer over :func:`restitution.reproduction.paper.build_paper`; progress is shown with rich on stderr.
+Thin layer over :func:`restitution.reproduction.paper.build_paper`; progress is shown with rich on
+stderr.
 """
 
 from __future__ import annotations

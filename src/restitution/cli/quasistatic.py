@@ -14,7 +14,6 @@ from restitution.cli._common import (
     note,
     nu_option,
     plane_option,
-    positive_finite,
     quiet_option,
 )
 from restitution.dynamics.results import UNITS
@@ -98,7 +97,6 @@ def quasistatic(nu, plane, v, law, n_modes, as_json):
     fraction of the kinetic energy left in the modes when the quasistatic force drives them
     at the contact point (paper section 5).
     """
-    positive_finite("--v", v)
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     material = material_from(nu, plane)

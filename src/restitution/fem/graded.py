@@ -36,6 +36,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from restitution.bodies.disk.contact import peak_force_estimate
 from restitution.errors import InputError
 from restitution.fem.impact import FemSettings, contact_angle_estimate
 from restitution.fem.mesh import ARC
@@ -63,7 +64,7 @@ def contact_half_width(v: float) -> float:
     v = float(v)
     if not 0.0 < v < 1.0:
         raise InputError(f"the speed v must lie in (0, 1) in units of c, got {v}")
-    force = math.pi * v / math.sqrt(math.log(4.0 / v))
+    force = peak_force_estimate(v)
     return math.sqrt(4.0 * force / math.pi)
 
 

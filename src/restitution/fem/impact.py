@@ -42,6 +42,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from restitution.bodies.disk.contact import contact_time_estimate, peak_force_estimate
 from restitution.bodies.material import Material
 from restitution.dynamics.results import CollisionResult, History
 from restitution.errors import InputError, RestitutionError
@@ -129,10 +130,11 @@ def _hertz_estimate(v: float) -> tuple[float, float]:
     """Quasistatic largest force (``E R``) and contact half-width (``R``) at speed ``v``.
 
     The force is ``F ~ 2 E0 / delta`` with ``E0 = pi v^2 / 2`` and the compression
-    ``delta = v sqrt(ln(4/v))`` (eq. 61, as in :func:`restitution.dynamics.collision.initial_step`); the
-    two-dimensional Hertz half-width is ``a = sqrt(4 F R / (pi E))``.
+    ``delta = v sqrt(ln(4/v))`` (eq. 61,
+    :func:`restitution.bodies.disk.contact.peak_force_estimate`); the two-dimensional Hertz
+    half-width is ``a = sqrt(4 F R / (pi E))``.
     """
-    force = math.pi * v / math.sqrt(math.log(4.0 / v))
+    force = peak_force_estimate(float(v))
     return force, math.sqrt(4.0 * force / math.pi)
 
 
@@ -191,11 +193,6 @@ def _start_position(model: FemModel, alpha: float, e0: float) -> float:
     q = model.quad
     integral = float(q.weight @ np.exp(alpha * (q.x_ref - q.x_ref.max())))
     return -q.x_ref.max() + math.log(CONTACT_TOL * e0 * alpha / integral) / alpha
-
-
-def _contact_time_estimate(v: float) -> float:
-    """Quasistatic contact time ``pi sqrt(ln(4/v))`` (eq. 61), ``R / c``."""
-    return math.pi * math.sqrt(math.log(4.0 / v))
 
 
 @dataclass
@@ -268,7 +265,7 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
     mass, r = disk.mass, model.r
     e0 = 0.5 * mass * v**2
     x_c = _start_position(model, alpha, e0)
-    t_max = s.max_time or ((-1.0 - x_c) / v + 4.0 * _contact_time_estimate(v) + 10.0)
+    t_max = s.max_time or ((-1.0 - x_c) / v + 4.0 * contact_time_estimate(float(v)) + 10.0)
     limit_w2 = (2.0 / dt) ** 2  # central differences are unstable beyond this omega^2
     u = np.zeros(disk.n_dofs)
     ud = v * disk.rigid

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from restitution.errors import InputError
+from restitution.jsonable import finite_or_none
 
 __all__ = ["JudgedPoint", "LawJudgement", "LawLike", "judge_law", "judge_shipped_law"]
 
@@ -74,15 +75,13 @@ class JudgedPoint:
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary (``nan`` as ``None``)."""
-        out = {k: _finite(v) if isinstance(v, float) else v for k, v in self.__dict__.items()}
-        out["difference"] = _finite(self.difference)
-        out["combined_error"] = _finite(self.combined_error)
-        out["sigma"] = _finite(self.sigma)
+        out = {
+            k: finite_or_none(v) if isinstance(v, float) else v for k, v in self.__dict__.items()
+        }
+        out["difference"] = finite_or_none(self.difference)
+        out["combined_error"] = finite_or_none(self.combined_error)
+        out["sigma"] = finite_or_none(self.sigma)
         return out
-
-
-def _finite(x: float) -> float | None:
-    return float(x) if math.isfinite(x) else None
 
 
 @dataclass(frozen=True)
@@ -113,8 +112,8 @@ class LawJudgement:
         return {
             "points": [p.to_dict() for p in self.points],
             "n_compared": len(self.compared),
-            "coverage_1sigma": _finite(self.coverage(1.0)),
-            "coverage_2sigma": _finite(self.coverage(2.0)),
+            "coverage_1sigma": finite_or_none(self.coverage(1.0)),
+            "coverage_2sigma": finite_or_none(self.coverage(2.0)),
         }
 
     def to_markdown(self) -> str:

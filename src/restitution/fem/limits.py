@@ -11,7 +11,7 @@ The FEM route has no modal truncation; its two limits are
 2. ``alpha -> infinity`` of those limits, linear in ``1/alpha``, with the package's
    extrapolation (:func:`restitution.limits.extrapolation.extrapolate_alpha`, errors propagated).
 
-The ``alpha`` are those of the modal sweeps (:class:`restitution.limits.sweep.SweepSettings`, by default
+The ``alpha`` are those of the modal sweeps (:mod:`restitution.limits.defaults`, by default
 ``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))``), so both routes
 extrapolate from the same walls. As a check the other order is taken too (``alpha -> inf`` at
 every level, then Richardson); the error is the larger of the two orders' errors combined in
@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -34,8 +34,16 @@ from restitution.fem.elasticity import as_material
 from restitution.fem.graded import ContactGrading, graded_settings, mesh_summary
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide, model_for
 from restitution.fem.richardson import MeshLimit, richardson_limit
+from restitution.jsonable import finite_or_none
+from restitution.limits.defaults import (
+    ALPHA_PRODUCTS,
+    ALPHA_SCALE,
+    check_alpha_scale,
+    check_alphas,
+    check_distinct,
+    walls_at,
+)
 from restitution.limits.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
-from restitution.limits.sweep import DEFAULTS
 
 __all__ = ["FemEpsilon", "FemRun", "fem_epsilon"]
 
@@ -181,10 +189,10 @@ class FemEpsilon:
             "v_units": "c (speed of the disk towards the wall)",
             "alpha": self.alpha,
             "limits": ["h"] if self.alpha is not None else ["alpha", "h"],
-            "epsilon": _finite(self.epsilon),
-            "epsilon_err": _finite(self.epsilon_err),
-            "energy_loss": _finite(self.energy_loss),
-            "energy_loss_err": _finite(self.energy_loss_err),
+            "epsilon": finite_or_none(self.epsilon),
+            "epsilon_err": finite_or_none(self.epsilon_err),
+            "energy_loss": finite_or_none(self.energy_loss),
+            "energy_loss_err": finite_or_none(self.energy_loss_err),
             "asymptotic_ok": bool(self.asymptotic_ok),
             "message": self.message,
             "grid": {
@@ -200,7 +208,7 @@ class FemEpsilon:
                 "alpha": self.alpha_limit.to_dict() if self.alpha_limit else None,
                 "check_alpha": [f.to_dict() for f in self.check_alpha_limits],
                 "check_h": self.check_mesh_limit.to_dict() if self.check_mesh_limit else None,
-                "order_difference": _finite(self.order_difference),
+                "order_difference": finite_or_none(self.order_difference),
             },
             "failed_points": [
                 {"alpha": r.alpha, "level": r.level, "message": r.message}
@@ -216,10 +224,6 @@ class FemEpsilon:
             },
             "version": __version__,
         }
-
-
-def _finite(x: float) -> float | None:
-    return float(x) if math.isfinite(x) else None
 
 
 def _one_run(
@@ -274,7 +278,7 @@ def fem_epsilon(
         sweeps' ``alpha * delta_max(v) = 40, 80, 160``.
     alpha_scale : {"absolute", "compression"}, optional
         ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; default as
-        :data:`restitution.limits.sweep.DEFAULTS`.
+        :data:`restitution.limits.defaults.ALPHA_SCALE` (the modal sweeps' default).
     levels : sequence of int
         Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level).
     grading : ContactGrading, optional
@@ -301,9 +305,12 @@ def fem_epsilon(
             raise InputError(f"the wall hardness alpha must be positive (1/R), got {alpha}")
         alpha_values = (float(alpha),)
     else:
-        scale = alpha_scale or DEFAULTS.alpha_scale
-        sweep = replace(DEFAULTS, alphas=tuple(alphas or DEFAULTS.alphas), alpha_scale=scale)
-        alpha_values = tuple(sorted(sweep.alphas_at(v)))
+        scale = alpha_scale or ALPHA_SCALE
+        products = tuple(float(a) for a in (alphas or ALPHA_PRODUCTS))
+        check_distinct("alphas", products)
+        check_alphas(products)
+        check_alpha_scale(scale)
+        alpha_values = tuple(sorted(walls_at(v, products, scale)))
     start = time.perf_counter()
     runs = []
     for a in alpha_values:

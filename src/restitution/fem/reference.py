@@ -5,15 +5,14 @@ Units: ``E = rho = R = 1``; ``v`` in ``c`` (speed towards the wall), ``alpha`` i
 :func:`compute_reference` runs :func:`restitution.fem.limits.fem_epsilon` at a list of
 ``(nu, v)`` and writes a JSON file after every point (a long run that is stopped keeps what it
 finished): the inputs, the mesh sizes, every level's epsilon, drift, step and time, both fits,
-the code version (a digest of the FEM sources and what they import) and the package versions.
+the code version (:func:`restitution.provenance.fem_code_version`: a digest of the FEM sources
+and what they import) and the package versions.
 The shipped file is ``restitution/laws/data/fem_reference.json``; :func:`load_reference` reads it.
 """
 
 from __future__ import annotations
 
 import datetime
-import hashlib
-import importlib.util
 import json
 import math
 import platform
@@ -22,16 +21,15 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from restitution._version import __version__
 from restitution.errors import InputError
 from restitution.fem.graded import ContactGrading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
+from restitution.provenance import fem_code_version
 
 __all__ = [
     "REFERENCE_POINTS",
     "ReferencePoint",
     "compute_reference",
-    "fem_code_version",
     "load_reference",
     "merge_reference",
 ]
@@ -49,32 +47,6 @@ REFERENCE_POINTS = (
 )
 """``(nu, v, first level)`` of the shipped reference: v = 1e-4, 1e-3, 1e-2, 0.1 at both nu and
 0.3 at nu = 0.9. Three levels from the first; the finer levels 1-3 where they are affordable."""
-
-_SOURCES = (
-    "restitution.fem.contact",
-    "restitution.fem.elasticity",
-    "restitution.fem.graded",
-    "restitution.fem.impact",
-    "restitution.fem.limits",
-    "restitution.fem.mesh",
-    "restitution.fem.model",
-    "restitution.fem.richardson",
-    "restitution.limits.extrapolation",
-    "restitution.bodies.material",
-)
-
-
-def fem_code_version() -> str:
-    """``__version__`` plus a digest of the FEM route's sources, e.g. ``0.1.0+fem.3fa2...``."""
-    digest = hashlib.sha256()
-    for name in _SOURCES:
-        origin = getattr(importlib.util.find_spec(name), "origin", None)
-        try:
-            with open(origin, "rb") as fh:
-                digest.update(name.encode() + b"\0" + fh.read())
-        except (OSError, TypeError):
-            return __version__
-    return f"{__version__}+fem.{digest.hexdigest()[:12]}"
 
 
 def _environment() -> dict:

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.jsonable import finite_or_none
 
 __all__ = ["MeshLimit", "richardson_limit"]
 
@@ -65,16 +66,12 @@ class MeshLimit:
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary (``nan`` as ``None``)."""
-
-        def f(x: float) -> float | None:
-            return float(x) if math.isfinite(x) else None
-
         return {
-            "values": [f(x) for x in self.values],
+            "values": [finite_or_none(x) for x in self.values],
             "ratio": self.ratio,
-            "limit": f(self.limit),
-            "limit_err": f(self.limit_err),
-            "rate": f(self.rate),
+            "limit": finite_or_none(self.limit),
+            "limit_err": finite_or_none(self.limit_err),
+            "rate": finite_or_none(self.rate),
             "kind": self.kind,
             "asymptotic_ok": self.asymptotic_ok,
             "message": self.message,

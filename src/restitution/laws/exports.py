@@ -35,6 +35,7 @@ from restitution._version import __version__
 from restitution.errors import InputError, RestitutionError
 from restitution.laws.si_law import SILaw
 from restitution.laws.units import PARTNERS
+from restitution.status import Status
 
 __all__ = [
     "ClosedForm",
@@ -372,10 +373,10 @@ def constant_at(s: SILaw, speed_m_s: float) -> Constant:
 
 
 _ORDER = (
-    "computed",
-    "interpolated",
-    "computed-not-asymptotic",
-    "interpolated-not-asymptotic",
+    Status.COMPUTED,
+    Status.INTERPOLATED,
+    Status.COMPUTED_NOT_ASYMPTOTIC,
+    Status.INTERPOLATED_NOT_ASYMPTOTIC,
 )
 
 
@@ -453,7 +454,9 @@ def distribution_constant(s: SILaw, speeds_m_s, rates, *, how: str = "") -> Cons
     spread = 0.5 * abs(eff(np.minimum(eps + err, 1.0)) - eff(eps - err))
     statuses = np.array([p.status for p in s.points(w)])
     share = {st: float(np.sum(weight[statuses == st]) / np.sum(weight)) for st in set(statuses)}
-    worst = max((st for st, f in share.items() if f > 0.01), key=_ORDER.index, default="computed")
+    worst = max(
+        (st for st, f in share.items() if f > 0.01), key=_ORDER.index, default=Status.COMPUTED
+    )
     by_status = ", ".join(f"{k} {v:.0%}" for k, v in sorted(share.items()))
     return Constant(
         value,

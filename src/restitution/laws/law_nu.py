@@ -28,12 +28,9 @@ import numpy as np
 from scipy.interpolate import PchipInterpolator
 
 from restitution.errors import InputError
-from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.law import NU_MATCH, EpsilonLaw, law, law_filename
 
 __all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_nus"]
-
-NU_MATCH = 1e-4
-"""Largest ``|nu_2d - nu_law|`` for which a shipped law serves ``nu_2d`` as it is."""
 
 
 def shipped_nus() -> list[float]:

@@ -4,7 +4,8 @@
 ``restitution/laws/data/law_nu<nu>.json`` with the current code, through the same sweep, store and
 extrapolation as ``restitution curve`` (:mod:`restitution.limits.curves`), with a progress bar. The
 result store is reused, so an interrupted run resumes. ``tests/test_shipped_laws.py`` fails
-when the shipped files no longer match the code.
+when the shipped files no longer match the code. ``make law`` then draws the slow-point figures
+with :mod:`restitution.reproduction.law_figures` (laws never import the reproduction layer).
 
 Two groups of speeds, both with walls scaled to the compression (``alpha delta_max(v) = 40,
 80, 160``):
@@ -108,7 +109,6 @@ def main(argv=None) -> None:
     parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
-    parser.add_argument("--figures", default=None, help="also draw the slow-point figures here")
     args = parser.parse_args(argv)
     start = time.perf_counter()
     files = build(args.out, store=args.store, workers=args.workers, progress=True)
@@ -117,27 +117,6 @@ def main(argv=None) -> None:
     for path in files:
         print(f"wrote {path}")
     print(f"{n} collisions (stored ones reused) in {elapsed:.0f} s, {n / elapsed:.2f} collisions/s")
-    if args.figures:
-        for path in draw_figures(files, args.figures):
-            print(f"wrote {path}")
-
-
-def draw_figures(law_files, out_dir) -> list[Path]:
-    """Convergence and two-routes figures of the slow points of each law file."""
-    from restitution.laws.law import EpsilonLaw
-    from restitution.reproduction.figures import slow_convergence, slow_routes
-
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for path in law_files:
-        law = EpsilonLaw.from_json(path)
-        conv = out / f"slow_convergence_nu{law.nu:g}.png"
-        slow_convergence.plot(slow_convergence.compute(law, v_max=1e-3), law.nu, conv)
-        routes = out / f"slow_routes_nu{law.nu:g}.png"
-        slow_routes.plot(slow_routes.compute(law, v_max=0.05), routes)
-        written += [conv, routes]
-    return written
 
 
 if __name__ == "__main__":

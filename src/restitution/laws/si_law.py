@@ -24,22 +24,23 @@ from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for
 from restitution.laws.units import PARTNERS, Grain, partner_factor
+from restitution.status import Status
 
 __all__ = ["STATUSES", "SILaw", "SIPoint", "si_law"]
 
-STATUSES: dict[str, str] = {
-    "computed": "at a computed speed; its extrapolation passed the asymptotic checks",
-    "computed-not-asymptotic": (
+STATUSES: dict[Status, str] = {
+    Status.COMPUTED: "at a computed speed; its extrapolation passed the asymptotic checks",
+    Status.COMPUTED_NOT_ASYMPTOTIC: (
         "at a computed speed; its extrapolation did not pass every asymptotic check (the error "
         "bar is the fit's, read it as indicative)"
     ),
-    "interpolated": "between two computed speeds whose extrapolations passed their checks",
-    "interpolated-not-asymptotic": (
+    Status.INTERPOLATED: "between two computed speeds whose extrapolations passed their checks",
+    Status.INTERPOLATED_NOT_ASYMPTOTIC: (
         "between two computed speeds, at least one of which did not pass every asymptotic check"
     ),
-    "outside": "outside the computed range of the law; no value (the law never extrapolates)",
+    Status.OUTSIDE: "outside the computed range of the law; no value (the law never extrapolates)",
 }
-"""Status of a point -> what it means."""
+"""Status of a point -> what it means, in the words of the JSON output."""
 
 _SAME = 1e-9  # relative tolerance for "at a computed speed"
 
@@ -86,17 +87,17 @@ def _status(law, v: float) -> tuple[str, str]:
     at = np.flatnonzero(np.abs(pts - v) <= _SAME * pts)
     if at.size:
         if ok[at[0]]:
-            return "computed", ""
-        return "computed-not-asymptotic", STATUSES["computed-not-asymptotic"]
+            return Status.COMPUTED, ""
+        return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
     if v < pts[0]:
-        return "outside", f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
+        return Status.OUTSIDE, f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
     j = int(np.searchsorted(pts, v))
     if j >= pts.size:
-        return "outside", f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
+        return Status.OUTSIDE, f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
     good = bool(ok[j - 1] and ok[j])
     if good:
-        return "interpolated", ""
-    return "interpolated-not-asymptotic", STATUSES["interpolated-not-asymptotic"]
+        return Status.INTERPOLATED, ""
+    return Status.INTERPOLATED_NOT_ASYMPTOTIC, STATUSES[Status.INTERPOLATED_NOT_ASYMPTOTIC]
 
 
 @dataclass(frozen=True, eq=False)
@@ -166,12 +167,12 @@ class SILaw:
             v = self.grain.v_over_c(float(w), self.against)
             status, note = _status(self.law, v)
             eps = err = None
-            if status != "outside":
+            if status != Status.OUTSIDE:
                 try:
                     eps = float(self.law.epsilon(v))
                     err = float(self.law.epsilon_err(v))
                 except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
-                    status, note = "outside", str(exc)
+                    status, note = Status.OUTSIDE, str(exc)
             out.append(SIPoint(float(w), v, eps, err, status, note))
         return tuple(out)
 

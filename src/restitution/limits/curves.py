@@ -3,9 +3,9 @@
 Paper Fig. 1. For every speed ``v`` (the disk's speed towards the wall, units of
 ``c = sqrt(E/rho)``) the energy loss ``1 - epsilon^2`` is computed on a grid of wall hardness
 ``alpha`` and mode counts ``N`` (:mod:`restitution.limits.sweep`) and extrapolated to
-``alpha, N -> infinity`` (:mod:`restitution.limits.extrapolation`). :func:`compute_curves` does this for
-a whole grid of speeds, :func:`epsilon_at` for one speed. Serving the result as a law and its
-exports is :mod:`restitution.laws.law`'s job.
+``alpha, N -> infinity`` (:mod:`restitution.limits.extrapolation`). :func:`compute_curves` does
+this for a whole grid of speeds, :func:`epsilon_at` for one speed. Serving the result as a law
+and its exports is :mod:`restitution.laws.law`'s job.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ import numpy as np
 
 from restitution._version import __version__
 from restitution.errors import InputError
+from restitution.jsonable import finite_or_none
 from restitution.limits.extrapolation import (
     CombinedLimit,
     LinearLimit,
@@ -201,10 +202,10 @@ class PointEpsilon:
             "v_units": "c (speed of the disk towards the wall)",
             "alpha": self.alpha,
             "limits": ["N"] if self.alpha is not None else ["alpha", "N"],
-            "epsilon": _finite(self.epsilon),
-            "epsilon_err": _finite(self.epsilon_err),
-            "energy_loss": _finite(self.energy_loss),
-            "energy_loss_err": _finite(self.energy_loss_err),
+            "epsilon": finite_or_none(self.epsilon),
+            "epsilon_err": finite_or_none(self.epsilon_err),
+            "energy_loss": finite_or_none(self.energy_loss),
+            "energy_loss_err": finite_or_none(self.energy_loss_err),
             "asymptotic_ok": bool(self.asymptotic_ok),
             "message": self.message,
             "grid": grid_d,
@@ -215,10 +216,6 @@ class PointEpsilon:
             "settings": self.settings.to_dict(),
             "version": __version__,
         }
-
-
-def _finite(x: float) -> float | None:
-    return float(x) if math.isfinite(x) else None
 
 
 def epsilon_at(

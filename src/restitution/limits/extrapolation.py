@@ -72,6 +72,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.jsonable import finite_or_none
 
 __all__ = [
     "CombinedLimit",
@@ -153,27 +154,22 @@ class LinearLimit:
             "parameter": _floats(self.parameter),
             "x": _floats(self.x),
             "y": _floats(self.y),
-            "limit": _float(self.limit),
-            "limit_err": _float(self.limit_err),
-            "stat_err": _float(self.stat_err),
-            "drop_spread": _float(self.drop_spread),
-            "propagated_err": _float(self.propagated_err),
-            "slope": _float(self.slope),
-            "slope_err": _float(self.slope_err),
+            "limit": finite_or_none(self.limit),
+            "limit_err": finite_or_none(self.limit_err),
+            "stat_err": finite_or_none(self.stat_err),
+            "drop_spread": finite_or_none(self.drop_spread),
+            "propagated_err": finite_or_none(self.propagated_err),
+            "slope": finite_or_none(self.slope),
+            "slope_err": finite_or_none(self.slope_err),
             "residuals": _floats(self.residuals),
-            "curvature": _float(self.curvature),
+            "curvature": finite_or_none(self.curvature),
             "asymptotic_ok": bool(self.asymptotic_ok),
             "message": self.message,
         }
 
 
-def _float(value: float) -> float | None:
-    value = float(value)
-    return value if math.isfinite(value) else None
-
-
 def _floats(values: np.ndarray) -> list:
-    return [_float(v) for v in np.asarray(values, dtype=float).ravel()]
+    return [finite_or_none(v) for v in np.asarray(values, dtype=float).ravel()]
 
 
 def _line_fit(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float, float, np.ndarray]:
@@ -468,11 +464,11 @@ class CombinedLimit:
             "alpha": _floats(self.alpha),
             "n_modes": [int(n) for n in self.n_modes],
             "energy_loss_grid": [_floats(row) for row in self.loss],
-            "energy_loss": _float(self.limit),
-            "energy_loss_err": _float(self.limit_err),
-            "epsilon": _float(self.epsilon),
-            "epsilon_err": _float(self.epsilon_err),
-            "order_difference": _float(self.order_difference),
+            "energy_loss": finite_or_none(self.limit),
+            "energy_loss_err": finite_or_none(self.limit_err),
+            "epsilon": finite_or_none(self.epsilon),
+            "epsilon_err": finite_or_none(self.epsilon_err),
+            "order_difference": finite_or_none(self.order_difference),
             "asymptotic_ok": bool(self.asymptotic_ok),
             "message": self.message,
             "notes": self.notes,

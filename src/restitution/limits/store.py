@@ -2,16 +2,16 @@
 
 One row per collision: the inputs (a :class:`PointSpec`), the status (``"ok"`` or ``"failed"``
 with the error message), the scalar results and the JSON of
-:meth:`restitution.dynamics.results.CollisionResult.to_dict`. The key is a SHA-256 of the canonical JSON
-of the inputs and the code version (:func:`code_version`: ``restitution.__version__`` plus a
-digest of the solver's source files), so changed code never reuses old numbers, even between
-releases.
+:meth:`restitution.dynamics.results.CollisionResult.to_dict`. The key is a SHA-256 of the
+canonical JSON of the inputs and the code version (:func:`restitution.provenance.code_version`:
+``restitution.__version__`` plus a digest of the solver's source files), so changed code never
+reuses old numbers, even between releases.
 
-The default file is ``restitution.bodies.cache.cache_dir() / "results.sqlite"``. The database runs in
-WAL mode with a busy timeout; every write is its own short transaction and inserts on the key
-(``ON CONFLICT``), so several processes may write to one store at once and a killed writer
-loses at most its uncommitted row. A successful row is never replaced; a failed row is replaced
-when the point is retried and succeeds.
+The default file is ``restitution.bodies.cache.cache_dir() / "results.sqlite"``. The database
+runs in WAL mode with a busy timeout; every write is its own short transaction and inserts on
+the key (``ON CONFLICT``), so several processes may write to one store at once and a killed
+writer loses at most its uncommitted row. A successful row is never replaced; a failed row is
+replaced when the point is retried and succeeds.
 
 A file that is not SQLite, or SQLite without this store's schema marker, is refused with a
 :class:`StoreError` naming the file; it is never overwritten.
@@ -19,11 +19,8 @@ A file that is not SQLite, or SQLite without this store's schema marker, is refu
 
 from __future__ import annotations
 
-import functools
 import hashlib
-import importlib.util
 import json
-import math
 import sqlite3
 import time
 from collections.abc import Iterable, Iterator
@@ -35,13 +32,15 @@ import numpy as np
 
 from restitution._version import __version__
 from restitution.errors import InputError, RestitutionError
+from restitution.jsonable import finite_or_none, json_default
+from restitution.provenance import code_version
+from restitution.status import Status
 
 __all__ = [
     "PointSpec",
     "Store",
     "StoreError",
     "StoredPoint",
-    "code_version",
     "default_store_path",
 ]
 
@@ -74,7 +73,7 @@ CREATE TABLE IF NOT EXISTS collisions (
     n_modes INTEGER NOT NULL,
     selection TEXT NOT NULL,
     integrator TEXT NOT NULL,
-    status TEXT NOT NULL CHECK (status IN ('ok', 'failed')),
+    status TEXT NOT NULL CHECK (status IN ('{Status.OK}', '{Status.FAILED}')),
     error TEXT,
     {", ".join(f"{name} REAL" for name in _SCALARS)},
     result TEXT,
@@ -83,39 +82,6 @@ CREATE TABLE IF NOT EXISTS collisions (
 CREATE INDEX IF NOT EXISTS collisions_lookup
     ON collisions (nu, n_modes, alpha, v, code_version);
 """
-
-
-# Modules whose source determines a collision's numbers.
-_SOLVER_MODULES = (
-    "restitution.dynamics.collision",
-    "restitution.dynamics.integrators",
-    "restitution.dynamics.kernel",
-    "restitution.dynamics.wall",
-    "restitution.bodies.disk.modes",
-    "restitution.bodies.disk.frequency_equation",
-    "restitution.bodies.disk.bessel_ratio",
-    "restitution.bodies.material",
-    "restitution.dynamics.results",
-)
-
-
-@functools.cache
-def code_version() -> str:
-    """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
-
-    Any edit of the solver modules changes it, so a store never serves numbers of other code.
-    Without readable sources (e.g. a zip install) it is ``__version__`` alone.
-    """
-    digest = hashlib.sha256()
-    for name in _SOLVER_MODULES:
-        spec = importlib.util.find_spec(name)
-        origin = getattr(spec, "origin", None)
-        try:
-            with open(origin, "rb") as fh:
-                digest.update(name.encode() + b"\0" + fh.read())
-        except (OSError, TypeError):
-            return __version__
-    return f"{__version__}+{digest.hexdigest()[:12]}"
 
 
 class StoreError(RestitutionError):
@@ -212,7 +178,7 @@ class StoredPoint:
     spec : PointSpec
         Inputs.
     status : str
-        ``"ok"`` or ``"failed"``.
+        ``"ok"`` or ``"failed"`` (:class:`restitution.status.Status`).
     error : str or None
         Error message of a failed point.
     epsilon, energy_loss, energy_drift, contact_time, max_compression, max_force, dt,
@@ -247,18 +213,7 @@ class StoredPoint:
 
     @property
     def ok(self) -> bool:
-        return self.status == "ok"
-
-
-def json_default(obj: Any) -> Any:
-    """``json.dumps`` default for numpy scalars and arrays."""
-    if isinstance(obj, np.integer):
-        return int(obj)
-    if isinstance(obj, np.floating):
-        return float(obj)
-    if isinstance(obj, np.ndarray):
-        return obj.tolist()
-    raise TypeError(f"{type(obj).__name__} is not JSON serialisable")
+        return self.status == Status.OK
 
 
 def _now() -> str:
@@ -455,15 +410,15 @@ class Store:
             The result, or its ``to_dict()``.
         """
         d = result if isinstance(result, dict) else result.to_dict()
-        scalars = [_as_real(d.get(name)) for name in _SCALARS]
+        scalars = [finite_or_none(d.get(name)) for name in _SCALARS]
         if scalars[1] is None and scalars[0] is not None:
             scalars[1] = 1.0 - scalars[0] ** 2
         blob = json.dumps(d, default=json_default, allow_nan=True)
-        self._upsert(spec, "ok", None, scalars, blob)
+        self._upsert(spec, Status.OK, None, scalars, blob)
 
     def put_failure(self, spec: PointSpec, message: str) -> None:
         """Record a failed collision with its error message (never replaces a success)."""
-        self._upsert(spec, "failed", str(message), [None] * len(_SCALARS), None)
+        self._upsert(spec, Status.FAILED, str(message), [None] * len(_SCALARS), None)
 
     def _upsert(self, spec, status, error, scalars, blob) -> None:
         # A new row is inserted; an existing failed row is replaced (a retry); an existing
@@ -493,7 +448,7 @@ class Store:
         )
         sql = (
             f"INSERT INTO collisions ({cols}) VALUES ({', '.join('?' * len(values))}) "
-            f"ON CONFLICT(key) DO UPDATE SET {update} WHERE collisions.status = 'failed'"
+            f"ON CONFLICT(key) DO UPDATE SET {update} WHERE collisions.status = '{Status.FAILED}'"
         )
         try:
             with self._write():
@@ -530,8 +485,8 @@ class Store:
             marks = ",".join("?" * len(chunk))
             out.update(
                 self._read(
-                    f"SELECT key, error FROM collisions WHERE status = 'failed' AND key IN "
-                    f"({marks})",
+                    "SELECT key, error FROM collisions "
+                    f"WHERE status = '{Status.FAILED}' AND key IN ({marks})",
                     chunk,
                 )
             )
@@ -540,7 +495,7 @@ class Store:
     def points(self, *, all_versions: bool = False, **filters: Any) -> list[StoredPoint]:
         """Stored rows, optionally filtered by exact ``nu``, ``v``, ``alpha``, ``n_modes``,
         ``selection``, ``integrator`` or ``status``; by default only this code version
-        (:func:`code_version`)."""
+        (:func:`restitution.provenance.code_version`)."""
         allowed = {"nu", "v", "alpha", "n_modes", "selection", "integrator", "status"}
         unknown = set(filters) - allowed
         if unknown:
@@ -570,13 +525,6 @@ class Store:
 
 
 _ROW = f"inputs, status, error, {', '.join(_SCALARS)}, result, code_version, created_at"
-
-
-def _as_real(value: Any) -> float | None:
-    if value is None:
-        return None
-    value = float(value)
-    return value if math.isfinite(value) else None
 
 
 def _row_to_point(row: tuple) -> StoredPoint:

@@ -4,12 +4,12 @@ A sweep is a list of :class:`restitution.limits.store.PointSpec`. Points already
 this code version) are skipped. The rest are grouped by mode set (``nu``, ``N``, selection,
 integrator, options), sorted by ``(alpha, v)`` inside a group so that a batch shares a similar
 time step, cut into batches of ``batch_size`` points and submitted to an executor; each batch
-calls :func:`restitution.dynamics.collision.collide_batch` on one mode set. The parent process writes
-every finished batch to the store at once, so Ctrl-C or ``kill -9`` loses at most the points in
-flight. A point that failed in the solver is stored with its error message without losing the
-others; a task that died with its worker (``kill -9`` of a pool process, a lost Dask worker) is
-resubmitted (:data:`restitution.limits.executors.INFRASTRUCTURE_RETRIES` times) and never stored as
-failed. The store is checked for writability before anything is computed.
+calls :func:`restitution.dynamics.collision.collide_batch` on one mode set. The parent process
+writes every finished batch to the store at once, so Ctrl-C or ``kill -9`` loses at most the
+points in flight. A point that failed in the solver is stored with its error message without
+losing the others; a task that died with its worker (``kill -9`` of a pool process, a lost Dask
+worker) is resubmitted (:data:`restitution.limits.executors.INFRASTRUCTURE_RETRIES` times) and
+never stored as failed. The store is checked for writability before anything is computed.
 
 Where the tasks run is :mod:`restitution.limits.executors`: local processes (default), a Dask
 ``LocalCluster`` (``workers=N``), an existing scheduler (``scheduler=ADDRESS``) or client.
@@ -32,7 +32,16 @@ from typing import Any
 
 import numpy as np
 
+from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.errors import InputError
+from restitution.limits.defaults import (
+    ALPHA_PRODUCTS,
+    ALPHA_SCALE,
+    check_alpha_scale,
+    check_alphas,
+    check_distinct,
+    walls_at,
+)
 from restitution.limits.executors import (
     INFRASTRUCTURE_RETRIES,
     executor,
@@ -40,6 +49,7 @@ from restitution.limits.executors import (
     is_infrastructure_failure,
 )
 from restitution.limits.store import PointSpec, Store
+from restitution.status import Status
 
 __all__ = [
     "DEFAULTS",
@@ -100,12 +110,9 @@ class SweepSettings:
     """
 
     velocities: tuple[float, ...] = PAPER_VELOCITIES
-    # alpha * delta_max(v) = 40, 80, 160: at v = 0.1 that is alpha = 210, 420, 840; slow
-    # collisions get harder walls (v = 0.005: alpha = 3100-12300) while alpha * v stays below
-    # ~65, where epsilon(dt) converges smoothly (at alpha v = 200, N = 100 the hard-wall
-    # dynamics are chaotic: epsilon jumps by 1e-3 with dt; docs/numerics.md).
-    alphas: tuple[float, ...] = (40.0, 80.0, 160.0)
-    alpha_scale: str = "compression"
+    # The walls shared with the FEM route (restitution.limits.defaults, which says why).
+    alphas: tuple[float, ...] = ALPHA_PRODUCTS
+    alpha_scale: str = ALPHA_SCALE
     n_modes: tuple[int, ...] = (300, 400, 600, 940)
     select: str = "lowest"
     integrator: str | None = None
@@ -124,12 +131,7 @@ class SweepSettings:
         object.__setattr__(self, "alphas", tuple(float(a) for a in self.alphas))
         object.__setattr__(self, "n_modes", tuple(int(n) for n in self.n_modes))
         for name in ("velocities", "alphas", "n_modes"):
-            values = getattr(self, name)
-            if len(set(values)) != len(values):
-                raise InputError(
-                    f"{name} has repeated values {list(values)}; give distinct values "
-                    "(a repeated point adds nothing to an extrapolation)"
-                )
+            check_distinct(name, getattr(self, name))
         integrator, options = _solver_settings(self.integrator, self.options)
         object.__setattr__(self, "integrator", integrator)
         object.__setattr__(self, "options", options)
@@ -137,14 +139,10 @@ class SweepSettings:
             raise InputError(
                 "speeds v must lie in (0, 1): the disk's speed towards the wall in units of c"
             )
-        if any(not (a > 0 and math.isfinite(a)) for a in self.alphas):
-            raise InputError("wall hardness alpha must be positive (units 1/R)")
+        check_alphas(self.alphas)
         if any(n < 1 for n in self.n_modes):
             raise InputError("numbers of modes must be >= 1")
-        if self.alpha_scale not in ("absolute", "compression"):
-            raise InputError(
-                f"alpha_scale must be 'absolute' or 'compression', not {self.alpha_scale!r}"
-            )
+        check_alpha_scale(self.alpha_scale)
         if self.select not in ("lowest", "ranked"):
             raise InputError(f"select must be 'lowest' or 'ranked', not {self.select!r}")
         if self.batch_size < 1:
@@ -167,10 +165,7 @@ class SweepSettings:
     def alphas_at(self, v: float, alphas: Iterable[float] | None = None) -> tuple[float, ...]:
         """Wall hardness values (``1/R``) used at speed ``v`` (units of ``c``)."""
         values = self.alphas if alphas is None else tuple(float(a) for a in alphas)
-        if self.alpha_scale == "absolute":
-            return values
-        delta = quasistatic_compression(v)
-        return tuple(a / delta for a in values)
+        return walls_at(v, values, self.alpha_scale)
 
 
 # Not part of a stored point's key: the integrator is keyed separately, histories are not
@@ -202,8 +197,12 @@ def _solver_settings(integrator: str | None, options: Any) -> tuple[str, tuple]:
 
 
 def quasistatic_compression(v: float) -> float:
-    """Maximal compression ``v sqrt(ln(4/v))`` of eq. (61), units ``R`` (``v`` in ``c``)."""
-    return float(v) * math.sqrt(math.log(4.0 / float(v)))
+    """Maximal compression ``v sqrt(ln(4/v))`` of eq. (61), units ``R`` (``v`` in ``c``).
+
+    Kept for the benchmarks; the one home is
+    :func:`restitution.bodies.disk.contact.max_compression_estimate`.
+    """
+    return max_compression_estimate(float(v))
 
 
 DEFAULTS = SweepSettings()
@@ -281,7 +280,7 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
     if len(specs) > 1:
         try:
             results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)
-            return [("ok", r.to_dict()) for r in results]
+            return [(Status.OK, r.to_dict()) for r in results]
         except Exception:  # noqa: BLE001 - retried point by point below
             pass
     return [_guard(lambda s=s: collide(modes, s.v, s.alpha, settings)) for s in specs]
@@ -289,9 +288,9 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
 
 def _guard(run: Callable[[], Any]) -> tuple[str, Any]:
     try:
-        return ("ok", run().to_dict())
+        return (Status.OK, run().to_dict())
     except Exception as exc:  # noqa: BLE001 - a failed point is data, not a crash
-        return ("failed", f"{type(exc).__name__}: {exc}")
+        return (Status.FAILED, f"{type(exc).__name__}: {exc}")
 
 
 def _run_task(batch_function: Callable, specs: list[PointSpec]) -> list[tuple[str, Any]]:
@@ -445,13 +444,13 @@ def run_sweep(
     try:
         unique = list(dict.fromkeys(points))
         status = db.status(unique)
-        errors = db.errors(s for s in unique if status.get(s.key()) == "failed")
+        errors = db.errors(s for s in unique if status.get(s.key()) == Status.FAILED)
         todo = [
             s
             for s in unique
             if status.get(s.key()) is None
             or (
-                status[s.key()] == "failed"
+                status[s.key()] == Status.FAILED
                 and (retry_failed or infrastructure_message(errors.get(s.key())))
             )
         ]
@@ -494,9 +493,10 @@ def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, p
                             if is_infrastructure_failure(exc):
                                 retry.append((batch, f"{type(exc).__name__}: {exc}"))
                                 continue
-                            outcomes = [("failed", f"{type(exc).__name__}: {exc}")] * len(batch)
+                            failure = (Status.FAILED, f"{type(exc).__name__}: {exc}")
+                            outcomes = [failure] * len(batch)
                         for spec, (state, payload) in zip(batch, outcomes, strict=True):
-                            if state == "ok":
+                            if state == Status.OK:
                                 db.put(spec, payload)
                                 computed += 1
                             else:

@@ -1,13 +1,13 @@
 """The paper's claims beside this package's numbers, one module per section of the paper.
 
-:func:`compare` takes the data of a paper run (:class:`restitution.reproduction.paper.PaperData`) and
-returns one :class:`Comparison` per stated value or claim, with a verdict computed from the
-data (:mod:`restitution.reproduction.claims.verdict`: agrees, differs or inconclusive).
+:func:`compare` takes the data of a paper run (:class:`restitution.reproduction.paper.PaperData`)
+and returns one :class:`Comparison` per stated value or claim, with a verdict computed from the data
+(:mod:`restitution.reproduction.claims.verdict`: agrees, differs or inconclusive).
 
 Modules: :mod:`~restitution.reproduction.claims.sec2_modes` (Figs. 2, 3, eq. 20),
-:mod:`~restitution.reproduction.claims.sec4_epsilon` (Figs. 1, 7, 8 and the conclusions' epsilon ~ 0.65, once
-per speed unit), :mod:`~restitution.reproduction.claims.sec4_collisions` (Figs. 5, 6, Table 1),
-:mod:`~restitution.reproduction.claims.sec5_quasistatic` (eq. 57, Figs. 10-12).
+:mod:`~restitution.reproduction.claims.sec4_epsilon` (Figs. 1, 7, 8 and the conclusions' epsilon ~
+0.65, once per speed unit), :mod:`~restitution.reproduction.claims.sec4_collisions` (Figs. 5, 6,
+Table 1), :mod:`~restitution.reproduction.claims.sec5_quasistatic` (eq. 57, Figs. 10-12).
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Claims of section 2 (the free disk's modes): Figs. 2 and 3 and eq. (20).
 
-Each claim is checked against a computation independent of :mod:`restitution.bodies.disk.modes` where one
-exists (the breathing roots of eq. (20) by Brent's method).
+Each claim is checked against a computation independent of :mod:`restitution.bodies.disk.modes`
+where one exists (the breathing roots of eq. (20) by Brent's method).
 """
 
 from __future__ import annotations

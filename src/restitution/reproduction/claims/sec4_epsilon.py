@@ -1,9 +1,9 @@
 """Claims of section 4 (and the conclusions) about epsilon(v): Figs. 1, 7 and 8.
 
 Every Fig. 1 claim is judged once per unit the paper's speeds are read in (``c``, and ``c_L``
-when the run computed it, :data:`restitution.reproduction.paper.settings.SPEED_UNITS`). A claim rests only on
-points that passed their asymptotic checks; otherwise it is inconclusive and says which way the
-unchecked points lean.
+when the run computed it, :data:`restitution.reproduction.paper.settings.SPEED_UNITS`). A claim
+rests only on points that passed their asymptotic checks; otherwise it is inconclusive and says
+which way the unchecked points lean.
 """
 
 from __future__ import annotations

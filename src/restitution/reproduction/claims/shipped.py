@@ -3,8 +3,8 @@
 ``docs/results.md`` carries a block between :data:`BEGIN` and :data:`END` that
 :func:`law_summary` writes from ``restitution.law(nu)``: the points, which of them passed their
 checks, where the curve is not monotone, where ``nu = 0.9`` is not the more inelastic, and the
-Fig. 1 verdicts by the rules of :mod:`restitution.reproduction.claims.sec4_epsilon`. When the shipped laws
-change, regenerate it::
+Fig. 1 verdicts by the rules of :mod:`restitution.reproduction.claims.sec4_epsilon`. When the
+shipped laws change, regenerate it::
 
     python -m restitution.reproduction.claims.shipped docs/results.md
 
@@ -48,7 +48,8 @@ def law_summary(nus: Sequence[float] = (0.33, 0.9)) -> str:
 
     f = shipped_fig01(nus)
     lines = [
-        "The shipped laws (`src/restitution/laws/data/law_nu*.json`), speeds in c towards the wall; "
+        "The shipped laws (`src/restitution/laws/data/law_nu*.json`), "
+        "speeds in c towards the wall; "
         "`*`: the point did not pass its asymptotic checks.",
         "",
     ]

@@ -1,8 +1,8 @@
 """Fig. 1: the coefficient of restitution epsilon versus the speed towards the wall.
 
 Both limits (hard wall, infinitely many modes) are taken at every speed
-(:func:`restitution.limits.curves.compute_curves`); error bars are the extrapolation errors. Points whose
-extrapolation failed the asymptotic checks are drawn open. Speeds are the disk's speed towards
+(:func:`restitution.limits.curves.compute_curves`); error bars are the extrapolation errors. Points
+whose extrapolation failed the asymptotic checks are drawn open. Speeds are the disk's speed towards
 the wall in units of ``c = sqrt(E/rho)``.
 """
 

@@ -3,9 +3,9 @@
 Units: compression ``delta = x0 + 1`` in ``R``, force in ``E R`` (``E = rho = R = 1``).
 
 On one plot: the quasistatic law (eq. 57 as printed and the centre-of-mass law of
-``docs/quasistatic.md``), the static relaxation of :mod:`restitution.quasistatic.relaxation` (1300 modes,
-``alpha = 500`` in the paper) and, when given, the force-compression loops of dynamic collisions
-(``alpha = 500``, ``v = 0.1`` and ``0.04`` in the paper).
+``docs/quasistatic.md``), the static relaxation of :mod:`restitution.quasistatic.relaxation` (1300
+modes, ``alpha = 500`` in the paper) and, when given, the force-compression loops of dynamic
+collisions (``alpha = 500``, ``v = 0.1`` and ``0.04`` in the paper).
 """
 
 from __future__ import annotations

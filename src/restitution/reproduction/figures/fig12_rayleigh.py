@@ -2,11 +2,11 @@
 
 Units: speeds in ``c``; energies as fractions of the initial kinetic energy ``(m/2) v^2``.
 
-The curve is :func:`restitution.quasistatic.rayleigh.rayleigh_energy` (the paper: the lowest 1800 modes,
-eq. 57 as printed) for all modes and for the quadrupole ``(n = 2, l = 0)`` alone; when given,
-the dynamic energy losses ``1 - epsilon^2`` extrapolated to a hard wall and infinitely many
-modes (section 4) as points: filled where the extrapolation passed its asymptotic checks, open
-where it did not (as in Fig. 1).
+The curve is :func:`restitution.quasistatic.rayleigh.rayleigh_energy` (the paper: the lowest 1800
+modes, eq. 57 as printed) for all modes and for the quadrupole ``(n = 2, l = 0)`` alone; when given,
+the dynamic energy losses ``1 - epsilon^2`` extrapolated to a hard wall and infinitely many modes
+(section 4) as points: filled where the extrapolation passed its asymptotic checks, open where it
+did not (as in Fig. 1).
 """
 
 from __future__ import annotations

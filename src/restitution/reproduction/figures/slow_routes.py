@@ -5,10 +5,10 @@ initial kinetic energy).
 
 The dynamic route is a law's computed points (both limits ``alpha, N -> infinity``, with
 errors; open symbols did not pass their checks). The quasistatic route is Rayleigh's estimate
-(:func:`restitution.quasistatic.rayleigh.rayleigh_energy`, paper section 5): the lowest ``n_modes`` modes
-driven by the quasistatic contact force of eq. (57), once with the printed constant
-(``"paper"``) and once with the constant the package derives (``"centre"``,
-docs/quasistatic.md). :func:`compare` states, speed by speed, the ratio of the routes.
+(:func:`restitution.quasistatic.rayleigh.rayleigh_energy`, paper section 5): the lowest ``n_modes``
+modes driven by the quasistatic contact force of eq. (57), once with the printed constant
+(``"paper"``) and once with the constant the package derives (``"centre"``, docs/quasistatic.md).
+:func:`compare` states, speed by speed, the ratio of the routes.
 """
 
 from __future__ import annotations

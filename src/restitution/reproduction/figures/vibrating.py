@@ -7,8 +7,8 @@
 * :func:`compute_bounce` / :func:`plot_bounce`: a disk bouncing under gravity, its vibrations
   carried over, against a constant-epsilon disk and a disk at rest at every impact.
 
-``python -m restitution.reproduction.figures.vibrating --out docs/figures`` draws all three (a few minutes
-on one core; ``--quick`` in seconds, coarse and marked so).
+``python -m restitution.reproduction.figures.vibrating --out docs/figures`` draws all three (a
+few minutes on one core; ``--quick`` in seconds, coarse and marked so).
 """
 
 from __future__ import annotations
@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 
 from restitution.bodies.cache import get_modes
+from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.dynamics.collision import collide
-from restitution.limits.sweep import quasistatic_compression
 from restitution.reproduction.figures._style import QUICK_NOTE, add_notes
 from restitution.vibrating.ensemble import (
     Ensemble,
@@ -52,7 +52,7 @@ __all__ = [
 
 def _alpha(v: float, alpha_delta: float) -> float:
     """Wall hardness with ``alpha * delta_max(v) = alpha_delta`` (the sweeps' scaling)."""
-    return alpha_delta / quasistatic_compression(v)
+    return alpha_delta / max_compression_estimate(float(v))
 
 
 def compute_distributions(

@@ -3,9 +3,11 @@
 Gerl and Zippelius, "Coefficient of restitution for elastic disks". The package is split by
 job:
 
-* :mod:`~restitution.reproduction.paper.settings`: sizes of every computation (:data:`FULL`, :data:`QUICK`)
+* :mod:`~restitution.reproduction.paper.settings`: sizes of every computation (:data:`FULL`,
+:data:`QUICK`)
   and the units the paper's speeds are read in (``c`` and ``c_L``);
-* :mod:`~restitution.reproduction.paper.compute`: the sweep of section 4, the extrapolated curves and the
+* :mod:`~restitution.reproduction.paper.compute`: the sweep of section 4, the extrapolated curves
+and the
   data of Figs. 1-3, 5-8, 10-12 and Table 1 (:func:`compute_paper`);
 * :mod:`restitution.reproduction.claims`: every claim of the paper judged against those data;
 * :mod:`~restitution.reproduction.paper.files`: figures, Table 1, law exports and JSON writing;

@@ -1,9 +1,11 @@
 """``restitution paper``: compute, judge and write a reproduction of Gerl and Zippelius.
 
-:func:`build_paper` is thin orchestration: :func:`restitution.reproduction.paper.compute.compute_paper`
-computes, :func:`restitution.reproduction.claims.compare` judges every claim, :mod:`restitution.reproduction.paper.files`
-writes the figures, Table 1, the law exports and the record, :mod:`restitution.reproduction.paper.report`
-lays out the report and :mod:`restitution.reproduction.report` renders ``report.html`` (self-contained) and
+:func:`build_paper` is thin orchestration:
+:func:`restitution.reproduction.paper.compute.compute_paper` computes,
+:func:`restitution.reproduction.claims.compare` judges every claim,
+:mod:`restitution.reproduction.paper.files` writes the figures, Table 1, the law exports and the
+record, :mod:`restitution.reproduction.paper.report` lays out the report and
+:mod:`restitution.reproduction.report` renders ``report.html`` (self-contained) and
 ``report.md``.
 """
 
@@ -249,6 +251,6 @@ def _sweep_record(sr) -> dict:
 
 
 def _code_version() -> str:
-    from restitution.limits.store import code_version
+    from restitution.provenance import code_version
 
     return code_version()

@@ -2,8 +2,8 @@
 
 :func:`compute_paper` runs the stages of :data:`STAGES` in order (each timed, each reported to
 an ``on_stage`` callback) and returns :class:`PaperData`, every number behind the figures and
-Table 1. Nothing is written here (see :mod:`restitution.reproduction.paper.build`) and nothing is judged
-(see :mod:`restitution.reproduction.claims`).
+Table 1. Nothing is written here (see :mod:`restitution.reproduction.paper.build`) and nothing is
+judged (see :mod:`restitution.reproduction.claims`).
 
 Units: two-dimensional ``E = rho = R = 1``; speeds in ``c = sqrt(E/rho)`` unless a field says
 ``c_L``; times in ``R/c``.

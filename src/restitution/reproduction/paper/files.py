@@ -1,6 +1,7 @@
 """Files of a paper run: the figures (PNG and SVG or PDF), Table 1, the law exports, the record.
 
-Each writer takes the data of :func:`restitution.reproduction.paper.compute.compute_paper` and a folder.
+Each writer takes the data of :func:`restitution.reproduction.paper.compute.compute_paper` and a
+folder.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from restitution.errors import InputError
-from restitution.limits.store import json_default
+from restitution.jsonable import finite_tree, json_default
 
 __all__ = [
     "FIGURE_STEMS",
@@ -201,18 +202,7 @@ def write_law_exports(curves: dict, out: Path) -> tuple[LawExport, ...]:
     return tuple(written)
 
 
-def _nan_to_none(obj: Any) -> Any:
-    """JSON has no NaN: non-finite floats become null (after :func:`json_default`)."""
-    if isinstance(obj, dict):
-        return {k: _nan_to_none(v) for k, v in obj.items()}
-    if isinstance(obj, list):
-        return [_nan_to_none(v) for v in obj]
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return None
-    return obj
-
-
 def to_json(obj: Any) -> str:
     """``obj`` as JSON through the package's one numpy encoder, NaN as null."""
     plain = json.loads(json.dumps(obj, default=json_default))
-    return json.dumps(_nan_to_none(plain), indent=1, allow_nan=False)
+    return json.dumps(finite_tree(plain), indent=1, allow_nan=False)

@@ -1,4 +1,5 @@
-"""The reproduction report of a paper run as document blocks (:mod:`restitution.reproduction.report`).
+"""The reproduction report of a paper run as document blocks
+(:mod:`restitution.reproduction.report`).
 
 :func:`paper_blocks` lays out the report: a quick-run banner, the summary of every claim with its
 verdict, which reading of the paper's speeds reproduces which claim, links to this run's
@@ -216,7 +217,8 @@ def _errata_blocks(run) -> list[Block]:
             f"end of the diameter: c = -1 - 2/pi - nu/4 ({c_c:.3f}), identified numerically "
             "from the modes to 5e-4. The static relaxation (Fig. 10) and the dynamic contact "
             "times (Fig. 11) side with the centre-of-mass law, so it is the package's default "
-            "(`restitution.quasistatic.hertz.contact_law`); Figs. 10 and 11 draw both laws, Fig. 12 uses "
+            "(`restitution.quasistatic.hertz.contact_law`); Figs. 10 and 11 draw both laws, "
+            "Fig. 12 uses "
             f"the '{run.data.settings.law}' law, and `law=\"paper\"` redraws the paper's own "
             f"curves. Details: {link}."
         )
@@ -256,7 +258,8 @@ def _shipped_law_blocks() -> list[Block]:
     return [
         Heading(2, "The shipped epsilon(v) laws against finite elements"),
         Paragraph(
-            "The package's shipped laws (`restitution.laws.law`, computed for 1e-4 <= v/c <= 0.3 by "
+            "The package's shipped laws (`restitution.laws.law`, computed for "
+            "1e-4 <= v/c <= 0.3 by "
             "`make law`, independent of this run) against the finite-element route on "
             "contact-graded meshes with both limits h -> 0 and alpha -> infinity "
             "(`src/restitution/laws/data/fem_reference.json`, docs/fem.md). The last column is the "
@@ -275,7 +278,7 @@ def paper_blocks(run, store_path: str = "") -> list[Block]:
     Table 1, the errata, and the parameters (mode selection, extrapolation sets, sweep and
     stage timings, versions, date).
     """
-    from restitution.limits.store import code_version
+    from restitution.provenance import code_version
     from restitution.reproduction.figures.table1 import to_markdown
 
     d, s = run.data, run.data.settings

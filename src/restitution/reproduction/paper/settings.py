@@ -11,7 +11,7 @@ import math
 from dataclasses import asdict, dataclass, replace
 
 from restitution.errors import InputError
-from restitution.limits.store import json_default
+from restitution.jsonable import json_default
 from restitution.limits.sweep import DEFAULTS, SweepSettings
 
 __all__ = ["FULL", "QUICK", "SPEED_UNITS", "PaperSettings", "speed_factor"]
@@ -68,8 +68,8 @@ class PaperSettings:
         Speed range of Fig. 12.
     law : {"centre", "paper", "diameter"}
         Quasistatic contact law of Fig. 12 and of the quasistatic claims
-        (:func:`restitution.quasistatic.hertz.contact_law`); ``"centre"`` is the one the package's own
-        relaxation and contact times support, ``"paper"`` redraws the paper's figures.
+        (:func:`restitution.quasistatic.hertz.contact_law`); ``"centre"`` is the one the
+        package's own relaxation and contact times support, ``"paper"`` redraws the paper's figures.
     speed_units : tuple of str
         Units the paper's speeds are read in for Fig. 1 and its claims (:data:`SPEED_UNITS`);
         ``"c_L"`` adds a second sweep at ``v / sqrt(1 - nu^2)``.

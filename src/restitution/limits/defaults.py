@@ -1,0 +1,76 @@
+"""The walls of the ``alpha -> infinity`` extrapolation: default values and how they are read.
+
+Units: ``alpha`` in ``1/R``; ``v`` in ``c`` (speed towards the wall); compressions in ``R``.
+
+One home for what the modal sweeps (:class:`restitution.limits.sweep.SweepSettings`) and the FEM
+route (:func:`restitution.fem.limits.fem_epsilon`) share, so both extrapolate from the same
+walls: the default products :data:`ALPHA_PRODUCTS` ``alpha * delta_max(v)``, the default scale
+:data:`ALPHA_SCALE`, the checks of such values and :func:`walls_at`, which turns them into wall
+hardness values at one speed.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from restitution.bodies.disk.contact import max_compression_estimate
+from restitution.errors import InputError
+
+__all__ = [
+    "ALPHA_PRODUCTS",
+    "ALPHA_SCALE",
+    "ALPHA_SCALES",
+    "check_alpha_scale",
+    "check_alphas",
+    "check_distinct",
+    "walls_at",
+]
+
+# alpha * delta_max(v) = 40, 80, 160: at v = 0.1 that is alpha = 210, 420, 840; slow
+# collisions get harder walls (v = 0.005: alpha = 3100-12300) while alpha * v stays below
+# ~65, where epsilon(dt) converges smoothly (at alpha v = 200, N = 100 the hard-wall
+# dynamics are chaotic: epsilon jumps by 1e-3 with dt; docs/numerics.md).
+ALPHA_PRODUCTS: tuple[float, ...] = (40.0, 80.0, 160.0)
+"""Default wall hardness values, as products ``alpha * delta_max(v)`` (``ALPHA_SCALE``)."""
+
+ALPHA_SCALES: tuple[str, ...] = ("absolute", "compression")
+"""How wall hardness values are read: ``alpha`` in ``1/R``, or products ``alpha * delta_max``."""
+
+ALPHA_SCALE = "compression"
+"""Default reading of the wall hardness values (one of :data:`ALPHA_SCALES`)."""
+
+
+def check_distinct(name: str, values: Sequence) -> None:
+    """Refuse repeated values of the set ``name`` (a repeated point adds nothing)."""
+    if len(set(values)) != len(values):
+        raise InputError(
+            f"{name} has repeated values {list(values)}; give distinct values "
+            "(a repeated point adds nothing to an extrapolation)"
+        )
+
+
+def check_alphas(alphas: Sequence[float]) -> None:
+    """Refuse wall hardness values (or products) that are not positive and finite."""
+    if any(not (a > 0 and math.isfinite(a)) for a in alphas):
+        raise InputError("wall hardness alpha must be positive (units 1/R)")
+
+
+def check_alpha_scale(alpha_scale: str) -> None:
+    """Refuse an ``alpha_scale`` outside :data:`ALPHA_SCALES`."""
+    if alpha_scale not in ALPHA_SCALES:
+        raise InputError(f"alpha_scale must be 'absolute' or 'compression', not {alpha_scale!r}")
+
+
+def walls_at(v: float, alphas: Sequence[float], alpha_scale: str) -> tuple[float, ...]:
+    """Wall hardness values (``1/R``) at speed ``v`` (``c``).
+
+    ``"absolute"``: ``alphas`` as given. ``"compression"``: ``alphas[k] / delta_max(v)`` with the
+    quasistatic maximal compression ``delta_max = v sqrt(ln(4/v))`` (eq. 61,
+    :func:`restitution.bodies.disk.contact.max_compression_estimate`).
+    """
+    values = tuple(alphas)
+    if alpha_scale == "absolute":
+        return values
+    delta = max_compression_estimate(float(v))
+    return tuple(a / delta for a in values)

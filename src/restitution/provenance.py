@@ -1,0 +1,96 @@
+"""Which code computed a number: version strings with a digest of the sources behind it.
+
+:func:`code_version` names the modal solver (every module of the packages in
+:data:`SOLVER_PACKAGES`, found automatically, so a new solver module is never forgotten); the
+result store keys its rows with it and the laws record it. :func:`fem_code_version` names the
+FEM route (the modules in :data:`FEM_MODULES`). Both are :func:`source_digest`: the package
+version, a tag and the first 12 hex digits of a SHA-256 over every module's name and source.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import importlib.util
+from pathlib import Path
+
+from restitution._version import __version__
+
+__all__ = [
+    "FEM_MODULES",
+    "SOLVER_PACKAGES",
+    "code_version",
+    "fem_code_version",
+    "package_modules",
+    "source_digest",
+]
+
+SOLVER_PACKAGES: tuple[str, ...] = ("restitution.bodies", "restitution.dynamics")
+"""Packages whose every module (recursively) determines a collision's numbers."""
+
+FEM_MODULES: tuple[str, ...] = (
+    "restitution.fem.contact",
+    "restitution.fem.elasticity",
+    "restitution.fem.graded",
+    "restitution.fem.impact",
+    "restitution.fem.limits",
+    "restitution.fem.mesh",
+    "restitution.fem.model",
+    "restitution.fem.richardson",
+    "restitution.limits.extrapolation",
+    "restitution.bodies.material",
+)
+"""Modules whose source determines an FEM reference value."""
+
+
+def package_modules(package: str) -> tuple[str, ...]:
+    """Every module of ``package`` and its subpackages (from the ``*.py`` files on disk),
+    sorted by name; ``()`` when the package has no source directory (e.g. a zip install)."""
+    spec = importlib.util.find_spec(package)
+    roots = list(getattr(spec, "submodule_search_locations", None) or ())
+    names = set()
+    for root in map(Path, roots):
+        for path in root.rglob("*.py"):
+            parts = path.relative_to(root).with_suffix("").parts
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            names.add(".".join((package, *parts)))
+    return tuple(sorted(names))
+
+
+def source_digest(modules: tuple[str, ...], tag: str = "") -> str:
+    """``__version__ + "+" + tag + digest``, e.g. ``0.1.0+3fa2...`` or ``0.1.0+fem.3fa2...``.
+
+    The digest is the first 12 hex digits of a SHA-256 over each module's name, a NUL byte and
+    its source, in the given order. Without readable sources (e.g. a zip install) the result is
+    ``__version__`` alone.
+    """
+    digest = hashlib.sha256()
+    if not modules:
+        return __version__
+    for name in modules:
+        origin = getattr(importlib.util.find_spec(name), "origin", None)
+        try:
+            with open(origin, "rb") as fh:
+                digest.update(name.encode() + b"\0" + fh.read())
+        except (OSError, TypeError):
+            return __version__
+    return f"{__version__}+{tag}{digest.hexdigest()[:12]}"
+
+
+@functools.cache
+def code_version() -> str:
+    """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
+
+    The sources are every module of :data:`SOLVER_PACKAGES`, so any edit of the solver changes
+    it and a result store never serves numbers of other code.
+    """
+    modules: tuple[str, ...] = ()
+    for package in SOLVER_PACKAGES:
+        modules += package_modules(package)
+    return source_digest(tuple(sorted(modules)))
+
+
+def fem_code_version() -> str:
+    """``__version__`` plus a digest of the FEM route's sources, e.g. ``0.1.0+fem.3fa2...``."""
+    return source_digest(FEM_MODULES, "fem.")

@@ -1,0 +1,65 @@
+"""The one vocabulary of statuses: of collisions, stored points, law points, SI answers and JSON.
+
+:class:`Status` is a string enum: a member equals, hashes, prints, formats and serialises to JSON
+(keys included) as its plain value (``Status.OK == "ok"``, ``json.dumps(Status.OK) == '"ok"'``),
+so files and JSON documents carry the same text as before the enum existed.
+
+Where each status occurs:
+
+* a collision (:attr:`restitution.dynamics.results.CollisionResult.status`): ``OK``,
+  ``DRIFT_EXCEEDED``, ``NOT_FINITE``;
+* a point of a sweep and a row of the result store (:mod:`restitution.limits.store`): ``OK``,
+  ``FAILED``;
+* a point of a law (:class:`restitution.laws.law.LawPoint`): ``OK``, ``NOT_ASYMPTOTIC``;
+* an answer in SI units (:mod:`restitution.laws.si_law`): ``COMPUTED``,
+  ``COMPUTED_NOT_ASYMPTOTIC``, ``INTERPOLATED``, ``INTERPOLATED_NOT_ASYMPTOTIC``, ``OUTSIDE``;
+* the envelope of a command's JSON (:func:`restitution.cli._common.envelope`): ``OK``,
+  ``NOT_ASYMPTOTIC``, ``POINTS_FAILED``, ``FAILED_SAMPLES``, or a collision's status.
+"""
+
+from __future__ import annotations
+
+import enum
+
+__all__ = ["Status"]
+
+
+class Status(enum.StrEnum):
+    """Every status string the package produces (see the module docstring for where)."""
+
+    OK = "ok"
+    """Nothing is wrong: the collision met its tolerance, the point is stored, the
+    extrapolation passed its checks, the command's result is trustworthy."""
+
+    FAILED = "failed"
+    """A collision of a sweep raised; its error message is stored instead of results."""
+
+    DRIFT_EXCEEDED = "drift-exceeded"
+    """A collision run at a fixed step whose relative energy drift exceeds ``energy_tol``."""
+
+    NOT_FINITE = "not-finite"
+    """A collision run that produced no finite epsilon or energy drift."""
+
+    NOT_ASYMPTOTIC = "not-asymptotic"
+    """An extrapolation (law point, command result) that did not pass every asymptotic check."""
+
+    POINTS_FAILED = "points-failed"
+    """Some collisions of a command's grid failed or were lost; the result lacks them."""
+
+    FAILED_SAMPLES = "failed-samples"
+    """Some collisions of a thermal ensemble could not be integrated; they are left out."""
+
+    COMPUTED = "computed"
+    """At a computed speed of a law whose extrapolation passed its checks."""
+
+    COMPUTED_NOT_ASYMPTOTIC = "computed-not-asymptotic"
+    """At a computed speed of a law whose extrapolation did not pass every check."""
+
+    INTERPOLATED = "interpolated"
+    """Between two computed speeds of a law that both passed their checks."""
+
+    INTERPOLATED_NOT_ASYMPTOTIC = "interpolated-not-asymptotic"
+    """Between two computed speeds of a law, at least one of which did not pass every check."""
+
+    OUTSIDE = "outside"
+    """Outside the computed range of a law: no value (a law never extrapolates)."""
