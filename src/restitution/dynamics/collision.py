@@ -1,4 +1,7 @@
-"""Head-on collision of an elastic disk with a wall, in normal coordinates (paper sections 3-4).
+"""Head-on collision of an elastic body with a wall, in normal coordinates (paper sections 3-4).
+
+The body is any :class:`~restitution.bodies.base.ModalBody` (the disk: a ``ModeSet``); the text
+below speaks of the disk of the paper.
 
 Units: ``E = rho = R = 1``; speeds in ``c``, times in ``R / c``; energies reported as fractions
 of the initial kinetic energy ``E0 = (m/2) v^2``.
@@ -170,8 +173,8 @@ def collide_batch(
 
     Parameters
     ----------
-    body : ModeSet
-        Modes kept in the expansion.
+    body : ModalBody
+        The body: its modes kept in the expansion (the disk: a ``ModeSet`` from ``get_modes``).
     v : float or array_like, shape (B,)
         Speeds towards the wall, units of ``c``, in (0, 1).
     alpha : float or array_like, shape (B,)
