@@ -96,7 +96,7 @@ class FemRun:
     def to_dict(self) -> dict:
         """JSON-ready dictionary."""
         d = dict(self.__dict__)
-        d["epsilon"] = self.epsilon if math.isfinite(self.epsilon) else None
+        d["epsilon"] = finite_or_none(self.epsilon)
         return d
 
 

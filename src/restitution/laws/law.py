@@ -474,20 +474,22 @@ def _metadata(nu: float, parameters: Mapping) -> dict:
     }
 
 
-def law(nu: float | None = None, *, path: str | os.PathLike | None = None) -> EpsilonLaw:
-    """The coefficient of restitution epsilon(v) for Poisson number ``nu``.
+def law(nu_2d: float | None = None, *, path: str | os.PathLike | None = None) -> EpsilonLaw:
+    """The coefficient of restitution epsilon(v) of the disk with 2D Poisson number ``nu_2d``.
 
     Serves a law that exists; a law from a result store is built by
     :func:`restitution.laws.build.law_from_store`.
 
     Parameters
     ----------
-    nu : float, optional
-        Two-dimensional Poisson number: default 0.33 for the package's precomputed laws; with
-        ``path``, the file's ``nu`` must match it within :data:`NU_MATCH` when given.
+    nu_2d : float, optional
+        Two-dimensional (plane-stress) Poisson number (eq. 2 maps plane strain and 3D constants
+        onto it; :func:`restitution.si_law` takes the 3D one): default 0.33 for the package's
+        precomputed laws; with ``path``, the file's ``nu`` must match it within
+        :data:`NU_MATCH` when given.
     path : path, optional
         A law JSON file (:meth:`EpsilonLaw.to_json`). Without it the package's precomputed
-        file for ``nu`` is loaded.
+        file for ``nu_2d`` is loaded.
 
     Returns
     -------
@@ -497,21 +499,21 @@ def law(nu: float | None = None, *, path: str | os.PathLike | None = None) -> Ep
     Raises
     ------
     InputError
-        If no precomputed law exists for ``nu``, or the file at ``path`` holds a law of another
+        If no precomputed law exists for ``nu_2d``, or the file at ``path`` holds a law of another
         ``nu``; the message says what to do.
     """
     if path is not None:
         loaded = EpsilonLaw.from_json(path)
-        if nu is not None and not abs(loaded.nu - float(nu)) <= NU_MATCH:
+        if nu_2d is not None and not abs(loaded.nu - float(nu_2d)) <= NU_MATCH:
             raise InputError(
                 f"the law file {path} holds nu = {loaded.nu:g}, not the requested nu = "
-                f"{float(nu):g}; pass nu={loaded.nu:g} (or no nu) for this file, or a file "
-                f"computed for nu = {float(nu):g} (`restitution curve --nu {float(nu):g}`)"
+                f"{float(nu_2d):g}; pass nu_2d={loaded.nu:g} (or none) for this file, or a file "
+                f"computed for nu = {float(nu_2d):g} (`restitution curve --nu {float(nu_2d):g}`)"
             )
         return loaded
-    nu = 0.33 if nu is None else nu
+    nu_2d = 0.33 if nu_2d is None else nu_2d
     data = resources.files("restitution.laws").joinpath("data")
-    name = law_filename(nu)
+    name = law_filename(nu_2d)
     try:
         text = data.joinpath(name).read_text()
     except (FileNotFoundError, NotADirectoryError, OSError):
@@ -525,8 +527,9 @@ def law(nu: float | None = None, *, path: str | os.PathLike | None = None) -> Ep
         except (FileNotFoundError, NotADirectoryError, OSError):
             pass
         raise InputError(
-            f"no precomputed law for nu = {float(nu):g} (shipped: {', '.join(shipped) or 'none'}); "
-            f"compute one with `restitution curve --nu {float(nu):g} --out DIR` and load it "
+            f"no precomputed law for nu = {float(nu_2d):g} "
+            f"(shipped: {', '.join(shipped) or 'none'}); "
+            f"compute one with `restitution curve --nu {float(nu_2d):g} --out DIR` and load it "
             f"with restitution.law(path='DIR/{name}')"
         ) from None
     return EpsilonLaw._from_dict(json.loads(text), f"restitution/laws/data/{name}")

@@ -219,7 +219,7 @@ class PointEpsilon:
 
 
 def epsilon_at(
-    nu: float,
+    nu_2d: float,
     v: float,
     *,
     alpha: float | None = None,
@@ -232,7 +232,8 @@ def epsilon_at(
     progress: bool | None = None,
     batch_function=collide_points,
 ) -> PointEpsilon:
-    """epsilon at one speed ``v`` (units of ``c``, towards the wall).
+    """epsilon at one speed ``v`` (units of ``c``, towards the wall) of the disk with 2D Poisson
+    number ``nu_2d``, both limits alpha, N -> infinity taken (the central computation).
 
     With ``alpha`` only ``N -> infinity`` is taken at that wall hardness; without it both limits
     on the grid ``settings.alphas_at(v) x settings.n_modes``. Missing collisions are computed first
@@ -248,7 +249,7 @@ def epsilon_at(
     try:
         if run:
             run_sweep(
-                grid([nu], settings),
+                grid([nu_2d], settings),
                 store=db,
                 workers=workers,
                 scheduler=scheduler,
@@ -257,7 +258,7 @@ def epsilon_at(
                 batch_function=batch_function,
                 progress=progress,
             )
-        data = load_grid(db, nu, v, settings)
+        data = load_grid(db, nu_2d, v, settings)
     finally:
         if own:
             db.close()
@@ -277,5 +278,16 @@ def epsilon_at(
         ok = False
         msg = "; ".join(filter(None, [msg, f"{len(failures)} grid point(s) failed"]))
     return PointEpsilon(
-        float(nu), float(v), alpha, eps, eps_err, loss, loss_err, ok, msg, fit, settings, failures
+        float(nu_2d),
+        float(v),
+        alpha,
+        eps,
+        eps_err,
+        loss,
+        loss_err,
+        ok,
+        msg,
+        fit,
+        settings,
+        failures,
     )
