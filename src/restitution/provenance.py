@@ -69,7 +69,10 @@ def source_digest(modules: tuple[str, ...], tag: str = "") -> str:
     if not modules:
         return __version__
     for name in modules:
-        origin = getattr(importlib.util.find_spec(name), "origin", None)
+        try:
+            origin = getattr(importlib.util.find_spec(name), "origin", None)
+        except ModuleNotFoundError:
+            return __version__
         try:
             with open(origin, "rb") as fh:
                 digest.update(name.encode() + b"\0" + fh.read())
@@ -79,16 +82,29 @@ def source_digest(modules: tuple[str, ...], tag: str = "") -> str:
 
 
 @functools.cache
-def code_version() -> str:
+def code_version(geometry: str = "disk") -> str:
     """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
 
-    The sources are every module of :data:`SOLVER_PACKAGES`, so any edit of the solver changes
-    it and a result store never serves numbers of other code.
+    The sources are every module of :data:`SOLVER_PACKAGES` except the folders of other bodies
+    (``restitution.bodies.<name>`` for every ``name`` but ``geometry``): any edit of the solver
+    of this body changes it, so a result store never serves numbers of other code, and adding
+    a body (a sphere) leaves the stored numbers of the others valid.
     """
+    others = tuple(f"{BODIES}.{name}." for name in body_folders() if name != geometry)
     modules: tuple[str, ...] = ()
     for package in SOLVER_PACKAGES:
-        modules += package_modules(package)
+        modules += tuple(m for m in package_modules(package) if not (m + ".").startswith(others))
     return source_digest(tuple(sorted(modules)))
+
+
+BODIES = "restitution.bodies"
+
+
+def body_folders() -> tuple[str, ...]:
+    """Names of the body implementations: the subpackages of :mod:`restitution.bodies`."""
+    spec = importlib.util.find_spec(BODIES)
+    roots = list(getattr(spec, "submodule_search_locations", None) or ())
+    return tuple(sorted({p.parent.name for r in map(Path, roots) for p in r.glob("*/__init__.py")}))
 
 
 def fem_code_version() -> str:
