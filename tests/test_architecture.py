@@ -21,6 +21,7 @@ RANK = {
     "status": 0,
     "jsonable": 0,
     "provenance": 0,
+    "atomic": 0,
     "bodies": 1,
     "dynamics": 2,
     "vibrating": 3,

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import click
 
+from restitution import atomic
 from restitution._version import __version__
 from restitution.bodies.material import Material
 from restitution.dynamics.results import UNITS
@@ -171,7 +172,7 @@ def write_text(text: str, output: Path | None) -> None:
         click.echo(text, nl=not text.endswith("\n"))
     else:
         with writing(output, "--output"):
-            with open(output, "w") as fh:
+            with atomic.replacing(output) as tmp, open(tmp, "w") as fh:
                 fh.write(text if text.endswith("\n") else text + "\n")
         note(f"wrote {output}")
 

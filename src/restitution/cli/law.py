@@ -10,6 +10,7 @@ from pathlib import Path
 
 import click
 
+from restitution import atomic
 from restitution.cli.epsilon import _ListCommand
 from restitution.jsonable import json_default
 from restitution.status import Status
@@ -152,11 +153,11 @@ def _export(s, constant, out: Path) -> list[Path]:
         exports.write_csv(s, out / f"{stem}.csv"),
     ]
     fit_path = out / f"{stem}_closed_form.json"
-    fit_path.write_text(json.dumps(fit.to_dict(), indent=1) + "\n")
+    atomic.write_text(fit_path, json.dumps(fit.to_dict(), indent=1) + "\n")
     header = out / f"{stem}.h"
-    header.write_text(exports.c_header(s, fit))
+    atomic.write_text(header, exports.c_header(s, fit))
     fortran = out / f"{stem}.f90"
-    fortran.write_text(exports.fortran_include(s, fit))
+    atomic.write_text(fortran, exports.fortran_include(s, fit))
     written += [fit_path, header, fortran]
     if constant is not None:
         for name, func in (
@@ -166,6 +167,6 @@ def _export(s, constant, out: Path) -> list[Path]:
             ("yade.py", exports.yade_snippet),
         ):
             path = out / f"{stem}_{name}"
-            path.write_text(func(s, constant))
+            atomic.write_text(path, func(s, constant))
             written.append(path)
     return written

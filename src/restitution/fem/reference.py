@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
+from restitution import atomic
 from restitution.errors import InputError
 from restitution.fem.graded import ContactGrading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
@@ -139,7 +140,7 @@ def compute_reference(
         shifted = [first + int(k) for k in levels]
         result = fem_epsilon(nu, v, levels=shifted, grading=grading, on_run=report)
         doc["points"].append(result.to_dict())
-        path.write_text(json.dumps(doc, indent=1) + "\n")
+        atomic.write_text(path, json.dumps(doc, indent=1) + "\n")
     return doc
 
 

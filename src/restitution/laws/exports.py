@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import curve_fit
 
+from restitution import atomic
 from restitution._version import __version__
 from restitution.errors import InputError, RestitutionError
 from restitution.laws.si_law import SILaw
@@ -118,7 +119,8 @@ def write_table(s: SILaw, path: str | os.PathLike, *, points: int = 61, columns:
     table = speed_table(s, points)[:, :columns]
     names = ["speed_m_s", "epsilon", "epsilon_err"][:columns]
     header = "\n".join([*_header(s), "columns: " + "  ".join(names) + " (piecewise linear)"])
-    np.savetxt(path, table, fmt="%.8g", header=header, comments="# ")
+    with atomic.replacing(path) as tmp:
+        np.savetxt(tmp, table, fmt="%.8g", header=header, comments="# ")
     return Path(path)
 
 
@@ -126,7 +128,7 @@ def write_csv(s: SILaw, path: str | os.PathLike, *, points: int = 61) -> Path:
     """CSV ``speed_m_s,v_over_c,epsilon,epsilon_err,status`` with ``#`` comments."""
     w = _grid(s, points)
     path = Path(path)
-    with open(path, "w", newline="") as fh:
+    with atomic.replacing(path) as tmp, open(tmp, "w", newline="") as fh:
         for line in _header(s):
             fh.write(f"# {line}\n")
         writer = csv.writer(fh)

@@ -43,6 +43,7 @@ from pathlib import Path
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 
+from restitution import atomic
 from restitution._version import __version__
 from restitution.errors import InputError, RestitutionError
 from restitution.jsonable import json_default
@@ -399,7 +400,9 @@ class EpsilonLaw:
     def to_json(self, path: str | os.PathLike) -> Path:
         """Write the JSON export; returns the path."""
         path = Path(path)
-        path.write_text(json.dumps(self.to_dict(), indent=1, allow_nan=False, default=json_default))
+        atomic.write_text(
+            path, json.dumps(self.to_dict(), indent=1, allow_nan=False, default=json_default)
+        )
         return path
 
     def _header_lines(self) -> list[str]:
@@ -418,7 +421,7 @@ class EpsilonLaw:
     def to_csv(self, path: str | os.PathLike) -> Path:
         """Write the points as CSV with ``#`` metadata lines; returns the path."""
         path = Path(path)
-        with open(path, "w", newline="") as fh:
+        with atomic.replacing(path) as tmp, open(tmp, "w", newline="") as fh:
             for line in self._header_lines():
                 fh.write(f"# {line}\n")
             writer = csv.writer(fh)
@@ -456,7 +459,8 @@ class EpsilonLaw:
                 "columns: v [c]  epsilon  epsilon_err  checked (PCHIP interpolant of the points)",
             ]
         )
-        np.savetxt(path, table, fmt=["%.8g", "%.8f", "%.8f", "%d"], header=header, comments="# ")
+        with atomic.replacing(path) as tmp:
+            np.savetxt(tmp, table, fmt=["%.8g", "%.8f", "%.8f", "%d"], header=header, comments="# ")
         return Path(path)
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.limits.curves import Curve, compute_curves
 from restitution.limits.sweep import DEFAULTS, SweepSettings
 from restitution.reproduction.figures._style import add_notes
@@ -136,6 +137,7 @@ def plot(data: Fig01Data, path: str | Path, note: str = "") -> Path:
         notes.append("^: error bar cut at epsilon = 1 (the energy loss cannot be negative)")
     add_notes(fig, [*notes, note])
     path = Path(path)
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)
     return path

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.reproduction.figures._style import add_notes
 
@@ -83,5 +84,6 @@ def plot(data: ShapeData, path: str | Path, note: str = "") -> None:
         ax.set_title(label, fontsize=9)
     fig.suptitle(rf"Symmetric eigenmodes, $\nu$ = {data.nu} (grey: undeformed edge)")
     add_notes(fig, [note])
-    fig.savefig(path)
+    with replacing(path) as tmp:
+        fig.savefig(tmp)
     plt.close(fig)

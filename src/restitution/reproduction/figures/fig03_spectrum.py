@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.reproduction.figures._style import add_notes
 
@@ -49,5 +50,6 @@ def plot(data: SpectrumData, path: str | Path, note: str = "") -> None:
     ax.legend(loc="lower right", fontsize=8)
     ax.grid(alpha=0.3)
     add_notes(fig, [note])
-    fig.savefig(path)
+    with replacing(path) as tmp:
+        fig.savefig(tmp)
     plt.close(fig)

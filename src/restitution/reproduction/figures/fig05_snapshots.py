@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.dynamics.collision import collide
 from restitution.reproduction.figures._style import add_notes
@@ -94,5 +95,6 @@ def plot(data: SnapshotData, path: str | Path, note: str = "") -> None:
     )
     after = "orange: after the separation (free vibrations), deformation to scale"
     add_notes(fig, [after, note])
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)

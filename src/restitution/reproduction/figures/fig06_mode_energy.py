@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.dynamics.collision import collide
 from restitution.reproduction.figures._style import add_notes
@@ -49,5 +50,6 @@ def plot(data: ModeEnergyData, path: str | Path, note: str = "") -> None:
     )
     white = "white: (n, l) not among the modes of the collision (above its frequency cut)"
     add_notes(fig, [white, note])
-    fig.savefig(path)
+    with replacing(path) as tmp:
+        fig.savefig(tmp)
     plt.close(fig)

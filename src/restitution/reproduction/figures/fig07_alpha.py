@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.limits.curves import Curve, compute_curves
 from restitution.limits.extrapolation import extrapolate_alpha, extrapolate_modes
 from restitution.limits.sweep import DEFAULTS, SweepSettings
@@ -134,6 +135,7 @@ def plot(data: Fig07Data, path: str | Path, note: str = "") -> Path:
     )
     add_notes(fig, [note])
     path = Path(path)
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)
     return path

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.limits.curves import Curve, compute_curves
 from restitution.limits.extrapolation import extrapolate_alpha, extrapolate_modes
 from restitution.limits.sweep import DEFAULTS, SweepSettings
@@ -133,6 +134,7 @@ def plot(data: Fig08Data, path: str | Path, note: str = "") -> Path:
     )
     add_notes(fig, [note])
     path = Path(path)
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)
     return path

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.quasistatic.hertz import contact_law
 from restitution.quasistatic.relaxation import relaxation_curve
@@ -189,5 +190,6 @@ def plot(data: Fig10Data, path, note: str = "") -> None:
     ax.set_title(rf"Force vs compression, $\nu$ = {data.nu:g}")
     ax.legend(fontsize=8, loc="upper left")
     add_notes(fig, [note])
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)

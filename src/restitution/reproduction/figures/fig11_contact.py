@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.quasistatic.hertz import contact_law, quasistatic_collision
 from restitution.reproduction.figures._style import add_notes
 
@@ -142,5 +143,6 @@ def plot(data: Fig11Data, path, note: str = "") -> None:
     ax1.set_title(rf"Quasistatic collision, $\nu$ = {data.nu:g}")
     ax1.set_xlim(data.v[0], data.v[-1] * (1.0 + 1e-9) if math.isfinite(data.v[-1]) else None)
     add_notes(fig, [note])
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.quasistatic.hertz import contact_law
 from restitution.quasistatic.rayleigh import rayleigh_energy
@@ -126,5 +127,6 @@ def plot(data: Fig12Data, path, note: str = "") -> None:
     ax.set_title(rf"Rayleigh's estimate, $\nu$ = {data.nu:g} (contact law: {data.law})")
     ax.legend(fontsize=8)
     add_notes(fig, [note])
-    fig.savefig(path, dpi=150)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=150)
     plt.close(fig)

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.reproduction.figures._style import add_notes
 
 __all__ = ["SlowPoint", "compute", "plot"]
@@ -122,5 +123,6 @@ def plot(points: tuple[SlowPoint, ...], nu: float, path=None, notes=()):
         fig, ["dashed: the fitted straight lines to the limits; squares/diamond: limits", *notes]
     )
     if path is not None:
-        fig.savefig(path, dpi=110)
+        with replacing(path) as tmp:
+            fig.savefig(tmp, dpi=110)
     return fig

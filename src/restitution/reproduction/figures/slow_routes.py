@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.reproduction.figures import fig12_rayleigh
 from restitution.reproduction.figures._style import add_notes
 
@@ -115,5 +116,6 @@ def plot(data: RoutesData, path=None, notes=()):
     ax.legend(fontsize=7, loc="best")
     add_notes(fig, list(notes))
     if path is not None:
-        fig.savefig(path, dpi=110)
+        with replacing(path) as tmp:
+            fig.savefig(tmp, dpi=110)
     return fig

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.dynamics.collision import collide
@@ -94,7 +95,8 @@ def plot_distributions(ensembles: list[Ensemble], path: str | Path, note: str = 
     ax.set_title(title, fontsize=9)
     ax.legend(fontsize=7.5, loc="upper left")
     add_notes(fig, ["(m/2) v_th^2 = T, the mean energy per mode", note])
-    fig.savefig(path)
+    with replacing(path) as tmp:
+        fig.savefig(tmp)
     plt.close(fig)
 
 
@@ -153,7 +155,8 @@ def plot_phase(data: PhaseData, path: str | Path, note: str = "") -> None:
                  f"alpha = {data.alpha:g}, {data.n_modes} modes", fontsize=9)  # fmt: skip
     ax.legend(fontsize=7.5)
     add_notes(fig, ["lines: least-squares fit eps0 + a cos(phi - phi0); A = sqrt(E_k/E0)", note])
-    fig.savefig(path)
+    with replacing(path) as tmp:
+        fig.savefig(tmp)
     plt.close(fig)
 
 
@@ -209,7 +212,8 @@ def plot_bounce(data: BounceData, path: str | Path, note: str = "") -> None:
     ax.set_title(f"Bouncing under gravity g = {seq.gravity:g} c^2/R: alpha = {seq.alpha:.4g}, "
                  f"{seq.n_modes} modes", fontsize=9)  # fmt: skip
     add_notes(fig, ["gravity neglected during each contact; flights exact", note])
-    fig.savefig(path)
+    with replacing(path) as tmp:
+        fig.savefig(tmp)
     plt.close(fig)
 
 

@@ -20,6 +20,7 @@ from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from restitution import atomic
 from restitution._version import __version__
 from restitution.errors import InputError
 from restitution.reproduction.claims import Comparison
@@ -167,9 +168,9 @@ def build_paper(
         )
         blocks = paper_blocks(run, store_path=_store_label(store))
         title = "Coefficient of restitution for elastic disks: reproduction report"
-        run.report_md.write_text(rp.to_markdown(blocks))
-        run.report_html.write_text(rp.to_html(blocks, title, base=out))
-        record.write_text(to_json(_record(run, _store_label(store))))
+        atomic.write_text(run.report_md, rp.to_markdown(blocks))
+        atomic.write_text(run.report_html, rp.to_html(blocks, title, base=out))
+        atomic.write_text(record, to_json(_record(run, _store_label(store))))
         return run
 
     run = stages.run("report", report_stage)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from restitution import atomic
 from restitution.errors import InputError
 from restitution.jsonable import finite_tree, json_default
 
@@ -133,16 +134,17 @@ def write_table1(table, out: Path) -> tuple[Path, Path]:
 
     out = Path(out)
     md = out / "table1.md"
-    md.write_text(
+    atomic.write_text(
+        md,
         "# Table 1: the ten modes with the most average energy\n\n"
         "Energies are fractions of the initial kinetic energy. 'mean energy (contact)' averages "
         "over the contact (x0 > -1), 'mean over run' over the whole integrated run; 'paper' "
         "columns are the paper's values for the same (n, l), 'not listed' where the paper's "
         f"top ten lacks that mode. epsilon = {table.epsilon:.6f}, contact time = "
-        f"{table.contact_time:.4f} R/c.\n\n" + to_markdown(table)
+        f"{table.contact_time:.4f} R/c.\n\n" + to_markdown(table),
     )
     path = out / "table1.csv"
-    with path.open("w", newline="") as fh:
+    with atomic.replacing(path) as tmp, open(tmp, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(
             ["rank", "n", "l", "mean_energy_contact", "paper_mean_energy", "mean_energy_run",
