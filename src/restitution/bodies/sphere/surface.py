@@ -1,0 +1,120 @@
+"""The sphere's surface quadrature against the wall, and its Hertz contact scales.
+
+Units: ``E = rho = R = 1`` (three-dimensional constants); ``v`` in ``c = sqrt(E / rho)``.
+
+The surface point at polar angle ``theta`` from the impact axis sits, along the axis, at::
+
+    x(theta) = x0 + cos(theta) + sum_k Q_k g_k(theta),
+    g_k(theta) = C_k P_l(cos theta) cos(theta) - S_k dP_l/dtheta(theta) sin(theta)
+
+(``u_r cos(theta) - u_theta sin(theta)``), so the basis of order ``l`` is
+``[P_l(cos theta) cos(theta), -dP_l/dtheta sin(theta)]``. The wall integral over the near
+hemisphere is ``int_0^{pi/2} f(theta) 2 pi sin(theta) dtheta = 2 pi int_0^1 f d(cos theta)``
+(the far half never touches), taken by Gauss-Legendre in ``mu = cos(theta)`` on ``[0, 1]``;
+its nodes crowd the tip, where they are spaced almost uniformly in ``theta`` (about
+``2.2 / M``), which resolves the contact peak ``exp(-alpha theta^2 / 2)``.
+
+The stop test and the active-node bound of the dynamics assume basis values of magnitude at
+most 1 (``g_max = |C| + |S|``). ``|P_l| <= 1`` holds, but ``|dP_l/dtheta|`` grows like ``l``:
+the tangential column of every order is therefore divided by its largest magnitude over the
+nodes and the ``S`` of that order's modes multiplied by it, so ``S * basis`` is unchanged.
+The quadrature's ``S`` is then *not* the modes' ``S``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy.special import eval_legendre, lpmv, roots_legendre
+
+from restitution.bodies.base import SurfaceQuadrature, surface_quadrature
+from restitution.errors import InputError
+
+if TYPE_CHECKING:
+    from restitution.bodies.sphere.modes import SphereModes
+
+__all__ = [
+    "contact_time_estimate",
+    "default_n_nodes",
+    "dense_surface_matrix",
+    "legendre_and_theta_derivative",
+    "max_compression_estimate",
+    "sphere_quadrature",
+]
+
+
+def legendre_and_theta_derivative(l, theta):
+    """``P_l(cos theta)`` and ``dP_l(cos theta)/dtheta`` (broadcast).
+
+    ``dP_l/dtheta = -sin(theta) P_l'(cos theta) = P_l^1(cos theta)`` with the Condon-Shortley
+    phase of :func:`scipy.special.lpmv`.
+    """
+    l, theta = np.broadcast_arrays(np.asarray(l), np.asarray(theta, dtype=float))
+    mu = np.cos(theta)
+    return eval_legendre(l, mu), lpmv(1, l, mu)
+
+
+def default_n_nodes(alpha: float, l_max: int) -> int:
+    """Gauss-Legendre nodes on the near hemisphere for a wall of hardness ``alpha``.
+
+    At least 128, a tip spacing ``~2.2 / M`` of at most ``0.12 / sqrt(alpha)`` (the disk's
+    criterion for the peak ``exp(-alpha theta^2 / 2)``), and at least ``4 l_max + 32`` so that
+    ``P_l`` of the highest order is resolved.
+    """
+    return max(128, int(math.ceil(18.5 * math.sqrt(alpha))), 4 * int(l_max) + 32)
+
+
+def _nodes(n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
+    """``theta`` increasing from the tip and the weights ``2 pi dmu`` of Gauss-Legendre."""
+    t, w = roots_legendre(n_nodes)
+    mu = 0.5 * (t + 1.0)
+    order = np.argsort(-mu)
+    return np.arccos(mu[order]), math.pi * w[order]
+
+
+def sphere_quadrature(modes: SphereModes, n_nodes: int) -> SurfaceQuadrature:
+    """The surface quadrature of ``modes`` with ``n_nodes`` nodes on ``theta in [0, pi/2]``.
+
+    The tangential columns are scaled to ``max |.| = 1`` and ``S`` compensates (module docs).
+    """
+    if n_nodes < 16:
+        raise InputError(f"n_nodes must be at least 16, got {n_nodes}")
+    theta, weight = _nodes(int(n_nodes))
+    orders, column = np.unique(modes.l, return_inverse=True)
+    P, dP = legendre_and_theta_derivative(orders[None, :], theta[:, None])
+    normal = P * np.cos(theta)[:, None]
+    tangential = -dP * np.sin(theta)[:, None]
+    scale = np.max(np.abs(tangential), axis=0)
+    scale = np.where(scale > 0.0, scale, 1.0)
+    basis = np.hstack([normal, tangential / scale])
+    S = modes.S * scale[column]
+    return surface_quadrature(theta, weight, np.cos(theta), basis, column, modes.C, S)
+
+
+def dense_surface_matrix(modes: SphereModes, theta: np.ndarray) -> np.ndarray:
+    """``g_k(theta_j)`` (module docs) as a dense matrix, shape (M, N); for checks."""
+    theta = np.asarray(theta, dtype=float)
+    P, dP = legendre_and_theta_derivative(modes.l[None, :], theta[:, None])
+    return (
+        modes.C[None, :] * P * np.cos(theta)[:, None]
+        - modes.S[None, :] * dP * np.sin(theta)[:, None]
+    )
+
+
+def max_compression_estimate(v, nu: float):
+    """Hertz largest compression against a rigid wall, ``R``.
+
+    ``(1/2) m v^2 = (8/15) E* sqrt(R) delta^(5/2)`` with ``m = 4 pi / 3`` and
+    ``E* = E / (1 - nu^2)``: ``delta_max = (15 m v^2 / (16 E* sqrt(R)))^(2/5)``.
+    """
+    e_star = 1.0 / (1.0 - nu**2)
+    m = 4.0 * math.pi / 3.0
+    return (15.0 * m * np.asarray(v, dtype=float) ** 2 / (16.0 * e_star)) ** 0.4
+
+
+def contact_time_estimate(v, nu: float):
+    """Hertz contact time ``2.943 delta_max / v`` against a rigid wall, ``R / c``."""
+    out = 2.943 * max_compression_estimate(v, nu) / np.asarray(v, dtype=float)
+    return float(out) if np.ndim(out) == 0 else out
