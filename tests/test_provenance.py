@@ -7,22 +7,42 @@ import restitution.provenance as provenance
 
 def test_a_new_body_leaves_the_disks_code_version_alone(monkeypatch):
     before = provenance.code_version("disk")
-    real = provenance.package_modules
+    real_modules, real_folders = provenance.package_modules, provenance.body_folders
 
-    def with_sphere(package):
-        extra = ("restitution.bodies.sphere.modes",) if package == provenance.BODIES else ()
-        return real(package) + extra
+    def with_cube(package):
+        extra = ("restitution.bodies.cube.modes",) if package == provenance.BODIES else ()
+        return real_modules(package) + extra
 
-    monkeypatch.setattr(provenance, "package_modules", with_sphere)
-    monkeypatch.setattr(provenance, "body_folders", lambda: ("disk", "sphere"))
+    monkeypatch.setattr(provenance, "package_modules", with_cube)
+    monkeypatch.setattr(provenance, "body_folders", lambda: (*real_folders(), "cube"))
     provenance.code_version.cache_clear()
     try:
-        # The sphere's (here unreadable) module is not part of the disk's digest...
+        # A new body's (here unreadable) module is not part of the disk's digest...
         assert provenance.code_version("disk") == before
-        # ...but it is part of the sphere's, which without its source is the bare version.
-        assert provenance.code_version("sphere") == provenance.__version__
+        # ...but it is part of its own, which without its source is the bare version.
+        assert provenance.code_version("cube") == provenance.__version__
     finally:
         provenance.code_version.cache_clear()
+
+
+def test_each_body_digests_its_own_folder_only(monkeypatch):
+    seen = {}
+    real = provenance.source_digest
+    monkeypatch.setattr(
+        provenance,
+        "source_digest",
+        lambda modules, tag="": seen.setdefault(tag, modules) and real(modules, tag),
+    )
+    for geometry in ("disk", "sphere"):
+        seen.clear()
+        provenance.code_version.cache_clear()
+        provenance.code_version(geometry)
+        modules = seen[""]
+        other = "sphere" if geometry == "disk" else "disk"
+        assert any(m.startswith(f"restitution.bodies.{geometry}.") for m in modules)
+        assert not any(m.startswith(f"restitution.bodies.{other}.") for m in modules)
+        assert "restitution.dynamics.kernel" in modules and "restitution.bodies.base" in modules
+    provenance.code_version.cache_clear()
 
 
 def test_the_digest_changes_with_a_solver_source(monkeypatch):
