@@ -31,7 +31,6 @@ from typing import ClassVar
 
 import numpy as np
 from scipy.optimize import brentq
-from scipy.optimize.elementwise import find_minimum, find_root
 from scipy.special import jv
 
 from restitution.bodies.base import SurfaceQuadrature
@@ -46,6 +45,7 @@ from restitution.bodies.disk.frequency_equation import (
     wavenumbers,
 )
 from restitution.bodies.material import Material, require_reduced
+from restitution.bodies.roots import bracket_and_polish, null_vector
 from restitution.errors import InputError, RestitutionError
 
 __all__ = ["ModeSet", "compute_modes", "weyl_count", "ModeError"]
@@ -268,60 +268,14 @@ def _roots_for_orders(orders: np.ndarray, nu: float, omega_max: float) -> tuple[
             f"the frequency equation is not finite for n = {bad[:5].tolist()}; this is a bug, "
             "please report it with nu and the mode count"
         )
-    valid = inside[:, 1:] & inside[:, :-1]
-    sign_change = valid & (np.sign(f[:, :-1]) * np.sign(f[:, 1:]) < 0)
-    lo_n, lo_w, hi_w = [], [], []
-    ri, ci = np.nonzero(sign_change)
-    lo_n.append(orders[ri])
-    lo_w.append(grid[ri, ci])
-    hi_w.append(grid[ri, ci + 1])
-
-    # Near-degenerate pairs inside one cell: |f| has a discrete local minimum with no sign
-    # change on either side. Minimise s*f there (s = sign of f); if it crosses zero, the cell
-    # holds two roots, bracketed on either side of the minimiser.
-    a = np.abs(f)
-    interior = (
-        valid[:, :-1]
-        & valid[:, 1:]
-        & (a[:, 1:-1] < a[:, :-2])
-        & (a[:, 1:-1] < a[:, 2:])
-        & ~sign_change[:, :-1]
-        & ~sign_change[:, 1:]
+    return bracket_and_polish(
+        lambda nloc, w: _scan_function(nloc, w, nu),
+        orders,
+        grid,
+        f,
+        inside,
+        lambda: ModeError("root polishing failed for some modes; this is a bug, please report it"),
     )
-    ri, ci = np.nonzero(interior)
-    ci = ci + 1
-    if ri.size:
-        s = np.sign(f[ri, ci])
-        nloc = orders[ri]
-
-        def signed(w, nloc, s):
-            return s * _scan_function(nloc, w, nu)
-
-        res = find_minimum(
-            signed,
-            (grid[ri, ci - 1], grid[ri, ci], grid[ri, ci + 1]),
-            args=(nloc, s),
-            tolerances={"xatol": 1e-13, "xrtol": 1e-13},
-        )
-        crossed = res.f_x < 0
-        lo_n += [nloc[crossed], nloc[crossed]]
-        lo_w += [grid[ri, ci - 1][crossed], res.x[crossed]]
-        hi_w += [res.x[crossed], grid[ri, ci + 1][crossed]]
-
-    rn = np.concatenate(lo_n)
-    lo = np.concatenate(lo_w)
-    hi = np.concatenate(hi_w)
-    if rn.size == 0:
-        return rn, lo
-    root = find_root(
-        lambda w, nloc: _scan_function(nloc, w, nu),
-        (lo, hi),
-        args=(rn,),
-        tolerances={"xatol": 1e-14, "xrtol": 4e-16},
-    )
-    if not np.all(root.success):
-        raise ModeError("root polishing failed for some modes; this is a bug, please report it")
-    return rn, root.x
 
 
 def _all_roots(nu: float, omega_max: float) -> tuple[np.ndarray, np.ndarray]:
@@ -342,20 +296,6 @@ def _all_roots(nu: float, omega_max: float) -> tuple[np.ndarray, np.ndarray]:
     w = np.concatenate(ws)
     keep = w < omega_max
     return n[keep], w[keep]
-
-
-def _null_vector(m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``(A, B)`` spanning the null space of the 2 x 2 edge matrices ``m`` (shape (N, 2, 2))."""
-    c0 = np.hypot(m[:, 0, 0], m[:, 1, 0])
-    c1 = np.hypot(m[:, 0, 1], m[:, 1, 1])
-    mt = m / np.stack([c0, c1], axis=-1)[:, None, :]
-    # Null vector of the column-normalised matrix from its better-conditioned row.
-    r0 = np.hypot(mt[:, 0, 0], mt[:, 0, 1])
-    r1 = np.hypot(mt[:, 1, 0], mt[:, 1, 1])
-    use0 = r0 >= r1
-    a_t = np.where(use0, mt[:, 0, 1], mt[:, 1, 1])
-    b_t = np.where(use0, -mt[:, 0, 0], -mt[:, 1, 0])
-    return a_t / c0, b_t / c1
 
 
 def _lommel_square(v, x, J, dJ):
@@ -393,7 +333,7 @@ def _flexural(n, kappa, kappa_p, nu):
     jm_k, jn_k, ls_k = scaled_pairs(n, kappa)
     jm_q, jn_q, ls_q = scaled_pairs(n, kappa_p)
     m = edge_matrix_from_pairs(n, kappa, kappa_p, jm_k, jn_k, jm_q, jn_q, nu)
-    A, B = _null_vector(m)
+    A, B = null_vector(m)
     xd_k = kappa * jm_k - n * jn_k  # kappa J_n'(kappa)
     xd_q = kappa_p * jm_q - n * jn_q
     U1 = A * xd_k + n * B * jn_q

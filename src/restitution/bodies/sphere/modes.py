@@ -50,10 +50,10 @@ from typing import ClassVar
 
 import numpy as np
 from scipy.optimize import brentq
-from scipy.optimize.elementwise import find_minimum, find_root
 from scipy.special import roots_legendre, spherical_jn
 
 from restitution.bodies.base import SurfaceQuadrature
+from restitution.bodies.roots import bracket_and_polish, null_vector
 from restitution.bodies.sphere import surface
 from restitution.errors import InputError, RestitutionError
 
@@ -197,62 +197,18 @@ def _roots(nu: float, omega_max: float) -> tuple[np.ndarray, np.ndarray]:
             f"order l = {l_bad} is beyond the sphere's order limit at nu = {nu} "
             "(scipy.special.spherical_jn underflows); ask for fewer modes or a lower omega_max"
         )
-    valid = inside[:, 1:] & inside[:, :-1]
-    sign_change = valid & (np.sign(f[:, :-1]) * np.sign(f[:, 1:]) < 0)
-    ri, ci = np.nonzero(sign_change)
-    lo_l, lo_w, hi_w = [orders[ri]], [grid[ri, ci]], [grid[ri, ci + 1]]
-
-    a = np.abs(f)
-    interior = (
-        valid[:, :-1]
-        & valid[:, 1:]
-        & (a[:, 1:-1] < a[:, :-2])
-        & (a[:, 1:-1] < a[:, 2:])
-        & ~sign_change[:, :-1]
-        & ~sign_change[:, 1:]
+    rl, roots = bracket_and_polish(
+        lambda lloc, x: normalized_determinant(lloc, x, nu),
+        orders,
+        grid,
+        f,
+        inside,
+        lambda: SphereModeError("root polishing failed for some modes; this is a bug"),
     )
-    ri, ci = np.nonzero(interior)
-    ci = ci + 1
-    if ri.size:
-        s = np.sign(f[ri, ci])
-        lloc = orders[ri]
-        res = find_minimum(
-            lambda x, lloc, s: s * normalized_determinant(lloc, x, nu),
-            (grid[ri, ci - 1], grid[ri, ci], grid[ri, ci + 1]),
-            args=(lloc, s),
-            tolerances={"xatol": 1e-13, "xrtol": 1e-13},
-        )
-        crossed = res.f_x < 0
-        lo_l += [lloc[crossed], lloc[crossed]]
-        lo_w += [grid[ri, ci - 1][crossed], res.x[crossed]]
-        hi_w += [res.x[crossed], grid[ri, ci + 1][crossed]]
-
-    rl = np.concatenate(lo_l)
-    lo, hi = np.concatenate(lo_w), np.concatenate(hi_w)
     if rl.size == 0:
-        return rl.astype(int), lo
-    root = find_root(
-        lambda x, lloc: normalized_determinant(lloc, x, nu),
-        (lo, hi),
-        args=(rl,),
-        tolerances={"xatol": 1e-14, "xrtol": 4e-16},
-    )
-    if not np.all(root.success):
-        raise SphereModeError("root polishing failed for some modes; this is a bug")
-    keep = root.x < omega_max
-    return rl[keep].astype(int), root.x[keep]
-
-
-def _null_vector(m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``(A, B)`` spanning the null space of the 2 x 2 matrices ``m`` (shape (N, 2, 2))."""
-    c0, c1 = _column_norms(m)
-    mt = m / np.stack([c0, c1], axis=-1)[:, None, :]
-    r0 = np.hypot(mt[:, 0, 0], mt[:, 0, 1])
-    r1 = np.hypot(mt[:, 1, 0], mt[:, 1, 1])
-    use0 = r0 >= r1
-    a_t = np.where(use0, mt[:, 0, 1], mt[:, 1, 1])
-    b_t = np.where(use0, -mt[:, 0, 0], -mt[:, 1, 0])
-    return a_t / c0, b_t / c1
+        return rl.astype(int), roots
+    keep = roots < omega_max
+    return rl[keep].astype(int), roots[keep]
 
 
 def radial_shapes(l, omega, A, B, r, nu: float) -> tuple[np.ndarray, np.ndarray]:
@@ -405,7 +361,7 @@ def _build(l: np.ndarray, omega: np.ndarray, nu: float) -> SphereModes:
     A, B = np.ones_like(omega), np.zeros_like(omega)
     p = l > 0
     if np.any(p):
-        A[p], B[p] = _null_vector(boundary_matrix(l[p], omega[p], nu))
+        A[p], B[p] = null_vector(boundary_matrix(l[p], omega[p], nu))
     A, B, C, S = _normalise(l, omega, A, B, nu)
     full = SphereModes(nu=nu, l=l, n=n, omega=omega, A=A, B=B, C=C, S=S)
     return full.take(np.argsort(omega, kind="stable"))
