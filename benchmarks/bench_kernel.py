@@ -48,8 +48,8 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from restitution import collide, collide_batch, compute_modes, get_modes  # noqa: E402
+from restitution.bodies.disk.contact import max_compression_estimate  # noqa: E402
 from restitution.dynamics.reference import collide_dop853  # noqa: E402
-from restitution.limits.sweep import quasistatic_compression  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
 BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
@@ -197,7 +197,7 @@ print(f"  modes {{t_modes:.1f}} s, collision {{t_coll:.1f}} s ({{r.n_steps}} ste
 
 def huge(rounds: int) -> None:
     v = 1e-4
-    alpha = 40.0 / quasistatic_compression(v)
+    alpha = 40.0 / max_compression_estimate(v)
     print(f"== N = 1e5, v = {v}, alpha = {alpha:.0f} (alpha delta_max = 40); {_load()}")
     code = _HUGE.format(nu=NU, n=100_000, v=v, alpha=alpha)
     subprocess.run([sys.executable, "-c", code], check=True)

@@ -14,6 +14,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from restitution import InputError, Material
+from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.fem.graded import (
     contact_half_width,
     graded_settings,
@@ -25,7 +26,6 @@ from restitution.fem.limits import fem_epsilon
 from restitution.fem.mesh import ARC
 from restitution.fem.reference import ReferencePoint, load_reference
 from restitution.fem.richardson import richardson_limit
-from restitution.limits.sweep import quasistatic_compression
 
 NU = 0.33
 
@@ -45,7 +45,7 @@ def test_contact_half_width_is_two_dimensional_hertz():
 
 @pytest.mark.parametrize("v", [1e-3, 1e-2, 0.1])
 def test_graded_mesh_is_fine_at_the_contact_and_curved(v):
-    alpha = 80.0 / quasistatic_compression(v)
+    alpha = 80.0 / max_compression_estimate(v)
     a = contact_half_width(v)
     sizes = []
     for level in (0, 1, 2):
@@ -78,7 +78,7 @@ def test_graded_mesh_is_fine_at_the_contact_and_curved(v):
 
 def test_graded_mesh_grows_geometrically_away_from_the_contact():
     v = 1e-3
-    alpha = 80.0 / quasistatic_compression(v)
+    alpha = 80.0 / max_compression_estimate(v)
     s = graded_settings(v, alpha, 1)
     mesh = model_for(Material(NU), v, alpha, s).disk.mesh
     p = mesh.p[:, mesh.t]
@@ -101,7 +101,7 @@ def test_graded_mesh_has_a_fraction_of_the_dofs_of_a_uniform_one():
     # h = 2^-L. At v = 1e-3 the finest graded level needs h ~ 2^-8 at the contact, for which
     # the uniform mesh has ~2.6e5 vertices+midpoints (x2 dofs); the graded one ~1e4.
     v = 1e-3
-    alpha = 80.0 / quasistatic_compression(v)
+    alpha = 80.0 / max_compression_estimate(v)
     model = model_for(Material(NU), v, alpha, graded_settings(v, alpha, 2))
     level = math.ceil(-math.log2(mesh_summary(model, v).h_contact))
     uniform_dofs = 2 * (2**level + 1) * (2 ** (level + 1) + 1)
@@ -156,7 +156,7 @@ def _state_in_contact(v: float, alpha: float, steps: int):
 
 def test_verlet_is_time_reversible_through_the_contact():
     v = 0.01
-    alpha = 80.0 / quasistatic_compression(v)
+    alpha = 80.0 / max_compression_estimate(v)
     model, x_c, u, ud, f = _state_in_contact(v, alpha, 0)
     dt = 0.5 * fem_collide(NU, v, alpha, settings=graded_settings(v, alpha, 0)).dt
     u0, ud0 = u.copy(), ud.copy()
@@ -176,7 +176,7 @@ def test_verlet_is_time_reversible_through_the_contact():
 
 def test_energy_error_is_second_order_on_a_graded_mesh_at_low_speed():
     v = 0.01
-    alpha = 80.0 / quasistatic_compression(v)
+    alpha = 80.0 / max_compression_estimate(v)
     s = graded_settings(v, alpha, 0)
     coarse = fem_collide(NU, v, alpha, settings=s)
     fine = fem_collide(NU, v, alpha, settings=s, step_safety=0.5 * s.step_safety)
@@ -196,7 +196,7 @@ def test_mesh_convergence_rate_on_graded_meshes():
     # epsilon = 0.98695766, 0.98693019, 0.98692777, 0.98692766 at levels 0-3; differences
     # fall by 11 and 22 (observed order 3.5 then 4.4; P2 energy error ~ h^4).
     v = 0.01
-    alpha = 40.0 / quasistatic_compression(v)
+    alpha = 40.0 / max_compression_estimate(v)
     result = fem_epsilon(NU, v, alpha=alpha)
     eps = np.array([r.epsilon for r in result.runs])
     h = np.array([r.h_contact for r in result.runs])
@@ -237,7 +237,7 @@ def test_fem_agrees_with_the_modal_route_at_low_speed():
     from restitution.limits.extrapolation import epsilon_from_loss, extrapolate_modes
 
     v = 0.01
-    alpha = 40.0 / quasistatic_compression(v)
+    alpha = 40.0 / max_compression_estimate(v)
     fem = fem_epsilon(NU, v, alpha=alpha)
     assert fem.asymptotic_ok, fem.message
     counts = [940, 1600, 3200]

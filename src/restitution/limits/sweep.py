@@ -32,7 +32,6 @@ from typing import Any
 
 import numpy as np
 
-from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.errors import InputError
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
@@ -194,15 +193,6 @@ def _solver_settings(integrator: str | None, options: Any) -> tuple[str, tuple]:
         if f.name not in _NOT_KEYED
     )
     return resolved.integrator, full
-
-
-def quasistatic_compression(v: float) -> float:
-    """Maximal compression ``v sqrt(ln(4/v))`` of eq. (61), units ``R`` (``v`` in ``c``).
-
-    Kept for the benchmarks; the one home is
-    :func:`restitution.bodies.disk.contact.max_compression_estimate`.
-    """
-    return max_compression_estimate(float(v))
 
 
 DEFAULTS = SweepSettings()
