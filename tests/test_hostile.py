@@ -191,12 +191,15 @@ def test_work_estimate_is_near_the_steps_taken(small):
     ],
 )
 def test_a_million_modes_is_refused_up_front(cli, monkeypatch, args):
-    import restitution.bodies.cache as cache
+    import dataclasses
+
+    from restitution.bodies import kinds
 
     def refuse(*a, **k):
         raise AssertionError("modes were computed instead of refused")
 
-    monkeypatch.setattr(cache, "compute_modes", refuse)
+    disk = dataclasses.replace(kinds.KINDS["disk"], compute=refuse)
+    monkeypatch.setitem(kinds.KINDS, "disk", disk)
     code, _, err = cli(*args)
     one_line_error(code, err, str(MAX_MODES))
 

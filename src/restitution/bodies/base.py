@@ -185,3 +185,10 @@ class ModalBody(Protocol):
     def contact_time_estimate(self, v):
         """Quasistatic contact time against a rigid wall at speed ``v`` (``c``), ``R / c``."""
         ...
+
+    def wall_integral(self, alpha):
+        """``int exp(alpha (h - 1))`` over the undeformed surface facing the wall, the rigid
+        body touching it (``h`` the height along the impact axis): what turns the wall's
+        pressure at the tip into its potential, ``R`` for the disk's edge, ``R^2`` for a
+        surface."""
+        ...

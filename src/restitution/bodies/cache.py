@@ -7,6 +7,7 @@ cannot be read, is recomputed and rewritten, never trusted.
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 import math
@@ -20,25 +21,26 @@ import numpy as np
 import platformdirs
 
 from restitution._version import __version__
-from restitution.bodies.disk.modes import _ALGORITHM_VERSION, ModeSet, compute_modes, weyl_count
+from restitution.bodies.base import ModalBody
+from restitution.bodies.kinds import BodyKind, body_kind
 from restitution.bodies.material import Material, require_reduced
 from restitution.errors import InputError, RestitutionError
 
 __all__ = ["MAX_MODES", "CacheError", "cache_dir", "check_mode_request", "get_modes"]
 
-MAX_MODES = 200_000
-"""Most modes :func:`get_modes` accepts. Measured with the scale-free Bessel scan
-(docs/numerics.md): 1e4 modes in about 2 s, 1e5 modes in 23-44 s with 300-380 MiB peak on this
-project's 2-core machine; the cost grows a little faster than N, so 2e5 modes take minutes and
-about 1 GiB. A collision then costs about N operations per step and ~1e4-1e5 steps. The paper
-uses at most 1800 modes."""
+MAX_MODES = body_kind("disk").max_modes
+"""Most modes :func:`get_modes` accepts for a disk (each kind's limit:
+:attr:`restitution.bodies.kinds.BodyKind.max_modes`). A collision then costs about N
+operations per step and ~1e4-1e5 steps. The paper uses at most 1800 modes."""
 
 
 class CacheError(RestitutionError):
     """The cache directory cannot be created or written."""
 
 
-_FIELDS = ("n", "l", "omega", "kappa", "kappa_p", "A", "B", "C", "S")
+def _fields(kind: BodyKind) -> tuple[str, ...]:
+    """The array fields of a kind's mode sets (every dataclass field but ``nu``)."""
+    return tuple(f.name for f in dataclasses.fields(kind.mode_class) if f.name != "nu")
 
 
 def cache_dir() -> Path:
@@ -63,50 +65,55 @@ def cache_dir() -> Path:
     return path
 
 
-def check_mode_request(nu: float, count: int | None, omega_max: float | None = None) -> None:
-    """Refuse at once a mode request beyond :data:`MAX_MODES` (directly or through omega_max).
+def check_mode_request(
+    nu: float, count: int | None, omega_max: float | None = None, geometry: str = "disk"
+) -> None:
+    """Refuse at once a mode request beyond the body's ``max_modes`` (directly or through
+    ``omega_max``).
 
     Raises
     ------
     InputError
         Saying what is feasible.
     """
-    if count is not None and isinstance(count, int | np.integer) and count > MAX_MODES:
+    kind = body_kind(geometry)
+    limit = kind.max_modes
+    if count is not None and isinstance(count, int | np.integer) and count > limit:
         raise InputError(
-            f"{count} modes are not feasible here: at most {MAX_MODES} (1e5 modes take about "
-            "half a minute and 0.4 GiB to compute, and every collision step costs ~N); the "
-            "paper uses up to 1800"
+            f"{count} modes of the {geometry} are not feasible here: at most {limit} "
+            "(every collision step costs ~N); the paper uses up to 1800"
         )
     if omega_max is not None and math.isfinite(omega_max) and omega_max > 0:
-        expected = weyl_count(float(omega_max), float(nu))
-        if expected > MAX_MODES:
+        expected = kind.weyl_count(float(omega_max), float(nu))
+        if expected > limit:
             raise InputError(
-                f"omega_max = {omega_max:g} c/R means about {expected:.3g} modes (Weyl's law), "
-                f"more than the feasible {MAX_MODES}; use omega_max below "
-                f"{math.sqrt(8.0 * MAX_MODES / ((1.0 - nu**2) + 2.0 * (1.0 + nu))):.0f}"
+                f"omega_max = {omega_max:g} c/R means about {expected:.3g} modes of the "
+                f"{geometry} (Weyl's law), more than the feasible {limit}; use omega_max below "
+                f"{kind.omega_for(limit, float(nu)):.0f}"
             )
 
 
-def _key(nu: float, count: int | None, omega_max: float | None) -> str:
+def _key(kind: BodyKind, nu: float, count: int | None, omega_max: float | None) -> str:
     return json.dumps(
         {
             "kind": "modeset",
+            "geometry": kind.geometry,
             "nu": float(nu).hex(),
             "count": count,
             "omega_max": None if omega_max is None else float(omega_max).hex(),
-            "algorithm": _ALGORITHM_VERSION,
+            "algorithm": kind.algorithm,
             "version": __version__,
         },
         sort_keys=True,
     )
 
 
-def _load(path: Path, key: str) -> ModeSet | None:
+def _load(path: Path, key: str, kind: BodyKind) -> ModalBody | None:
     try:
         with np.load(path, allow_pickle=False) as data:
             if str(data["key"]) != key:
                 return None
-            arrays = {f: np.array(data[f]) for f in _FIELDS}
+            arrays = {f: np.array(data[f]) for f in _fields(kind)}
     except (OSError, KeyError, ValueError, zipfile.BadZipFile, EOFError):
         return None
     size = arrays["omega"].size
@@ -116,14 +123,14 @@ def _load(path: Path, key: str) -> ModeSet | None:
         return None
     arrays["n"] = arrays["n"].astype(int)
     arrays["l"] = arrays["l"].astype(int)
-    return ModeSet(nu=float.fromhex(json.loads(key)["nu"]), **arrays)
+    return kind.mode_class(nu=float.fromhex(json.loads(key)["nu"]), **arrays)
 
 
-def _save(path: Path, key: str, modes: ModeSet) -> None:
+def _save(path: Path, key: str, modes: ModalBody, kind: BodyKind) -> None:
     fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp.npz")
     os.close(fd)
     try:
-        np.savez(tmp, key=np.array(key), **{f: getattr(modes, f) for f in _FIELDS})
+        np.savez(tmp, key=np.array(key), **{f: getattr(modes, f) for f in _fields(kind)})
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):
@@ -135,31 +142,44 @@ def get_modes(
     count: int | None = None,
     omega_max: float | None = None,
     *,
+    geometry: str = "disk",
     use_cache: bool = True,
-) -> ModeSet:
-    """Symmetric eigenmodes of the free disk, from the disk cache when possible.
+) -> ModalBody:
+    """Eigenmodes of the free body ``geometry`` that couple to a head-on impact, from the disk
+    cache when possible.
 
-    Same parameters as :func:`restitution.bodies.disk.modes.compute_modes`;
-    ``use_cache=False`` bypasses the cache entirely.
+    Parameters
+    ----------
+    material : Material or float
+        A reduced material (``E = rho = 1``) or the Poisson number of the body's own elasticity
+        (two-dimensional for the disk, three-dimensional for the sphere).
+    count, omega_max
+        As for :func:`restitution.bodies.disk.modes.compute_modes`: exactly one of them.
+    geometry : str
+        ``"disk"`` (the paper's symmetric modes) or ``"sphere"`` (Lamb's axisymmetric spheroidal
+        modes), :data:`restitution.bodies.kinds.GEOMETRIES`.
+    use_cache : bool
+        ``False`` bypasses the cache entirely.
     """
-    nu = require_reduced(material, "the modal path")
-    check_mode_request(nu, count, omega_max)
+    kind = body_kind(geometry)
+    nu = kind.check_nu(require_reduced(material, "the modal path"))
+    check_mode_request(nu, count, omega_max, geometry)
     if not use_cache:
-        return compute_modes(nu, count=count, omega_max=omega_max)
-    key = _key(nu, count, omega_max)
+        return kind.compute(nu, count=count, omega_max=omega_max)
+    key = _key(kind, nu, count, omega_max)
     try:
         directory = cache_dir()
     except CacheError as exc:
         warnings.warn(f"{exc}; computing without the cache", stacklevel=2)
-        return compute_modes(nu, count=count, omega_max=omega_max)
+        return kind.compute(nu, count=count, omega_max=omega_max)
     path = directory / f"modes-{hashlib.sha256(key.encode()).hexdigest()[:24]}.npz"
     if path.exists():
-        cached = _load(path, key)
+        cached = _load(path, key, kind)
         if cached is not None:
             return cached
-    modes = compute_modes(nu, count=count, omega_max=omega_max)
+    modes = kind.compute(nu, count=count, omega_max=omega_max)
     try:
-        _save(path, key, modes)
+        _save(path, key, modes, kind)
     except OSError:
         pass  # a read-only cache directory only costs recomputation
     return modes

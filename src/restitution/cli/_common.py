@@ -17,8 +17,8 @@ import click
 
 from restitution import atomic
 from restitution._version import __version__
+from restitution.bodies.kinds import GEOMETRIES, body_kind
 from restitution.bodies.material import Material
-from restitution.dynamics.results import UNITS
 from restitution.errors import InputError, OutputError
 from restitution.jsonable import finite_tree, json_default
 from restitution.status import Status
@@ -41,6 +41,15 @@ nu_option = click.option(
 )
 plane_option = click.option(
     "--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP
+)
+geometry_option = click.option(
+    "--geometry",
+    type=click.Choice(GEOMETRIES),
+    default="disk",
+    show_default=True,
+    help="The body: 'disk' (the paper's elastic disk; --nu is two-dimensional unless --plane "
+    "is given) or 'sphere' (an elastic sphere; --nu is its three-dimensional Poisson number, "
+    "in (-1, 0.5); units E = rho = R = 1 of the sphere).",
 )
 
 _state = {"quiet": False}
@@ -85,6 +94,22 @@ def material_from(nu: float, plane: str | None) -> Material:
     if plane is None:
         return Material(nu=nu)
     return Material.from_3d(E=1.0, nu=nu, plane=plane).reduced()  # the modal path is reduced
+
+
+def body_nu(nu: float, plane: str | None, geometry: str) -> float:
+    """The Poisson number the modal path of ``geometry`` works with, from ``--nu``/``--plane``.
+
+    For a disk, :func:`material_from`'s two-dimensional number; a sphere takes ``--nu`` as its
+    three-dimensional number and refuses ``--plane`` (it would be accepted and ignored).
+    """
+    if geometry == "disk":
+        return material_from(nu, plane).nu
+    if plane is not None:
+        raise InputError(
+            f"--plane applies to disks only; the {geometry}'s --nu is already its "
+            "three-dimensional Poisson number: leave out --plane"
+        )
+    return body_kind(geometry).check_nu(nu)
 
 
 def positive_finite(name: str, value: float) -> float:
@@ -187,15 +212,16 @@ def envelope(
 ) -> dict:
     """The keys every JSON output starts with, then ``payload``.
 
-    ``version`` (package version), ``command``, ``units``
-    (:data:`restitution.dynamics.results.UNITS`), ``inputs`` (every option that determines the
+    ``version`` (package version), ``command``, ``units`` (those of the body named by
+    ``inputs["geometry"]``, the disk's :data:`restitution.dynamics.results.UNITS` if none:
+    :attr:`restitution.bodies.kinds.BodyKind.units`), ``inputs`` (every option that determines the
     result), ``status`` (``"ok"`` or what is wrong, :class:`restitution.status.Status`) and
     ``advice`` (what to do when the status is not ``"ok"``).
     """
     head = {
         "version": __version__,
         "command": command,
-        "units": dict(UNITS),
+        "units": dict(body_kind(inputs.get("geometry", "disk")).units),
         "inputs": inputs,
         "status": status,
         "advice": advice,

@@ -1,4 +1,4 @@
-"""``restitution collide``: one disk-wall collision."""
+"""``restitution collide``: one collision of a disk or a sphere with the wall."""
 
 from __future__ import annotations
 
@@ -12,8 +12,10 @@ import click
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
+    body_nu,
     dumps,
     envelope,
+    geometry_option,
     material_from,
     note,
     nu_option,
@@ -78,6 +80,7 @@ def _print_summary(result, top: int = 10) -> None:
 @click.command()
 @nu_option
 @plane_option
+@geometry_option
 @click.option(
     "--v",
     "v",
@@ -191,6 +194,7 @@ def collide(
     ctx,
     nu,
     plane,
+    geometry,
     v,
     alpha,
     n_modes,
@@ -210,12 +214,20 @@ def collide(
     as_json,
     strict,
 ):
-    """Head-on collision of an elastic disk with a hard wall: epsilon and where the energy goes.
+    """Head-on collision of an elastic disk or sphere with a hard wall: epsilon and where the
+    energy goes.
 
-    Units: E = rho = R = 1; v in c, times in R/c; mode energies as fractions of the initial
-    kinetic energy. With --excite the disk vibrates before the impact (docs/vibrating.md).
+    Units: E = rho = R = 1 of the body's own constants; v in c, times in R/c; mode energies as
+    fractions of the initial kinetic energy. With --excite the disk vibrates before the impact
+    (docs/vibrating.md).
     """
-    material = material_from(nu, plane)
+    body = body_nu(nu, plane, geometry)
+    material = material_from(nu, plane) if geometry == "disk" else None
+    if geometry != "disk" and (excite != "none" or method == "fem"):
+        raise InputError(
+            f"--excite and --method fem are available for disks only; leave them out for a "
+            f"{geometry}"
+        )
     if excite != "none":
         return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
                         energy_tol, excite, as_json, strict)  # fmt: skip
@@ -236,7 +248,7 @@ def collide(
         )
     else:
         refuse_ignored(ctx, {"mesh_refine": "--mesh-refine"}, "with --method modal")
-        check_mode_request(material.nu, 2 * n_modes if select == "ranked" else n_modes)
+        check_mode_request(body, 2 * n_modes if select == "ranked" else n_modes, None, geometry)
     if v > 0.3:
         note("warning: v > 0.3 c stretches linear elasticity")
     start = time.perf_counter()
@@ -251,18 +263,19 @@ def collide(
             from restitution.dynamics.collision import rank_modes
 
             if select == "ranked":
-                pool = get_modes(material, count=2 * n_modes)
+                pool = get_modes(body, count=2 * n_modes, geometry=geometry)
                 ms = rank_modes(
                     pool, n_modes, v, alpha, integrator=integrator, energy_tol=energy_tol
                 )
             else:
-                ms = get_modes(material, count=n_modes)
+                ms = get_modes(body, count=n_modes, geometry=geometry)
             long_run = _announce(ms, v, alpha, integrator, energy_tol)
             with _elapsed(long_run):
                 result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
     wall = time.perf_counter() - start
     if as_json:
-        inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "method": method}
+        inputs = {"geometry": geometry, "nu": body, "plane": plane, "v": v, "alpha": alpha,
+                  "method": method}  # fmt: skip
         if method == "fem":
             inputs["mesh_refine"] = mesh_refine
         else:

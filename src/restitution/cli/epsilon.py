@@ -17,9 +17,11 @@ from restitution.bodies.material import Material
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
+    body_nu,
     check_output_dir,
     dumps,
     envelope,
+    geometry_option,
     note,
     quiet,
     quiet_option,
@@ -27,13 +29,13 @@ from restitution.cli._common import (
     writing,
 )
 from restitution.errors import InputError
-from restitution.limits.sweep import DEFAULTS, SweepSettings
+from restitution.limits.sweep import DEFAULTS, SPHERE_DEFAULTS, SweepSettings, defaults_for
 from restitution.status import Status
 
 _V_HELP = (
-    "speed of the disk towards the wall before the collision, in units of the 2D sound speed "
-    "c = sqrt(E/rho) (two identical disks approaching at +-v, relative speed 2v, collide the "
-    "same way)"
+    "speed of the body towards the wall before the collision, in units of c = sqrt(E/rho) of "
+    "its own constants (two identical bodies approaching at +-v, relative speed 2v, collide "
+    "the same way)"
 )
 
 
@@ -81,14 +83,17 @@ class _CurveCommand(_ListCommand):
     list_options = ("--nu", "--v", "--alphas", "--modes")
 
 
-def _settings(velocities=None, alphas=None, modes=None, alpha_scale=None) -> SweepSettings:
+def _settings(
+    velocities=None, alphas=None, modes=None, alpha_scale=None, geometry="disk"
+) -> SweepSettings:
     changes = {
         "velocities": tuple(velocities) if velocities else None,
         "alphas": tuple(alphas) if alphas else None,
         "n_modes": tuple(modes) if modes else None,
         "alpha_scale": alpha_scale,
     }
-    return replace(DEFAULTS, **{k: v for k, v in changes.items() if v is not None})
+    base = defaults_for(geometry)
+    return replace(base, **{k: v for k, v in changes.items() if v is not None})
 
 
 def _check_nu(nu: float) -> float:
@@ -132,14 +137,16 @@ def _executor_options(f):
         "modes",
         type=click.IntRange(min=1),
         multiple=True,
-        help=f"Mode counts N for the N -> infinity extrapolation (default {DEFAULTS.n_modes}).",
+        help=f"Mode counts N for the N -> infinity extrapolation (default {DEFAULTS.n_modes} "
+        f"for a disk, {SPHERE_DEFAULTS.n_modes} for a sphere).",
     )(f)
     f = click.option(
         "--alpha-scale",
         type=click.Choice(["absolute", "compression"]),
         default=None,
         help="How --alphas are read: wall hardness in 1/R at every speed (absolute), or "
-        "products alpha * delta_max(v) with delta_max = v sqrt(ln(4/v)) (compression). "
+        "products alpha * delta_max(v) with the quasistatic compression delta_max (a disk: "
+        "v sqrt(ln(4/v)); a sphere: Hertz) (compression). "
         f"Default {DEFAULTS.alpha_scale}.",
     )(f)
     f = click.option(
@@ -152,7 +159,13 @@ def _executor_options(f):
 
 
 @click.command(cls=_EpsilonCommand)
-@click.option("--nu", type=float, required=True, help="Two-dimensional Poisson number.")
+@click.option(
+    "--nu",
+    type=float,
+    required=True,
+    help="Poisson number: two-dimensional for a disk, three-dimensional for a sphere.",
+)
+@geometry_option
 @click.option("--v", "v", type=float, required=True, help=f"Speed v: {_V_HELP}.")
 @click.option(
     "--alpha",
@@ -171,6 +184,7 @@ def _executor_options(f):
 @_executor_options
 def epsilon(
     nu,
+    geometry,
     v,
     alpha,
     as_json,
@@ -187,25 +201,29 @@ def epsilon(
 ):
     """Coefficient of restitution at one speed v, extrapolated to a hard wall and N -> infinity.
 
-    v is the disk's speed towards the wall in units of c = sqrt(E/rho). The collisions of the
+    v is the body's speed towards the wall in units of c = sqrt(E/rho). The collisions of the
     grid are computed (or read from the store) first. Exit status 1 when grid points failed;
     with --strict, 3 when the extrapolation is not asymptotic.
     """
     from restitution.limits.curves import epsilon_at
     from restitution.limits.sweep import grid
 
-    nu = _check_nu(nu)
+    nu = body_nu(nu, None, geometry)
     if alpha is not None and (alphas or alpha_scale):
         raise InputError(
             "--alpha fixes one wall and extrapolates N -> infinity only; --alphas and "
             "--alpha-scale set the alpha -> infinity extrapolation: give one or the other"
         )
     if method == "fem":
+        if geometry != "disk":
+            raise InputError(
+                f"the FEM route of the {geometry} is not available yet; use --method modal"
+            )
         modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
         modal_only.update({"--store": store, "--retry-failed": retry_failed or None})
         _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict)
         return
-    settings = _settings(velocities=[v], alphas=alphas, modes=modes, alpha_scale=alpha_scale)
+    settings = _settings([v], alphas, modes, alpha_scale, geometry)
     swept = replace(settings, velocities=(float(v),))
     if alpha is not None:  # SweepSettings refuses a wall hardness that is not positive
         swept = replace(swept, alphas=(float(alpha),), alpha_scale="absolute")
@@ -215,6 +233,7 @@ def epsilon(
     status, advice = _status(result.asymptotic_ok, result.message, failed)
     if as_json:
         inputs = {
+            "geometry": geometry,
             "nu": nu,
             "v": v,
             "alpha": alpha,
@@ -229,13 +248,13 @@ def epsilon(
         where = f" at alpha = {alpha:g}" if alpha is not None else ""
         click.echo(
             f"epsilon = {result.epsilon:.6f} +- {_err(result.epsilon_err, swept)}   "
-            f"(nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})"
+            f"({geometry}, nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})"
         )
         click.echo(
             f"energy loss 1 - epsilon^2 = {result.energy_loss:.6f} +- "
             f"{_err(result.energy_loss_err, swept)}"
         )
-        grid_alphas = [alpha] if alpha is not None else list(settings.alphas_at(v))
+        grid_alphas = [alpha] if alpha is not None else list(settings.alphas_at(v, nu=nu))
         click.echo(
             f"grid: alpha = {', '.join(f'{a:g}' for a in grid_alphas)}; "
             f"N = {', '.join(str(n) for n in settings.n_modes)} "

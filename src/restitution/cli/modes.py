@@ -10,32 +10,40 @@ import click
 
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
+    body_nu,
     check_figure_file,
     check_output_file,
     dumps,
     envelope,
-    material_from,
+    geometry_option,
     note,
     nu_option,
     plane_option,
     quiet_option,
+    refuse_ignored,
     write_text,
     writing,
 )
 from restitution.errors import InputError
 
-_COLUMNS = ("n", "l", "omega", "kappa", "kappa_p", "A", "B", "C", "S")
+_TITLES = {
+    "disk": "Symmetric modes of the free disk (omega in c/R; C, S edge amplitudes)",
+    "sphere": "Axisymmetric spheroidal modes of the free sphere (omega in c/R; C = U(1), "
+    "S = V(1) surface amplitudes)",
+}
+_INTEGER = ("n", "l")
 
 
-def _table(records: list[dict]) -> str:
+def _table(records: list[dict], geometry: str) -> str:
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title="Symmetric modes of the free disk (omega in c/R; C, S edge amplitudes)")
-    for col in _COLUMNS:
+    table = Table(title=_TITLES[geometry])
+    columns = list(records[0]) if records else []
+    for col in columns:
         table.add_column(col, justify="right")
     for r in records:
-        table.add_row(*(str(r[c]) if c in ("n", "l") else f"{r[c]:.8g}" for c in _COLUMNS))
+        table.add_row(*(str(r[c]) if c in _INTEGER else f"{r[c]:.8g}" for c in columns))
     buf = io.StringIO()
     Console(file=buf, width=140, force_terminal=False).print(table)
     return buf.getvalue()
@@ -43,16 +51,18 @@ def _table(records: list[dict]) -> str:
 
 def _csv(records: list[dict]) -> str:
     buf = io.StringIO()
-    writer = csv.DictWriter(buf, fieldnames=_COLUMNS, lineterminator="\n")
+    columns = list(records[0]) if records else []
+    writer = csv.DictWriter(buf, fieldnames=columns, lineterminator="\n")
     writer.writeheader()
     for r in records:
-        writer.writerow({c: (r[c] if c in ("n", "l") else repr(r[c])) for c in _COLUMNS})
+        writer.writerow({c: (r[c] if c in _INTEGER else repr(r[c])) for c in columns})
     return buf.getvalue()
 
 
 @click.command()
 @nu_option
 @plane_option
+@geometry_option
 @click.option("--count", type=int, default=None, help="Number of lowest modes [default: 1600].")
 @click.option("--omega-max", type=float, default=None, help="All modes below this omega (c/R).")
 @click.option(
@@ -81,46 +91,60 @@ def _csv(records: list[dict]) -> str:
     help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.",
 )
 @quiet_option
-def modes(nu, plane, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
-    """Eigenmodes of the free elastic disk (symmetric family), sorted by frequency.
+def modes(nu, plane, geometry, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
+    """Eigenmodes of the free elastic body that couple to a head-on impact, by frequency.
 
-    Units: E = rho = R = 1, omega in c/R. For n = 0 only the breathing modes (eq. 20); the
-    rigid translation is excluded. C = U_r(1) > 0 and S = U_phi(1) are the edge amplitudes.
+    Units: E = rho = R = 1 of the body's own constants, omega in c/R. Disk: the symmetric
+    family; for n = 0 only the breathing modes (eq. 20); C = U_r(1) > 0 and S = U_phi(1) are
+    the edge amplitudes. Sphere: Lamb's axisymmetric spheroidal modes of order l (u_r = U(r)
+    P_l, u_theta = V(r) dP_l/dtheta), C = U(1) and S = V(1). The rigid translation is excluded.
     The JSON format is one object: version, units, inputs, status and the list "modes".
     """
     if count is not None and omega_max is not None:
         raise InputError("give either --count or --omega-max, not both")
     if count is None and omega_max is None:
         count = 1600
-    material = material_from(nu, plane)
-    check_mode_request(material.nu, count, omega_max)
+    nu = body_nu(nu, plane, geometry)
+    check_mode_request(nu, count, omega_max, geometry)
+    if geometry != "disk":
+        refuse_ignored(
+            click.get_current_context(),
+            {"plot_spectrum": "--plot-spectrum", "plot_shapes": "--plot-shapes"},
+            "they draw the disk's Figs. 2 and 3",
+        )
     if output is not None:
         check_output_file(output, "--output")
     for path, option in ((plot_spectrum, "--plot-spectrum"), (plot_shapes, "--plot-shapes")):
         if path is not None:
             check_figure_file(path, option)
-    ms = get_modes(material, count=count, omega_max=omega_max)
+    ms = get_modes(nu, count=count, omega_max=omega_max, geometry=geometry)
     records = ms.as_records()
     if fmt == "json":
-        inputs = {"nu": material.nu, "plane": plane, "count": count, "omega_max": omega_max}
+        inputs = {
+            "geometry": geometry,
+            "nu": nu,
+            "plane": plane,
+            "count": count,
+            "omega_max": omega_max,
+        }
         text = dumps(envelope("modes", inputs, {"modes": records}))
     elif fmt == "csv":
         text = _csv(records)
     else:
-        text = _table(records)
+        text = _table(records, geometry)
     write_text(text, output)
     if plot_spectrum is not None:
         from restitution.reproduction.figures import fig03_spectrum
 
         top = float(omega_max) if omega_max is not None else float(min(ms.omega.max(), 20.0))
-        data = fig03_spectrum.compute(material.nu, omega_max=top)
+        data = fig03_spectrum.compute(nu, omega_max=top)
         with writing(plot_spectrum, "--plot-spectrum"):
             fig03_spectrum.plot(data, plot_spectrum)
         note(f"wrote {plot_spectrum}")
     if plot_shapes is not None:
         from restitution.reproduction.figures import fig02_shapes
 
-        data = fig02_shapes.compute(material.nu)
+        data = fig02_shapes.compute(nu)
         with writing(plot_shapes, "--plot-shapes"):
             fig02_shapes.plot(data, plot_shapes)
         note(f"wrote {plot_shapes}")

@@ -12,22 +12,14 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
+from restitution.bodies.kinds import body_kind
 from restitution.status import Status
 
 __all__ = ["UNITS", "CollisionResult", "History"]
 
-UNITS: dict[str, str] = {
-    "system": "E = rho = R = 1: two-dimensional Young modulus, mass per area and disk radius",
-    "length": "R",
-    "time": "R/c",
-    "speed": "c = sqrt(E/rho) (v: the disk's speed towards the wall)",
-    "frequency": "c/R",
-    "alpha": "1/R",
-    "force": "E R",
-    "energy": "fraction of the initial kinetic energy (m/2) v^2, m = pi",
-    "wall_time": "s",
-}
-"""The units of every number this package reports; every JSON output carries this table."""
+UNITS: dict[str, str] = body_kind("disk").units
+"""The units of every number this package reports of a disk; every JSON output carries the
+table of its body (:attr:`restitution.bodies.kinds.BodyKind.units`)."""
 
 
 @dataclass(frozen=True, eq=False)

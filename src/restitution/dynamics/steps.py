@@ -5,7 +5,6 @@ Units: ``E = rho = R = 1``; times in ``R / c``.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -81,14 +80,14 @@ def estimate_work(
 ) -> WorkEstimate:
     """Estimate steps and memory of :func:`collide_batch` before anything is allocated.
 
-    The start position solves ``V(x0) = CONTACT_TOL E0`` with the wall integral approximated
-    by ``min(pi/2, sqrt(pi / (2 alpha)))`` (the Gaussian peak at ``phi = 0``); the disk flies
-    that distance at ``v`` in and out, and touches for the quasistatic time of eq. (61).
+    The start position solves ``V(x0) = CONTACT_TOL E0`` with the body's wall integral
+    (:meth:`~restitution.bodies.base.ModalBody.wall_integral`); the body flies that distance at
+    ``v`` in and out, and touches for its quasistatic contact time.
     """
     v = np.asarray(v, dtype=float)
     alpha = np.asarray(alpha, dtype=float)
     e0 = 0.5 * body.mass * v**2
-    integral = np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / alpha))
+    integral = body.wall_integral(alpha)
     with np.errstate(over="ignore", divide="ignore"):
         gap = np.maximum(0.0, -np.log(CONTACT_TOL * e0 * alpha / integral) / alpha)
     flight = 2.0 * gap / v
@@ -140,10 +139,10 @@ def check_work(
         )
     if est.steps > settings.max_steps:
         advice = {
-            "approach": "the disk starts where the wall energy is 1e-12 of E0 and needs that "
+            "approach": "the body starts where the wall energy is 1e-12 of E0 and needs that "
             "long to arrive: raise v or alpha (alpha * v of order 1-100 is typical)",
             "wall": "the step must resolve 1/(alpha v): lower alpha",
-            "body": "the step must resolve the fastest mode: use fewer body",
+            "body": "the step must resolve the fastest mode: use fewer modes",
         }[est.limit]
         raise InputError(
             f"this collision would need about {est.steps:.2g} time steps (simulated time "

@@ -1,11 +1,12 @@
 """Computing epsilon(v): sweeps of collisions extrapolated to a hard wall and to many modes.
 
-Paper Fig. 1. For every speed ``v`` (the disk's speed towards the wall, units of
-``c = sqrt(E/rho)``) the energy loss ``1 - epsilon^2`` is computed on a grid of wall hardness
-``alpha`` and mode counts ``N`` (:mod:`restitution.limits.sweep`) and extrapolated to
-``alpha, N -> infinity`` (:mod:`restitution.limits.extrapolation`). :func:`compute_curves` does
-this for a whole grid of speeds, :func:`epsilon_at` for one speed. Serving the result as a law
-and its exports is :mod:`restitution.laws.law`'s job.
+Paper Fig. 1. For every speed ``v`` (the body's speed towards the wall, units of
+``c = sqrt(E/rho)``; the body is ``settings.geometry``, the paper's disk by default) the energy
+loss ``1 - epsilon^2`` is computed on a grid of wall hardness ``alpha`` and mode counts ``N``
+(:mod:`restitution.limits.sweep`) and extrapolated to ``alpha, N -> infinity``
+(:mod:`restitution.limits.extrapolation`). :func:`compute_curves` does this for a whole grid of
+speeds, :func:`epsilon_at` for one speed. Serving the result as a law and its exports is
+:mod:`restitution.laws.law`'s job.
 """
 
 from __future__ import annotations
@@ -48,9 +49,9 @@ class Curve:
     Attributes
     ----------
     nu : float
-        Two-dimensional Poisson number.
+        Poisson number of the body (two-dimensional for the disk).
     settings : SweepSettings
-        Grid and solver settings behind the points.
+        Grid and solver settings behind the points (and the body, ``settings.geometry``).
     velocities : numpy.ndarray, shape (K,)
         Speeds towards the wall, units of ``c``.
     limits : tuple of CombinedLimit
@@ -147,7 +148,7 @@ class PointEpsilon:
     Attributes
     ----------
     nu, v : float
-        Poisson number and speed towards the wall (units of ``c``).
+        Poisson number (two-dimensional for the disk) and speed towards the wall (``c``).
     alpha : float or None
         The fixed wall hardness (``1/R``) when only ``N -> infinity`` was taken; ``None`` when
         both limits were taken.
@@ -197,9 +198,10 @@ class PointEpsilon:
             }
             fits = {"N": self.fit.to_dict()}
         return {
+            "geometry": self.settings.geometry,
             "nu": self.nu,
             "v": self.v,
-            "v_units": "c (speed of the disk towards the wall)",
+            "v_units": f"c (speed of the {self.settings.geometry} towards the wall)",
             "alpha": self.alpha,
             "limits": ["N"] if self.alpha is not None else ["alpha", "N"],
             "epsilon": finite_or_none(self.epsilon),
@@ -219,7 +221,7 @@ class PointEpsilon:
 
 
 def epsilon_at(
-    nu_2d: float,
+    nu: float,
     v: float,
     *,
     alpha: float | None = None,
@@ -232,8 +234,9 @@ def epsilon_at(
     progress: bool | None = None,
     batch_function=collide_points,
 ) -> PointEpsilon:
-    """epsilon at one speed ``v`` (units of ``c``, towards the wall) of the disk with 2D Poisson
-    number ``nu_2d``, both limits alpha, N -> infinity taken (the central computation).
+    """epsilon at one speed ``v`` (units of ``c``, towards the wall) of the body
+    ``settings.geometry`` (the disk by default) with Poisson number ``nu`` (two-dimensional for
+    the disk), both limits alpha, N -> infinity taken (the central computation).
 
     With ``alpha`` only ``N -> infinity`` is taken at that wall hardness; without it both limits
     on the grid ``settings.alphas_at(v) x settings.n_modes``. Missing collisions are computed first
@@ -249,7 +252,7 @@ def epsilon_at(
     try:
         if run:
             run_sweep(
-                grid([nu_2d], settings),
+                grid([nu], settings),
                 store=db,
                 workers=workers,
                 scheduler=scheduler,
@@ -258,7 +261,7 @@ def epsilon_at(
                 batch_function=batch_function,
                 progress=progress,
             )
-        data = load_grid(db, nu_2d, v, settings)
+        data = load_grid(db, nu, v, settings)
     finally:
         if own:
             db.close()
@@ -278,7 +281,7 @@ def epsilon_at(
         ok = False
         msg = "; ".join(filter(None, [msg, f"{len(failures)} grid point(s) failed"]))
     return PointEpsilon(
-        float(nu_2d),
+        float(nu),
         float(v),
         alpha,
         eps,

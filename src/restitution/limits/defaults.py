@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from restitution.bodies.disk.contact import max_compression_estimate
+from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
 
 __all__ = [
@@ -62,15 +62,26 @@ def check_alpha_scale(alpha_scale: str) -> None:
         raise InputError(f"alpha_scale must be 'absolute' or 'compression', not {alpha_scale!r}")
 
 
-def walls_at(v: float, alphas: Sequence[float], alpha_scale: str) -> tuple[float, ...]:
+def walls_at(
+    v: float,
+    alphas: Sequence[float],
+    alpha_scale: str,
+    *,
+    geometry: str = "disk",
+    nu: float | None = None,
+) -> tuple[float, ...]:
     """Wall hardness values (``1/R``) at speed ``v`` (``c``).
 
-    ``"absolute"``: ``alphas`` as given. ``"compression"``: ``alphas[k] / delta_max(v)`` with the
-    quasistatic maximal compression ``delta_max = v sqrt(ln(4/v))`` (eq. 61,
-    :func:`restitution.bodies.disk.contact.max_compression_estimate`).
+    ``"absolute"``: ``alphas`` as given. ``"compression"``: ``alphas[k] / delta_max(v)`` with
+    the body's quasistatic maximal compression against a rigid wall
+    (:attr:`restitution.bodies.kinds.BodyKind.max_compression`): for the disk
+    ``delta_max = v sqrt(ln(4/v))`` (eq. 61, independent of ``nu``), for the sphere Hertz's
+    ``(15 m v^2 / (16 E*))^(2/5)``, which needs the sphere's Poisson number ``nu``.
     """
     values = tuple(alphas)
     if alpha_scale == "absolute":
         return values
-    delta = max_compression_estimate(float(v))
+    if nu is None and geometry != "disk":
+        raise InputError(f"the walls of a {geometry} at a compression scale need its nu")
+    delta = body_kind(geometry).max_compression(float(v), 0.0 if nu is None else float(nu))
     return tuple(a / delta for a in values)

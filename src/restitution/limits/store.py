@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from restitution._version import __version__
+from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError, RestitutionError
 from restitution.jsonable import finite_or_none, json_default
 from restitution.provenance import code_version
@@ -120,9 +121,9 @@ class PointSpec:
     Attributes
     ----------
     nu : float
-        Two-dimensional Poisson number.
+        Poisson number of the body's own elasticity (two-dimensional for the disk).
     v : float
-        Speed of the disk towards the wall before the collision, units of ``c``.
+        Speed of the body towards the wall before the collision, units of ``c``.
     alpha : float
         Wall hardness, ``1/R``.
     n_modes : int
@@ -133,6 +134,9 @@ class PointSpec:
         Time integrator name.
     options : tuple of (str, value) pairs
         Further solver keywords (tolerances, ...), sorted by name; hashable.
+    geometry : str
+        The body (:data:`restitution.bodies.kinds.GEOMETRIES`); its code version
+        (:func:`restitution.provenance.code_version`) is part of the key.
     """
 
     nu: float
@@ -142,6 +146,7 @@ class PointSpec:
     select: str = "lowest"
     integrator: str = "split4"
     options: tuple[tuple[str, Any], ...] = ()
+    geometry: str = "disk"
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "nu", float(self.nu))
@@ -150,17 +155,18 @@ class PointSpec:
         object.__setattr__(self, "n_modes", int(self.n_modes))
         opts = self.options.items() if isinstance(self.options, dict) else self.options
         object.__setattr__(self, "options", tuple(sorted((str(k), v) for k, v in opts)))
+        body_kind(self.geometry)  # an unknown body is refused before it becomes a key
 
     @property
     def group(self) -> tuple:
         """Everything but ``(v, alpha)``: points of one group share a mode set."""
-        return (self.nu, self.n_modes, self.select, self.integrator, self.options)
+        return (self.geometry, self.nu, self.n_modes, self.select, self.integrator, self.options)
 
     def inputs(self) -> dict:
         """Canonical JSON-ready inputs including the code version (exact floats as hex)."""
         d = asdict(self)
         d["options"] = {k: v for k, v in self.options}
-        d["code_version"] = code_version()
+        d["code_version"] = code_version(self.geometry)
         return _canonical(d)
 
     def key(self) -> str:
@@ -429,7 +435,7 @@ class Store:
         )
         values = [
             spec.key(),
-            code_version(),
+            code_version(spec.geometry),
             json.dumps(spec.inputs(), sort_keys=True),
             spec.nu,
             spec.v,
@@ -492,10 +498,13 @@ class Store:
             )
         return out
 
-    def points(self, *, all_versions: bool = False, **filters: Any) -> list[StoredPoint]:
+    def points(
+        self, *, all_versions: bool = False, geometry: str = "disk", **filters: Any
+    ) -> list[StoredPoint]:
         """Stored rows, optionally filtered by exact ``nu``, ``v``, ``alpha``, ``n_modes``,
-        ``selection``, ``integrator`` or ``status``; by default only this code version
-        (:func:`restitution.provenance.code_version`)."""
+        ``selection``, ``integrator`` or ``status``; by default only this code version of the
+        body ``geometry`` (:func:`restitution.provenance.code_version`, which differs between
+        bodies)."""
         allowed = {"nu", "v", "alpha", "n_modes", "selection", "integrator", "status"}
         unknown = set(filters) - allowed
         if unknown:
@@ -504,7 +513,7 @@ class Store:
         args = list(filters.values())
         if not all_versions:
             where.append("code_version = ?")
-            args.append(code_version())
+            args.append(code_version(geometry))
         clause = f" WHERE {' AND '.join(where)}" if where else ""
         rows = self._read(
             f"SELECT {_ROW} FROM collisions{clause} ORDER BY nu, v, alpha, n_modes", args
@@ -547,6 +556,7 @@ def _row_to_point(row: tuple) -> StoredPoint:
         select=d["select"],
         integrator=d["integrator"],
         options=options,
+        geometry=d.get("geometry", "disk"),  # rows of 0.1.0 before the sphere name no body
     )
     values = dict(zip(_SCALARS, scalars, strict=True))
     nan = float("nan")

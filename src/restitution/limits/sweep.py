@@ -27,11 +27,12 @@ import sys
 import time
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 import numpy as np
 
+from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
@@ -52,11 +53,13 @@ from restitution.status import Status
 
 __all__ = [
     "DEFAULTS",
+    "SPHERE_DEFAULTS",
     "PAPER_VELOCITIES",
     "GridData",
     "SweepReport",
     "SweepSettings",
     "collide_points",
+    "defaults_for",
     "grid",
     "load_grid",
     "run_sweep",
@@ -106,6 +109,10 @@ class SweepSettings:
     batch_size : int
         Collisions per task; they share one mode set (each keeps its own time step, so a
         stored point does not depend on its batch).
+    geometry : str
+        The body (:data:`restitution.bodies.kinds.GEOMETRIES`): ``"disk"`` (the paper's) or
+        ``"sphere"``; it decides the modes, the compression that scales the walls and the
+        variable of the ``N -> infinity`` extrapolation.
     """
 
     velocities: tuple[float, ...] = PAPER_VELOCITIES
@@ -120,6 +127,7 @@ class SweepSettings:
     options: tuple[tuple[str, Any], ...] = (("energy_tol", 1e-5),)
     order: str = "modes_first"
     batch_size: int = 4
+    geometry: str = "disk"
 
     def __post_init__(self) -> None:
         for name in ("velocities", "alphas", "n_modes"):
@@ -134,9 +142,11 @@ class SweepSettings:
         integrator, options = _solver_settings(self.integrator, self.options)
         object.__setattr__(self, "integrator", integrator)
         object.__setattr__(self, "options", options)
+        body_kind(self.geometry)
         if any(not (0 < v < 1) for v in self.velocities):
             raise InputError(
-                "speeds v must lie in (0, 1): the disk's speed towards the wall in units of c"
+                f"speeds v must lie in (0, 1): the {self.geometry}'s speed towards the wall in "
+                "units of c"
             )
         check_alphas(self.alphas)
         if any(n < 1 for n in self.n_modes):
@@ -159,12 +169,16 @@ class SweepSettings:
             "options": {k: v for k, v in self.options},
             "order": self.order,
             "batch_size": self.batch_size,
+            "geometry": self.geometry,
         }
 
-    def alphas_at(self, v: float, alphas: Iterable[float] | None = None) -> tuple[float, ...]:
-        """Wall hardness values (``1/R``) used at speed ``v`` (units of ``c``)."""
+    def alphas_at(
+        self, v: float, alphas: Iterable[float] | None = None, *, nu: float | None = None
+    ) -> tuple[float, ...]:
+        """Wall hardness values (``1/R``) used at speed ``v`` (units of ``c``); a sphere's
+        compression scale needs its Poisson number ``nu``."""
         values = self.alphas if alphas is None else tuple(float(a) for a in alphas)
-        return walls_at(v, values, self.alpha_scale)
+        return walls_at(v, values, self.alpha_scale, geometry=self.geometry, nu=nu)
 
 
 # Not part of a stored point's key: the integrator is keyed separately, histories are not
@@ -196,7 +210,23 @@ def _solver_settings(integrator: str | None, options: Any) -> tuple[str, tuple]:
 
 
 DEFAULTS = SweepSettings()
-"""The package's default sweep (tuned to the 10-minute budget of the full Fig. 1 grid)."""
+"""The package's default sweep of the disk (tuned to the 10-minute budget of the full Fig. 1
+grid)."""
+
+# The sphere's loss settles into its N -> infinity trend later than the disk's: at nu = 0.3,
+# v = 0.003 it still jumps by 50 % between N = 100 and 400 and climbs monotonically only from
+# N ~ 1600 (docs/spheres.md, measured for N = 100-12800); a sphere collision with 12800 modes
+# takes 1-3 s, so the window is moved up by a factor 16.
+SPHERE_DEFAULTS = replace(DEFAULTS, geometry="sphere", n_modes=(1600, 3200, 6400, 12800))
+"""The default sweep of the sphere: the disk's speeds and walls, larger mode counts."""
+
+
+_DEFAULTS_BY_GEOMETRY = {"disk": DEFAULTS, "sphere": SPHERE_DEFAULTS}
+
+
+def defaults_for(geometry: str) -> SweepSettings:
+    """The default sweep of the body ``geometry`` (:data:`DEFAULTS` for the disk)."""
+    return _DEFAULTS_BY_GEOMETRY[body_kind(geometry).geometry]
 
 
 def grid(
@@ -221,11 +251,13 @@ def grid(
     vs = settings.velocities if velocities is None else tuple(velocities)
     ns = settings.n_modes if n_modes is None else tuple(n_modes)
     return [
-        PointSpec(nu, v, a, n, settings.select, settings.integrator, settings.options)
+        PointSpec(
+            nu, v, a, n, settings.select, settings.integrator, settings.options, settings.geometry
+        )
         for nu in nus
         for n in ns
         for v in vs
-        for a in settings.alphas_at(v, alphas)
+        for a in settings.alphas_at(v, alphas, nu=nu)
     ]
 
 
@@ -255,7 +287,7 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
         raise InputError("collide_points needs points that share nu, N, selection and options")
     settings = CollisionSettings(integrator=first.integrator, **dict(first.options))
     if first.select == "ranked":
-        pool = get_modes(first.nu, count=max(RANKING_POOL, first.n_modes))
+        pool = get_modes(first.nu, count=max(RANKING_POOL, first.n_modes), geometry=first.geometry)
         out = []
         for s in specs:
             out.append(
@@ -266,7 +298,7 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
                 )
             )
         return out
-    modes = get_modes(first.nu, count=first.n_modes)
+    modes = get_modes(first.nu, count=first.n_modes, geometry=first.geometry)
     if len(specs) > 1:
         try:
             results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)
@@ -559,14 +591,23 @@ def load_grid(
     n_modes: Sequence[int] | None = None,
 ) -> GridData:
     """The ``alpha x N`` grid of one ``(nu, v)`` from the store (this code version)."""
-    als = np.asarray(settings.alphas_at(v, alphas), dtype=float)
+    als = np.asarray(settings.alphas_at(v, alphas, nu=nu), dtype=float)
     ns = np.asarray(settings.n_modes if n_modes is None else n_modes, dtype=int)
     loss = np.full((als.size, ns.size), np.nan)
     drift = np.full_like(loss, np.nan)
     missing, failures = [], []
     for i, a in enumerate(als):
         for j, n in enumerate(ns):
-            spec = PointSpec(nu, v, a, n, settings.select, settings.integrator, settings.options)
+            spec = PointSpec(
+                nu,
+                v,
+                a,
+                n,
+                settings.select,
+                settings.integrator,
+                settings.options,
+                settings.geometry,
+            )
             row = store.get(spec)
             if row is None:
                 missing.append(spec)

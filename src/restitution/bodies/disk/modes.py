@@ -133,6 +133,11 @@ class ModeSet:
         """Quasistatic contact time ``pi sqrt(ln(4/v))`` of eq. (61), ``R / c``."""
         return contact.contact_time_estimate(v)
 
+    def wall_integral(self, alpha):
+        """The edge integral of the wall's pressure profile, ``R``
+        (:func:`restitution.bodies.disk.surface.wall_integral`)."""
+        return surface.wall_integral(alpha)
+
     def take(self, index: np.ndarray) -> ModeSet:
         """Subset of modes at ``index`` (integer or boolean array), in the order given."""
         idx = np.arange(len(self))[index]

@@ -29,7 +29,7 @@ from restitution.errors import InputError
 if TYPE_CHECKING:
     from restitution.bodies.disk.modes import ModeSet
 
-__all__ = ["default_n_phi", "dense_edge_matrix", "edge_quadrature"]
+__all__ = ["default_n_phi", "dense_edge_matrix", "edge_quadrature", "wall_integral"]
 
 
 def default_n_phi(alpha: float, n_max: int) -> int:
@@ -42,6 +42,12 @@ def default_n_phi(alpha: float, n_max: int) -> int:
     """
     spacing = min(0.12 / math.sqrt(alpha), 2.0 * math.pi / (8.0 * max(n_max, 1)))
     return max(256, int(math.ceil(0.5 * math.pi / spacing)) + 1)
+
+
+def wall_integral(alpha):
+    """``int_0^{pi/2} exp(alpha (cos phi - 1)) dphi``, ``R``, approximated by the Gaussian peak
+    at ``phi = 0``: ``min(pi/2, sqrt(pi / (2 alpha)))`` (the quarter arc for soft walls)."""
+    return np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / alpha))
 
 
 def edge_quadrature(modes: ModeSet, n_phi: int) -> SurfaceQuadrature:

@@ -42,6 +42,7 @@ __all__ = [
     "legendre_and_theta_derivative",
     "max_compression_estimate",
     "sphere_quadrature",
+    "wall_integral",
 ]
 
 
@@ -103,6 +104,13 @@ def dense_surface_matrix(modes: SphereModes, theta: np.ndarray) -> np.ndarray:
     )
 
 
+def wall_integral(alpha):
+    """``int_0^{pi/2} exp(alpha (cos theta - 1)) 2 pi sin(theta) dtheta
+    = 2 pi (1 - exp(-alpha)) / alpha``, ``R^2`` (exact)."""
+    alpha = np.asarray(alpha, dtype=float)
+    return 2.0 * math.pi * -np.expm1(-alpha) / alpha
+
+
 def max_compression_estimate(v, nu: float):
     """Hertz largest compression against a rigid wall, ``R``.
 
@@ -111,7 +119,8 @@ def max_compression_estimate(v, nu: float):
     """
     e_star = 1.0 / (1.0 - nu**2)
     m = 4.0 * math.pi / 3.0
-    return (15.0 * m * np.asarray(v, dtype=float) ** 2 / (16.0 * e_star)) ** 0.4
+    out = (15.0 * m * np.asarray(v, dtype=float) ** 2 / (16.0 * e_star)) ** 0.4
+    return float(out) if np.ndim(out) == 0 else out
 
 
 def contact_time_estimate(v, nu: float):
