@@ -1,4 +1,5 @@
-"""``restitution quasistatic``: the quasistatic limit of paper section 5 at one speed."""
+"""``restitution quasistatic``: the quasistatic limit of paper section 5 at one speed, for the disk
+(2D Hertz) or the sphere (3D Hertz)."""
 
 from __future__ import annotations
 
@@ -7,14 +8,17 @@ import math
 import click
 
 from restitution.bodies.cache import check_mode_request
+from restitution.bodies.kinds import body_kind
 from restitution.cli._common import (
+    body_nu,
     dumps,
     envelope,
-    material_from,
+    geometry_option,
     note,
     nu_option,
     plane_option,
     quiet_option,
+    refuse_ignored,
 )
 from restitution.dynamics.results import UNITS
 from restitution.errors import InputError
@@ -23,6 +27,11 @@ from restitution.quasistatic.hertz import (
     contact_law,
     contact_time_rate,
     quasistatic_collision,
+)
+from restitution.quasistatic.hertz_sphere import (
+    CONTACT_TIME_CONSTANT,
+    sphere_contact_law,
+    sphere_quasistatic_collision,
 )
 
 
@@ -60,15 +69,50 @@ def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 
     }
 
 
+def sphere_quasistatic_summary(nu: float, v: float, n_modes: int = 400) -> dict:
+    """What the command reports for a sphere (3D Hertz, Rayleigh's estimate with its modes)."""
+    from restitution.bodies.cache import get_modes
+    from restitution.quasistatic.rayleigh import rayleigh_energy
+
+    law = sphere_contact_law(nu)
+    q = sphere_quasistatic_collision(law, v)
+    modes = get_modes(nu, count=n_modes, geometry="sphere")
+    ray = rayleigh_energy(modes, v, law)
+    n, l, share = ray.dominant
+    return {
+        "geometry": "sphere",
+        "nu": nu,
+        "v": v,
+        "law": law.name,
+        "E_star": law.E_star,
+        "max_compression": float(q.max_compression[0]),
+        "max_force": float(q.max_force[0]),
+        "contact_time": float(q.contact_time[0]),
+        "contact_radius": float(q.contact_radius[0]),
+        "contact_time_constant": CONTACT_TIME_CONSTANT,
+        "law_max_speed": law.max_speed(),
+        "rayleigh_energy_fraction": ray.energy_fraction,
+        "rayleigh_quadrupole_fraction": ray.quadrupole,
+        "rayleigh_dominant_mode": [n, l],
+        "rayleigh_dominant_share": share,
+        "rayleigh_n_modes": len(modes),
+        "units": dict(body_kind("sphere").units),
+    }
+
+
+_DISK_ONLY = {"law": "--law", "plane": "--plane"}
+
+
 @click.command()
 @nu_option
 @plane_option
+@geometry_option
 @click.option(
     "--v",
     "v",
     type=float,
     required=True,
-    help="Speed of the disk towards the wall in units of c = sqrt(E/rho). Two identical disks "
+    help="Speed of the body towards the wall in units of c = sqrt(E/rho). Two identical bodies "
     "approaching each other at +-v collide like this (relative speed 2v).",
 )
 @click.option(
@@ -76,9 +120,9 @@ def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 
     type=click.Choice(LAWS),
     default="paper",
     show_default=True,
-    help="2D Hertz law: paper = eq. (57) as printed (c = -1-nu); diameter = eq. (56) "
-    "integrated correctly (c = -1); centre = approach of the centre of mass "
-    "(c = -1-2/pi-nu/4), see docs/quasistatic.md.",
+    help="2D Hertz law of the disk: paper = eq. (57) as printed (c = -1-nu); diameter = eq. "
+    "(56) integrated correctly (c = -1); centre = approach of the centre of mass "
+    "(c = -1-2/pi-nu/4), see docs/quasistatic.md. A sphere has Hertz's 3D law only.",
 )
 @click.option(
     "--modes",
@@ -90,22 +134,38 @@ def quasistatic_summary(nu: float, v: float, law: str = "paper", n_modes: int = 
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of text.")
 @quiet_option
-def quasistatic(nu, plane, v, law, n_modes, as_json):
-    """Quasistatic collision (2D Hertz law) and Rayleigh's energy estimate at speed V.
+@click.pass_context
+def quasistatic(ctx, nu, plane, geometry, v, law, n_modes, as_json):
+    """Quasistatic collision (2D Hertz law for the disk, 3D Hertz for the sphere) and
+    Rayleigh's energy estimate at speed V.
 
-    Reports the maximal compression, the contact time and the eq. (61) estimates, and the
-    fraction of the kinetic energy left in the modes when the quasistatic force drives them
-    at the contact point (paper section 5).
+    Reports the maximal compression, the contact time (and for the disk the eq. (61)
+    estimates), and the fraction of the kinetic energy left in the modes when the quasistatic
+    force drives them at the contact point (paper section 5).
     """
+    if geometry != "disk":
+        refuse_ignored(
+            ctx,
+            _DISK_ONLY,
+            f"for a {geometry}: --law and --plane apply to disks only (a {geometry} has "
+            "Hertz's 3D law, and its --nu is already three-dimensional); leave them out",
+        )
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
-    material = material_from(nu, plane)
-    check_mode_request(material.nu, n_modes)
-    out = quasistatic_summary(material.nu, v, law, n_modes)
+    body = body_nu(nu, plane, geometry)
+    check_mode_request(body, n_modes, geometry=geometry)
+    if geometry == "sphere":
+        _sphere(body, v, n_modes, as_json)
+        return
+    if geometry != "disk":
+        raise InputError(f"no quasistatic theory for a {geometry} yet; use a disk or a sphere")
+    out = quasistatic_summary(body, v, law, n_modes)
     if not math.isfinite(out["contact_time"]):
         raise InputError("contact time is not finite; use a smaller --v")
     if as_json:
-        inputs = {"nu": material.nu, "plane": plane, "v": v, "law": law, "modes": n_modes}
+        inputs = {
+            "geometry": geometry, "nu": body, "plane": plane, "v": v, "law": law, "modes": n_modes,
+        }  # fmt: skip
         click.echo(dumps(envelope("quasistatic", inputs, out)))
         return
     click.echo(
@@ -122,6 +182,32 @@ def quasistatic(nu, plane, v, law, n_modes, as_json):
         f"{100 * out['rayleigh_dominant_share']:.1f}% in mode "
         f"(n={out['rayleigh_dominant_mode'][0]}, l={out['rayleigh_dominant_mode'][1]})"
     )
+    _note_validity(out)
+
+
+def _sphere(nu: float, v: float, n_modes: int, as_json: bool) -> None:
+    out = sphere_quasistatic_summary(nu, v, n_modes)
+    if as_json:
+        inputs = {"geometry": "sphere", "nu": nu, "v": v, "modes": n_modes}
+        click.echo(dumps(envelope("quasistatic", inputs, out)))
+        return
+    n, l = out["rayleigh_dominant_mode"]
+    click.echo(
+        f"quasistatic collision of a sphere, nu = {nu:g}, v = {v:g} c towards the wall, "
+        f"3D Hertz law (E* = {out['E_star']:.6g} E)\n"
+        f"  max compression  {out['max_compression']:.6g} R   (contact radius "
+        f"{out['contact_radius']:.6g} R)\n"
+        f"  contact time     {out['contact_time']:.6g} R/c (= "
+        f"{out['contact_time_constant']:.6f} delta_max / v)\n"
+        f"  max force        {out['max_force']:.6g} E R^2\n"
+        f"  Rayleigh: energy left in {out['rayleigh_n_modes']} modes = "
+        f"{out['rayleigh_energy_fraction']:.6g} of (m/2) v^2, "
+        f"{100 * out['rayleigh_dominant_share']:.1f}% in mode (l={l}, n={n})"
+    )
+    _note_validity(out)
+
+
+def _note_validity(out: dict) -> None:
     if out["rayleigh_energy_fraction"] > 0.1:
         note(
             "  note: a fraction this large is outside the first-order validity of Rayleigh's "

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -95,6 +96,8 @@ class HertzLaw:
     name: str = "custom"
     E: float = 1.0
     R: float = 1.0
+
+    geometry: ClassVar[str] = "disk"
 
     # ---- limits of the monotonic branch ------------------------------------------------
     @property

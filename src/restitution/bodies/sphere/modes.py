@@ -30,9 +30,9 @@ minimisation that splits near-degenerate pairs. Roots are polished by
 :func:`scipy.optimize.elementwise.find_root`.
 
 Order limit: :func:`scipy.special.spherical_jn` underflows for ``l >> h r``. The scan of order
-``l`` starts at ``0.4 l c_R`` (below its lowest root, ``~ (l + 1/2) c_R``); orders where the
-columns underflow there (``|j_l| < 1e-280``, about ``l > 380`` at ``nu = 0.25``) are refused
-with :class:`~restitution.errors.InputError`.
+``l`` starts at ``0.8 l c_R`` (below its lowest root, ``~ (l + 1/2) c_R``, measured >= 1.02
+``l c_R``); orders where the columns underflow there (``|j_l| < 1e-280``) are refused with
+:class:`~restitution.errors.InputError`. 12800 modes at ``nu = 0.3`` reach ``l = 300``.
 
 Normalisation: ``int rho |u|^2 dV = m = 4 pi / 3``, i.e.
 ``(2 pi) (2 / (2l + 1)) int_0^1 r^2 [U^2 + L V^2] dr = 4 pi / 3``, so that the kinetic energy is
@@ -341,7 +341,7 @@ class SphereModes:
         return surface.dense_surface_matrix(self, nodes)
 
     def contact_time_estimate(self, v):
-        """Hertz contact time ``2.943 delta_max / v`` against a rigid wall, ``R / c``."""
+        """Hertz contact time ``2.9433 delta_max / v`` against a rigid wall, ``R / c``."""
         return surface.contact_time_estimate(v, self.nu)
 
     def wall_integral(self, alpha):

@@ -1,0 +1,201 @@
+"""The quasistatic force pulse at the contact point, for any body, and its drive of the modes.
+
+Units: ``E = rho = R = 1`` of the body's own constants; times in ``R / c``; forces in ``E R``
+(disk, per unit thickness) or ``E R^2`` (sphere).
+
+A slow collision presses the body's contact point with the force ``P(t) >= 0`` of the
+quasistatic equation of motion ``m delta'' = -P(delta)`` for ``0 <= t <= tau``; by time reversal
+the pulse is symmetric about ``tau / 2``. Its drive of a mode of frequency ``omega`` is::
+
+    I(omega) = int_0^{tau/2} P(t) cos(omega (tau/2 - t)) dt,
+    |int_0^tau P(t) e^{-i omega t} dt| = 2 |I(omega)|.
+
+What the two geometries share lives here: the protocol of a pulse (:class:`ForcePulse`), the
+quadrature of ``I`` (:func:`pulse_drive`), and the table of which contact law a body of each
+geometry takes (:data:`THEORIES`): the 2D Hertz law of :mod:`restitution.quasistatic.hertz` for
+the disk (default ``"paper"``, eq. 57 as printed), Hertz's 3D law of
+:mod:`restitution.quasistatic.hertz_sphere` for the sphere.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+from restitution.errors import InputError
+from restitution.quasistatic.hertz import LAWS, HertzLaw, contact_law, quasistatic_trajectory
+from restitution.quasistatic.hertz_sphere import (
+    SPHERE_MASS,
+    SphereHertzLaw,
+    sphere_contact_law,
+    sphere_quasistatic_trajectory,
+)
+
+__all__ = [
+    "THEORIES",
+    "ContactLaw",
+    "ForcePulse",
+    "QuasistaticTheory",
+    "contact_law_for",
+    "force_pulse",
+    "pulse_drive",
+]
+
+ContactLaw = HertzLaw | SphereHertzLaw
+"""A quasistatic contact law of one of the geometries."""
+
+
+@runtime_checkable
+class ForcePulse(Protocol):
+    """A force pulse ``P(t)`` on ``[0, contact_time]``, symmetric about its middle.
+
+    :class:`~restitution.quasistatic.hertz.QuasistaticTrajectory` (disk, DOP853) and
+    :class:`~restitution.quasistatic.hertz_sphere.SphereQuasistaticTrajectory` (sphere, closed
+    form) are pulses.
+    """
+
+    contact_time: float  # tau, R / c
+    max_compression: float  # delta_max, R
+
+    def force(self, t: np.ndarray) -> np.ndarray:
+        """``P(t)``, zero outside ``[0, contact_time]``."""
+
+
+@dataclass(frozen=True)
+class QuasistaticTheory:
+    """The quasistatic contact theory of one geometry.
+
+    Attributes
+    ----------
+    law_type : type
+        The class of its contact laws.
+    laws : tuple of str
+        Names :attr:`make_law` accepts.
+    default_law : str
+        The law taken when none is named.
+    make_law : callable
+        ``make_law(nu, name)`` -> law, at the body's own Poisson number.
+    trajectory : callable
+        ``trajectory(law, v, mass=...)`` -> :class:`ForcePulse`.
+    mass : float
+        The body's mass in reduced units (the default of the trajectory).
+    """
+
+    law_type: type
+    laws: tuple[str, ...]
+    default_law: str
+    make_law: Callable[[float, str], ContactLaw]
+    trajectory: Callable[..., ForcePulse]
+    mass: float
+
+
+THEORIES: dict[str, QuasistaticTheory] = {
+    "disk": QuasistaticTheory(
+        law_type=HertzLaw,
+        laws=LAWS,
+        default_law="paper",
+        make_law=lambda nu, name: contact_law(nu, name),
+        trajectory=quasistatic_trajectory,
+        mass=math.pi,
+    ),
+    "sphere": QuasistaticTheory(
+        law_type=SphereHertzLaw,
+        laws=("hertz",),
+        default_law="hertz",
+        make_law=lambda nu, name: sphere_contact_law(nu),
+        trajectory=sphere_quasistatic_trajectory,
+        mass=SPHERE_MASS,
+    ),
+}
+"""The quasistatic theory of every geometry that has one."""
+
+
+def _theory(geometry: str) -> QuasistaticTheory:
+    theory = THEORIES.get(geometry)
+    if theory is None:
+        raise InputError(
+            f"no quasistatic contact theory for the geometry {geometry!r}; there is one for "
+            f"{', '.join(THEORIES)}"
+        )
+    return theory
+
+
+def contact_law_for(geometry: str, nu: float, law: ContactLaw | str | None = None) -> ContactLaw:
+    """The contact law of a body of ``geometry`` and Poisson number ``nu``.
+
+    Parameters
+    ----------
+    geometry : str
+        ``"disk"`` or ``"sphere"``.
+    nu : float
+        The body's Poisson number (the disk's two-dimensional one, the sphere's 3D one).
+    law : law object, str or None
+        A law (checked to suit the geometry), a law's name, or ``None`` for the geometry's
+        default (``"paper"`` for the disk, ``"hertz"`` for the sphere).
+    """
+    theory = _theory(geometry)
+    if law is None:
+        law = theory.default_law
+    if isinstance(law, str):
+        if law not in theory.laws:
+            raise InputError(
+                f"unknown contact law {law!r} for the {geometry}; choose one of "
+                f"{', '.join(theory.laws)}"
+            )
+        return theory.make_law(nu, law)
+    if not isinstance(law, theory.law_type):
+        raise InputError(
+            f"a {type(law).__name__} is not a contact law of the {geometry}; give a "
+            f"{theory.law_type.__name__} or one of {', '.join(theory.laws)}"
+        )
+    return law
+
+
+def force_pulse(law: ContactLaw, v: float, *, mass: float | None = None) -> ForcePulse:
+    """The quasistatic pulse of ``law`` at speed ``v`` (``c``) for a body of ``mass`` (default:
+    the law's geometry's reduced mass, ``pi`` for the disk, ``4 pi / 3`` for the sphere)."""
+    theory = _theory(getattr(law, "geometry", None))
+    return theory.trajectory(law, v, mass=theory.mass if mass is None else mass)
+
+
+def _nodes(half: float, omega_max: float, per_panel: int = 16) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights on ``[0, half]``: uniform panels of at most a third of a
+    period of ``omega_max`` (and at most ``half/64``), the first one split geometrically
+    towards ``t = 0``, where the pulse is not smooth (``t / ln(1/t)`` for the disk,
+    ``t^(3/2)`` for the sphere)."""
+    width = min(2.0 * math.pi / (3.0 * max(omega_max, 1e-12)), half / 64.0)
+    n_panels = int(math.ceil(half / width))
+    edges = np.linspace(0.0, half, n_panels + 1)
+    first = edges[1] * np.geomspace(1e-12, 1.0, 24)
+    edges = np.concatenate([[0.0], first, edges[2:]])
+    x, w = np.polynomial.legendre.leggauss(per_panel)
+    a, b = edges[:-1, None], edges[1:, None]
+    t = 0.5 * (b - a) * x[None, :] + 0.5 * (a + b)
+    wt = 0.5 * (b - a) * w[None, :]
+    return t.ravel(), wt.ravel()
+
+
+def pulse_drive(pulse: ForcePulse, omega: np.ndarray) -> np.ndarray:
+    """``I_k = int_0^{tau/2} P(t) cos(omega_k (tau/2 - t)) dt`` of a symmetric pulse.
+
+    Gauss-Legendre panels on ``[0, tau/2]`` (:func:`_nodes`); exact up to the quadrature.
+
+    Parameters
+    ----------
+    pulse : ForcePulse
+    omega : numpy.ndarray, shape (N,)
+        Frequencies, ``c / R``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (N,)
+        Force times time (``E R^2 / c`` for the disk, ``E R^3 / c`` for the sphere).
+    """
+    half = 0.5 * pulse.contact_time
+    t, w = _nodes(half, float(np.max(omega, initial=1.0)))
+    P = pulse.force(t)
+    return np.cos(np.outer(omega, half - t)) @ (w * P)
