@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick law test test-slow lint bench clean
+.PHONY: setup paper paper-quick law law-sphere sphere-figures test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -26,6 +26,14 @@ paper-quick: $(STAMP)
 law: $(STAMP)
 	$(BIN)/python -m restitution.laws.production
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
+
+# The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline; about 50 minutes.
+law-sphere: $(STAMP)
+	$(BIN)/python -m restitution.laws.production --geometry sphere
+
+# The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
+sphere-figures: $(STAMP)
+	$(BIN)/python -m restitution.reproduction.figures.sphere_convergence --figures docs/figures
 
 test: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q

@@ -9,6 +9,8 @@ single  One collision, nu = 0.33, v = 0.1, alpha = 500, 1600 lowest modes, |eps 
         compiled kernel, the NumPy reference path, scipy's DOP853 with a dense right-hand side
         (restitution.dynamics.reference, as a user would write it) and DOP853 given the same
         order-by-order wall evaluation as the modal solver.
+sphere  The same for the sphere (issue 26's target, >= 20x DOP853): nu = 0.3 (3D), v = 0.1,
+        alpha = 500, 1600 lowest axisymmetric spheroidal modes, |eps error| <= 1e-6.
 batch   32 speeds 0.02-0.3 at alpha = 500 on one mode set (N = 1600): one compiled batch
         against DOP853 one collision at a time (8 of the 32 speeds timed, times 4).
 large   N = 1e4, v = 0.01, alpha = 1634: compiled kernel against the NumPy path; the kernel
@@ -26,7 +28,7 @@ modes   Building 1e4 modes at nu = 0.33: the scale-free Bessel-pair scan against
         scipy-jv scan, loaded from git (``--baseline-rev``, default: the last commit before
         the change).
 
-Run: python benchmarks/bench_kernel.py [single batch large huge kernel modes] [--rounds 3]
+Run: python benchmarks/bench_kernel.py [single sphere batch large huge kernel modes] [--rounds 3]
 """
 
 from __future__ import annotations
@@ -52,6 +54,7 @@ from restitution.bodies.disk.contact import max_compression_estimate  # noqa: E4
 from restitution.dynamics.reference import collide_dop853  # noqa: E402
 
 NU, V, ALPHA, TARGET = 0.33, 0.1, 500.0, 1e-6
+SPHERE_NU = 0.3  # three-dimensional, steel-like
 BASELINE_REV = "4fcd9d3"  # last commit with the scipy-jv mode scan
 KERNEL_REV = "84c90a9"  # last commit before two-thread single collisions (68ac2fc: batches)
 
@@ -87,9 +90,13 @@ def _tighten(label: str, run, ref: float, start: float, floor: float) -> float:
         tol /= 10.0
 
 
-def single(rounds: int) -> None:
-    print(f"== single collision, N = 1600, v = {V}, alpha = {ALPHA}; {_load()}")
-    modes = get_modes(NU, count=1600)
+def single(rounds: int, geometry: str = "disk") -> None:
+    nu = SPHERE_NU if geometry == "sphere" else NU
+    print(
+        f"== single collision of a {geometry}, nu = {nu}, N = 1600, v = {V}, alpha = {ALPHA}; "
+        f"{_load()}"
+    )
+    modes = get_modes(nu, count=1600, geometry=geometry)
     ref = collide(modes, V, ALPHA, energy_tol=1e-10).epsilon
     print(f"  reference epsilon (split4, energy_tol 1e-10): {ref:.10f}")
     tol = _tighten(
@@ -365,7 +372,9 @@ def modes(rounds: int, rev: str) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
-        "sections", nargs="*", default=["single", "batch", "large", "huge", "kernel", "modes"]
+        "sections",
+        nargs="*",
+        default=["single", "sphere", "batch", "large", "huge", "kernel", "modes"],
     )
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--baseline-rev", default=BASELINE_REV)
@@ -379,6 +388,8 @@ def main() -> None:
             modes(args.rounds, args.baseline_rev)
         elif name == "kernel":
             kernel(args.rounds, args.kernel_rev)
+        elif name == "sphere":
+            single(args.rounds, "sphere")
         else:
             {"single": single, "batch": batch, "large": large, "huge": huge}[name](args.rounds)
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024

@@ -19,7 +19,7 @@ from restitution.cli import main
 from restitution.dynamics.collision import CollisionSettings, estimate_work
 from restitution.errors import InputError
 from restitution.limits.curves import epsilon_at
-from restitution.limits.defaults import walls_at
+from restitution.limits.defaults import SPHERE_ALPHA_PRODUCTS, walls_at
 from restitution.limits.store import PointSpec, Store
 from restitution.limits.sweep import SPHERE_DEFAULTS, SweepSettings, defaults_for
 
@@ -119,12 +119,12 @@ def test_the_work_estimate_of_a_sphere_brackets_the_run():
     assert run.n_steps / 3 < est.steps < 3 * run.n_steps
 
 
-def test_sphere_defaults_differ_only_in_the_body_and_the_mode_counts():
+def test_sphere_defaults_differ_in_the_body_the_walls_and_the_mode_counts():
     assert defaults_for("sphere") is SPHERE_DEFAULTS
     assert SPHERE_DEFAULTS.geometry == "sphere"
     disk = defaults_for("disk")
     assert SPHERE_DEFAULTS.velocities == disk.velocities
-    assert SPHERE_DEFAULTS.alphas == disk.alphas
+    assert SPHERE_DEFAULTS.alphas == SPHERE_ALPHA_PRODUCTS == (80.0, 160.0, 320.0)
 
 
 def test_epsilon_at_extrapolates_a_sphere(tmp_path):
@@ -188,3 +188,24 @@ def test_cli_refuses_disk_only_options_for_a_sphere(cache, capsys, args, message
     code, out, err = _run(capsys, args[0], "--geometry", "sphere", *args[1:])
     assert code == 2 and out == ""
     assert err.startswith("error: ") and message in err and err.count("\n") == 1
+
+
+def test_the_convergence_figure_measures_what_it_draws(tmp_path):
+    from restitution.limits.order import local_exponents, power_law_fit
+    from restitution.reproduction.figures import sphere_convergence
+
+    ladder = (100, 150, 200, 300, 400, 600, 800)
+    series = sphere_convergence.compute(
+        0.3, (0.1,), (80.0,), ladder, store=tmp_path / "s.sqlite", progress=False, fit_from=100
+    )
+    (s,) = series
+    assert s.alpha == pytest.approx(80 / max_compression_estimate(0.1, 0.3))
+    assert np.all(np.isfinite(s.loss)) and np.all((s.loss > 0) & (s.loss < 0.05))
+    # The drawn exponents and fit are those of the stored losses.
+    mid, p = local_exponents(ladder, s.loss)
+    np.testing.assert_array_equal(s.n_mid, mid)
+    np.testing.assert_array_equal(s.exponent, p)
+    assert s.fit == power_law_fit(ladder, s.loss)
+    path = tmp_path / "conv.png"
+    sphere_convergence.plot(series, 0.3, path)
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

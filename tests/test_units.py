@@ -53,7 +53,8 @@ def test_partner_sets_the_speed_scale():
 @pytest.mark.parametrize(
     "kwargs, match",
     [
-        (dict(E=1.0, nu=0.3, rho=1.0, geometry="sphere"), "cylinder"),
+        (dict(E=1.0, nu=0.3, rho=1.0, geometry="cube"), "cylinder"),
+        (dict(E=1.0, nu=0.5, rho=1.0, geometry="sphere"), r"\(-1, 0.5\)"),
         (dict(E=-1.0, nu=0.3, rho=1.0, geometry="cylinder"), "positive"),
         (dict(E=1.0, nu=0.5, rho=1.0, geometry="cylinder"), "nu < 0.5"),
         (dict(E=1.0, nu=0.3, rho=0.0, geometry="thin-disk"), "density"),

@@ -13,7 +13,6 @@ from pathlib import Path
 
 import click
 
-from restitution.bodies.material import Material
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
@@ -94,10 +93,6 @@ def _settings(
     }
     base = defaults_for(geometry)
     return replace(base, **{k: v for k, v in changes.items() if v is not None})
-
-
-def _check_nu(nu: float) -> float:
-    return Material(nu=nu).nu  # raises InputError naming the allowed range
 
 
 def _executor_options(f):
@@ -366,8 +361,10 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
     "nus",
     type=float,
     multiple=True,
-    help="Two-dimensional Poisson number(s) (default 0.33 0.9).",
+    help="Poisson number(s): two-dimensional for a disk (default 0.33 0.9), three-dimensional "
+    "for a sphere (required).",
 )
+@geometry_option
 @click.option(
     "--v",
     "velocities",
@@ -393,6 +390,7 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
 @_executor_options
 def curve(
     nus,
+    geometry,
     velocities,
     out,
     fmt,
@@ -408,10 +406,13 @@ def curve(
 ):
     """epsilon(v) for one or more Poisson numbers: Fig. 1, Figs. 7 and 8, and exports.
 
-    v is the disk's speed towards the wall in units of c = sqrt(E/rho). Writes
-    fig01_epsilon, fig07_alpha_nu*, fig08_modes_nu*, and law_nu*.json / .csv / .txt (the
-    table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out. Exit status 1
-    when collisions failed; with --strict, 3 when a speed is not asymptotic.
+    v is the body's speed towards the wall in units of c = sqrt(E/rho) of its own constants.
+    Writes fig01_epsilon, fig07_alpha_nu*, fig08_modes_nu*, and law_nu*.json / .csv / .txt (the
+    table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out; for a sphere
+    (--geometry sphere) the names carry the body: fig01_epsilon_sphere,
+    fig07_alpha_sphere_nu*, fig08_modes_sphere_nu*, law_sphere_nu*.json / .csv / .txt (the
+    file `restitution law --geometry sphere --law-file` reads). Exit status 1 when collisions
+    failed; with --strict, 3 when a speed is not asymptotic.
     """
     from restitution.laws.law import EpsilonLaw, law_filename
     from restitution.limits.curves import compute_curves
@@ -419,8 +420,19 @@ def curve(
     from restitution.limits.sweep import grid
     from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes
 
-    nus = tuple(_check_nu(nu) for nu in (nus or (0.33, 0.9)))
-    settings = _settings(velocities=velocities, alphas=alphas, modes=modes, alpha_scale=alpha_scale)
+    if not nus and geometry != "disk":
+        raise InputError(
+            f"give the {geometry}'s Poisson number(s) with --nu (three-dimensional, in "
+            "(-1, 0.5)); the default 0.33 0.9 is the disk's"
+        )
+    nus = tuple(body_nu(nu, None, geometry) for nu in (nus or (0.33, 0.9)))
+    settings = _settings(velocities, alphas, modes, alpha_scale, geometry)
+    # The figures draw the curves' numbers whatever the body; a sphere's say so and are named
+    # apart from the disk's, so one --out can hold both.
+    tag, body_note = "", ""
+    if geometry != "disk":
+        tag = f"_{geometry}"
+        body_note = f"{geometry}: nu is its 3D Poisson number, v in c = sqrt(E/rho) of it"
     check_output_dir(out, "--out")  # before the sweep, not after it
     points = grid(nus, settings)
     report = _sweep(points, settings, store, workers, scheduler, progress, retry_failed)
@@ -431,7 +443,9 @@ def curve(
     with writing(out, "--out"):
         written = [
             fig01_epsilon.plot(
-                fig01_epsilon.compute(nus, curves=curves), out / f"fig01_epsilon.{fmt}"
+                fig01_epsilon.compute(nus, curves=curves),
+                out / f"fig01_epsilon{tag}.{fmt}",
+                note=body_note,
             )
         ]
     asymptotic = True
@@ -440,15 +454,20 @@ def curve(
         with writing(out, "--out"):
             written.append(
                 fig07_alpha.plot(
-                    fig07_alpha.compute(nu, curve=c), out / f"fig07_alpha_nu{nu:g}.{fmt}"
+                    fig07_alpha.compute(nu, curve=c),
+                    out / f"fig07_alpha{tag}_nu{nu:g}.{fmt}",
+                    note=body_note,
                 )
             )
             written.append(
                 fig08_modes.plot(
-                    fig08_modes.compute(nu, curve=c), out / f"fig08_modes_nu{nu:g}.{fmt}"
+                    fig08_modes.compute(nu, curve=c),
+                    out / f"fig08_modes{tag}_nu{nu:g}.{fmt}",
+                    note=body_note,
                 )
             )
-        click.echo(f"nu = {nu:g}:   v/c    epsilon     error   asymptotic")
+        body = "" if geometry == "disk" else f"{geometry}, "
+        click.echo(f"{body}nu = {nu:g}:   v/c    epsilon     error   asymptotic")
         for v, lim in zip(c.velocities, c.limits, strict=True):
             asymptotic &= bool(lim.asymptotic_ok)
             eps = "nan" if not math.isfinite(lim.epsilon) else f"{lim.epsilon:.5f}"
@@ -459,9 +478,9 @@ def curve(
         try:
             law = EpsilonLaw.from_curve(c)
         except Exception as exc:  # noqa: BLE001 - report and go on with the other nu
-            note(f"warning: no law for nu = {nu:g}: {exc}")
+            note(f"warning: no {geometry} law for nu = {nu:g}: {exc}")
             continue
-        stem = Path(law_filename(nu)).stem
+        stem = Path(law_filename(nu, geometry)).stem
         with writing(out, "--out"):
             written += [
                 law.to_json(out / f"{stem}.json"),

@@ -26,9 +26,11 @@ class _LawCommand(_ListCommand):
 @click.option("--rho", type=float, required=True, help="Density of the 3D material, kg/m^3.")
 @click.option(
     "--geometry",
-    type=click.Choice(["cylinder", "thin-disk"]),
+    type=click.Choice(["cylinder", "thin-disk", "sphere"]),
     required=True,
-    help="Long cylinder hit along a diameter (plane strain) or thin disk (plane stress).",
+    help="Long cylinder hit along a diameter (the disk in plane strain: nu_2d = nu/(1-nu), "
+    "c = sqrt(E/((1-nu^2) rho))), thin disk (plane stress: nu_2d = nu, c = sqrt(E/rho)) or "
+    "sphere (the sphere's law for nu itself, c = sqrt(E/rho)).",
 )
 @click.option(
     "--against",
@@ -49,7 +51,8 @@ class _LawCommand(_ListCommand):
     "--law-file",
     type=click.Path(dir_okay=False, exists=True, path_type=Path),
     default=None,
-    help="A law JSON from `restitution curve` for this material's 2D Poisson number.",
+    help="A law JSON from `restitution curve` for this material: the disk's law for its 2D "
+    "Poisson number (cylinder, thin disk), the sphere's (`curve --geometry sphere`) for nu.",
 )
 @click.option(
     "--export",
@@ -89,8 +92,9 @@ def law(
     """Coefficient of restitution of a real material at impact speeds in m/s.
 
     Every speed comes with v/c, epsilon, its error and a status saying where the number comes
-    from. A 2D Poisson number without a law is refused with the command that computes it.
-    Example (a glass cylinder against a wall):
+    from. A cylinder or thin disk is served by the disk's laws (2D Poisson number), a sphere by
+    the sphere's (its own nu); a Poisson number without a law is refused with the command that
+    computes it. Example (a glass cylinder against a wall):
 
     \b
     restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
@@ -120,8 +124,8 @@ def law(
     g = s.grain
     click.echo(g.describe())
     click.echo(
-        f"against {against}: {result['against_meaning']}; law nu_2d = {float(s.law.nu):g} "
-        f"({result['law']['source']})"
+        f"against {against}: {result['against_meaning']}; {g.body} law "
+        f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']})"
     )
     click.echo("  speed [m/s]        v/c     epsilon      error   status")
     notes = {}

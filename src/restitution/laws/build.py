@@ -27,12 +27,13 @@ def law_from_store(
     Parameters
     ----------
     nu : float
-        Two-dimensional Poisson number.
+        Poisson number of the body ``settings.geometry`` (two-dimensional for the disk,
+        three-dimensional for the sphere).
     store : Store or path
         The result store; nothing is computed, missing points are left out (and flag their
         speed).
     settings : SweepSettings
-        Grid of the store's sweep.
+        Grid of the store's sweep, and the body (``settings.geometry``) the law is of.
 
     Returns
     -------

@@ -1,8 +1,9 @@
 """epsilon in the forms simulation codes read, in SI units.
 
 Every export starts from an :class:`~restitution.laws.si_law.SILaw` (material, geometry, partner,
-reduced-unit law) and carries, in its comments: the material, the geometry, what the speed
-means (wall or two grains), ``c``, the law's source and the package version.
+reduced-unit law) and carries, in its comments: the material, the geometry and the body of the
+law (a cylinder or thin disk is served by the disk's law, a sphere by the sphere's), what the
+speed means (wall or two grains), ``c``, the law's source and the package version.
 
 * :func:`speed_table` / :func:`write_table` / :func:`write_csv`: ``speed_m_s epsilon
   [epsilon_err]`` on a uniform grid of the interpolant, for codes that interpolate linearly
@@ -57,17 +58,29 @@ __all__ = [
 ]
 
 
+_BODY_WORDS = {
+    "cylinder": "long elastic cylinder hit along a diameter (the 2D disk in plane strain)",
+    "thin-disk": "thin elastic disk hit on its rim (the 2D disk in plane stress)",
+    "sphere": "elastic sphere (3D)",
+}
+
+
 def _header(s: SILaw) -> list[str]:
     g = s.grain
     lo, hi = s.computed_range_m_s
+    if g.body == "disk":
+        law_line = f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}"
+    else:
+        law_line = f"law: the {g.body}'s, nu = {float(s.law.nu):g}, {s.law_source}"
     return [
         f"restitution {__version__}, {datetime.datetime.now(datetime.UTC):%Y-%m-%dT%H:%M:%SZ}: "
         "coefficient of restitution of an elastic grain from its vibrational modes "
         "(Gerl & Zippelius model)",
+        f"grain: {g.geometry}: {_BODY_WORDS[g.geometry]}",
         f"material: {g.describe()}",
         f"partner: {s.against}: {PARTNERS[s.against]}; speed unit k c = "
         f"{s.speed_scale_m_s:.6g} m/s",
-        f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}",
+        law_line,
         f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; the law serves nothing outside them",
     ]
 
@@ -480,6 +493,16 @@ def _comment(s: SILaw, c: Constant, mark: str) -> str:
     return "\n".join(f"{mark} {line}" for line in lines)
 
 
+def _particles(s: SILaw) -> str:
+    """What the DEM code's particles stand for, for the snippets' comments."""
+    if s.grain.body == "sphere":
+        return "this law is the sphere's: it applies to the code's spherical particles"
+    return (
+        f"this law is the {s.grain.geometry}'s (a 2D disk), not a sphere's: use it for "
+        "disk-shaped grains (e.g. a 2D simulation)"
+    )
+
+
 def lammps_snippet(s: SILaw, c: Constant) -> str:
     """Input lines for LAMMPS ``pair_style granular`` (GRANULAR package), SI units.
 
@@ -491,6 +514,7 @@ def lammps_snippet(s: SILaw, c: Constant) -> str:
     return "\n".join(
         [
             _comment(s, c, "#"),
+            f"# {_particles(s)}",
             "# needs: units si, atom_style sphere, comm_modify vel yes",
             "pair_style granular",
             f"pair_coeff * * hertz/material {g.E:.8g} {c.epsilon:.8f} {g.nu:.8g} "
@@ -506,6 +530,7 @@ def liggghts_snippet(s: SILaw, c: Constant) -> str:
     return "\n".join(
         [
             _comment(s, c, "#"),
+            f"# {_particles(s)}",
             f"fix m1 all property/global youngsModulus peratomtype {g.E:.8g}",
             f"fix m2 all property/global poissonsRatio peratomtype {g.nu:.8g}",
             f"fix m3 all property/global coefficientRestitution peratomtypepair 1 {c.epsilon:.8f}",
@@ -517,13 +542,26 @@ def liggghts_snippet(s: SILaw, c: Constant) -> str:
     )
 
 
+def _mercury_mass(s: SILaw) -> str:
+    """What MercuryDPM's ``mass`` argument must be for this partner and body.
+
+    ``setCollisionTimeAndRestitutionCoefficient(tc, eps, mass)`` takes the effective mass
+    ``2 m1 m2 / (m1 + m2)`` (MercuryDPM's ``LinearViscoelasticNormalSpecies``): the particle
+    mass ``m`` for two identical grains, ``2 m`` for a grain against a wall (``m2`` infinite).
+    """
+    m = "m = 4/3 pi rho R^3" if s.grain.body == "sphere" else "m the particle mass"
+    which = "two identical grains: m" if s.against == "grain" else "a grain on a wall: 2 m"
+    return f"mass: the effective mass 2 m1 m2 / (m1 + m2) (kg); for {which}, {m}"
+
+
 def mercurydpm_snippet(s: SILaw, c: Constant) -> str:
     """C++ lines for MercuryDPM (``LinearViscoelasticSpecies``; choose the collision time)."""
     g = s.grain
     return "\n".join(
         [
             _comment(s, c, "//"),
-            "// tc: your collision time (s); mass: the particle mass (kg)",
+            f"// {_particles(s)}",
+            f"// tc: your collision time (s); {_mercury_mass(s)}",
             "auto species = speciesHandler.copyAndAddObject(LinearViscoelasticSpecies());",
             f"species->setDensity({g.rho:.8g});",
             f"species->setCollisionTimeAndRestitutionCoefficient(tc, {c.epsilon:.8f}, mass);",
@@ -538,6 +576,7 @@ def yade_snippet(s: SILaw, c: Constant) -> str:
     return "\n".join(
         [
             _comment(s, c, "#"),
+            f"# {_particles(s)}",
             f"O.materials.append(FrictMat(young={g.E:.8g}, poisson={g.nu:.8g}, "
             f"density={g.rho:.8g}, frictionAngle=0.0))",
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={c.epsilon:.8f})",

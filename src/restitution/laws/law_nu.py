@@ -1,7 +1,9 @@
-"""epsilon(v) at any two-dimensional Poisson number: shipped laws and their interpolation in nu.
+"""epsilon(v) at any Poisson number of a body: shipped laws and their interpolation in nu.
 
-The package ships laws ``epsilon(v)`` on a grid of 2D Poisson numbers
-(``restitution/laws/data/law_nu<nu>.json``, :func:`restitution.laws.law`). :func:`law_for` serves
+The package ships laws ``epsilon(v)`` on a grid of Poisson numbers of each body: the disk's 2D
+ones (``restitution/laws/data/law_nu<nu>.json``) and the sphere's 3D ones
+(``law_sphere_nu<nu>.json``), :func:`restitution.laws.law`. :func:`law_for` serves, for the
+body ``geometry`` and from its laws only,
 
 * a shipped law when ``nu`` is within :data:`NU_MATCH` of a grid value (the 3D Poisson number is
   never known that well, and the JSON of every served point names the law's own ``nu``);
@@ -13,8 +15,8 @@ The package ships laws ``epsilon(v)`` on a grid of 2D Poisson numbers
   (conservative: the left-out prediction spans twice the spacing; and a single neighbour's
   leave-one-out error can vanish by accident at one speed, as at 0.7 for ``v = 1e-3``);
 * else an :class:`~restitution.errors.InputError` that names the shipped values and the command
-  that computes the law (``restitution curve --nu NU --out DIR``), whose JSON is then served with
-  ``path=``.
+  that computes the law (``restitution curve [--geometry sphere] --nu NU --out DIR``), whose JSON
+  is then served with ``path=``.
 """
 
 from __future__ import annotations
@@ -27,27 +29,31 @@ from importlib import resources
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 
+from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
-from restitution.laws.law import NU_MATCH, EpsilonLaw, law, law_filename
+from restitution.laws.law import (
+    NU_MATCH,
+    EpsilonLaw,
+    _curve_command,
+    _file_nu,
+    _refuse_other_body,
+    law,
+    law_filename,
+)
 
 __all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_nus"]
 
 
-def shipped_nus() -> list[float]:
-    """The 2D Poisson numbers with a law in ``restitution/laws/data``, increasing."""
+def shipped_nus(geometry: str = "disk") -> list[float]:
+    """The Poisson numbers with a law of the body ``geometry`` in ``restitution/laws/data``
+    (2D for the disk, 3D for the sphere), increasing."""
+    geometry = body_kind(geometry).geometry
     data = resources.files("restitution.laws").joinpath("data")
-    out = []
     try:
-        for p in data.iterdir():
-            name = p.name
-            if name.startswith("law_nu") and name.endswith(".json"):
-                try:
-                    out.append(float(name[len("law_nu") : -len(".json")]))
-                except ValueError:
-                    continue
+        found = [_file_nu(p.name, geometry) for p in data.iterdir()]
     except (FileNotFoundError, NotADirectoryError, OSError):
         return []
-    return sorted(out)
+    return sorted(x for x in found if x is not None)
 
 
 def _pchip(x: np.ndarray, y: np.ndarray, at: float) -> np.ndarray:
@@ -62,9 +68,9 @@ class NuInterpolatedLaw:
     Attributes
     ----------
     nu : float
-        The 2D Poisson number served.
+        The Poisson number served (2D for the disk, 3D for the sphere).
     nodes : tuple of EpsilonLaw
-        Grid laws, at least three, increasing in ``nu``, with ``nodes[0].nu < nu <
+        Grid laws of one body, at least three, increasing in ``nu``, with ``nodes[0].nu < nu <
         nodes[-1].nu``.
 
     Notes
@@ -81,11 +87,21 @@ class NuInterpolatedLaw:
         nus = np.array([n.nu for n in self.nodes])
         if len(nus) < 3 or np.any(np.diff(nus) <= 0):
             raise InputError("interpolation in nu needs at least three laws, increasing in nu")
+        bodies = {n.geometry for n in self.nodes}
+        if len(bodies) != 1:
+            raise InputError(
+                f"interpolation in nu needs laws of one body, got {', '.join(sorted(bodies))}"
+            )
         if not nus[0] < self.nu < nus[-1]:
             raise InputError(
                 f"nu = {self.nu:g} is outside the grid {nus[0]:g} ... {nus[-1]:g}; "
                 "interpolation does not extrapolate"
             )
+
+    @property
+    def geometry(self) -> str:
+        """The body of the grid laws."""
+        return self.nodes[0].geometry
 
     @property
     def grid(self) -> np.ndarray:
@@ -182,12 +198,17 @@ class NuInterpolatedLaw:
         )
 
 
-def _refusal(nu: float, shipped: list[float], why: str) -> InputError:
-    name = law_filename(nu)
+def _what(nu: float, geometry: str) -> str:
+    """``nu_2d = 0.33`` for the disk, ``sphere nu = 0.3`` else: the law's parameter, named."""
+    return f"nu_2d = {nu:.6g}" if geometry == "disk" else f"{geometry} nu = {nu:.6g}"
+
+
+def _refusal(nu: float, shipped: list[float], why: str, geometry: str = "disk") -> InputError:
+    name = law_filename(nu, geometry)
     return InputError(
-        f"no law for nu_2d = {nu:.6g}: {why} (grid: "
+        f"no law for {_what(nu, geometry)}: {why} (grid: "
         f"{', '.join(f'{x:g}' for x in shipped) or 'none'}); compute it with "
-        f"`restitution curve --nu {nu:.6g} --out DIR` and pass the file DIR/{name} "
+        f"`{_curve_command(geometry, nu)}` and pass the file DIR/{name} "
         "(--law-file, or path= from Python)"
     )
 
@@ -195,21 +216,24 @@ def _refusal(nu: float, shipped: list[float], why: str) -> InputError:
 def law_for(
     nu: float,
     *,
+    geometry: str = "disk",
     path: str | os.PathLike | None = None,
     laws: list[EpsilonLaw] | None = None,
 ) -> EpsilonLaw | NuInterpolatedLaw:
-    """The law ``epsilon(v)`` for the 2D Poisson number ``nu``.
+    """The law ``epsilon(v)`` of the body ``geometry`` for its Poisson number ``nu``.
 
     Parameters
     ----------
     nu : float
-        Two-dimensional Poisson number.
+        Poisson number: two-dimensional for the disk, three-dimensional for the sphere.
+    geometry : {"disk", "sphere"}
+        The body; laws of another body are refused.
     path : path, optional
-        A law JSON file (written by ``restitution curve``); its ``nu`` must match within
-        :data:`NU_MATCH`.
+        A law JSON file (written by ``restitution curve``); its body must be ``geometry`` and
+        its ``nu`` must match within :data:`NU_MATCH`.
     laws : list of EpsilonLaw, optional
         The grid to serve from instead of the shipped laws (for tests and for a user's own
-        grid).
+        grid), all of the body ``geometry``.
 
     Returns
     -------
@@ -224,32 +248,42 @@ def law_for(
     nu = float(nu)
     if not math.isfinite(nu):
         raise InputError(f"nu must be a finite number, got {nu}")
+    geometry = body_kind(geometry).geometry
     if path is not None:
         one = EpsilonLaw.from_json(path)
+        _refuse_other_body(one, geometry, path)
         if abs(one.nu - nu) > NU_MATCH:
+            which = "nu_2d" if geometry == "disk" else "nu"
             raise InputError(
-                f"the law file {path} is for nu_2d = {one.nu:g}, not {nu:.6g}; compute it with "
-                f"`restitution curve --nu {nu:.6g} --out DIR`"
+                f"the law file {path} is for {which} = {one.nu:g}, not {nu:.6g}; compute it "
+                f"with `{_curve_command(geometry, nu)}`"
             )
         return one
+    body_kind(geometry).check_nu(nu)
     if laws is None:
-        shipped = shipped_nus()
+        shipped = shipped_nus(geometry)
         nearest = min(shipped, key=lambda x: abs(x - nu), default=None)
         if nearest is not None and abs(nearest - nu) <= NU_MATCH:
-            return law(nearest)
-        _check_inside(nu, shipped, "shipped")
-        laws = [law(x) for x in shipped]
+            return law(nearest, geometry=geometry)
+        _check_inside(nu, shipped, "shipped", geometry)
+        laws = [law(x, geometry=geometry) for x in shipped]
+    other = sorted({a.geometry for a in laws} - {geometry})
+    if other:
+        raise InputError(
+            f"the given laws include laws of the {', '.join(other)}; a {geometry} is served "
+            f"from {geometry} laws only"
+        )
     grid = sorted(laws, key=lambda a: a.nu)
     nus = [a.nu for a in grid]
     nearest = min(range(len(grid)), key=lambda i: abs(nus[i] - nu))
     if abs(nus[nearest] - nu) <= NU_MATCH:
         return grid[nearest]
-    _check_inside(nu, nus, "given")
+    _check_inside(nu, nus, "given", geometry)
     return NuInterpolatedLaw(nu, tuple(grid))
 
 
-def _check_inside(nu: float, nus: list[float], which: str) -> None:
+def _check_inside(nu: float, nus: list[float], which: str, geometry: str = "disk") -> None:
     if len(nus) < 3:
-        raise _refusal(nu, nus, f"fewer than three {which} laws, so none is interpolated")
+        raise _refusal(nu, nus, f"fewer than three {which} laws, so none is interpolated", geometry)
     if not nus[0] < nu < nus[-1]:
-        raise _refusal(nu, nus, f"outside the {which} grid")
+        raise _refusal(nu, nus, f"outside the {which} grid", geometry)

@@ -1,7 +1,9 @@
 """The shipped epsilon(v) laws: what they are computed from, and how to regenerate them.
 
-``make law`` (``python -m restitution.laws.production``) recomputes every file
-``restitution/laws/data/law_nu<nu>.json`` with the current code, through the same sweep, store and
+``make law`` (``python -m restitution.laws.production``) recomputes every disk law file
+``restitution/laws/data/law_nu<nu>.json`` with the current code; ``python -m
+restitution.laws.production --geometry sphere`` computes the sphere's, ``law_sphere_nu<nu>.json``
+(:data:`SPHERE_NUS`, :data:`SPHERE_GROUPS`). Both go through the same sweep, store and
 extrapolation as ``restitution curve`` (:mod:`restitution.limits.curves`), with a progress bar. The
 result store is reused, so an interrupted run resumes. ``tests/test_shipped_laws.py`` fails
 when the shipped files no longer match the code. ``make law`` then draws the slow-point figures
@@ -26,9 +28,20 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from restitution.limits.sweep import DEFAULTS, SweepSettings
+import numpy as np
 
-__all__ = ["SHIPPED_NUS", "SETTINGS_GROUPS", "build"]
+from restitution.errors import InputError
+from restitution.limits.sweep import DEFAULTS, SPHERE_DEFAULTS, SweepSettings
+
+__all__ = [
+    "SETTINGS_GROUPS",
+    "SHIPPED_NUS",
+    "SPHERE_GROUPS",
+    "SPHERE_NUS",
+    "SPHERE_SPEEDS",
+    "build",
+    "production",
+]
 
 SHIPPED_NUS = (0.2, 0.33, 0.5, 0.7, 0.9)
 """Two-dimensional Poisson numbers of the shipped laws: the paper's 0.33 and 0.9 (Fig. 1) and a
@@ -54,7 +67,47 @@ SLOW = (
 )
 
 SETTINGS_GROUPS = (PAPER, *SLOW)
-"""The sweeps behind every shipped law; each point of a law records the group it came from."""
+"""The sweeps behind every shipped disk law; each point of a law records the group it came
+from."""
+
+# -- the sphere ------------------------------------------------------------------------------
+
+SPHERE_NUS = (0.2, 0.25, 0.3, 0.35, 0.4, 0.45)
+"""Three-dimensional Poisson numbers of the sphere's laws: glass 0.2-0.25, steel and aluminium
+0.3-0.35, brass and lead 0.35-0.45 (interpolated in between, as for disks)."""
+
+# The sphere's epsilon(v) oscillates (the phase omega tau / 2 of its quadrupole mode drifts with
+# tau ~ v^(-1/5); docs/spheres.md): at nu = 0.3 the loss changes tenfold between v = 0.02 and
+# 0.04, so the speeds are spaced by a factor 1.2 (26 from 0.003 to 0.3). The walls are
+# SPHERE_DEFAULTS' (alpha delta_max = 80, 160, 320); the mode window is one doubling above the
+# default because at the hardest wall N = 1600 is not yet asymptotic (at v = 0.3 the slope in
+# 1/sqrt(N) was 0.104 between 1600 and 3200, 0.135-0.145 above). Below v ~ 0.005 even this
+# window is not asymptotic at every wall (docs/spheres.md); those points are flagged.
+SPHERE_SPEEDS = tuple(float(f"{v:.3g}") for v in np.geomspace(0.003, 0.3, 26))
+"""Speeds of the sphere's laws, units of ``c`` (of the sphere's 3D constants)."""
+
+SPHERE_GROUPS = (
+    replace(
+        SPHERE_DEFAULTS,
+        velocities=SPHERE_SPEEDS,
+        n_modes=(2400, 4800, 9600, 19200),
+        batch_size=3,
+    ),
+)
+"""The sweeps behind the sphere's laws."""
+
+_PRODUCTION = {"disk": (SHIPPED_NUS, SETTINGS_GROUPS), "sphere": (SPHERE_NUS, SPHERE_GROUPS)}
+
+
+def production(geometry: str = "disk") -> tuple[tuple[float, ...], tuple[SweepSettings, ...]]:
+    """``(nus, groups)`` of the shipped laws of the body ``geometry``."""
+    try:
+        return _PRODUCTION[geometry]
+    except KeyError:
+        raise InputError(
+            f"no production settings for the geometry {geometry!r}; choose one of "
+            f"{', '.join(_PRODUCTION)}"
+        ) from None
 
 
 def build(
@@ -66,16 +119,20 @@ def build(
     workers: int | None = None,
     progress: bool | None = None,
 ) -> list[Path]:
-    """Compute the laws for ``nus`` and write ``law_nu<nu>.json`` into ``out_dir``.
+    """Compute the laws for ``nus`` and write them into ``out_dir``.
+
+    The body is the groups' ``geometry`` (one for all): the files are
+    :func:`restitution.laws.law.law_filename` ``(nu, geometry)``, ``law_nu<nu>.json`` for the
+    disk and ``law_sphere_nu<nu>.json`` for the sphere.
 
     Parameters
     ----------
     out_dir : path
         Target folder (``src/restitution/laws/data`` for the shipped files).
     nus : iterable of float
-        Two-dimensional Poisson numbers.
+        Poisson numbers: two-dimensional for the disk, three-dimensional for the sphere.
     groups : iterable of SweepSettings
-        Sweeps whose points are merged into each law (speeds must not repeat).
+        Sweeps whose points are merged into each law (speeds must not repeat), all of one body.
     store, workers, progress
         Passed to :func:`restitution.limits.curves.compute_curves`.
 
@@ -87,6 +144,11 @@ def build(
     from restitution.laws.law import EpsilonLaw, law_filename
     from restitution.limits.curves import compute_curves
 
+    groups = tuple(groups)
+    bodies = {g.geometry for g in groups}
+    if len(bodies) != 1:
+        raise InputError(f"the groups of one law need one body, got {', '.join(sorted(bodies))}")
+    geometry = bodies.pop()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     nus = [float(nu) for nu in nus]
@@ -96,7 +158,7 @@ def build(
     written = []
     for nu in nus:
         law = EpsilonLaw.from_curves([curves[nu] for curves in per_group])
-        written.append(law.to_json(out / law_filename(nu)))
+        written.append(law.to_json(out / law_filename(nu, geometry)))
     return written
 
 
@@ -107,13 +169,20 @@ def _count(groups, nus) -> int:
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description="Regenerate the shipped epsilon(v) laws.")
     parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
+    parser.add_argument(
+        "--geometry",
+        choices=tuple(_PRODUCTION),
+        default="disk",
+        help="the body: disk (law_nu<nu>.json) or sphere (law_sphere_nu<nu>.json)",
+    )
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
     args = parser.parse_args(argv)
+    nus, groups = production(args.geometry)
     start = time.perf_counter()
-    files = build(args.out, store=args.store, workers=args.workers, progress=True)
+    files = build(args.out, nus, groups, store=args.store, workers=args.workers, progress=True)
     elapsed = time.perf_counter() - start
-    n = _count(SETTINGS_GROUPS, SHIPPED_NUS)
+    n = _count(groups, nus)
     for path in files:
         print(f"wrote {path}")
     print(f"{n} collisions (stored ones reused) in {elapsed:.0f} s, {n / elapsed:.2f} collisions/s")

@@ -1,9 +1,11 @@
 """The coefficient of restitution at impact speeds in m/s, for a named material and partner.
 
 :func:`si_law` joins a :class:`~restitution.laws.units.Grain` (3D constants in SI units and a
-geometry), a collision partner (``"wall"`` or ``"grain"``) and the reduced-unit law for the
-grain's 2D Poisson number (:func:`restitution.laws.law_nu.law_for`). :meth:`SILaw.points` evaluates
-it at SI speeds and says, for every point, where its number comes from (:data:`STATUSES`).
+geometry), a collision partner (``"wall"`` or ``"grain"``) and the reduced-unit law of the
+grain's body for its law Poisson number (:attr:`~restitution.laws.units.Grain.law_nu`: the 2D
+``nu_2d`` of a cylinder or thin disk, the 3D ``nu`` of a sphere;
+:func:`restitution.laws.law_nu.law_for`). :meth:`SILaw.points` evaluates it at SI speeds and
+says, for every point, where its number comes from (:data:`STATUSES`).
 
 Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2d = 0.33)::
 
@@ -112,7 +114,7 @@ class SILaw:
         Collision partner: ``w`` is the speed towards a rigid wall, or the relative normal speed
         of two identical grains.
     law : EpsilonLaw or NuInterpolatedLaw
-        The reduced-unit law for ``grain.nu_2d``.
+        The reduced-unit law of ``grain.body`` for ``grain.law_nu``.
     """
 
     grain: Grain
@@ -121,10 +123,17 @@ class SILaw:
 
     def __post_init__(self) -> None:
         partner_factor(self.against)  # validates
-        if abs(float(self.law.nu) - self.grain.nu_2d) > NU_MATCH:
+        body = getattr(self.law, "geometry", "disk")
+        if body != self.grain.body:
             raise InputError(
-                f"the law is for nu_2d = {float(self.law.nu):g}, the grain has nu_2d = "
-                f"{self.grain.nu_2d:.6g}"
+                f"the law is a law of the {body}, the grain ({self.grain.geometry}) needs a law "
+                f"of the {self.grain.body}"
+            )
+        name = self.grain.law_nu_name
+        if abs(float(self.law.nu) - self.grain.law_nu) > NU_MATCH:
+            raise InputError(
+                f"the law is for {name} = {float(self.law.nu):g}, the grain has {name} = "
+                f"{self.grain.law_nu:.6g}"
             )
 
     @property
@@ -152,13 +161,23 @@ class SILaw:
             return self.law.source
         return str(self.law.metadata.get("source", "law"))
 
+    def _served_v(self, v):
+        """``v`` with the ends of the law's range snapped to them within :data:`_SAME`: the
+        conversion ``w / (k c)`` of a speed at the lowest or highest computed speed may land a
+        rounding error outside, where the law serves nothing."""
+        lo, hi = self.law.valid_range
+        arr = np.asarray(v, dtype=float)
+        arr = np.where(np.abs(arr - lo) <= _SAME * lo, lo, arr)
+        arr = np.where(np.abs(arr - hi) <= _SAME * hi, hi, arr)
+        return float(arr) if np.ndim(v) == 0 else arr
+
     def epsilon(self, speed_m_s):
         """epsilon at SI speed(s) ``w`` (m/s); raises outside the law's range."""
-        return self.law.epsilon(self.grain.v_over_c(speed_m_s, self.against))
+        return self.law.epsilon(self._served_v(self.grain.v_over_c(speed_m_s, self.against)))
 
     def epsilon_err(self, speed_m_s):
         """Error of :meth:`epsilon` at ``w`` (m/s)."""
-        return self.law.epsilon_err(self.grain.v_over_c(speed_m_s, self.against))
+        return self.law.epsilon_err(self._served_v(self.grain.v_over_c(speed_m_s, self.against)))
 
     def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon, its error and its status at every speed (m/s); never raises for range."""
@@ -169,29 +188,42 @@ class SILaw:
             eps = err = None
             if status != Status.OUTSIDE:
                 try:
-                    eps = float(self.law.epsilon(v))
-                    err = float(self.law.epsilon_err(v))
+                    eps = float(self.law.epsilon(self._served_v(v)))
+                    err = float(self.law.epsilon_err(self._served_v(v)))
                 except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
                     status, note = Status.OUTSIDE, str(exc)
             out.append(SIPoint(float(w), v, eps, err, status, note))
         return tuple(out)
 
     def to_dict(self, speeds_m_s) -> dict:
-        """The JSON of ``restitution law``: constants, partner, and the points."""
+        """The JSON of ``restitution law``: constants, partner, and the points.
+
+        ``body`` names the law's body and ``law_nu`` its Poisson number; a disk also reports
+        ``nu_2d`` (the same number), a sphere has no two-dimensional constants. ``law`` gives
+        the served law's body, ``nu`` and source.
+        """
         lo, hi = self.computed_range_m_s
+        g = self.grain
+        head = {"c_m_s": g.c_m_s}
+        if g.body == "disk":
+            head["nu_2d"] = g.nu_2d
+        law = {"geometry": self.law.geometry, "nu": float(self.law.nu)}
+        if g.body == "disk":
+            law["nu_2d"] = float(self.law.nu)
         return {
-            "c_m_s": self.grain.c_m_s,
-            "nu_2d": self.grain.nu_2d,
-            "geometry": self.grain.geometry,
+            **head,
+            "law_nu": g.law_nu,
+            "geometry": g.geometry,
+            "body": g.body,
             "against": self.against,
             "against_meaning": PARTNERS[self.against],
-            "material": self.grain.to_dict(),
+            "material": g.to_dict(),
             "law": {
-                "nu_2d": float(self.law.nu),
+                **law,
                 "source": self.law_source,
                 "computed_speeds_m_s": [lo, hi],
                 "v_units": "v = w / (k c), speed towards the wall in units of c; k = "
-                f"{partner_factor(self.against):g} ({self.against})",
+                f"{partner_factor(self.against):g} ({self.against}); {g.c_formula}",
             },
             "statuses": STATUSES,
             "points": [p.to_dict() for p in self.points(speeds_m_s)],
@@ -217,12 +249,14 @@ def si_law(
         Three-dimensional Poisson number.
     rho : float
         Density, kg/m^3.
-    geometry : {"cylinder", "thin-disk"}
-        Long cylinder (plane strain) or thin disk (plane stress).
+    geometry : {"cylinder", "thin-disk", "sphere"}
+        Long cylinder (the disk in plane strain), thin disk (plane stress) or sphere (the law
+        of the sphere for ``nu`` itself, ``c = sqrt(E / rho)``).
     against : {"wall", "grain"}
         Rigid wall at speed ``w``, or two identical grains at relative normal speed ``w``.
     path : path, optional
-        A law file for the grain's ``nu_2d`` (from ``restitution curve``).
+        A law file of the grain's body for its ``law_nu`` (from ``restitution curve
+        [--geometry sphere]``).
 
     Returns
     -------
@@ -231,9 +265,9 @@ def si_law(
     Raises
     ------
     InputError
-        For constants out of range, or when no law serves the grain's ``nu_2d`` (the message
-        names the command that computes it).
+        For constants out of range, or when no law serves the grain's body and ``law_nu`` (the
+        message names the command that computes it).
     """
     grain = Grain(E=float(E), nu=float(nu), rho=float(rho), geometry=geometry)
     partner_factor(against)
-    return SILaw(grain, against, law_for(grain.nu_2d, path=path))
+    return SILaw(grain, against, law_for(grain.law_nu, geometry=grain.body, path=path))

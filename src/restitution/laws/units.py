@@ -1,14 +1,21 @@
 """The edge between SI units and the package's reduced units.
 
-Inside, everything is reduced: ``E_2d = rho = R = 1``, speeds in units of ``c = sqrt(E_2d/rho)``
-with the **two-dimensional** constants of eq. (6). At the edge a user names
+Inside, everything is reduced: ``E = rho = R = 1`` of the body's own constants, speeds in units
+of ``c = sqrt(E/rho)`` of them: the **two-dimensional** constants of eq. (6) for the disk, the
+three-dimensional ones for the sphere. At the edge a user names
 
 * a material by its three-dimensional constants: Young modulus ``E`` in Pa, Poisson number
   ``nu``, density ``rho`` in kg/m^3 (any consistent units work; speeds then come out in
   ``sqrt(unit of E / unit of rho)``);
-* a geometry: ``"cylinder"`` (a long cylinder hit along a diameter: plane strain, eq. (2),
-  ``E_2d = E / (1 - nu^2)``, ``nu_2d = nu / (1 - nu)``) or ``"thin-disk"`` (plane stress:
-  ``E_2d = E``, ``nu_2d = nu``);
+* a geometry, which picks the body whose law is served and the constants of ``c``:
+
+  - ``"cylinder"``: a long cylinder hit along a diameter, the disk in plane strain, eq. (2):
+    ``E_2d = E / (1 - nu^2)``, law parameter ``nu_2d = nu / (1 - nu)``,
+    ``c = sqrt(E_2d / rho)``;
+  - ``"thin-disk"``: the disk in plane stress: ``E_2d = E``, ``nu_2d = nu``, ``c = sqrt(E/rho)``;
+  - ``"sphere"``: the elastic sphere with the 3D constants as they are: law parameter ``nu``
+    itself (in ``(-1, 0.5)``), ``c = sqrt(E / rho)``; no two-dimensional constants exist;
+
 * a collision partner: ``"wall"`` (the model's rigid flat wall, hit at speed ``w``: ``v = w/c``)
   or ``"grain"`` (two identical grains at relative normal speed ``w``: by symmetry each moves at
   ``w/2`` towards the contact plane, so ``v = w / (2c)``).
@@ -19,26 +26,32 @@ Every result of this module says which geometry and partner it belongs to.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
+from restitution.bodies.kinds import body_kind
 from restitution.bodies.material import Material
 from restitution.errors import InputError
 
 __all__ = [
+    "BODIES",
     "GEOMETRIES",
     "PARTNERS",
     "Grain",
     "partner_factor",
 ]
 
-Geometry = Literal["cylinder", "thin-disk"]
+Geometry = Literal["cylinder", "thin-disk", "sphere"]
 Partner = Literal["wall", "grain"]
 
-GEOMETRIES: dict[str, str] = {"cylinder": "strain", "thin-disk": "stress"}
-"""Geometry name -> plane condition of eq. (2)."""
+GEOMETRIES: dict[str, str | None] = {"cylinder": "strain", "thin-disk": "stress", "sphere": None}
+"""Geometry name -> plane condition of eq. (2); ``None`` for the sphere (a 3D body)."""
+
+BODIES: dict[str, str] = {"cylinder": "disk", "thin-disk": "disk", "sphere": "sphere"}
+"""Geometry name -> the body whose law serves it (:data:`restitution.bodies.kinds.GEOMETRIES`)."""
 
 PARTNERS: dict[str, str] = {
     "wall": "a rigid flat wall hit at speed w (v = w / c)",
@@ -65,11 +78,11 @@ class Grain:
     E : float
         Three-dimensional Young modulus, Pa.
     nu : float
-        Three-dimensional Poisson number, in (-1, 0.5] (``< 0.5`` for a cylinder).
+        Three-dimensional Poisson number, in (-1, 0.5] (``< 0.5`` for a cylinder and a sphere).
     rho : float
         Three-dimensional density, kg/m^3.
-    geometry : {"cylinder", "thin-disk"}
-        Long cylinder (plane strain) or thin disk (plane stress).
+    geometry : {"cylinder", "thin-disk", "sphere"}
+        Long cylinder (the disk in plane strain), thin disk (plane stress) or sphere.
 
     Examples
     --------
@@ -78,6 +91,9 @@ class Grain:
     5172
     >>> round(float(g.v_over_c(1.0, "grain")), 7)
     9.67e-05
+    >>> s = Grain(E=210e9, nu=0.3, rho=7850, geometry="sphere")
+    >>> (s.body, s.law_nu, round(s.c_m_s))
+    ('sphere', 0.3, 5172)
     """
 
     E: float
@@ -88,35 +104,76 @@ class Grain:
     def __post_init__(self) -> None:
         if self.geometry not in GEOMETRIES:
             raise InputError(
-                f"the geometry must be 'cylinder' (plane strain) or 'thin-disk' (plane stress), "
-                f"got {self.geometry!r}"
+                f"the geometry must be 'cylinder' (plane strain), 'thin-disk' (plane stress) or "
+                f"'sphere', got {self.geometry!r}"
             )
-        _ = self.material  # validates E, nu, rho with one-line messages
+        # One-line messages for E, nu, rho: the 3D checks of Material.from_3d (nu in
+        # (-1, 0.5]), then the sphere's open interval.
+        Material.from_3d(E=self.E, nu=self.nu, plane=self.plane or "stress", rho=self.rho)
+        if self.body != "disk":
+            body_kind(self.body).check_nu(self.nu)
 
     @property
-    def plane(self) -> str:
-        """``"strain"`` for a cylinder, ``"stress"`` for a thin disk."""
+    def body(self) -> str:
+        """The body whose law serves this grain: ``"disk"`` (cylinder, thin disk) or
+        ``"sphere"``."""
+        return BODIES[self.geometry]
+
+    @property
+    def plane(self) -> str | None:
+        """``"strain"`` for a cylinder, ``"stress"`` for a thin disk, ``None`` for a sphere."""
         return GEOMETRIES[self.geometry]
+
+    def _disk_only(self, what: str) -> None:
+        if self.body != "disk":
+            raise InputError(
+                f"a {self.geometry} has no {what}: its law takes the 3D nu (Grain.law_nu) and "
+                "c = sqrt(E / rho) (Grain.c_m_s)"
+            )
 
     @property
     def material(self) -> Material:
-        """The 2D constants per unit thickness (``E_2d`` in Pa, ``rho`` in kg/m^3)."""
+        """The 2D constants per unit thickness (``E_2d`` in Pa, ``rho`` in kg/m^3); disks only."""
+        self._disk_only("two-dimensional material")
         return Material.from_3d(E=self.E, nu=self.nu, plane=self.plane, rho=self.rho)
 
     @property
     def nu_2d(self) -> float:
-        """Two-dimensional Poisson number of eq. (6), the law's parameter."""
+        """Two-dimensional Poisson number of eq. (6), the disk law's parameter; disks only."""
+        self._disk_only("two-dimensional Poisson number")
         return self.material.nu
 
     @property
     def E_2d(self) -> float:
-        """Two-dimensional Young modulus per unit thickness, Pa."""
+        """Two-dimensional Young modulus per unit thickness, Pa; disks only."""
+        self._disk_only("two-dimensional Young modulus")
         return self.material.E
 
     @property
+    def law_nu(self) -> float:
+        """The Poisson number of the law that serves this grain: ``nu_2d`` for a disk, ``nu``
+        itself for a sphere."""
+        return self.nu_2d if self.body == "disk" else float(self.nu)
+
+    @property
+    def law_nu_name(self) -> str:
+        """What :attr:`law_nu` is called: ``"nu_2d"`` (disk) or ``"nu"`` (sphere)."""
+        return "nu_2d" if self.body == "disk" else "nu"
+
+    @property
     def c_m_s(self) -> float:
-        """The velocity unit ``c = sqrt(E_2d / rho)``, m/s."""
-        return self.material.c
+        """The velocity unit, m/s: ``c = sqrt(E_2d / rho)`` for a disk, ``sqrt(E / rho)`` with
+        the 3D ``E`` for a sphere."""
+        if self.body == "disk":
+            return self.material.c
+        return math.sqrt(self.E / self.rho)
+
+    @property
+    def c_formula(self) -> str:
+        """How :attr:`c_m_s` is made, in words."""
+        if self.body == "disk":
+            return "c = sqrt(E_2d / rho), E_2d the two-dimensional Young modulus"
+        return "c = sqrt(E / rho), the three-dimensional constants"
 
     def speed_scale(self, against: str) -> float:
         """``k c`` in m/s: the SI speed ``w`` that corresponds to ``v = 1``."""
@@ -151,22 +208,34 @@ class Grain:
         return float(w) if np.ndim(v) == 0 else w
 
     def to_dict(self) -> dict:
-        """JSON-ready description with units in every key."""
-        return {
+        """JSON-ready description with units in every key.
+
+        Every grain: ``E_Pa``, ``nu``, ``rho_kg_m3`` (the 3D constants as given), ``geometry``,
+        ``body`` (the law's body), ``law_nu`` (the law's Poisson number), ``c_m_s`` and
+        ``c_formula``. A disk adds ``plane``, ``E_2d_Pa`` and ``nu_2d``; a sphere has no 2D
+        constants and no such keys.
+        """
+        out = {
             "E_Pa": self.E,
             "nu": self.nu,
             "rho_kg_m3": self.rho,
             "geometry": self.geometry,
-            "plane": self.plane,
-            "E_2d_Pa": self.E_2d,
-            "nu_2d": self.nu_2d,
-            "c_m_s": self.c_m_s,
+            "body": self.body,
         }
+        if self.body == "disk":
+            out.update(plane=self.plane, E_2d_Pa=self.E_2d, nu_2d=self.nu_2d)
+        out.update(law_nu=self.law_nu, c_m_s=self.c_m_s, c_formula=self.c_formula)
+        return out
 
     def describe(self) -> str:
-        """One line: material, geometry, 2D constants and ``c``."""
+        """One line: material, geometry, the law's constants and ``c``."""
+        head = f"E = {self.E:.4g} Pa, nu = {self.nu:g}, rho = {self.rho:.4g} kg/m^3, "
+        if self.body != "disk":
+            return (
+                head + f"{self.geometry} (3D constants as they are): law nu = {self.nu:g}, "
+                f"c = sqrt(E/rho) = {self.c_m_s:.6g} m/s"
+            )
         plane = "plane strain" if self.plane == "strain" else "plane stress"
         return (
-            f"E = {self.E:.4g} Pa, nu = {self.nu:g}, rho = {self.rho:.4g} kg/m^3, "
-            f"{self.geometry} ({plane}): nu_2d = {self.nu_2d:.6g}, c = {self.c_m_s:.6g} m/s"
+            head + f"{self.geometry} ({plane}): nu_2d = {self.nu_2d:.6g}, c = {self.c_m_s:.6g} m/s"
         )

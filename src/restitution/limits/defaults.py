@@ -21,6 +21,7 @@ __all__ = [
     "ALPHA_PRODUCTS",
     "ALPHA_SCALE",
     "ALPHA_SCALES",
+    "SPHERE_ALPHA_PRODUCTS",
     "check_alpha_scale",
     "check_alphas",
     "check_distinct",
@@ -33,6 +34,13 @@ __all__ = [
 # dynamics are chaotic: epsilon jumps by 1e-3 with dt; docs/numerics.md).
 ALPHA_PRODUCTS: tuple[float, ...] = (40.0, 80.0, 160.0)
 """Default wall hardness values, as products ``alpha * delta_max(v)`` (``ALPHA_SCALE``)."""
+
+# The sphere's loss is linear in 1/alpha only from alpha * delta_max ~ 80 (Hertz delta_max): at
+# nu = 0.3, N = 12800 its slope in 1/alpha changes by 16-25 % between the products 40-80 and
+# 80-160 at v = 0.01-0.1, by at most 7 % between 80-160, 160-320 and 320-640 (by 12 % at
+# v = 0.003); with 40-160 the curvature test flags v = 0.006 (docs/spheres.md).
+SPHERE_ALPHA_PRODUCTS: tuple[float, ...] = (80.0, 160.0, 320.0)
+"""Default wall hardness of the sphere's sweeps, as products ``alpha * delta_max(v)``."""
 
 ALPHA_SCALES: tuple[str, ...] = ("absolute", "compression")
 """How wall hardness values are read: ``alpha`` in ``1/R``, or products ``alpha * delta_max``."""

@@ -37,6 +37,7 @@ from restitution.errors import InputError
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
     ALPHA_SCALE,
+    SPHERE_ALPHA_PRODUCTS,
     check_alpha_scale,
     check_alphas,
     check_distinct,
@@ -216,9 +217,15 @@ grid)."""
 # The sphere's loss settles into its N -> infinity trend later than the disk's: at nu = 0.3,
 # v = 0.003 it still jumps by 50 % between N = 100 and 400 and climbs monotonically only from
 # N ~ 1600 (docs/spheres.md, measured for N = 100-12800); a sphere collision with 12800 modes
-# takes 1-3 s, so the window is moved up by a factor 16.
-SPHERE_DEFAULTS = replace(DEFAULTS, geometry="sphere", n_modes=(1600, 3200, 6400, 12800))
-"""The default sweep of the sphere: the disk's speeds and walls, larger mode counts."""
+# takes 1-5 s, so the window is moved up by a factor 16. Its walls are harder
+# (SPHERE_ALPHA_PRODUCTS says why).
+SPHERE_DEFAULTS = replace(
+    DEFAULTS,
+    geometry="sphere",
+    n_modes=(1600, 3200, 6400, 12800),
+    alphas=SPHERE_ALPHA_PRODUCTS,
+)
+"""The default sweep of the sphere: the disk's speeds, harder walls, larger mode counts."""
 
 
 _DEFAULTS_BY_GEOMETRY = {"disk": DEFAULTS, "sphere": SPHERE_DEFAULTS}

@@ -54,6 +54,7 @@ __all__ = [
     "QuasistaticCollision",
     "QuasistaticError",
     "QuasistaticTrajectory",
+    "checked_range",
     "contact_law",
     "quasistatic_collision",
     "quasistatic_trajectory",
@@ -200,19 +201,28 @@ class HertzLaw:
 
     # ---- helpers -----------------------------------------------------------------------------
     def _check(self, what: str, value, limit: float) -> np.ndarray:
-        arr = np.asarray(value, dtype=float)
-        if not np.all(np.isfinite(arr)):
-            raise InputError(f"{what} must be finite")
-        if np.any(arr < 0.0):
-            raise InputError(f"{what} must be non-negative, got {arr.min():.6g}")
-        if np.any(arr > limit * (1.0 + _SLACK)):
-            raise InputError(
-                f"{what} = {arr.max():.6g} exceeds {limit:.6g}, where the 2D Hertz law "
-                f"'{self.name}' (c = {self.constant:.6g}) stops being monotonic "
-                f"(d delta/dP = 0 at P* = {self.max_force:.6g}, delta* = "
-                f"{self.max_compression:.6g}); the quasistatic theory does not apply there"
-            )
-        return np.minimum(arr, limit)
+        return checked_range(
+            what,
+            value,
+            limit,
+            f"where the 2D Hertz law '{self.name}' (c = {self.constant:.6g}) stops being "
+            f"monotonic (d delta/dP = 0 at P* = {self.max_force:.6g}, delta* = "
+            f"{self.max_compression:.6g}); the quasistatic theory does not apply there",
+        )
+
+
+def checked_range(what: str, value, limit: float, beyond: str) -> np.ndarray:
+    """``value`` as an array in ``[0, limit]`` (``limit`` times ``1 + 1e-12`` tolerated and
+    clipped); :class:`InputError` for non-finite, negative or larger values, saying ``beyond``
+    (why the limit is one)."""
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr)):
+        raise InputError(f"{what} must be finite")
+    if np.any(arr < 0.0):
+        raise InputError(f"{what} must be non-negative, got {arr.min():.6g}")
+    if np.any(arr > limit * (1.0 + _SLACK)):
+        raise InputError(f"{what} = {arr.max():.6g} exceeds {limit:.6g}, {beyond}")
+    return np.minimum(arr, limit)
 
 
 def contact_law(

@@ -50,6 +50,7 @@ from scipy.special import betaincinv
 from restitution.bodies.kinds import body_kind
 from restitution.bodies.sphere.surface import CONTACT_TIME_CONSTANT
 from restitution.errors import InputError
+from restitution.quasistatic.hertz import checked_range
 
 __all__ = [
     "CONTACT_TIME_CONSTANT",
@@ -150,17 +151,8 @@ class SphereHertzLaw:
         return np.sqrt(self.R * delta)
 
     def _check(self, what: str, value, limit: float) -> np.ndarray:
-        arr = np.asarray(value, dtype=float)
-        if not np.all(np.isfinite(arr)):
-            raise InputError(f"{what} must be finite")
-        if np.any(arr < 0.0):
-            raise InputError(f"{what} must be non-negative, got {arr.min():.6g}")
-        if np.any(arr > limit * (1.0 + _SLACK)):
-            raise InputError(
-                f"{what} = {arr.max():.6g} exceeds {limit:.6g}, where the compression reaches "
-                f"the radius R = {self.R:g}; Hertz's theory needs delta << R"
-            )
-        return np.minimum(arr, limit)
+        beyond = f"where the compression reaches the radius R = {self.R:g}; Hertz's theory "
+        return checked_range(what, value, limit, beyond + "needs delta << R")
 
 
 def sphere_contact_law(nu: float, *, E: float = 1.0, R: float = 1.0) -> SphereHertzLaw:
