@@ -1,9 +1,12 @@
-"""Finite-element solutions of the free disk and of its impact on the wall.
+"""Finite-element solutions of the free disk and sphere and of their impact on the wall.
 
 An independent check of the modal pipeline (paper sections 2-4) with no modal truncation:
-plane elasticity on the half disk (symmetric family) with isoparametric quadratic triangles
-(scikit-fem). Modules: :mod:`~restitution.fem.mesh` (half-disk meshes),
-:mod:`~restitution.fem.elasticity` (stiffness and mass), :mod:`~restitution.fem.eigen`
+plane elasticity on the half disk (symmetric family) or axisymmetric elasticity on the sphere's
+meridian section (the same half disk, weighted by ``2 pi r``; ``geometry="sphere"``) with
+isoparametric quadratic triangles (scikit-fem). Modules: :mod:`~restitution.fem.mesh` (half-disk
+meshes), :mod:`~restitution.fem.section` (what the half disk stands for: disk or sphere),
+:mod:`~restitution.fem.elasticity` (stiffness and mass), :mod:`~restitution.fem.axisymmetric`
+(the sphere's weak forms and lumped mass), :mod:`~restitution.fem.eigen`
 (frequencies, inertia counts), :mod:`~restitution.fem.contact` (the wall on the arc),
 :mod:`~restitution.fem.impact` (the collision), :mod:`~restitution.fem.compare` (against the
 modal solver), :mod:`~restitution.fem.graded` (meshes sized by the contact half-width),

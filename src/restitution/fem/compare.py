@@ -8,7 +8,7 @@ differences fall quickly, as they do: 8-30x per level at nu = 0.33, v = 0.1, alp
 The modal solver runs with the ``N`` lowest modes for several ``N`` and ``1 - eps^2`` is
 extrapolated linearly in ``1/sqrt(N)`` (:func:`restitution.limits.extrapolation.extrapolate_modes`,
 paper Fig. 8) at the same ``alpha``. Neither side is extrapolated in ``alpha``: both solve the
-same soft-wall problem.
+same soft-wall problem. ``geometry="sphere"`` compares the sphere's FEM with Lamb's modes.
 """
 
 from __future__ import annotations
@@ -91,9 +91,14 @@ class Comparison:
 
 
 def fem_refinement(
-    material: Material, v: float, alpha: float, levels, settings: FemSettings | None = None
+    material: Material,
+    v: float,
+    alpha: float,
+    levels,
+    settings: FemSettings | None = None,
+    geometry: str = "disk",
 ) -> tuple[list[CollisionResult], list[int], float, float]:
-    """FEM runs at the given refinement levels.
+    """FEM runs of the body ``geometry`` at the given refinement levels.
 
     Returns
     -------
@@ -106,17 +111,18 @@ def fem_refinement(
     results, dofs = [], []
     for k in levels:
         level = replace(settings, refine=int(k))
-        results.append(fem_collide(material, v, alpha, settings=level))
-        dofs.append(model_for(material, v, alpha, level).disk.n_dofs)
+        results.append(fem_collide(material, v, alpha, geometry=geometry, settings=level))
+        dofs.append(model_for(material, v, alpha, level, geometry).disk.n_dofs)
     eps = results[-1].epsilon
     err = abs(eps - results[-2].epsilon) if len(results) > 1 else float("nan")
     return results, dofs, eps, err
 
 
 def modal_extrapolation(
-    material: Material, v: float, alpha: float, counts, **collide_options
+    material: Material, v: float, alpha: float, counts, geometry: str = "disk", **collide_options
 ) -> tuple[list[CollisionResult], LinearLimit | None, float, float]:
-    """Modal runs with the ``N`` lowest modes and the ``N -> infinity`` limit.
+    """Modal runs with the ``N`` lowest modes of the body ``geometry`` and the ``N -> infinity``
+    limit.
 
     Returns
     -------
@@ -128,7 +134,7 @@ def modal_extrapolation(
     from restitution.dynamics.collision import collide
 
     counts = sorted(int(n) for n in counts)
-    pool = get_modes(material, count=counts[-1])
+    pool = get_modes(material, count=counts[-1], geometry=geometry)
     results = []
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -147,6 +153,7 @@ def compare_fem_modal(
     v: float,
     alpha: float,
     *,
+    geometry: str = "disk",
     levels=(0, 1, 2),
     counts=(200, 400, 800, 1600),
     settings: FemSettings | None = None,
@@ -160,6 +167,8 @@ def compare_fem_modal(
         Speed towards the wall, ``c``.
     alpha : float
         Wall hardness, ``1/R``.
+    geometry : {"disk", "sphere"}
+        The body; both methods use it.
     levels : sequence of int
         FEM refinement levels, ascending.
     counts : sequence of int
@@ -167,14 +176,14 @@ def compare_fem_modal(
     settings : FemSettings, optional
         FEM settings other than the level.
     """
-    material = as_material(material_or_nu)
+    material = as_material(material_or_nu, geometry)
     levels = tuple(int(k) for k in levels)
     if not levels or list(levels) != sorted(set(levels)):
         raise InputError(f"levels must be distinct and ascending, got {levels}")
     if not counts:
         raise InputError("give at least one number of modes")
-    fem, dofs, fem_eps, fem_err = fem_refinement(material, v, alpha, levels, settings)
-    modal, limit, modal_eps, modal_err = modal_extrapolation(material, v, alpha, counts)
+    fem, dofs, fem_eps, fem_err = fem_refinement(material, v, alpha, levels, settings, geometry)
+    modal, limit, modal_eps, modal_err = modal_extrapolation(material, v, alpha, counts, geometry)
     return Comparison(
         fem=tuple(fem),
         fem_levels=levels,

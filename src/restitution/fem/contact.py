@@ -8,7 +8,14 @@ half disk is
     V_half = (1/alpha) int_{arc, 0 <= phi <= pi/2} exp(alpha x) ds,
 
 half of eq. (41) (``ds = dphi`` for ``R = 1``); the whole disk's potential and wall force are
-twice the half disk's.
+twice the half disk's. For the sphere (``geometry="sphere"``, :mod:`restitution.fem.section`)
+the arc is the meridian of its surface and the same integral, weighted by ``2 pi r``
+(``r = X_y``, the distance from the axis), is the wall potential of the whole sphere,
+
+    V = (1/alpha) int_{near hemisphere} exp(alpha x) dA,    dA = 2 pi r ds,
+
+the surface integral of :mod:`restitution.bodies.sphere.surface` (``0 <= theta <= pi/2``; the
+far half never touches).
 
 The integral is a Gauss-Legendre rule on every arc facet. On a facet the isoparametric P2 map
 and the displacement trace are both quadratic in the facet parameter ``t`` in ``[0, 1]``, with
@@ -42,7 +49,8 @@ class ArcQuadrature:
     x_ref : numpy.ndarray, shape (P,)
         Reference ``x`` of each point relative to the centre, ``R`` (``~cos phi``).
     weight : numpy.ndarray, shape (P,)
-        Arc-length weights of the half disk's arc, ``R``.
+        Arc-length weights of the half disk's arc, ``R`` (sphere: surface weights
+        ``2 pi r ds``, ``R^2``).
     B : scipy.sparse.csr_matrix, shape (P, n)
         ``u_x`` at the points from the kept degrees of freedom of the :class:`HalfDisk`.
     BT : scipy.sparse.csr_matrix, shape (n, P)
@@ -97,6 +105,8 @@ def arc_quadrature(
     X = Xa[:, :, None] * N[0] + Xb[:, :, None] * N[1] + Xm[:, :, None] * N[2]  # (2, F, G)
     dX = Xa[:, :, None] * dN[0] + Xb[:, :, None] * dN[1] + Xm[:, :, None] * dN[2]
     weight = np.sqrt((dX**2).sum(axis=0)) * gw  # (F, G)
+    if disk.section.axisymmetric:
+        weight = weight * (2.0 * math.pi * X[1])
 
     index = disk.reduced_index()
     nodes = np.stack(
@@ -129,7 +139,8 @@ def arc_quadrature(
 def wall_terms(
     quad: ArcQuadrature, alpha: float, x_c: float, u: np.ndarray
 ) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """Wall potential, total force and its gradient for the half disk.
+    """Wall potential, total force and its gradient for the half disk (the sphere's section:
+    the whole sphere).
 
     Parameters
     ----------
@@ -144,9 +155,10 @@ def wall_terms(
     Returns
     -------
     V : float
-        Wall potential energy of the half disk, ``E R^2``.
+        Wall potential energy of the half disk, ``E R^2`` (sphere: ``E R^3``).
     F : float
-        Total wall force on the half disk, pushing it away from the wall, ``E R``.
+        Total wall force on the half disk, pushing it away from the wall, ``E R`` (sphere:
+        ``E R^2``).
     grad : numpy.ndarray, shape (n,)
         ``dV/du``; the wall force on the degrees of freedom is ``-grad``.
     density : numpy.ndarray, shape (P,)

@@ -1,13 +1,18 @@
-"""Finite-element eigenfrequencies of the free disk, symmetric family (checks paper section 2).
+"""Finite-element eigenfrequencies of the free disk (symmetric family) and of the free sphere
+(axisymmetric spheroidal family); checks of the modal route's frequencies.
 
-Units: ``E = rho = R = 1``; frequencies ``omega`` in ``c / R``.
+Units: ``E = rho = R = 1`` of the body's own constants; frequencies ``omega`` in ``c / R``.
 
 The symmetric modes of the free disk are the modes of the half disk with a roller on the
-diameter (:mod:`restitution.fem.elasticity`): ``K x = omega^2 M x``. The one zero eigenvalue
+diameter (:mod:`restitution.fem.elasticity`): ``K x = omega^2 M x``. The axisymmetric,
+torsion-free modes of the free sphere (Lamb's spheroidal modes of every order ``l``, the
+breathing mode ``l = 0`` included) are the modes of its meridian section with ``u_r = 0`` on the
+axis (``geometry="sphere"``, :mod:`restitution.fem.axisymmetric`). The one zero eigenvalue
 (rigid translation along ``x``) is dropped, so the remaining spectrum is what
-:func:`restitution.get_modes` computes from the frequency equation. Conforming elements on the
-exact domain give upper bounds converging like ``h^(2p)``; with the isoparametric arc the P2
-frequencies converge like ``h^4``.
+:func:`restitution.get_modes` computes from the frequency equation (``geometry="sphere"``:
+Lamb's). Conforming elements on the exact domain give upper bounds converging like ``h^(2p)``;
+with the isoparametric arc the P2 frequencies converge like ``h^4`` (measured for the sphere
+too: consistent P2, fitted rates 3.8-3.9 over levels 3-5, ``tests/test_fem_sphere.py``).
 
 Two independent ways to use the discrete spectrum:
 
@@ -46,11 +51,18 @@ _SHIFT = -1.0
 
 
 def half_disk_system(
-    material_or_nu: Material | float, refine: int, discretisation: Discretisation = "P2"
+    material_or_nu: Material | float,
+    refine: int,
+    discretisation: Discretisation = "P2",
+    geometry: str = "disk",
 ) -> HalfDisk:
-    """Half disk on the uniform mesh of level ``refine`` (element size ``~2^-refine R``)."""
+    """Half disk (or the sphere's meridian section, ``geometry="sphere"``) on the uniform mesh
+    of level ``refine`` (element size ``~2^-refine R``)."""
     return assemble_half_disk(
-        uniform_half_disk(refine), as_material(material_or_nu), discretisation
+        uniform_half_disk(refine),
+        as_material(material_or_nu, geometry),
+        discretisation,
+        geometry,
     )
 
 
@@ -91,13 +103,16 @@ def fem_symmetric_frequencies(
     count: int,
     refine: int,
     discretisation: Discretisation = "P2",
+    geometry: str = "disk",
 ) -> np.ndarray:
-    """Lowest ``count`` symmetric frequencies of the free disk by finite elements.
+    """Lowest ``count`` symmetric frequencies of the free disk (or axisymmetric frequencies of
+    the free sphere) by finite elements.
 
     Parameters
     ----------
     material_or_nu : Material or float
-        Material, or the two-dimensional Poisson number (``E = rho = 1``).
+        Material, or the Poisson number (``E = rho = 1``): two-dimensional for the disk,
+        three-dimensional for the sphere.
     count : int
         Number of frequencies.
     refine : int
@@ -105,6 +120,8 @@ def fem_symmetric_frequencies(
         halves the element size and quadruples the number of unknowns.
     discretisation : {"P2", "P2+lumped"}
         Consistent P2 (default) or the mass-lumped P2 + bubble element of the impact solver.
+    geometry : {"disk", "sphere"}
+        The disk's symmetric family or the sphere's axisymmetric spheroidal modes.
 
     Returns
     -------
@@ -117,7 +134,9 @@ def fem_symmetric_frequencies(
     >>> w.shape
     (3,)
     """
-    return symmetric_frequencies(half_disk_system(material_or_nu, refine, discretisation), count)
+    return symmetric_frequencies(
+        half_disk_system(material_or_nu, refine, discretisation, geometry), count
+    )
 
 
 def _negative_pivots(A) -> int:

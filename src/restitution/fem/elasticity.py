@@ -1,6 +1,13 @@
-"""Plane elasticity of the half disk: stiffness and mass matrices with the symmetry condition.
+"""Elasticity on the half disk: stiffness and mass matrices with the symmetry condition.
 
 Units: ``E = rho = R = 1`` unless the material says otherwise; displacements in ``R``.
+
+One implementation, two weightings (:mod:`restitution.fem.section`): ``geometry="disk"`` is
+plane stress on the upper half of the disk (below); ``geometry="sphere"`` is axisymmetric
+elasticity on the sphere's meridian section, every integral weighted by ``2 pi r`` with the hoop
+strain ``u_r / r`` and the three-dimensional Lame constants
+(:mod:`restitution.fem.axisymmetric`, which also holds its lumped mass). The sphere's diameter
+is its axis, where ``u_r = 0``: the same roller as the disk's ``u_y = 0``.
 
 The two-dimensional (plane-stress) constants of eq. (6) enter through the Lame constants
 
@@ -49,7 +56,9 @@ from skfem.models.elasticity import linear_elasticity
 
 from restitution.bodies.material import Material
 from restitution.errors import InputError
+from restitution.fem.axisymmetric import axisymmetric_elasticity, axisymmetric_mass, lumped_weights
 from restitution.fem.mesh import DIAMETER
+from restitution.fem.section import Section, fem_material, section
 
 __all__ = ["Discretisation", "HalfDisk", "assemble_half_disk", "as_material"]
 
@@ -70,11 +79,10 @@ _P2_AT_CENTROID_VERTEX = -1.0 / 9.0
 _P2_AT_CENTROID_EDGE = 4.0 / 9.0
 
 
-def as_material(material_or_nu: Material | float) -> Material:
-    """A :class:`Material` from itself or from a two-dimensional Poisson number."""
-    if isinstance(material_or_nu, Material):
-        return material_or_nu
-    return Material(nu=float(material_or_nu))
+def as_material(material_or_nu: Material | float, geometry: str = "disk") -> Material:
+    """A :class:`Material` from itself or from a Poisson number (two-dimensional for the disk,
+    three-dimensional for the sphere; :func:`restitution.fem.section.fem_material`)."""
+    return fem_material(material_or_nu, geometry)
 
 
 @dataclass(frozen=True, eq=False)
@@ -85,22 +93,26 @@ class HalfDisk:
     ----------
     material : Material
     discretisation : {"P2", "P2+lumped"}
+    geometry : {"disk", "sphere"}
+        The body the half disk stands for (:mod:`restitution.fem.section`).
     mesh : skfem.MeshTri2
     basis : skfem.Basis
         Vector basis on ``mesh`` (all degrees of freedom, before the roller is applied).
     free : numpy.ndarray of int, shape (n,)
         Indices of the kept degrees of freedom in the numbering of ``basis``.
     K, M : scipy.sparse.csr_matrix, shape (n, n)
-        Stiffness (``E``) and mass (``rho R^2``) matrices on the kept dofs; ``M`` is diagonal
-        for ``"P2+lumped"``.
+        Stiffness (``E``; sphere ``E R``) and mass (``rho R^2``; sphere ``rho R^3``) matrices
+        on the kept dofs; ``M`` is diagonal for ``"P2+lumped"``.
     rigid : numpy.ndarray, shape (n,)
         Unit translation along ``x`` (1 on every ``u_x`` dof, 0 elsewhere).
     mass : float
-        ``rigid^T M rigid``: the mass of the discretised half disk (``pi/2`` for the exact one).
+        ``rigid^T M rigid``: the mass of the discretised half disk (``pi/2`` for the exact one)
+        or of the whole sphere (``4 pi / 3``).
     """
 
     material: Material
     discretisation: str
+    geometry: str
     mesh: MeshTri2
     basis: Basis
     free: np.ndarray
@@ -115,6 +127,11 @@ class HalfDisk:
         return int(self.free.size)
 
     @property
+    def section(self) -> Section:
+        """How the half disk stands for the body (:func:`restitution.fem.section.section`)."""
+        return section(self.geometry)
+
+    @property
     def lumped(self) -> bool:
         """Whether ``M`` is diagonal."""
         return self.discretisation == "P2+lumped"
@@ -126,13 +143,16 @@ class HalfDisk:
         return index
 
 
-def _lame(material: Material) -> tuple[float, float]:
-    """Two-dimensional Lame constants ``(lambda_2d, mu)`` of eq. (6), in ``E``."""
-    E, nu = material.E, material.nu
-    return E * nu / (1.0 - nu**2), E / (2.0 * (1.0 + nu))
+def _stiffness_form(material: Material, body: Section) -> BilinearForm:
+    """Plane stress (disk) or the axisymmetric form (sphere), with the body's Lame constants."""
+    if body.axisymmetric:
+        return axisymmetric_elasticity(*body.lame(material))
+    return linear_elasticity(*body.lame(material))
 
 
-def _consistent(mesh: MeshTri2, material: Material) -> tuple[Basis, sp.spmatrix, sp.spmatrix]:
+def _consistent(
+    mesh: MeshTri2, material: Material, body: Section
+) -> tuple[Basis, sp.spmatrix, sp.spmatrix]:
     basis = Basis(mesh, ElementVector(ElementTriP2()), intorder=_INTORDER)
     rho = material.rho
 
@@ -140,19 +160,25 @@ def _consistent(mesh: MeshTri2, material: Material) -> tuple[Basis, sp.spmatrix,
     def mass_form(u, v, w):
         return rho * dot(u, v)
 
-    return basis, asm(linear_elasticity(*_lame(material)), basis), asm(mass_form, basis)
+    mass = axisymmetric_mass(rho) if body.axisymmetric else mass_form
+    return basis, asm(_stiffness_form(material, body), basis), asm(mass, basis)
 
 
-def _lumped(mesh: MeshTri2, material: Material) -> tuple[Basis, sp.spmatrix, sp.spmatrix]:
+def _lumped(
+    mesh: MeshTri2, material: Material, body: Section
+) -> tuple[Basis, sp.spmatrix, sp.spmatrix]:
     """P2 + bubble in the nodal basis of the lumping points, with the lumped mass."""
     basis = Basis(mesh, ElementVector(ElementTriP2B()), intorder=_INTORDER)
-    K_hier = asm(linear_elasticity(*_lame(material)), basis)
+    K_hier = asm(_stiffness_form(material, body), basis)
     # skfem's P2B basis is hierarchical: P2 Lagrange functions plus the bubble with value 1
     # at the centroid. Nodal value at the centroid u_c = sum_i phi_i(c) u_i + b, hence the
     # bubble coefficient b = u_c - sum_i phi_i(c) u_i; T maps nodal to hierarchical values.
     n_el = mesh.t.shape[1]
     rows, cols, vals = [np.arange(basis.N)], [np.arange(basis.N)], [np.ones(basis.N)]
-    detJ = np.abs(mesh._mapping().detDF(_LUMP_POINTS))  # (n_el, 7)
+    if body.axisymmetric:
+        weights = lumped_weights(mesh, _LUMP_POINTS, _LUMP_WEIGHTS, _INTORDER)  # (n_el, 7)
+    else:
+        weights = _LUMP_WEIGHTS[None, :] * np.abs(mesh._mapping().detDF(_LUMP_POINTS))
     lumped = np.zeros(basis.N)
     for comp in range(2):
         vert = basis.nodal_dofs[comp][mesh.t]  # (3, n_el)
@@ -165,9 +191,9 @@ def _lumped(mesh: MeshTri2, material: Material) -> tuple[Basis, sp.spmatrix, sp.
                 np.full(n_el, -_P2_AT_CENTROID_VERTEX),
                 np.full(n_el, -_P2_AT_CENTROID_EDGE),
             ]
-            np.add.at(lumped, vert[k], _LUMP_WEIGHTS[k] * detJ[:, k])
-            np.add.at(lumped, edge[k], _LUMP_WEIGHTS[3 + k] * detJ[:, 3 + k])
-        np.add.at(lumped, bubble, _LUMP_WEIGHTS[6] * detJ[:, 6])
+            np.add.at(lumped, vert[k], weights[:, k])
+            np.add.at(lumped, edge[k], weights[:, 3 + k])
+        np.add.at(lumped, bubble, weights[:, 6])
     T = sp.csr_matrix(
         (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
         shape=(basis.N, basis.N),
@@ -180,6 +206,7 @@ def assemble_half_disk(
     mesh: MeshTri2,
     material_or_nu: Material | float,
     discretisation: Discretisation = "P2",
+    geometry: str = "disk",
 ) -> HalfDisk:
     """Assemble stiffness and mass matrices of the half disk with ``u_y = 0`` on the diameter.
 
@@ -188,18 +215,22 @@ def assemble_half_disk(
     mesh : skfem.MeshTri2
         A mesh from :mod:`restitution.fem.mesh` (it names the ``"diameter"`` boundary).
     material_or_nu : Material or float
+        The body's constants (two-dimensional for the disk, three-dimensional for the sphere).
     discretisation : {"P2", "P2+lumped"}
         Consistent P2, or P2 + bubble with the diagonal (lumped) mass matrix.
+    geometry : {"disk", "sphere"}
+        The half disk itself (plane stress) or the sphere's meridian section (axisymmetric).
 
     Returns
     -------
     HalfDisk
     """
-    material = as_material(material_or_nu)
+    body = section(geometry)
+    material = as_material(material_or_nu, geometry)
     if discretisation == "P2":
-        basis, K, M = _consistent(mesh, material)
+        basis, K, M = _consistent(mesh, material, body)
     elif discretisation == "P2+lumped":
-        basis, K, M = _lumped(mesh, material)
+        basis, K, M = _lumped(mesh, material, body)
     else:
         raise InputError(f"unknown discretisation {discretisation!r}; choose 'P2' or 'P2+lumped'")
     roller = basis.get_dofs(mesh.boundaries[DIAMETER]).all("u^2")
@@ -212,6 +243,7 @@ def assemble_half_disk(
     return HalfDisk(
         material=material,
         discretisation=discretisation,
+        geometry=geometry,
         mesh=mesh,
         basis=basis,
         free=free,

@@ -1,6 +1,8 @@
-"""Finite-element solution of the disk-wall impact (independent check of paper sections 3-4).
+"""Finite-element solution of the disk-wall and sphere-wall impact (independent check of paper
+sections 3-4 and of the sphere's modal route).
 
-Units: ``E = rho = R = 1``; speeds in ``c``, times in ``R / c``, forces in ``E R``.
+Units: ``E = rho = R = 1``; speeds in ``c``, times in ``R / c``, forces in ``E R`` (disk, per
+unit thickness) or ``E R^2`` (sphere).
 
 The half disk ``y >= 0`` (roller on the diameter, see :mod:`restitution.fem.elasticity`) is
 discretised with isoparametric mass-lumped P2 + bubble triangles (``"P2+lumped"``), graded
@@ -13,6 +15,12 @@ Hamilton's function of the half disk is
 with the displacement ``u`` including the rigid motion; there is no modal truncation. Mass,
 energies and forces of the half disk are half of the whole disk's, so the dynamics and
 ``epsilon`` are the whole disk's; reported forces are doubled to the whole disk.
+
+The sphere (``geometry="sphere"``) is the same computation on its meridian section
+(:mod:`restitution.fem.section`): axisymmetric elasticity with ``u_r = 0`` on the axis and its own
+lumped mass (:mod:`restitution.fem.axisymmetric`), the wall integral over its surface
+``2 pi r ds``; the section's mass, energies and forces are the whole sphere's, and the meshes and
+steps are sized by three-dimensional Hertz (contact radius ``a = sqrt(R delta_max)``).
 
 Time integration: velocity Verlet (central differences) with the diagonal mass matrix, so a
 step costs one sparse matrix-vector product. Second order, symplectic, explicit;
@@ -42,13 +50,13 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from restitution.bodies.disk.contact import contact_time_estimate, peak_force_estimate
 from restitution.bodies.material import Material
 from restitution.dynamics.results import CollisionResult, History
 from restitution.errors import InputError, RestitutionError
 from restitution.fem.contact import wall_terms
 from restitution.fem.elasticity import as_material
 from restitution.fem.model import FemModel, fem_model
+from restitution.fem.section import contact_time, hertz_scales, peak_pressure
 
 __all__ = [
     "CONTACT_TOL",
@@ -126,39 +134,35 @@ class FemSettings:
             raise InputError(f"energy_tol must be positive, got {self.energy_tol}")
 
 
-def _hertz_estimate(v: float) -> tuple[float, float]:
-    """Quasistatic largest force (``E R``) and contact half-width (``R``) at speed ``v``.
-
-    The force is ``F ~ 2 E0 / delta`` with ``E0 = pi v^2 / 2`` and the compression
-    ``delta = v sqrt(ln(4/v))`` (eq. 61,
-    :func:`restitution.bodies.disk.contact.peak_force_estimate`); the two-dimensional Hertz
-    half-width is ``a = sqrt(4 F R / (pi E))``.
-    """
-    force = peak_force_estimate(float(v))
-    return force, math.sqrt(4.0 * force / math.pi)
-
-
-def contact_angle_estimate(v: float, alpha: float) -> float:
+def contact_angle_estimate(
+    v: float, alpha: float, geometry: str = "disk", nu: float | None = None
+) -> float:
     """Half-width (radians) of the arc to mesh finely.
 
-    The Hertz half-width ``a`` (:func:`_hertz_estimate`) widened by the soft wall's tail: where
-    the undeformed edge's gap ``(phi^2 - a^2) / 2`` is below ``7 / alpha`` the pressure is still
-    above ``e^-7 ~ 1e-3`` of its peak. The zone is ``1.2 sqrt(a^2 + 14 / alpha)``, at most
-    ``pi/2``. Measured extent of pressures above 1e-3 of the peak at ``alpha = 500`` (nu = 0.33,
+    The Hertz half-width ``a`` (:func:`restitution.fem.section.hertz_scales`; the sphere's
+    contact radius needs its ``nu``) widened by the soft wall's tail: where the undeformed
+    edge's gap ``(phi^2 - a^2) / 2`` is below ``7 / alpha`` the pressure is still above
+    ``e^-7 ~ 1e-3`` of its peak. The zone is ``1.2 sqrt(a^2 + 14 / alpha)``, at most ``pi/2``.
+    Measured extent of pressures above 1e-3 of the peak at ``alpha = 500`` (disk, nu = 0.33,
     refine 0): 0.23, 0.53, 0.85 at ``v`` = 0.01, 0.1, 0.3, against zones 0.25, 0.58, 1.06.
+    Sphere (nu = 0.3, ``alpha delta_max = 40`` and ``160``, level 0): 0.257 and 0.225, 0.664 and
+    0.587, 1.040 and 0.907 at ``v`` = 0.01, 0.1, 0.3, against zones 0.285 and 0.256, 0.716 and
+    0.643, 1.111 and 0.997.
     """
-    _, a = _hertz_estimate(v)
+    _, a = hertz_scales(v, geometry, nu)
     return float(min(1.2 * math.sqrt(a**2 + 14.0 / alpha), 0.5 * math.pi))
 
 
-def pressure_estimate(v: float) -> float:
-    """Largest wall pressure to plan the step for, ``E``: twice the Hertz peak ``2 F/(pi a)``.
+def pressure_estimate(v: float, geometry: str = "disk", nu: float | None = None) -> float:
+    """Largest wall pressure to plan the step for, ``E``: twice the Hertz peak (the disk's
+    ``2 F/(pi a)``, the sphere's ``3 F / (2 pi a^2)``;
+    :func:`restitution.fem.section.peak_pressure`).
 
     Measured peaks: 1.08 (nu = 0.33, v = 0.1), 1.18 (nu = 0.33, v = 0.3) and 3.5 (nu = 0.9,
-    v = 0.3) times the Hertz peak; a larger one only costs a repeated run.
+    v = 0.3) times the Hertz peak (disk); 0.99-1.30 times at nu = 0.3, ``v`` = 0.01-0.3
+    (sphere, the walls of :func:`contact_angle_estimate`); a larger one only costs a repeated run.
     """
-    force, a = _hertz_estimate(v)
-    return 2.0 * (2.0 * force / (math.pi * a))
+    return 2.0 * peak_pressure(v, geometry, nu)
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> float:
@@ -167,11 +171,13 @@ def _dot(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.einsum("i,i->", a, b))
 
 
-def model_for(material: Material, v: float, alpha: float, settings: FemSettings) -> FemModel:
+def model_for(
+    material: Material, v: float, alpha: float, settings: FemSettings, geometry: str = "disk"
+) -> FemModel:
     """The (cached) :class:`FemModel` that :func:`fem_collide` uses for these inputs."""
     angle = settings.contact_angle
     if angle is None:
-        angle = contact_angle_estimate(v, alpha)
+        angle = contact_angle_estimate(v, alpha, geometry, material.nu)
     return fem_model(
         material,
         int(settings.refine),
@@ -180,6 +186,7 @@ def model_for(material: Material, v: float, alpha: float, settings: FemSettings)
         settings.h_far,
         settings.grading,
         settings.n_gauss,
+        geometry,
     )
 
 
@@ -189,7 +196,7 @@ def _stable_step(model: FemModel, alpha: float, pressure: float, safety: float) 
 
 
 def _start_position(model: FemModel, alpha: float, e0: float) -> float:
-    """Reference centre where the undeformed half disk's wall energy is ``CONTACT_TOL e0``."""
+    """Reference centre where the undeformed body's wall energy is ``CONTACT_TOL e0``."""
     q = model.quad
     integral = float(q.weight @ np.exp(alpha * (q.x_ref - q.x_ref.max())))
     return -q.x_ref.max() + math.log(CONTACT_TOL * e0 * alpha / integral) / alpha
@@ -263,9 +270,11 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
     """Integrate one collision with velocity Verlet at fixed step ``dt``."""
     disk, quad = model.disk, model.quad
     mass, r = disk.mass, model.r
+    copies = disk.section.copies
     e0 = 0.5 * mass * v**2
     x_c = _start_position(model, alpha, e0)
-    t_max = s.max_time or ((-1.0 - x_c) / v + 4.0 * contact_time_estimate(float(v)) + 10.0)
+    t_contact = contact_time(v, disk.geometry, disk.material.nu)
+    t_max = s.max_time or ((-1.0 - x_c) / v + 4.0 * t_contact + 10.0)
     limit_w2 = (2.0 / dt) ** 2  # central differences are unstable beyond this omega^2
     u = np.zeros(disk.n_dofs)
     ud = v * disk.rigid
@@ -281,7 +290,7 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
     while True:
         if t > t_max:
             raise FemCollisionError(
-                f"the disk did not separate from the wall within t = {t:.3g} R/c "
+                f"the {disk.geometry} did not separate from the wall within t = {t:.3g} R/c "
                 f"({out.steps} steps of dt = {dt:.3g}); raise max_time or check v and alpha"
             )
         p += 0.5 * dt * f
@@ -307,7 +316,7 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
             out.contact_time += frac * dt
         comp_prev = comp
         out.max_compression = max(out.max_compression, comp)
-        out.max_force = max(out.max_force, 2.0 * F)
+        out.max_force = max(out.max_force, copies * F)
         if F > 0:
             pmax = float(np.max(dens / quad.weight))
             out.max_pressure = max(out.max_pressure, pmax)
@@ -315,7 +324,7 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
                 out.stable = False
                 return out
         if s.record and out.steps % rec_every == 0:
-            out.history.append((t, x0, _dot(r, ud) / mass, 2.0 * F))
+            out.history.append((t, x0, _dot(r, ud) / mass, copies * F))
         if out.steps % check_every:
             continue
         vcom = _dot(r, ud) / mass
@@ -334,19 +343,23 @@ def fem_collide(
     v: float,
     alpha: float,
     *,
+    geometry: str = "disk",
     settings: FemSettings | None = None,
     **overrides,
 ) -> CollisionResult:
-    """One disk-wall collision solved with finite elements (no modal truncation).
+    """One disk-wall (or sphere-wall) collision solved with finite elements (no modal truncation).
 
     Parameters
     ----------
     material_or_nu : Material or float
-        The disk's material, or its two-dimensional Poisson number (``E = rho = 1``).
+        The body's material, or its Poisson number (``E = rho = 1``): two-dimensional for the
+        disk, three-dimensional (in ``(-1, 0.5)``) for the sphere.
     v : float
         Speed towards the wall, units of ``c``, in (0, 1).
     alpha : float
         Wall hardness, ``1 / R``.
+    geometry : {"disk", "sphere"}
+        The body (:mod:`restitution.fem.section`).
     settings : FemSettings, optional
         Numerical settings; keyword ``overrides`` (e.g. ``refine=2``) replace single fields.
 
@@ -356,30 +369,33 @@ def fem_collide(
         ``method="fem"``, ``n_modes=0``, ``integrator="verlet"``; ``epsilon`` from the
         centre-of-mass velocity after separation, ``max_force`` for the whole disk (``E R``),
         ``dt`` and ``n_steps`` of the accepted run, ``wall_time_s`` including the mesh and
-        matrix set-up.
+        matrix set-up. For the sphere ``max_force`` is the whole sphere's (``E R^2``).
 
     Raises
     ------
     InputError
-        For ``v`` outside (0, 1) or non-positive ``alpha``.
+        For ``v`` outside (0, 1), non-positive ``alpha``, an unknown ``geometry`` or a Poisson
+        number outside the body's range.
     FemCollisionError
         When no step within ``max_step_reductions`` reductions meets ``energy_tol``.
     """
     settings = settings or FemSettings()
     if overrides:
         settings = replace(settings, **overrides)
-    material = as_material(material_or_nu)
+    material = as_material(material_or_nu, geometry)
     v, alpha = float(v), float(alpha)
     if not (0.0 < v < 1.0):
         raise InputError(
-            f"the speed v must lie in (0, 1) in units of c (the disk's speed towards the wall), "
-            f"got {v}"
+            f"the speed v must lie in (0, 1) in units of c (the {geometry}'s speed towards the "
+            f"wall), got {v}"
         )
     if not (alpha > 0 and math.isfinite(alpha)):
         raise InputError(f"the wall hardness alpha must be positive, got {alpha}")
     t_start = time.perf_counter()
-    model = model_for(material, v, alpha, settings)
-    dt = _stable_step(model, alpha, pressure_estimate(v), settings.step_safety)
+    model = model_for(material, v, alpha, settings, geometry)
+    dt = _stable_step(
+        model, alpha, pressure_estimate(v, geometry, material.nu), settings.step_safety
+    )
     run = None
     for attempt in range(settings.max_step_reductions + 1):
         run = _run(model, v, alpha, dt, settings)

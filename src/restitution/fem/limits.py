@@ -12,10 +12,12 @@ The FEM route has no modal truncation; its two limits are
    extrapolation (:func:`restitution.limits.extrapolation.extrapolate_alpha`, errors propagated).
 
 The ``alpha`` are those of the modal sweeps (:mod:`restitution.limits.defaults`, by default
-``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))``), so both routes
-extrapolate from the same walls. As a check the other order is taken too (``alpha -> inf`` at
-every level, then Richardson); the error is the larger of the two orders' errors combined in
-quadrature with their difference, as in :func:`restitution.limits.extrapolation.combined_limit`.
+``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))`` for the disk and
+Hertz's ``(15 m v^2 / (16 E*))^(2/5)`` for the sphere), so both routes extrapolate from the same
+walls. As a check the other order is taken too (``alpha -> inf`` at every level, then
+Richardson); the error is the larger of the two orders' errors combined in quadrature with their
+difference, as in :func:`restitution.limits.extrapolation.combined_limit`.
+``geometry="sphere"`` takes both limits for the sphere (:mod:`restitution.fem.section`).
 """
 
 from __future__ import annotations
@@ -31,7 +33,12 @@ from restitution._version import __version__
 from restitution.bodies.material import Material
 from restitution.errors import InputError
 from restitution.fem.elasticity import as_material
-from restitution.fem.graded import ContactGrading, graded_settings, mesh_summary
+from restitution.fem.graded import (
+    ContactGrading,
+    default_grading,
+    graded_settings,
+    mesh_summary,
+)
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide, model_for
 from restitution.fem.richardson import MeshLimit, richardson_limit
 from restitution.jsonable import finite_or_none
@@ -107,7 +114,7 @@ class FemEpsilon:
     Attributes
     ----------
     nu, v : float
-        Poisson number and speed towards the wall (``c``).
+        Poisson number (the body's own) and speed towards the wall (``c``).
     alpha : float or None
         The fixed wall hardness (``1/R``) when only ``h -> 0`` was taken; ``None`` for both.
     epsilon, epsilon_err, energy_loss, energy_loss_err : float
@@ -128,6 +135,7 @@ class FemEpsilon:
     grading : ContactGrading
     levels : tuple of int
     wall_time_s : float
+    geometry : {"disk", "sphere"}
     """
 
     nu: float
@@ -148,6 +156,7 @@ class FemEpsilon:
     grading: ContactGrading
     levels: tuple[int, ...]
     wall_time_s: float
+    geometry: str = "disk"
 
     @property
     def alphas(self) -> tuple[float, ...]:
@@ -160,8 +169,8 @@ class FemEpsilon:
         where = f" at alpha = {self.alpha:g}" if self.alpha is not None else ""
         dofs = sorted({r.n_dofs for r in self.runs})
         lines = [
-            f"epsilon = {self.epsilon:.6f} +- {self.epsilon_err:.6f}   (nu = {self.nu:g}, "
-            f"v = {self.v:g} c towards the wall; FEM, {limits}{where})",
+            f"epsilon = {self.epsilon:.6f} +- {self.epsilon_err:.6f}   ({self._body}nu = "
+            f"{self.nu:g}, v = {self.v:g} c towards the wall; FEM, {limits}{where})",
             f"energy loss 1 - epsilon^2 = {self.energy_loss:.6f} +- {self.energy_loss_err:.6f}",
             f"grid: alpha = {', '.join(f'{a:g}' for a in self.alphas)}; mesh levels "
             f"{', '.join(str(k) for k in self.levels)} ({dofs[0]}-{dofs[-1]} dofs, "
@@ -170,6 +179,11 @@ class FemEpsilon:
         if not self.asymptotic_ok:
             lines.append(f"warning: not asymptotic: {self.message}")
         return "\n".join(lines)
+
+    @property
+    def _body(self) -> str:
+        """``"sphere, "`` for a sphere; nothing for the disk (the default body)."""
+        return "" if self.geometry == "disk" else f"{self.geometry}, "
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary with the keys of the modal route's
@@ -184,9 +198,10 @@ class FemEpsilon:
             return value if value is None or math.isfinite(value) else None
 
         return {
+            "geometry": self.geometry,
             "nu": self.nu,
             "v": self.v,
-            "v_units": "c (speed of the disk towards the wall)",
+            "v_units": f"c (speed of the {self.geometry} towards the wall)",
             "alpha": self.alpha,
             "limits": ["h"] if self.alpha is not None else ["alpha", "h"],
             "epsilon": finite_or_none(self.epsilon),
@@ -227,12 +242,17 @@ class FemEpsilon:
 
 
 def _one_run(
-    material: Material, v: float, alpha: float, level: int, settings: FemSettings
+    material: Material,
+    v: float,
+    alpha: float,
+    level: int,
+    settings: FemSettings,
+    geometry: str = "disk",
 ) -> FemRun:
     start = time.perf_counter()
-    summary = mesh_summary(model_for(material, v, alpha, settings), v)
+    summary = mesh_summary(model_for(material, v, alpha, settings, geometry), v)
     try:
-        r = fem_collide(material, v, alpha, settings=settings)
+        r = fem_collide(material, v, alpha, geometry=geometry, settings=settings)
     except FemCollisionError as exc:
         return FemRun(
             alpha, level, summary.n_dofs, summary.h_contact, float("nan"), float("nan"), 0,
@@ -255,6 +275,7 @@ def fem_epsilon(
     material_or_nu: Material | float,
     v: float,
     *,
+    geometry: str = "disk",
     alpha: float | None = None,
     alphas: Sequence[float] | None = None,
     alpha_scale: str | None = None,
@@ -268,20 +289,25 @@ def fem_epsilon(
     Parameters
     ----------
     material_or_nu : Material or float
-        The disk's material or its two-dimensional Poisson number.
+        The body's material or its Poisson number (two-dimensional for the disk,
+        three-dimensional for the sphere).
     v : float
         Speed towards the wall before the collision, ``c``.
+    geometry : {"disk", "sphere"}
+        The body (:mod:`restitution.fem.section`).
     alpha : float, optional
         Only take ``h -> 0`` at this wall hardness (``1/R``).
     alphas : sequence of float, optional
         Wall hardness values for ``alpha -> inf``, read by ``alpha_scale``; default the modal
-        sweeps' ``alpha * delta_max(v) = 40, 80, 160``.
+        sweeps' ``alpha * delta_max(v) = 40, 80, 160`` (``delta_max`` the body's quasistatic
+        compression, :func:`restitution.limits.defaults.walls_at`).
     alpha_scale : {"absolute", "compression"}, optional
         ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; default as
         :data:`restitution.limits.defaults.ALPHA_SCALE` (the modal sweeps' default).
     levels : sequence of int
         Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level).
     grading : ContactGrading, optional
+        Default :func:`restitution.fem.graded.default_grading` of the ``geometry``.
     base : FemSettings, optional
         Integrator settings of every run.
     on_run : callable, optional
@@ -292,14 +318,14 @@ def fem_epsilon(
     FemEpsilon
         Failed runs are kept (``epsilon = nan``, with their message) and flag the result.
     """
-    material = as_material(material_or_nu)
+    material = as_material(material_or_nu, geometry)
     v = float(v)
     if not 0.0 < v < 1.0:
         raise InputError(f"the speed v must lie in (0, 1) in units of c, got {v}")
     levels = tuple(int(k) for k in levels)
     if len(levels) < 2 or any(b - a != 1 for a, b in zip(levels, levels[1:], strict=False)):
         raise InputError(f"levels must be at least two consecutive integers, got {levels}")
-    grading = grading or ContactGrading()
+    grading = grading or default_grading(geometry)
     if alpha is not None:
         if not (alpha > 0 and math.isfinite(alpha)):
             raise InputError(f"the wall hardness alpha must be positive (1/R), got {alpha}")
@@ -310,19 +336,23 @@ def fem_epsilon(
         check_distinct("alphas", products)
         check_alphas(products)
         check_alpha_scale(scale)
-        alpha_values = tuple(sorted(walls_at(v, products, scale)))
+        alpha_values = tuple(
+            sorted(walls_at(v, products, scale, geometry=geometry, nu=material.nu))
+        )
     start = time.perf_counter()
     runs = []
     for a in alpha_values:
         for k in levels:
-            run = _one_run(material, v, a, k, graded_settings(v, a, k, grading, base))
+            settings = graded_settings(v, a, k, grading, base, geometry=geometry, nu=material.nu)
+            run = _one_run(material, v, a, k, settings, geometry)
             runs.append(run)
             if on_run is not None:
                 on_run(run)
-    return _assemble(material, v, alpha, runs, levels, grading, time.perf_counter() - start)
+    wall = time.perf_counter() - start
+    return _assemble(material, v, alpha, runs, levels, grading, wall, geometry)
 
 
-def _assemble(material, v, alpha, runs, levels, grading, wall) -> FemEpsilon:
+def _assemble(material, v, alpha, runs, levels, grading, wall, geometry="disk") -> FemEpsilon:
     """Both limits from the grid of runs."""
     alpha_values = sorted({r.alpha for r in runs})
     loss = np.array(
@@ -393,4 +423,5 @@ def _assemble(material, v, alpha, runs, levels, grading, wall) -> FemEpsilon:
         grading=grading,
         levels=levels,
         wall_time_s=wall,
+        geometry=geometry,
     )

@@ -2,8 +2,9 @@
 
 Units: ``E = rho = R = 1``; frequencies in ``c / R``, compliances in ``R / E``.
 
-* The discretised half disk (mass-lumped P2 + bubble, :mod:`restitution.fem.elasticity`) on the
-  graded mesh (:func:`restitution.fem.mesh.graded_half_disk`) and its arc quadrature.
+* The discretised half disk (mass-lumped P2 + bubble, :mod:`restitution.fem.elasticity`; for
+  ``geometry="sphere"`` the sphere's axisymmetric meridian section) on the graded mesh
+  (:func:`restitution.fem.mesh.graded_half_disk`) and its arc quadrature.
 * ``omega_K``: the largest frequency of the mesh, and ``lambda_B``: the largest eigenvalue of
   ``M^-1 B^T W B``; the wall adds at most ``alpha p_max lambda_B`` to ``omega^2`` (``p_max`` the
   largest pressure), which bounds the stable step of the explicit integrator.
@@ -103,15 +104,17 @@ def fem_model(
     h_far: float = 0.25,
     grading: float = 0.3,
     n_gauss: int = 8,
+    geometry: str = "disk",
 ) -> FemModel:
     """Mesh, matrices and bounds for one material and mesh (cached).
 
-    Parameters are those of :class:`FemSettings` (``contact_angle`` in radians).
+    Parameters are those of :class:`FemSettings` (``contact_angle`` in radians) and the
+    ``geometry`` (``"disk"`` or ``"sphere"``, :mod:`restitution.fem.section`).
     """
     mesh = graded_half_disk(
         refine, contact_angle, h_contact=h_contact, h_far=h_far, grading=grading
     )
-    disk = assemble_half_disk(mesh, material, "P2+lumped")
+    disk = assemble_half_disk(mesh, material, "P2+lumped", geometry)
     quad = arc_quadrature(disk, n_gauss)
     mass_diagonal = disk.M.diagonal()
     r = disk.M @ disk.rigid
