@@ -97,8 +97,9 @@ def test_report_links_and_images_resolve(run):
     md_links = _links(md, r"\]\(([^)\s]+)\)")
     # The HTML carries every figure inline: the page shows them without any other file.
     images = re.findall(r'<img src="([^"]+)"', html)
-    assert len(images) == len(run.figures)
-    pngs = {f.png.read_bytes() for f in run.figures}
+    extra = [] if run.spheres is None else [run.spheres]  # the shipped sphere laws' figure
+    assert len(images) == len(run.figures) + len(extra)
+    pngs = {f.png.read_bytes() for f in run.figures} | {p.read_bytes() for p in extra}
     for src in images:
         assert src.startswith("data:image/png;base64,"), src[:60]
         assert base64.b64decode(src.split(",", 1)[1]) in pngs
@@ -106,6 +107,8 @@ def test_report_links_and_images_resolve(run):
     for link in [x for x in html_links if not x.startswith("data:")] + md_links:
         assert "://" not in link, link
         assert (run.out / link).is_file(), link
+    # From a source tree the documents the report links are copied beside it.
+    assert {p.name for p in run.docs} == {"equations.md", "quasistatic.md", "spheres.md"}
     # The law exports are written and linked from both renderings.
     assert len(run.laws) == len(QUICK.nus)
     for law in run.laws:

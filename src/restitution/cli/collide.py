@@ -223,11 +223,8 @@ def collide(
     """
     body = body_nu(nu, plane, geometry)
     material = material_from(nu, plane) if geometry == "disk" else None
-    if geometry != "disk" and (excite != "none" or method == "fem"):
-        raise InputError(
-            f"--excite and --method fem are available for disks only; leave them out for a "
-            f"{geometry}"
-        )
+    if geometry != "disk" and excite != "none":
+        raise InputError(f"--excite is available for disks only; leave it out for a {geometry}")
     if excite != "none":
         return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
                         energy_tol, excite, as_json, strict)  # fmt: skip
@@ -257,7 +254,13 @@ def collide(
         if method == "fem":
             from restitution.fem import fem_collide
 
-            result = fem_collide(material, v, alpha, refine=mesh_refine)
+            result = fem_collide(
+                material if geometry == "disk" else body,
+                v,
+                alpha,
+                refine=mesh_refine,
+                geometry=geometry,
+            )
         else:
             from restitution.dynamics.collision import collide as run
             from restitution.dynamics.collision import rank_modes

@@ -210,13 +210,10 @@ def epsilon(
             "--alpha-scale set the alpha -> infinity extrapolation: give one or the other"
         )
     if method == "fem":
-        if geometry != "disk":
-            raise InputError(
-                f"the FEM route of the {geometry} is not available yet; use --method modal"
-            )
         modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
         modal_only.update({"--store": store, "--retry-failed": retry_failed or None})
-        _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict)
+        _fem_epsilon(nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress,
+                     strict)  # fmt: skip
         return
     settings = _settings([v], alphas, modes, alpha_scale, geometry)
     swept = replace(settings, velocities=(float(v),))
@@ -281,7 +278,9 @@ def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
     )
 
 
-def _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict):
+def _fem_epsilon(
+    nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict
+):
     """``epsilon --method fem``: both limits (or h -> 0 at one alpha) on the FEM route, printed
     like the modal route (JSON: the same envelope and keys, with levels in place of N)."""
     from restitution.fem.limits import fem_epsilon
@@ -306,12 +305,13 @@ def _fem_epsilon(nu, v, alpha, alphas, alpha_scale, as_json, modal_only, progres
         alphas=tuple(alphas) or None,
         alpha_scale=alpha_scale,
         on_run=report if progress else None,
+        geometry=geometry,
     )
     status, advice = _status(result.asymptotic_ok, result.message, 0)
     if status != Status.OK:
         advice = f"{result.message}; refine the meshes or add harder walls (--alphas)"
-    inputs = {"nu": nu, "v": v, "alpha": alpha, "method": "fem", "alphas": list(alphas) or None,
-              "alpha_scale": alpha_scale}  # fmt: skip
+    inputs = {"geometry": geometry, "nu": nu, "v": v, "alpha": alpha, "method": "fem",
+              "alphas": list(alphas) or None, "alpha_scale": alpha_scale}  # fmt: skip
     if as_json:
         click.echo(
             dumps(envelope("epsilon", inputs, result.to_dict(), status=status, advice=advice))

@@ -178,13 +178,14 @@ def judge_law(points: Iterable, laws: Mapping[float, LawLike] | LawLike) -> LawJ
     return LawJudgement(points=tuple(rows))
 
 
-def judge_shipped_law(reference_path=None) -> LawJudgement:
-    """The shipped FEM reference against the shipped modal laws (``restitution.law(nu)``)."""
+def judge_shipped_law(reference_path=None, *, geometry: str = "disk") -> LawJudgement:
+    """The shipped FEM reference of the body ``geometry`` against its shipped modal laws
+    (``restitution.law(nu, geometry=geometry)``)."""
     from restitution.fem.reference import load_reference
     from restitution.laws.law import law
 
-    points = load_reference(reference_path)
-    laws = {nu: law(nu) for nu in sorted({p.nu for p in points})}
+    points = load_reference(reference_path, geometry=geometry)
+    laws = {nu: law(nu, geometry=geometry) for nu in sorted({p.nu for p in points})}
     return judge_law(points, laws)
 
 

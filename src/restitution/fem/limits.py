@@ -11,12 +11,12 @@ The FEM route has no modal truncation; its two limits are
 2. ``alpha -> infinity`` of those limits, linear in ``1/alpha``, with the package's
    extrapolation (:func:`restitution.limits.extrapolation.extrapolate_alpha`, errors propagated).
 
-The ``alpha`` are those of the modal sweeps (:mod:`restitution.limits.defaults`, by default
-``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))`` for the disk and
-Hertz's ``(15 m v^2 / (16 E*))^(2/5)`` for the sphere), so both routes extrapolate from the same
-walls. As a check the other order is taken too (``alpha -> inf`` at every level, then
-Richardson); the error is the larger of the two orders' errors combined in quadrature with their
-difference, as in :func:`restitution.limits.extrapolation.combined_limit`.
+The ``alpha`` are those of the modal sweeps (:func:`restitution.limits.defaults.default_products`:
+``alpha * delta_max(v) = 40, 80, 160`` with ``delta_max = v sqrt(ln(4/v))`` for the disk,
+``80, 160, 320`` with Hertz's ``(15 m v^2 / (16 E*))^(2/5)`` for the sphere), so both routes
+extrapolate from the same walls. As a check the other order is taken too (``alpha -> inf`` at
+every level, then Richardson); the error is the larger of the two orders' errors combined in
+quadrature with their difference, as in :func:`restitution.limits.extrapolation.combined_limit`.
 ``geometry="sphere"`` takes both limits for the sphere (:mod:`restitution.fem.section`).
 """
 
@@ -43,11 +43,11 @@ from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide, 
 from restitution.fem.richardson import MeshLimit, richardson_limit
 from restitution.jsonable import finite_or_none
 from restitution.limits.defaults import (
-    ALPHA_PRODUCTS,
     ALPHA_SCALE,
     check_alpha_scale,
     check_alphas,
     check_distinct,
+    default_products,
     walls_at,
 )
 from restitution.limits.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
@@ -299,7 +299,8 @@ def fem_epsilon(
         Only take ``h -> 0`` at this wall hardness (``1/R``).
     alphas : sequence of float, optional
         Wall hardness values for ``alpha -> inf``, read by ``alpha_scale``; default the modal
-        sweeps' ``alpha * delta_max(v) = 40, 80, 160`` (``delta_max`` the body's quasistatic
+        sweeps' products ``alpha * delta_max(v)`` of the body
+        (:func:`restitution.limits.defaults.default_products`; ``delta_max`` its quasistatic
         compression, :func:`restitution.limits.defaults.walls_at`).
     alpha_scale : {"absolute", "compression"}, optional
         ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; default as
@@ -332,7 +333,7 @@ def fem_epsilon(
         alpha_values = (float(alpha),)
     else:
         scale = alpha_scale or ALPHA_SCALE
-        products = tuple(float(a) for a in (alphas or ALPHA_PRODUCTS))
+        products = tuple(float(a) for a in (alphas or default_products(geometry)))
         check_distinct("alphas", products)
         check_alphas(products)
         check_alpha_scale(scale)

@@ -7,7 +7,9 @@ Units: ``E = rho = R = 1``; ``v`` in ``c`` (speed towards the wall), ``alpha`` i
 finished): the inputs, the mesh sizes, every level's epsilon, drift, step and time, both fits,
 the code version (:func:`restitution.provenance.fem_code_version`: a digest of the FEM sources
 and what they import) and the package versions.
-The shipped file is ``restitution/laws/data/fem_reference.json``; :func:`load_reference` reads it.
+The shipped files are ``restitution/laws/data/fem_reference.json`` (the disk) and
+``fem_reference_sphere.json`` (the sphere, :data:`SPHERE_REFERENCE_POINTS`);
+:func:`load_reference` reads them.
 """
 
 from __future__ import annotations
@@ -23,13 +25,15 @@ from pathlib import Path
 
 from restitution import atomic
 from restitution.errors import InputError
-from restitution.fem.graded import ContactGrading
+from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
 from restitution.provenance import fem_code_version
 
 __all__ = [
     "REFERENCE_POINTS",
+    "SPHERE_REFERENCE_POINTS",
     "ReferencePoint",
+    "reference_filename",
     "compute_reference",
     "load_reference",
     "merge_reference",
@@ -48,6 +52,19 @@ REFERENCE_POINTS = (
 )
 """``(nu, v, first level)`` of the shipped reference: v = 1e-4, 1e-3, 1e-2, 0.1 at both nu and
 0.3 at nu = 0.9. Three levels from the first; the finer levels 1-3 where they are affordable."""
+
+
+SPHERE_REFERENCE_POINTS = tuple(
+    (nu, v, 0) for nu in (0.2, 0.3, 0.45) for v in (0.00521, 0.0189, 0.0993)
+)
+"""``(nu, v, first level)`` of the sphere's reference: three 3D Poisson numbers of the shipped
+sphere laws (the ends and steel), each at three of the laws' computed speeds (the law's own
+points, so that the judge tests the extrapolation, not the interpolation between speeds)."""
+
+
+def reference_filename(geometry: str = "disk") -> str:
+    """``fem_reference.json`` for the disk, ``fem_reference_<geometry>.json`` otherwise."""
+    return "fem_reference.json" if geometry == "disk" else f"fem_reference_{geometry}.json"
 
 
 def _environment() -> dict:
@@ -93,6 +110,7 @@ def compute_reference(
     grading: ContactGrading | None = None,
     on_run: Callable[[float, float, FemRun], None] | None = None,
     provenance: dict | None = None,
+    geometry: str = "disk",
 ) -> dict:
     """Compute FEM epsilon with errors at ``points`` and write them with provenance to ``path``.
 
@@ -109,21 +127,26 @@ def compute_reference(
         Called with ``(nu, v, run)`` after every collision.
     provenance : dict, optional
         Further provenance to store (e.g. the commit of the sources).
+    geometry : {"disk", "sphere"}
+        The body (:mod:`restitution.fem.section`); its default grading when ``grading`` is not
+        given (:func:`restitution.fem.graded.default_grading`).
 
     Returns
     -------
     dict
         What was written.
     """
-    grading = grading or ContactGrading()
+    grading = grading or default_grading(geometry)
     path = Path(path)
     doc = {
         "description": (
-            "FEM epsilon of the disk-wall collision, extrapolated to h -> 0 (Richardson, three "
-            "contact-graded meshes) and alpha -> infinity (linear in 1/alpha); "
+            f"FEM epsilon of the {geometry}-wall collision, extrapolated to h -> 0 (Richardson, "
+            "three contact-graded meshes) and alpha -> infinity (linear in 1/alpha); "
             "restitution.fem.reference.compute_reference"
         ),
-        "units": "E = rho = R = 1; v in c = sqrt(E/rho) (speed towards the wall); alpha in 1/R",
+        "geometry": geometry,
+        "units": f"E = rho = R = 1 of the {geometry}'s constants; v in c = sqrt(E/rho) (speed "
+        "towards the wall); alpha in 1/R",
         "created": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
         "code_version": fem_code_version(),
         "environment": _environment(),
@@ -138,7 +161,9 @@ def compute_reference(
         first = int(point[2]) if len(point) > 2 else 0
         report = None if on_run is None else (lambda run, nu=nu, v=v: on_run(nu, v, run))
         shifted = [first + int(k) for k in levels]
-        result = fem_epsilon(nu, v, levels=shifted, grading=grading, on_run=report)
+        result = fem_epsilon(
+            nu, v, levels=shifted, grading=grading, on_run=report, geometry=geometry
+        )
         doc["points"].append(result.to_dict())
         atomic.write_text(path, json.dumps(doc, indent=1) + "\n")
     return doc
@@ -169,16 +194,24 @@ def merge_reference(docs: list[dict]) -> dict:
     }
 
 
-def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]:
-    """The FEM reference points from ``path`` (default: the shipped file)."""
+def load_reference(
+    path: str | Path | None = None, *, geometry: str = "disk"
+) -> tuple[ReferencePoint, ...]:
+    """The FEM reference points from ``path`` (default: the shipped file of ``geometry``).
+
+    A file of another body is refused (files without ``"geometry"`` are the disk's).
+    """
     if path is None:
-        text = (
-            resources.files("restitution.laws").joinpath("data", "fem_reference.json").read_text()
-        )
+        name = reference_filename(geometry)
+        text = resources.files("restitution.laws").joinpath("data", name).read_text()
     else:
         text = Path(path).read_text()
     try:
         doc = json.loads(text)
+        if doc.get("geometry", "disk") != geometry:
+            raise InputError(
+                f"{path} is the FEM reference of the {doc['geometry']}, not of the {geometry}"
+            )
         points = tuple(
             ReferencePoint(
                 nu=float(p["nu"]),
@@ -197,18 +230,17 @@ def load_reference(path: str | Path | None = None) -> tuple[ReferencePoint, ...]
 
 
 def main(argv: list[str] | None = None) -> None:
-    """``python -m restitution.fem.reference OUT.json [nu:v[:first_level] ...]``."""
+    """``python -m restitution.fem.reference OUT.json [--geometry sphere] [nu:v[:level] ...]``."""
+    import argparse
     import subprocess
-    import sys
 
-    args = sys.argv[1:] if argv is None else argv
-    if not args:
-        print(
-            "usage: python -m restitution.fem.reference OUT.json [nu:v[:level] ...]",
-            file=sys.stderr,
-        )
-        raise SystemExit(2)
-    points = [tuple(float(x) for x in a.split(":")) for a in args[1:]] or REFERENCE_POINTS
+    parser = argparse.ArgumentParser(description="Compute FEM reference values of epsilon.")
+    parser.add_argument("out", help="JSON file to write")
+    parser.add_argument("points", nargs="*", help="nu:v[:first_level] (default: the shipped set)")
+    parser.add_argument("--geometry", choices=("disk", "sphere"), default="disk")
+    args = parser.parse_args(argv)
+    default = SPHERE_REFERENCE_POINTS if args.geometry == "sphere" else REFERENCE_POINTS
+    points = [tuple(float(x) for x in a.split(":")) for a in args.points] or default
     try:
         commit = subprocess.run(
             ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=True
@@ -224,7 +256,9 @@ def main(argv: list[str] | None = None) -> None:
             flush=True,
         )
 
-    compute_reference(args[0], points, on_run=report, provenance={"git_commit": commit})
+    compute_reference(
+        args.out, points, on_run=report, provenance={"git_commit": commit}, geometry=args.geometry
+    )
 
 
 if __name__ == "__main__":

@@ -25,6 +25,7 @@ __all__ = [
     "check_alpha_scale",
     "check_alphas",
     "check_distinct",
+    "default_products",
     "walls_at",
 ]
 
@@ -47,6 +48,12 @@ ALPHA_SCALES: tuple[str, ...] = ("absolute", "compression")
 
 ALPHA_SCALE = "compression"
 """Default reading of the wall hardness values (one of :data:`ALPHA_SCALES`)."""
+
+
+def default_products(geometry: str = "disk") -> tuple[float, ...]:
+    """The default walls ``alpha * delta_max(v)`` of the body ``geometry``:
+    :data:`ALPHA_PRODUCTS` for the disk, :data:`SPHERE_ALPHA_PRODUCTS` for the sphere."""
+    return SPHERE_ALPHA_PRODUCTS if body_kind(geometry).geometry == "sphere" else ALPHA_PRODUCTS
 
 
 def check_distinct(name: str, values: Sequence) -> None:

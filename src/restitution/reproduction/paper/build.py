@@ -31,6 +31,7 @@ from restitution.reproduction.paper.files import (
     to_json,
     write_figures,
     write_law_exports,
+    write_sphere_figure,
     write_table1,
 )
 from restitution.reproduction.paper.settings import FULL, PaperSettings
@@ -40,7 +41,7 @@ __all__ = ["PaperRun", "build_paper"]
 
 def _docs_dir() -> Path | None:
     """The project's ``docs`` folder when running from a source tree (src layout), else None."""
-    candidate = Path(__file__).resolve().parents[3] / "docs"
+    candidate = Path(__file__).resolve().parents[4] / "docs"  # src/restitution/reproduction/paper
     return candidate if (candidate / "equations.md").is_file() else None
 
 
@@ -64,6 +65,8 @@ class PaperRun:
         Copies of the project's documentation linked from the report.
     laws : tuple of LawExport
         The epsilon(v) law of this run per Poisson number (JSON, CSV, plain table).
+    spheres : Path or None
+        ``sphere_cylinder.png`` (the shipped sphere laws beside cylinders), if drawn.
     started : str
         UTC start time, ISO 8601.
     run_time_s : float
@@ -85,6 +88,7 @@ class PaperRun:
     started: str
     run_time_s: float
     timings: tuple[tuple[str, float], ...] = field(default_factory=tuple)
+    spheres: Path | None = None
 
 
 def build_paper(
@@ -150,6 +154,7 @@ def build_paper(
         t1 = write_table1(data.table1, out)
         docs = _copy_docs(out)
         laws = write_law_exports(data.curves, out)
+        spheres = write_sphere_figure(out)
         record = out / "paper.json"
         run = PaperRun(
             out=out,
@@ -165,6 +170,7 @@ def build_paper(
             started=started,
             run_time_s=time.perf_counter() - t0,
             timings=tuple(stages.timings),
+            spheres=spheres,
         )
         blocks = paper_blocks(run, store_path=_store_label(store))
         title = "Coefficient of restitution for elastic disks: reproduction report"
@@ -194,7 +200,7 @@ def _copy_docs(out: Path) -> tuple[Path, ...]:
     dst = out / "docs"
     dst.mkdir(exist_ok=True)
     copied = []
-    for name in ("equations.md", "quasistatic.md"):
+    for name in ("equations.md", "quasistatic.md", "spheres.md"):
         if (src / name).is_file():
             shutil.copyfile(src / name, dst / name)
             copied.append(dst / name)

@@ -204,6 +204,20 @@ def write_law_exports(curves: dict, out: Path) -> tuple[LawExport, ...]:
     return tuple(written)
 
 
+def write_sphere_figure(out: Path) -> Path | None:
+    """``sphere_cylinder.png``: the shipped sphere laws beside the cylinders' of the same
+    materials (:mod:`restitution.reproduction.figures.sphere_cylinder`); ``None`` when fewer than
+    three sphere laws are shipped (no material could be served)."""
+    from restitution.laws.law_nu import shipped_nus
+    from restitution.reproduction.figures import sphere_cylinder
+
+    if len(shipped_nus("sphere")) < 3:
+        return None
+    path = Path(out) / "sphere_cylinder.png"
+    sphere_cylinder.plot(sphere_cylinder.compute(), path)
+    return path
+
+
 def to_json(obj: Any) -> str:
     """``obj`` as JSON through the package's one numpy encoder, NaN as null."""
     plain = json.loads(json.dumps(obj, default=json_default))
