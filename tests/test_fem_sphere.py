@@ -276,7 +276,10 @@ def test_fem_epsilon_takes_the_sphere_walls_and_reports_the_sphere():
     result = fem_epsilon(NU, V, geometry="sphere", levels=(0, 1), grading=coarse)
     assert result.geometry == "sphere"
     assert default_grading("sphere").h_far < default_grading("disk").h_far
-    walls = walls_at(V, (40, 80, 160), "compression", geometry="sphere", nu=NU)
+    # The modal sweeps' walls of the sphere, so that both routes extrapolate from the same.
+    from restitution.limits.sweep import SPHERE_DEFAULTS
+
+    walls = walls_at(V, SPHERE_DEFAULTS.alphas, "compression", geometry="sphere", nu=NU)
     assert_allclose(result.alphas, sorted(walls), rtol=1e-12)
     assert math.isfinite(result.epsilon) and result.epsilon_err > 0
     assert 0.98 < result.epsilon < 1.0
@@ -376,3 +379,25 @@ def test_fem_epsilon_both_limits_at_v_001():
     assert all(m.limit_err < 0.2 * fem.energy_loss_err for m in fem.mesh_limits)
     assert abs(fem.order_difference) <= fem.energy_loss_err
     assert 0.998 < fem.epsilon < 1.0
+
+
+def test_the_shipped_sphere_reference_judges_the_shipped_sphere_laws():
+    """fem_reference_sphere.json (SPHERE_REFERENCE_POINTS, provenance) against the shipped
+    sphere laws: every point within two combined errors (docs/spheres.md quotes the table)."""
+    import json
+    from importlib import resources
+
+    from restitution.fem.judge import judge_shipped_law
+    from restitution.fem.reference import SPHERE_REFERENCE_POINTS, load_reference
+
+    points = load_reference(geometry="sphere")
+    assert {(p.nu, p.v) for p in points} == {(nu, v) for nu, v, _ in SPHERE_REFERENCE_POINTS}
+    path = resources.files("restitution.laws").joinpath("data", "fem_reference_sphere.json")
+    doc = json.loads(path.read_text())
+    assert doc["geometry"] == "sphere" and "+fem." in doc["code_version"]
+    assert len(doc["git_commit"]) == 40
+    with pytest.raises(InputError, match="of the sphere, not of the disk"):
+        load_reference(path)
+    judged = judge_shipped_law(geometry="sphere")
+    assert len(judged.compared) == len(points)
+    assert judged.coverage(2.0) == 1.0
