@@ -27,9 +27,11 @@ law: $(STAMP)
 	$(BIN)/python -m restitution.laws.production
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
 
-# The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline; about 50 minutes.
+# The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline (about 40 minutes from
+# a cold store), then their figure beside cylinders in docs/figures.
 law-sphere: $(STAMP)
 	$(BIN)/python -m restitution.laws.production --geometry sphere
+	$(BIN)/python -m restitution.reproduction.figures.sphere_cylinder --figures docs/figures
 
 # The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
 sphere-figures: $(STAMP)

@@ -21,7 +21,7 @@ from restitution.laws.si_law import si_law
 from restitution.reproduction.figures._style import add_notes
 from restitution.status import Status
 
-__all__ = ["MATERIALS", "SICurve", "compute", "plot"]
+__all__ = ["MATERIALS", "SICurve", "compute", "main", "plot"]
 
 MATERIALS: dict[str, tuple[float, float, float]] = {
     "steel": (210e9, 0.30, 7850.0),
@@ -118,3 +118,22 @@ def plot(curves: tuple[SICurve, ...], path=None, notes=()):
         with replacing(path) as tmp:
             fig.savefig(tmp, dpi=110)
     return fig
+
+
+def main(argv=None) -> None:
+    """``python -m restitution.reproduction.figures.sphere_cylinder --figures DIR``."""
+    import argparse
+    from pathlib import Path
+
+    parser = argparse.ArgumentParser(description="Draw spheres beside cylinders (shipped laws).")
+    parser.add_argument("--figures", required=True, help="directory for sphere_cylinder.png")
+    args = parser.parse_args(argv)
+    out = Path(args.figures)
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / "sphere_cylinder.png"
+    plot(compute(), path)
+    print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    main()
