@@ -372,13 +372,16 @@ def test_fem_epsilon_both_limits_at_v_01_agrees_with_the_modal_route():
 
 @pytest.mark.slow
 def test_fem_epsilon_both_limits_at_v_001():
-    # 9 runs, about 100 s (3385-51519 dofs). Measured 0.998611 +- 5e-6; mesh errors 1e-7 to
-    # 1e-6 (oscillatory, contracting 20-50x per level), the alpha extrapolation dominates.
+    # 9 runs, about 100 s (3385-51519 dofs) on the sphere's walls alpha delta_max = 80, 160, 320:
+    # measured 0.9986074 +- 1.2e-6, mesh-limit errors 1.5e-7, 1.0e-6, 1.7e-6 (they grow with the
+    # wall's hardness and now make most of the error). Regression value of this package from
+    # the softer walls 40, 80, 160 (before the sphere's walls were raised): 0.998611 +- 5e-6.
     fem = fem_epsilon(NU, 0.01, geometry="sphere")
     assert fem.asymptotic_ok, fem.message
-    assert all(m.limit_err < 0.2 * fem.energy_loss_err for m in fem.mesh_limits)
+    assert all(m.limit_err < fem.energy_loss_err for m in fem.mesh_limits)
     assert abs(fem.order_difference) <= fem.energy_loss_err
-    assert 0.998 < fem.epsilon < 1.0
+    # Two sets of walls, one hard-wall limit: the extrapolation in 1/alpha holds.
+    assert abs(fem.epsilon - 0.998611) <= 5e-6 + fem.epsilon_err
 
 
 def test_the_shipped_sphere_reference_judges_the_shipped_sphere_laws():

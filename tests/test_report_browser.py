@@ -68,7 +68,7 @@ def test_report_renders_every_figure(run, tmp_path):
     # (restitution.reproduction.report).
     body = re.search(r"<body([^>]*)>", dom)
     assert body is not None, dom[:2000]
-    n = len(run.figures)
+    n = len(run.figures) + (run.spheres is not None)  # and the shipped sphere laws' figure
     assert f'data-images="{n}/{n}"' in body.group(1), body.group(1)
     assert 'data-errors="0"' in body.group(1), body.group(1)
     images = re.findall(r"<img\b[^>]*>", dom)
