@@ -28,10 +28,12 @@ law: $(STAMP)
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
 
 # The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline (about 40 minutes from
-# a cold store), then their figure beside cylinders in docs/figures.
+# a cold store, then 10 minutes of low-speed points), then their figures in docs/figures (beside
+# cylinders; the slow losses of three routes).
 law-sphere: $(STAMP)
 	$(BIN)/python -m restitution.laws.production --geometry sphere
 	$(BIN)/python -m restitution.reproduction.figures.sphere_cylinder --figures docs/figures
+	$(BIN)/python -m restitution.reproduction.figures.sphere_low_speed --figures docs/figures
 
 # The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
 sphere-figures: $(STAMP)

@@ -466,10 +466,16 @@ def test_production_builds_sphere_files(computed, tmp_path, monkeypatch, capsys)
     assert all(-1 < nu < 0.5 for nu in nus)
     assert production.production("disk") == (production.SHIPPED_NUS, production.SETTINGS_GROUPS)
     # build() with the small grid, every point already stored: it writes the sphere's file.
-    (path,) = production.build(tmp_path, (NU,), (SETTINGS,), store=computed.store, progress=False)
+    # Two low-speed points join the collisions' (production: SPHERE_LOW_SPEEDS).
+    (path,) = production.build(
+        tmp_path, (NU,), (SETTINGS,), store=computed.store, progress=False, low_speeds=(1e-4, 1e-3)
+    )
     assert path.name == "law_sphere_nu0.3.json"
     built = law(NU, geometry="sphere", path=path)
-    assert_allclose(built.epsilon_points, computed.law.epsilon_points, rtol=1e-15)
+    assert built.quasistatic.tolist() == [True, True, False, False, False]
+    assert_allclose(built.epsilon_points[2:], computed.law.epsilon_points, rtol=1e-15)
+    assert built.v[:2].tolist() == [1e-4, 1e-3]
+    assert [p.status for p in built.points[:2]] == ["quasistatic", "quasistatic"]
     with pytest.raises(InputError, match="one body"):
         production.build(tmp_path, (NU,), (SETTINGS, production.PAPER))
     # The switch picks the sphere's settings (build itself is replaced: no production run).
@@ -496,7 +502,9 @@ def test_shipped_sphere_laws_are_spheres_and_their_flags_truthful(name):
     served = law(float(name[len("law_sphere_nu") : -len(".json")]), geometry="sphere")
     meta = json.loads(_DATA.joinpath(name).read_text())["metadata"]
     assert served.geometry == meta["geometry"] == "sphere"
-    for p in meta["points"]:
+    modal = [p for p in meta["points"] if p.get("route") != "quasistatic"]
+    assert modal and served.v[~served.quasistatic].size == len(modal)
+    for p in modal:
         ex = p["extrapolation"]
         order = p["settings"]["order"]
         redo = combined_limit(
@@ -518,7 +526,7 @@ def test_shipped_sphere_laws_cheap_collisions_have_not_moved(name):
     from restitution.provenance import code_version
 
     meta = json.loads(_DATA.joinpath(name).read_text())["metadata"]
-    points = meta["points"]
+    points = [p for p in meta["points"] if p.get("route") != "quasistatic"]
     smallest = min(min(p["extrapolation"]["n_modes"]) for p in points)
     cheap = [p for p in points if min(p["extrapolation"]["n_modes"]) == smallest]
     moved = []
@@ -540,6 +548,40 @@ def test_shipped_sphere_laws_cheap_collisions_have_not_moved(name):
             f"{name} was computed with code {meta['code_version']}, this is "
             f"{code_version('sphere')}; its sampled collisions moved by at most "
             f"{max(moved):.1e} of their point errors",
+            stacklevel=1,
+        )
+
+
+@pytest.mark.parametrize("name", SPHERE_FILES)
+def test_shipped_sphere_low_speed_points_have_not_moved(name):
+    """The stale-data test of the laws' low-speed points: every point below the modal speeds is
+    one of production.SPHERE_LOW_SPEEDS, flagged 'quasistatic', and three of them (both ends and
+    the middle) recomputed by the current code give the stored loss and error."""
+    import warnings
+
+    from restitution.laws.production import low_speed_points
+    from restitution.provenance import quasistatic_code_version
+
+    meta = json.loads(_DATA.joinpath(name).read_text())["metadata"]
+    low = [p for p in meta["points"] if p.get("route") == "quasistatic"]
+    assert [p["v"] for p in low] == list(production.SPHERE_LOW_SPEEDS)
+    assert all(p["status"] == "quasistatic" and not p["asymptotic_ok"] for p in low)
+    assert max(p["v"] for p in low) < min(
+        p["v"] for p in meta["points"] if p.get("route") != "quasistatic"
+    )
+    sample = [low[0], low[len(low) // 2], low[-1]]
+    redo, parameters = low_speed_points(meta["nu"], [p["v"] for p in sample])
+    assert parameters["n_modes"] == meta["low_speed"]["n_modes"]
+    for p, q in zip(sample, redo, strict=True):
+        assert q["energy_loss"] == pytest.approx(p["energy_loss"], rel=1e-9), (
+            f"{name}: the low-speed point v = {p['v']} moved; regenerate with `make law-sphere`"
+        )
+        assert q["energy_loss_err"] == pytest.approx(p["energy_loss_err"], rel=1e-9)
+    if meta["low_speed"]["code_version"] != quasistatic_code_version("sphere"):
+        warnings.warn(
+            f"{name}'s low-speed points were computed with code "
+            f"{meta['low_speed']['code_version']}, this is {quasistatic_code_version('sphere')}; "
+            "the sampled points have not moved",
             stacklevel=1,
         )
 

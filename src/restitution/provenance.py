@@ -22,6 +22,7 @@ __all__ = [
     "code_version",
     "fem_code_version",
     "package_modules",
+    "quasistatic_code_version",
     "source_digest",
 ]
 
@@ -81,6 +82,15 @@ def source_digest(modules: tuple[str, ...], tag: str = "") -> str:
     return f"{__version__}+{tag}{digest.hexdigest()[:12]}"
 
 
+def _body_modules(packages: tuple[str, ...], geometry: str) -> tuple[str, ...]:
+    """Every module of ``packages`` except the folders of bodies other than ``geometry``."""
+    others = tuple(f"{BODIES}.{name}." for name in body_folders() if name != geometry)
+    modules: tuple[str, ...] = ()
+    for package in packages:
+        modules += tuple(m for m in package_modules(package) if not (m + ".").startswith(others))
+    return tuple(sorted(modules))
+
+
 @functools.cache
 def code_version(geometry: str = "disk") -> str:
     """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
@@ -90,11 +100,7 @@ def code_version(geometry: str = "disk") -> str:
     of this body changes it, so a result store never serves numbers of other code, and adding
     a body (a sphere) leaves the stored numbers of the others valid.
     """
-    others = tuple(f"{BODIES}.{name}." for name in body_folders() if name != geometry)
-    modules: tuple[str, ...] = ()
-    for package in SOLVER_PACKAGES:
-        modules += tuple(m for m in package_modules(package) if not (m + ".").startswith(others))
-    return source_digest(tuple(sorted(modules)))
+    return source_digest(_body_modules(SOLVER_PACKAGES, geometry))
 
 
 BODIES = "restitution.bodies"
@@ -105,6 +111,16 @@ def body_folders() -> tuple[str, ...]:
     spec = importlib.util.find_spec(BODIES)
     roots = list(getattr(spec, "submodule_search_locations", None) or ())
     return tuple(sorted({p.parent.name for r in map(Path, roots) for p in r.glob("*/__init__.py")}))
+
+
+@functools.cache
+def quasistatic_code_version(geometry: str = "sphere") -> str:
+    """``__version__`` plus a digest of the quasistatic theory and the body's modes (every
+    module of ``restitution.quasistatic`` and of the body layer but other bodies' folders), e.g.
+    ``0.1.0+quasistatic.3fa2...``: the version of a law's low-speed points."""
+    return source_digest(
+        _body_modules(("restitution.bodies", "restitution.quasistatic"), geometry), "quasistatic."
+    )
 
 
 def fem_code_version() -> str:

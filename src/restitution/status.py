@@ -10,9 +10,11 @@ Where each status occurs:
   ``DRIFT_EXCEEDED``, ``NOT_FINITE``;
 * a point of a sweep and a row of the result store (:mod:`restitution.limits.store`): ``OK``,
   ``FAILED``;
-* a point of a law (:class:`restitution.laws.law.LawPoint`): ``OK``, ``NOT_ASYMPTOTIC``;
+* a point of a law (:class:`restitution.laws.law.LawPoint`): ``OK``, ``NOT_ASYMPTOTIC``,
+  ``QUASISTATIC``;
 * an answer in SI units (:mod:`restitution.laws.si_law`): ``COMPUTED``,
-  ``COMPUTED_NOT_ASYMPTOTIC``, ``INTERPOLATED``, ``INTERPOLATED_NOT_ASYMPTOTIC``, ``OUTSIDE``;
+  ``COMPUTED_NOT_ASYMPTOTIC``, ``INTERPOLATED``, ``INTERPOLATED_NOT_ASYMPTOTIC``,
+  ``QUASISTATIC``, ``OUTSIDE``;
 * the envelope of a command's JSON (:func:`restitution.cli._common.envelope`): ``OK``,
   ``NOT_ASYMPTOTIC``, ``POINTS_FAILED``, ``FAILED_SAMPLES``, or a collision's status.
 """
@@ -60,6 +62,11 @@ class Status(enum.StrEnum):
 
     INTERPOLATED_NOT_ASYMPTOTIC = "interpolated-not-asymptotic"
     """Between two computed speeds of a law, at least one of which did not pass every check."""
+
+    QUASISTATIC = "quasistatic"
+    """From the low-speed theory, not from a collision: Rayleigh's estimate on Hertz's force
+    pulse with its error band (:mod:`restitution.quasistatic.low_speed`; the sphere's slow
+    impacts), a law point of that route or an answer next to one."""
 
     OUTSIDE = "outside"
     """Outside the computed range of a law: no value (a law never extrapolates)."""

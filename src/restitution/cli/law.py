@@ -6,6 +6,7 @@ Thin layer over :mod:`restitution.laws.si_law` and :mod:`restitution.laws.export
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import click
@@ -127,12 +128,14 @@ def law(
         f"against {against}: {result['against_meaning']}; {g.body} law "
         f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']})"
     )
-    click.echo("  speed [m/s]        v/c     epsilon      error   status")
+    click.echo("  speed [m/s]        v/c       epsilon      error   status")
     notes = {}
     for p in s.points(speeds):
-        eps = "-" if p.epsilon is None else f"{p.epsilon:.6f}"
-        err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.6f}"
-        click.echo(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>10}  {err:>9}   {p.status}")
+        # Enough decimals for two significant digits of the error (slow impacts: 1 - 1e-8).
+        places = 6 if not p.epsilon_err else max(6, 1 - math.floor(math.log10(p.epsilon_err)))
+        eps = "-" if p.epsilon is None else f"{p.epsilon:.{places}f}"
+        err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.2g}"
+        click.echo(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}")
         if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
             notes[p.status] = result["statuses"][p.status]
     for status, text in notes.items():

@@ -184,8 +184,12 @@ def merge_reference(docs: list[dict]) -> dict:
                 chosen[key] = {**point, "run": i}
     runs = [{k: v for k, v in doc.items() if k != "points"} for doc in docs]
     versions = {r["code_version"] for r in runs}
+    bodies = {doc.get("geometry", "disk") for doc in docs}
+    if len(bodies) != 1:
+        raise InputError(f"cannot merge references of different bodies: {', '.join(bodies)}")
     return {
         "description": docs[-1]["description"],
+        "geometry": bodies.pop(),
         "units": docs[-1]["units"],
         "code_version": versions.pop() if len(versions) == 1 else sorted(versions),
         "git_commit": runs[-1].get("git_commit", "unknown"),
@@ -238,7 +242,7 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("out", help="JSON file to write")
     parser.add_argument("points", nargs="*", help="nu:v[:first_level] (default: the shipped set)")
     parser.add_argument("--geometry", choices=("disk", "sphere"), default="disk")
-    args = parser.parse_args(argv)
+    args = parser.parse_intermixed_args(argv)
     default = SPHERE_REFERENCE_POINTS if args.geometry == "sphere" else REFERENCE_POINTS
     points = [tuple(float(x) for x in a.split(":")) for a in args.points] or default
     try:

@@ -69,6 +69,10 @@ __all__ = [
     "law_units",
 ]
 
+QUASISTATIC_ROUTE = "quasistatic"
+"""``route`` of a law point from the low-speed theory (:mod:`restitution.quasistatic.low_speed`);
+points without a ``route`` come from collisions (``"modal"``)."""
+
 _FORMAT = "restitution-law"
 _FORMAT_VERSION = 2  # 2: no anchor at v = 0; per-point settings and status
 
@@ -170,8 +174,10 @@ class LawPoint:
         Speed towards the wall, units of ``c``.
     epsilon, epsilon_err : float
         Extrapolated coefficient of restitution and its error.
-    status : {"ok", "not-asymptotic"}
+    status : {"ok", "not-asymptotic", "quasistatic"}
         ``ok`` when the point's extrapolations passed their checks; ``message`` says why not.
+        ``quasistatic`` for a point of the low-speed theory
+        (:mod:`restitution.quasistatic.low_speed`), which has no extrapolation.
     message : str
     """
 
@@ -239,24 +245,36 @@ class EpsilonLaw:
         """``(v_min, v_max)``: the computed speeds, units of ``c``. Nothing outside is served."""
         return float(self.v[0]), float(self.v[-1])
 
+    def _records(self) -> list[dict]:
+        records = self.metadata.get("points") or []
+        return records if len(records) == self.v.size else [{} for _ in self.v]
+
+    @property
+    def quasistatic(self) -> np.ndarray:
+        """Whether each point comes from the low-speed theory (``route == "quasistatic"`` in its
+        record, :mod:`restitution.quasistatic.low_speed`) rather than from collisions, shape
+        (K,)."""
+        return np.array([r.get("route") == QUASISTATIC_ROUTE for r in self._records()], bool)
+
     @property
     def points(self) -> tuple[LawPoint, ...]:
-        """The computed points with their status (``ok`` or ``not-asymptotic``) and message."""
-        records = self.metadata.get("points") or [{} for _ in self.v]
+        """The computed points with their status (``ok``, ``not-asymptotic`` or
+        ``quasistatic``) and message."""
         return tuple(
             LawPoint(
                 float(v),
                 float(e),
                 float(s),
-                Status.OK if ok else Status.NOT_ASYMPTOTIC,
+                Status.QUASISTATIC if q else Status.OK if ok else Status.NOT_ASYMPTOTIC,
                 str(rec.get("message", "")),
             )
-            for v, e, s, ok, rec in zip(
+            for v, e, s, ok, q, rec in zip(
                 self.v,
                 self.epsilon_points,
                 self.epsilon_err_points,
                 self.asymptotic_ok,
-                records,
+                self.quasistatic,
+                self._records(),
                 strict=True,
             )
         )
@@ -430,6 +448,36 @@ class EpsilonLaw:
             metadata,
         )
 
+    def joined(self, records: list[dict], *, key: str, parameters: Mapping) -> EpsilonLaw:
+        """This law with further points from another route, e.g. the sphere's low-speed points.
+
+        Parameters
+        ----------
+        records : list of dict
+            One per point, as ``metadata["points"]`` holds them: at least ``v``, ``epsilon``,
+            ``epsilon_err``, ``asymptotic_ok`` and ``route``; no speed of this law.
+        key : str
+            Metadata key under which ``parameters`` describe the route (e.g. ``"low_speed"``).
+        parameters : mapping
+            What the route computed its points with (settings, code version).
+        """
+        own = self._records() if self.metadata.get("points") else self._plain_points()
+        merged = sorted([*own, *records], key=lambda r: float(r["v"]))
+        vs = np.array([float(r["v"]) for r in merged])
+        if np.any(np.diff(vs) <= 0):
+            raise InputError("the joined points repeat a speed of the law; give each speed once")
+        metadata = dict(self.metadata)
+        metadata["points"] = merged
+        metadata[key] = dict(parameters)
+        return EpsilonLaw(
+            nu=self.nu,
+            v=vs,
+            epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
+            epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
+            asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),
+            metadata=metadata,
+        )
+
     @classmethod
     def from_json(cls, path: str | os.PathLike) -> EpsilonLaw:
         """Read a law written by :meth:`to_json` (or shipped with the package)."""
@@ -485,6 +533,7 @@ class EpsilonLaw:
                 "epsilon_err": p.epsilon_err,
                 "asymptotic_ok": p.status == Status.OK,
                 "status": p.status,
+                "route": QUASISTATIC_ROUTE if p.status == Status.QUASISTATIC else "modal",
                 "message": p.message,
             }
             for p in self.points
@@ -493,13 +542,20 @@ class EpsilonLaw:
     def _validity(self) -> dict:
         lo, hi = self.valid_range
         n_ok = int(np.sum(self.asymptotic_ok))
+        quasi = self.quasistatic
+        low = (
+            f"{int(quasi.sum())} come from the low-speed theory ('quasistatic', "
+            f"{self.v[quasi][0]:g} <= v <= {self.v[quasi][-1]:g}), "
+            if quasi.any()
+            else ""
+        )
         return {
             "v_min": lo,
             "v_max": hi,
             "note": (
                 f"computed for {lo:g} <= v <= {hi:g} c; nothing outside is served (no "
                 f"extrapolation, no anchor at v = 0); {n_ok} of {self.v.size} points pass their "
-                "extrapolation checks, the others are flagged 'not-asymptotic'"
+                f"extrapolation checks, {low}the others are flagged 'not-asymptotic'"
             ),
             "monotone": self.monotone,
             "points_ok": n_ok,

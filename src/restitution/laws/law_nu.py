@@ -77,7 +77,7 @@ class NuInterpolatedLaw:
     -----
     Exposes the evaluation API of :class:`restitution.laws.law.EpsilonLaw` (``epsilon``,
     ``epsilon_err``, ``valid_range``, ``v``, ``epsilon_points``, ``epsilon_err_points``,
-    ``asymptotic_ok``) so that exports take either.
+    ``asymptotic_ok``, ``quasistatic``) so that exports take either.
     """
 
     nu: float
@@ -189,6 +189,15 @@ class NuInterpolatedLaw:
             idx = np.searchsorted(n.v, self.v)
             ok &= np.asarray(n.asymptotic_ok)[np.clip(idx, 0, n.v.size - 1)]
         return ok
+
+    @property
+    def quasistatic(self) -> np.ndarray:
+        """A point is from the low-speed theory when it is in any grid law."""
+        out = np.zeros(self.v.size, bool)
+        for n in self.nodes:
+            idx = np.searchsorted(n.v, self.v)
+            out |= np.asarray(n.quasistatic)[np.clip(idx, 0, n.v.size - 1)]
+        return out
 
     @property
     def source(self) -> str:

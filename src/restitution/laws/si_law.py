@@ -40,6 +40,11 @@ STATUSES: dict[Status, str] = {
     Status.INTERPOLATED_NOT_ASYMPTOTIC: (
         "between two computed speeds, at least one of which did not pass every asymptotic check"
     ),
+    Status.QUASISTATIC: (
+        "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left "
+        "in the modes by Hertz's force pulse, with an error band for the uncertain contact time "
+        "(the sphere below the modal laws' slowest speed; docs/spheres.md)"
+    ),
     Status.OUTSIDE: "outside the computed range of the law; no value (the law never extrapolates)",
 }
 """Status of a point -> what it means, in the words of the JSON output."""
@@ -86,8 +91,11 @@ class SIPoint:
 def _status(law, v: float) -> tuple[str, str]:
     pts = np.asarray(law.v, dtype=float)
     ok = np.asarray(law.asymptotic_ok, dtype=bool)
+    quasi = np.asarray(law.quasistatic, dtype=bool)
     at = np.flatnonzero(np.abs(pts - v) <= _SAME * pts)
     if at.size:
+        if quasi[at[0]]:
+            return Status.QUASISTATIC, STATUSES[Status.QUASISTATIC]
         if ok[at[0]]:
             return Status.COMPUTED, ""
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
@@ -96,6 +104,8 @@ def _status(law, v: float) -> tuple[str, str]:
     j = int(np.searchsorted(pts, v))
     if j >= pts.size:
         return Status.OUTSIDE, f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
+    if quasi[j - 1] or quasi[j]:
+        return Status.QUASISTATIC, STATUSES[Status.QUASISTATIC]
     good = bool(ok[j - 1] and ok[j])
     if good:
         return Status.INTERPOLATED, ""

@@ -6,7 +6,8 @@ For a few real materials (3D constants in SI) the shipped laws are served at SI 
 :func:`restitution.laws.si_law.si_law`: the sphere's law for its 3D Poisson number
 (``c = sqrt(E/rho)``) and the long cylinder's (the disk in plane strain, ``nu_2d = nu/(1-nu)``,
 ``c = sqrt(E/((1-nu^2) rho))``). Each curve covers only the speeds its law computed; points
-whose extrapolation did not pass every asymptotic check are drawn hollow. Nothing is computed:
+whose extrapolation did not pass every asymptotic check are drawn hollow, and the sphere's slow
+speeds served by the low-speed theory (status ``quasistatic``) dashed. Nothing is computed:
 the figure shows the shipped numbers.
 """
 
@@ -45,6 +46,8 @@ class SICurve:
         Impact speeds (m/s, against the wall) and the law's value and error there.
     asymptotic : numpy.ndarray of bool
         Whether the point's status is computed or interpolated between asymptotic points.
+    quasistatic : numpy.ndarray of bool
+        Whether the point comes from the low-speed theory (status ``quasistatic``).
     law_nu : float
         The Poisson number of the law served (the sphere's 3D nu, the cylinder's nu_2d).
     """
@@ -55,6 +58,7 @@ class SICurve:
     epsilon: np.ndarray
     epsilon_err: np.ndarray
     asymptotic: np.ndarray
+    quasistatic: np.ndarray
     law_nu: float
 
 
@@ -67,19 +71,16 @@ def compute(materials=MATERIALS, points: int = 120) -> tuple[SICurve, ...]:
             lo, hi = s.computed_range_m_s
             speeds = np.geomspace(lo, hi, points)
             pts = s.points(speeds)
-            ok = [p.epsilon is not None for p in pts]
+            pts = [p for p in pts if p.epsilon is not None]
             out.append(
                 SICurve(
                     material=name,
                     geometry=geometry,
-                    speed_m_s=np.array([p.speed_m_s for p, k in zip(pts, ok, strict=True) if k]),
-                    epsilon=np.array([p.epsilon for p, k in zip(pts, ok, strict=True) if k]),
-                    epsilon_err=np.array(
-                        [p.epsilon_err for p, k in zip(pts, ok, strict=True) if k]
-                    ),
-                    asymptotic=np.array(
-                        [p.status in _ASYMPTOTIC for p, k in zip(pts, ok, strict=True) if k]
-                    ),
+                    speed_m_s=np.array([p.speed_m_s for p in pts]),
+                    epsilon=np.array([p.epsilon for p in pts]),
+                    epsilon_err=np.array([p.epsilon_err for p in pts]),
+                    asymptotic=np.array([p.status in _ASYMPTOTIC for p in pts]),
+                    quasistatic=np.array([p.status == Status.QUASISTATIC for p in pts]),
                     law_nu=float(s.grain.law_nu),
                 )
             )
@@ -101,9 +102,13 @@ def plot(curves: tuple[SICurve, ...], path=None, notes=()):
             col = colours[c.geometry]
             ax.fill_between(c.speed_m_s, c.epsilon - c.epsilon_err, c.epsilon + c.epsilon_err,
                             color=col, alpha=0.2, lw=0)  # fmt: skip
-            ax.plot(c.speed_m_s, c.epsilon, "-", color=col, lw=1,
+            q = c.quasistatic
+            ax.plot(np.where(q, np.nan, c.speed_m_s), c.epsilon, "-", color=col, lw=1,
                     label=f"{c.geometry} (law nu = {c.law_nu:.3g})")  # fmt: skip
-            flagged = ~c.asymptotic
+            if q.any():
+                ax.plot(c.speed_m_s[q], c.epsilon[q], "--", color=col, lw=1,
+                        label=f"{c.geometry}: low-speed theory")  # fmt: skip
+            flagged = ~c.asymptotic & ~q
             ax.plot(c.speed_m_s[flagged], c.epsilon[flagged], "o", mfc="none", color=col, ms=3)
         ax.set_xscale("log")
         ax.set_xlabel("impact speed against the wall [m/s]")
@@ -112,8 +117,9 @@ def plot(curves: tuple[SICurve, ...], path=None, notes=()):
         ax.legend(fontsize=7, loc="lower left")
     fig.suptitle("Vibrational epsilon: spheres beside long cylinders of the same material",
                  fontsize=10)  # fmt: skip
-    add_notes(fig, ["bands: the laws' errors; hollow: not every asymptotic check passed; each "
-                    "curve spans the speeds its law computed", *notes])  # fmt: skip
+    add_notes(fig, ["bands: the laws' errors; hollow: not every asymptotic check passed; dashed: "
+                    "the sphere's low-speed theory; each curve spans the speeds its law computed",
+                    *notes])  # fmt: skip
     if path is not None:
         with replacing(path) as tmp:
             fig.savefig(tmp, dpi=110)
