@@ -29,7 +29,7 @@ from restitution.errors import InputError
 if TYPE_CHECKING:
     from restitution.bodies.disk.modes import ModeSet
 
-__all__ = ["default_n_phi", "dense_edge_matrix", "edge_quadrature", "wall_integral"]
+__all__ = ["default_n_phi", "dense_edge_matrix", "edge_basis", "edge_quadrature", "wall_integral"]
 
 
 def default_n_phi(alpha: float, n_max: int) -> int:
@@ -50,6 +50,26 @@ def wall_integral(alpha):
     return np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / alpha))
 
 
+def edge_basis(orders: np.ndarray, phi: np.ndarray) -> np.ndarray:
+    """The basis of eq. (40) at angles ``phi``: ``[cos(n phi) cos(phi) | -sin(n phi) sin(phi)]``.
+
+    Parameters
+    ----------
+    orders : numpy.ndarray of int, shape (K,)
+        Orders ``n``.
+    phi : numpy.ndarray, shape (M,)
+        Reference angles of edge points, radians.
+
+    Returns
+    -------
+    numpy.ndarray, shape (M, 2K)
+        Displacement along the impact axis per unit normal amplitude (columns ``0..K-1``) and
+        per unit tangential amplitude (``K..2K-1``).
+    """
+    arg = np.asarray(orders)[None, :] * phi[:, None]
+    return np.hstack([np.cos(arg) * np.cos(phi)[:, None], -np.sin(arg) * np.sin(phi)[:, None]])
+
+
 def edge_quadrature(modes: ModeSet, n_phi: int) -> SurfaceQuadrature:
     """The edge quadrature of ``modes`` with ``n_phi`` nodes on ``[0, pi/2]``."""
     if n_phi < 16:
@@ -59,8 +79,7 @@ def edge_quadrature(modes: ModeSet, n_phi: int) -> SurfaceQuadrature:
     weight = np.full(n_phi, 2.0 * h)
     weight[0] = weight[-1] = h
     orders, column = np.unique(modes.n, return_inverse=True)
-    arg = orders[None, :] * phi[:, None]
-    basis = np.hstack([np.cos(arg) * np.cos(phi)[:, None], -np.sin(arg) * np.sin(phi)[:, None]])
+    basis = edge_basis(orders, phi)
     return surface_quadrature(phi, weight, np.cos(phi), basis, column, modes.C, modes.S)
 
 
