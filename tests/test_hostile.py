@@ -580,3 +580,38 @@ def test_errors_are_exported():
 def test_bad_vibrating_input_is_one_line(cli, no_integration, args, words):
     code, _, err = cli(*args)
     one_line_error(code, err, words)
+
+
+def test_laws_refuse_wrong_types_and_damaged_files_in_one_line(tmp_path):
+    """Issue 30: wrong types at the law edge are InputErrors, not tracebacks; a law file that
+    holds an impossible epsilon (1.7) or a non-number is refused on loading, not served."""
+    import json
+    from importlib import resources
+
+    import restitution
+
+    for bad in ({"E": "x"}, {"nu": None}, {"rho": [1]}, {"E": True}):
+        args = {"E": 210e9, "nu": 0.3, "rho": 7850.0, "geometry": "sphere", "against": "wall"}
+        with pytest.raises(InputError, match="must be a number"):
+            restitution.si_law(**{**args, **bad})
+    with pytest.raises(InputError, match="speeds must be numbers"):
+        restitution.law(0.33).epsilon("x")
+    text = resources.files("restitution.laws").joinpath("data", "law_nu0.33.json").read_text()
+    for value, words in ((1.7, "0 < epsilon <= 1"), ("x", "not a valid law file")):
+        doc = json.loads(text)
+        doc["metadata"]["points"][3]["epsilon"] = value
+        path = tmp_path / "damaged.json"
+        path.write_text(json.dumps(doc))
+        with pytest.raises(RestitutionError, match=words):
+            restitution.law(path=path)
+
+
+def test_a_negative_seed_is_one_line(capsys):
+    """Issue 30: ``--seed -1`` was a numpy traceback."""
+    from restitution.cli import main
+
+    with pytest.raises(SystemExit):
+        main(["collide", "--excite", "thermal", "--temperature", "0.1", "--seed", "-1",
+              "--v", "0.1", "--modes", "10", "--samples", "2"])  # fmt: skip
+    err = capsys.readouterr().err
+    assert "the seed must be an integer >= 0" in err and "Traceback" not in err

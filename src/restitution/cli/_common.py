@@ -209,10 +209,11 @@ def envelope(
     *,
     status: str = Status.OK,
     advice: str | None = None,
+    units: dict | None = None,
 ) -> dict:
     """The keys every JSON output starts with, then ``payload``.
 
-    ``version`` (package version), ``command``, ``units`` (those of the body named by
+    ``version`` (package version), ``command``, ``units`` (given, or those of the body named by
     ``inputs["geometry"]``, the disk's :data:`restitution.dynamics.results.UNITS` if none:
     :attr:`restitution.bodies.kinds.BodyKind.units`), ``inputs`` (every option that determines the
     result), ``status`` (``"ok"`` or what is wrong, :class:`restitution.status.Status`) and
@@ -221,7 +222,7 @@ def envelope(
     head = {
         "version": __version__,
         "command": command,
-        "units": dict(body_kind(inputs.get("geometry", "disk")).units),
+        "units": dict(units or body_kind(inputs.get("geometry", "disk")).units),
         "inputs": inputs,
         "status": status,
         "advice": advice,

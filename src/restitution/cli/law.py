@@ -101,15 +101,17 @@ def law(
     restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
         --against wall --speed 0.5 1 5
     """
+    from restitution.cli._common import envelope
     from restitution.errors import InputError
     from restitution.laws import exports
-    from restitution.laws.si_law import si_law
+    from restitution.laws.si_law import SI_UNITS, overall_status, si_law
 
     if reference_speed is not None and maxwell_temperature is not None:
         raise InputError("give --reference-speed or --maxwell-temperature, not both")
     s = si_law(E, nu, rho, geometry, against, path=law_file)
     speeds = list(speeds) or [0.1, 0.5, 1.0, 5.0, 10.0]
     result = s.to_dict(speeds)
+    status, advice = overall_status(s.points(speeds))
     constant = None
     if reference_speed is not None:
         constant = exports.constant_at(s, reference_speed)
@@ -120,7 +122,13 @@ def law(
     if export_dir is not None:
         result["exports"] = [str(p) for p in _export(s, constant, export_dir)]
     if as_json:
-        click.echo(json.dumps(result, indent=1, default=json_default))
+        inputs = {"E": E, "nu": nu, "rho": rho, "geometry": geometry, "against": against,
+                  "speeds_m_s": speeds, "law_file": None if law_file is None else str(law_file),
+                  "reference_speed": reference_speed,
+                  "maxwell_temperature": maxwell_temperature,
+                  "export": None if export_dir is None else str(export_dir)}  # fmt: skip
+        d = envelope("law", inputs, result, status=status, advice=advice, units=SI_UNITS)
+        click.echo(json.dumps(d, indent=1, default=json_default))
         return
     g = s.grain
     click.echo(g.describe())

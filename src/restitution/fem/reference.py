@@ -56,10 +56,14 @@ REFERENCE_POINTS = (
 
 SPHERE_REFERENCE_POINTS = tuple(
     (nu, v, 0) for nu in (0.2, 0.3, 0.45) for v in (0.00521, 0.0189, 0.0993)
-)
+) + ((0.3, 0.001, 0), (0.3, 0.0005, 0), (0.3, 0.0002, 0), (0.2, 0.0002, 0), (0.45, 0.0002, 0))
 """``(nu, v, first level)`` of the sphere's reference: three 3D Poisson numbers of the shipped
 sphere laws (the ends and steel), each at three of the laws' computed speeds (the law's own
-points, so that the judge tests the extrapolation, not the interpolation between speeds)."""
+points, so that the judge tests the extrapolation, not the interpolation between speeds); and
+five points below the modal speeds, where the laws serve the low-speed theory
+(:mod:`restitution.quasistatic.low_speed`): ``nu = 0.3`` at ``v = 1e-3, 5e-4, 2e-4`` (steel at
+5.2, 2.6 and 1.03 m/s) and the grid's ends at ``v = 2e-4``. The shipped file merges the runs
+(:func:`merge_reference`)."""
 
 
 def reference_filename(geometry: str = "disk") -> str:

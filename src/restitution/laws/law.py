@@ -164,6 +164,17 @@ def _curve_command(geometry: str, nu: float | None = None) -> str:
 # -- the law -------------------------------------------------------------------------------
 
 
+def _speeds(v) -> np.ndarray:
+    """``v`` as a float array, or a one-line :class:`InputError`."""
+    try:
+        arr = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"speeds must be numbers (units of c), got {v!r}") from None
+    if np.isnan(arr).any():
+        raise InputError(f"speeds must be numbers (units of c), got {v!r}")
+    return arr
+
+
 @dataclass(frozen=True)
 class LawPoint:
     """One computed point of a law.
@@ -309,7 +320,7 @@ class EpsilonLaw:
         return bad
 
     def _evaluate(self, values: np.ndarray, v, outside: str):
-        arr = np.asarray(v, dtype=float)
+        arr = _speeds(v)
         bad = self._check(arr, outside)
         out = np.where(bad, np.nan, self._interpolant(values)(np.where(bad, self.v[0], arr)))
         return float(out) if np.ndim(v) == 0 else out
@@ -338,7 +349,7 @@ class EpsilonLaw:
 
     def checked(self, v, *, outside: str = "raise"):
         """Whether both computed points around ``v`` passed their checks (bool, or array)."""
-        arr = np.asarray(v, dtype=float)
+        arr = _speeds(v)
         bad = self._check(arr, outside)
         hi = np.clip(np.searchsorted(self.v, arr, side="left"), 0, self.v.size - 1)
         lo = np.clip(np.searchsorted(self.v, arr, side="right") - 1, 0, self.v.size - 1)
@@ -498,22 +509,34 @@ class EpsilonLaw:
                 f"1 and {_FORMAT_VERSION}"
             )
         # Version 1 files also described an anchor epsilon(0) = 1; it is not used any more.
-        points = d["metadata"]["points"]
-        metadata = dict(d["metadata"])
-        metadata["source"] = source
-        geometry = metadata.get("geometry", "disk")  # files from before the sphere: disks
         try:
+            points = d["metadata"]["points"]
+            metadata = dict(d["metadata"])
+            metadata["source"] = source
+            geometry = metadata.get("geometry", "disk")  # files from before the sphere: disks
             body_kind(geometry)
+            arrays = {
+                "nu": float(d["metadata"]["nu"]),
+                "v": np.array([p["v"] for p in points], dtype=float),
+                "epsilon_points": np.array([p["epsilon"] for p in points], dtype=float),
+                "epsilon_err_points": np.array([p["epsilon_err"] for p in points], dtype=float),
+                "asymptotic_ok": np.array([p["asymptotic_ok"] for p in points], dtype=bool),
+            }
+        except (KeyError, TypeError, ValueError, InputError) as exc:
+            raise RestitutionError(f"{source} is not a valid law file: {exc}") from None
+        eps, err = arrays["epsilon_points"], arrays["epsilon_err_points"]
+        bad = np.flatnonzero(~((eps > 0) & (eps <= 1) & np.isfinite(err) & (err >= 0)))
+        if bad.size:
+            k = int(bad[0])
+            raise RestitutionError(
+                f"{source} is not a valid law file: at v = {arrays['v'][k]:g} it holds epsilon "
+                f"= {float(eps[k])!r} +- {float(err[k])!r}; an elastic body's law has 0 < epsilon <= 1 and a "
+                "finite error >= 0 (regenerate the file, or load another)"
+            )
+        try:
+            return cls(**arrays, metadata=metadata)
         except InputError as exc:
-            raise RestitutionError(f"{source}: {exc}") from None
-        return cls(
-            nu=float(d["metadata"]["nu"]),
-            v=np.array([p["v"] for p in points], dtype=float),
-            epsilon_points=np.array([p["epsilon"] for p in points], dtype=float),
-            epsilon_err_points=np.array([p["epsilon_err"] for p in points], dtype=float),
-            asymptotic_ok=np.array([p["asymptotic_ok"] for p in points], dtype=bool),
-            metadata=metadata,
-        )
+            raise RestitutionError(f"{source} is not a valid law file: {exc}") from None
 
     # -- exports -------------------------------------------------------------------------
 

@@ -28,7 +28,7 @@ from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for
 from restitution.laws.units import PARTNERS, Grain, partner_factor
 from restitution.status import Status
 
-__all__ = ["STATUSES", "SILaw", "SIPoint", "si_law"]
+__all__ = ["SI_UNITS", "STATUSES", "SILaw", "SIPoint", "overall_status", "si_law"]
 
 STATUSES: dict[Status, str] = {
     Status.COMPUTED: "at a computed speed; its extrapolation passed the asymptotic checks",
@@ -48,6 +48,24 @@ STATUSES: dict[Status, str] = {
     Status.OUTSIDE: "outside the computed range of the law; no value (the law never extrapolates)",
 }
 """Status of a point -> what it means, in the words of the JSON output."""
+
+SI_UNITS: dict[str, str] = {
+    "system": "SI at the edge: the material's 3D constants and the speeds; reduced speeds v/c",
+    "speed": "m/s (speed_m_s: the impact speed w against the partner)",
+    "v_over_c": "c = the law's speed unit (c_m_s, m/s; c_formula says which)",
+    "E": "Pa",
+    "rho": "kg/m^3",
+    "epsilon": "dimensionless: rebound speed / impact speed (relative speeds for two grains)",
+    "temperature": "m^2/s^2 (granular temperature <v_x^2>)",
+}
+"""The units of ``restitution law``'s numbers (its JSON's ``units``)."""
+
+_WORST_FIRST = (
+    Status.OUTSIDE,
+    Status.QUASISTATIC,
+    Status.INTERPOLATED_NOT_ASYMPTOTIC,
+    Status.COMPUTED_NOT_ASYMPTOTIC,
+)
 
 _SAME = 1e-9  # relative tolerance for "at a computed speed"
 
@@ -110,6 +128,18 @@ def _status(law, v: float) -> tuple[str, str]:
     if good:
         return Status.INTERPOLATED, ""
     return Status.INTERPOLATED_NOT_ASYMPTOTIC, STATUSES[Status.INTERPOLATED_NOT_ASYMPTOTIC]
+
+
+def overall_status(points) -> tuple[str, str | None]:
+    """``("ok", None)`` when every point is computed or interpolated between asymptotic points;
+    otherwise the least trustworthy status among ``points`` (outside, quasistatic, not
+    asymptotic) and what it means."""
+    present = {p.status for p in points}
+    for status in _WORST_FIRST:
+        if status in present:
+            speeds = [p.speed_m_s for p in points if p.status == status]
+            return status, f"{len(speeds)} of {len(points)} speeds: {STATUSES[status]}"
+    return Status.OK, None
 
 
 @dataclass(frozen=True, eq=False)
@@ -278,6 +308,6 @@ def si_law(
         For constants out of range, or when no law serves the grain's body and ``law_nu`` (the
         message names the command that computes it).
     """
-    grain = Grain(E=float(E), nu=float(nu), rho=float(rho), geometry=geometry)
+    grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
     partner_factor(against)
     return SILaw(grain, against, law_for(grain.law_nu, geometry=grain.body, path=path))

@@ -107,6 +107,11 @@ class Grain:
                 f"the geometry must be 'cylinder' (plane strain), 'thin-disk' (plane stress) or "
                 f"'sphere', got {self.geometry!r}"
             )
+        for name, unit in (("E", "Pa"), ("nu", "dimensionless"), ("rho", "kg/m^3")):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, float, np.number)):
+                raise InputError(f"{name} must be a number ({unit}), got {value!r}")
+            object.__setattr__(self, name, float(value))
         # One-line messages for E, nu, rho: the 3D checks of Material.from_3d (nu in
         # (-1, 0.5]), then the sphere's open interval.
         Material.from_3d(E=self.E, nu=self.nu, plane=self.plane or "stress", rho=self.rho)

@@ -207,6 +207,10 @@ def thermal_ensemble(
         raise InputError(f"samples must be a positive integer, got {samples!r}")
     if not isinstance(batch_size, int) or batch_size < 1:
         raise InputError(f"batch_size must be a positive integer, got {batch_size!r}")
+    if seed is not None and (
+        not isinstance(seed, int | np.integer) or isinstance(seed, bool) or seed < 0
+    ):
+        raise InputError(f"the seed must be an integer >= 0 (or None), got {seed!r}")
     Q, P = thermal_state(modes, temperature, np.random.default_rng(seed), size=int(samples))
     out = {k: [] for k in ("eps", "before", "after", "drift", "contact")}
     failures: list[str] = []

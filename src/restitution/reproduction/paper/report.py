@@ -298,7 +298,10 @@ def _sphere_blocks(run) -> list[Block]:
             "epsilon(v) by the same modal method (Lamb's axisymmetric spheroidal modes, the same "
             "exponential wall integrated over the surface, both limits alpha, N -> infinity); "
             f"its shipped laws cover the 3D Poisson numbers {', '.join(f'{n:g}' for n in nus)} "
-            "(independent of this run). Below they are served at SI speeds against a rigid wall "
+            "(independent of this run), from collisions at v/c = 0.003-0.3 and, down to v/c = "
+            "1e-6, from Rayleigh's estimate on Hertz's force pulse with an error band (status "
+            "'quasistatic', checked against the finite elements). Below they are served at SI "
+            "speeds against a rigid wall "
             "beside the long cylinders (the paper's disk in plane strain) of the same materials "
             f"({materials}). Equations, checks and the measured convergence: {doc}."
         ),
@@ -306,7 +309,8 @@ def _sphere_blocks(run) -> list[Block]:
             run.spheres.name,
             "epsilon of spheres and cylinders against impact speed",
             "Spheres (red) and long cylinders (blue) of three materials against a rigid wall; "
-            "bands: the laws' errors; hollow points did not pass every asymptotic check.",
+            "bands: the laws' errors; hollow points did not pass every asymptotic check; dashed: "
+            "the sphere's low-speed theory.",
         ),
     ]
     return blocks
