@@ -530,8 +530,8 @@ class EpsilonLaw:
             k = int(bad[0])
             raise RestitutionError(
                 f"{source} is not a valid law file: at v = {arrays['v'][k]:g} it holds epsilon "
-                f"= {float(eps[k])!r} +- {float(err[k])!r}; an elastic body's law has 0 < epsilon <= 1 and a "
-                "finite error >= 0 (regenerate the file, or load another)"
+                f"= {float(eps[k])!r} +- {float(err[k])!r}; an elastic body's law has "
+                "0 < epsilon <= 1 and a finite error >= 0 (regenerate the file, or load another)"
             )
         try:
             return cls(**arrays, metadata=metadata)
