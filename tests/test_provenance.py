@@ -51,3 +51,21 @@ def test_the_digest_changes_with_a_solver_source(monkeypatch):
     one = provenance.source_digest(modules)
     two = provenance.source_digest(tuple(m for m in modules if not m.endswith(".kernel")))
     assert one != two and one.startswith(provenance.__version__ + "+")
+
+
+def test_the_low_speed_version_covers_what_the_estimate_imports():
+    """Every quasistatic module that a module of QUASISTATIC_MODULES imports is in the list, so
+    an edit of the low-speed estimate's sources always changes quasistatic_code_version."""
+    import ast
+    import importlib.util
+
+    from restitution.provenance import QUASISTATIC_MODULES
+
+    for name in QUASISTATIC_MODULES:
+        origin = importlib.util.find_spec(name).origin
+        tree = ast.parse(open(origin).read())
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith(
+                "restitution.quasistatic."
+            ):
+                assert node.module in QUASISTATIC_MODULES, (name, node.module)

@@ -18,6 +18,7 @@ from restitution._version import __version__
 
 __all__ = [
     "FEM_MODULES",
+    "QUASISTATIC_MODULES",
     "SOLVER_PACKAGES",
     "code_version",
     "fem_code_version",
@@ -113,14 +114,24 @@ def body_folders() -> tuple[str, ...]:
     return tuple(sorted({p.parent.name for r in map(Path, roots) for p in r.glob("*/__init__.py")}))
 
 
+QUASISTATIC_MODULES: tuple[str, ...] = (
+    "restitution.quasistatic.hertz",
+    "restitution.quasistatic.hertz_sphere",
+    "restitution.quasistatic.low_speed",
+    "restitution.quasistatic.pulse",
+    "restitution.quasistatic.rayleigh",
+)
+"""Modules of the quasistatic layer whose source determines a low-speed law point (the estimate
+and what it imports)."""
+
+
 @functools.cache
 def quasistatic_code_version(geometry: str = "sphere") -> str:
-    """``__version__`` plus a digest of the quasistatic theory and the body's modes (every
-    module of ``restitution.quasistatic`` and of the body layer but other bodies' folders), e.g.
+    """``__version__`` plus a digest of the low-speed theory (:data:`QUASISTATIC_MODULES`) and
+    the body's modes (the body layer but other bodies' folders), e.g.
     ``0.1.0+quasistatic.3fa2...``: the version of a law's low-speed points."""
-    return source_digest(
-        _body_modules(("restitution.bodies", "restitution.quasistatic"), geometry), "quasistatic."
-    )
+    modules = _body_modules(("restitution.bodies",), geometry) + QUASISTATIC_MODULES
+    return source_digest(tuple(sorted(modules)), "quasistatic.")
 
 
 def fem_code_version() -> str:
