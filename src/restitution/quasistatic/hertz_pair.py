@@ -91,9 +91,11 @@ def pair_contact_law(
 def pair_mass(radius_ratio: float = 1.0, density_ratio: float = 1.0) -> float:
     """The reduced mass ``m1 m2 / (m1 + m2)`` of two disks, ``rho1 R1^2`` (``m_i = pi rho_i
     R_i^2``)."""
-    m2 = math.pi * _positive("density_ratio", density_ratio) * _positive(
-        "radius_ratio", radius_ratio
-    ) ** 2
+    m2 = (
+        math.pi
+        * _positive("density_ratio", density_ratio)
+        * _positive("radius_ratio", radius_ratio) ** 2
+    )
     return math.pi * m2 / (math.pi + m2)
 
 
