@@ -555,12 +555,16 @@ def test_shipped_sphere_laws_cheap_collisions_have_not_moved(name):
 @pytest.mark.parametrize("name", SPHERE_FILES)
 def test_shipped_sphere_low_speed_points_have_not_moved(name):
     """The stale-data test of the laws' low-speed points: every point below the modal speeds is
-    one of production.SPHERE_LOW_SPEEDS, flagged 'quasistatic', and three of them (both ends and
-    the middle) recomputed by the current code give the stored loss and error."""
+    one of production.SPHERE_LOW_SPEEDS, flagged 'quasistatic'; three of them (both ends and
+    the middle) recomputed by the current code give the stored loss and estimate error, and the
+    interpolation errors of the whole grid are the current code's; each point's error is their
+    sum."""
     import warnings
 
+    from restitution import get_modes
     from restitution.laws.production import low_speed_points
     from restitution.provenance import quasistatic_code_version
+    from restitution.quasistatic.low_speed import LOW_SPEED_MODES, interpolation_error
 
     meta = json.loads(_DATA.joinpath(name).read_text())["metadata"]
     low = [p for p in meta["points"] if p.get("route") == "quasistatic"]
@@ -576,7 +580,15 @@ def test_shipped_sphere_low_speed_points_have_not_moved(name):
         assert q["energy_loss"] == pytest.approx(p["energy_loss"], rel=1e-9), (
             f"{name}: the low-speed point v = {p['v']} moved; regenerate with `make law-sphere`"
         )
-        assert q["energy_loss_err"] == pytest.approx(p["energy_loss_err"], rel=1e-9)
+        assert q["estimate_err"] == pytest.approx(p["estimate_err"], rel=1e-9)
+    modes = get_modes(meta["nu"], LOW_SPEED_MODES, geometry="sphere")
+    between = interpolation_error(modes, production.SPHERE_LOW_SPEEDS)
+    assert_allclose([p["interpolation_err"] for p in low], between, rtol=1e-9)
+    assert_allclose(
+        [p["energy_loss_err"] for p in low],
+        [p["estimate_err"] + p["interpolation_err"] for p in low],
+        rtol=1e-12,
+    )
     if meta["low_speed"]["code_version"] != quasistatic_code_version("sphere"):
         warnings.warn(
             f"{name}'s low-speed points were computed with code "

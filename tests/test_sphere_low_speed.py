@@ -98,7 +98,7 @@ def test_the_estimate_refuses_the_disk_and_bad_input(modes):
 def test_steel_at_one_metre_per_second(capsys):
     """The issue's question: a steel sphere on a wall at 1 m/s (v/c = 1.93e-4) is answered from
     the low-speed points, flagged 'quasistatic', and equals the estimate computed directly at that
-    speed within the interpolation's bound (0.006 v, production.SPHERE_LOW_SPEEDS)."""
+    speed within the interpolation error its points carry."""
     E, rho = 210e9, 7850.0
     args = [
         "law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--geometry", "sphere",
@@ -115,11 +115,26 @@ def test_steel_at_one_metre_per_second(capsys):
     assert point["v_over_c"] == pytest.approx(v, rel=1e-12)
     assert point["status"] == Status.QUASISTATIC
     direct = low_speed_loss(get_modes(0.3, LOW_SPEED_MODES, geometry="sphere"), v)
-    assert abs((1.0 - point["epsilon"] ** 2) - direct.energy_loss) <= 0.006 * v
+    assert abs(point["epsilon"] - direct.epsilon) <= point["epsilon_err"]
     assert point["epsilon_err"] == pytest.approx(direct.epsilon_err, rel=0.2)
     # Two steel spheres at 1 m/s relative speed collide like one at 0.5 m/s on the wall.
     s = si_law(E, 0.3, rho, geometry="sphere", against="grain")
     assert s.points([1.0])[0].v_over_c == pytest.approx(v / 2, rel=1e-12)
+
+
+def test_the_law_between_its_low_speed_points_holds_the_estimate(modes):
+    """At 80 speeds between the shipped points (40 seeded at random), the law's interpolated
+    epsilon lies within its stated error of the estimate computed at that speed; the stated
+    error includes the points' ``interpolation_err``, PCHIP's deviation from the two-term
+    closed form inside each interval (measured at these and 300 more speeds: the law's deviation
+    from the direct estimate is at most 0.29 of its stated error, and at most 1.01 times the
+    interpolation error alone inside the grid; the last interval is bent by the jump to the
+    first modal point at v = 0.003, which the points' own error covers)."""
+    served = law(NU, geometry="sphere")
+    v = np.sort(np.random.default_rng(7).uniform(1e-6, 0.0029, 40))
+    v = np.r_[v, np.geomspace(1.01e-6, 2.9e-3, 40)]
+    for x, e, s in zip(v, served.epsilon(v), served.epsilon_err(v), strict=True):
+        assert abs(e - low_speed_loss(modes, float(x)).epsilon) <= s, x
 
 
 def test_between_grid_nus_the_low_speeds_stay_quasistatic():
