@@ -17,6 +17,7 @@ SRC = Path(restitution.__file__).parent
 # rank (docs/architecture.md). The foundation modules serve every layer.
 RANK = {
     "_version": 0,
+    "_paths": 0,
     "errors": 0,
     "status": 0,
     "jsonable": 0,

@@ -615,3 +615,24 @@ def test_a_negative_seed_is_one_line(capsys):
               "--v", "0.1", "--modes", "10", "--samples", "2"])  # fmt: skip
     err = capsys.readouterr().err
     assert "the seed must be an integer >= 0" in err and "Traceback" not in err
+
+
+def test_numba_compiles_into_the_package_cache_not_the_source_tree(tmp_path):
+    """Issue 30: the compiled kernels were cached beside the sources (``__pycache__`` of an
+    installed package). Importing the package points numba's cache at the package's cache
+    unless the user chose one."""
+    import sys
+
+    code = (
+        "import restitution, numba, os; "
+        "print(numba.config.CACHE_DIR); print(os.environ['NUMBA_CACHE_DIR'])"
+    )
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env["RESTITUTION_CACHE_DIR"] = str(tmp_path)
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                         check=True).stdout.split()  # fmt: skip
+    assert out == [str(tmp_path / "numba")] * 2
+    env["NUMBA_CACHE_DIR"] = str(tmp_path / "mine")
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                         check=True).stdout.split()  # fmt: skip
+    assert out == [str(tmp_path / "mine")] * 2

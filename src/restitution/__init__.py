@@ -9,7 +9,17 @@ The package is layered (docs/architecture.md): bodies -> dynamics -> vibrating, 
 limits -> laws -> reproduction, fem, cli. No module imports this root; it only re-exports.
 """
 
-from restitution._version import __version__
+import os as _os
+
+# Numba writes its compiled kernels (cache=True) next to the sources unless told otherwise; send
+# them to the package's cache instead, so an installed package's tree is never written. numba
+# reads NUMBA_CACHE_DIR once, when it is first imported (by the imports below).
+if "NUMBA_CACHE_DIR" not in _os.environ:
+    from restitution._paths import cache_root as _cache_root
+
+    _os.environ["NUMBA_CACHE_DIR"] = str(_cache_root() / "numba")
+
+from restitution._version import __version__  # noqa: E402
 from restitution.bodies.cache import CacheError, get_modes
 from restitution.bodies.disk.modes import ModeError, ModeSet, compute_modes, weyl_count
 from restitution.bodies.material import Material, MaterialError
