@@ -244,8 +244,15 @@ class BodyPair:
         bodies = (self.first, self.second)
         radii = self.radii
         ref = self._reference()
-        # Nodes and weights of the reference body (its own quadrature), scaled to R1 = 1.
-        rq = bodies[ref].surface_quadrature(int(n_nodes))
+        # Each body with the reference's radius uses its own quadrature, built once; the nodes
+        # and weights are the reference body's (of its own modes, or of all if it has none
+        # here), scaled to R1 = 1.
+        own_quads = [
+            member.surface_quadrature(int(n_nodes)) if len(member) and radii[i] == radii[ref]
+            else None
+            for i, member in enumerate(members)
+        ]  # fmt: skip
+        rq = own_quads[ref] or bodies[ref].surface_quadrature(int(n_nodes))
         psi = rq.nodes
         weight = rq.weight * radii[ref] ** (_DIMENSION[self.kind] - 1)
         y = radii[ref] * np.sin(psi)
@@ -263,7 +270,7 @@ class BodyPair:
             if not len(member):
                 continue
             if radii[i] == radii[ref]:
-                own = member.surface_quadrature(int(n_nodes))
+                own = own_quads[i]
                 if not np.array_equal(own.nodes, psi):
                     raise InputError("bodies of one kind must share their quadrature nodes")
                 basis, own_column, own_C, own_S = own.basis, own.column, own.C, own.S
