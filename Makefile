@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick law law-sphere sphere-figures test test-slow lint bench clean
+.PHONY: setup paper paper-quick law law-sphere law-pair sphere-figures test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -34,6 +34,12 @@ law-sphere: $(STAMP)
 	$(BIN)/python -m restitution.laws.production --geometry sphere
 	$(BIN)/python -m restitution.reproduction.figures.sphere_cylinder --figures docs/figures
 	$(BIN)/python -m restitution.reproduction.figures.sphere_low_speed --figures docs/figures
+
+# The laws of two disks of one material, radius ratios 1.2, 1.4 and 2 (law_pair_r<r>_nu<nu>.json,
+# about 50 minutes of one core from a cold store), then their figure in docs/figures.
+law-pair: $(STAMP)
+	$(BIN)/python -m restitution.laws.production --geometry pair
+	$(BIN)/python -m restitution.reproduction.figures.pair_epsilon --figures docs/figures
 
 # The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
 sphere-figures: $(STAMP)

@@ -65,7 +65,9 @@ def test_key_depends_on_every_input_and_the_version(monkeypatch):
         keys.add(dataclasses.replace(SPEC, **{name: value}).key())
     assert len(keys) == len(changes) + 1
     # The code version is part of the key: another version or solver source, another key.
-    monkeypatch.setattr(store_module, "code_version", lambda geometry="disk": "999.0+0123456789ab")
+    monkeypatch.setattr(
+        store_module, "code_version", lambda geometry="disk", pair=False: "999.0+0123456789ab"
+    )
     assert SPEC.key() not in keys
 
 

@@ -18,6 +18,7 @@ from restitution._version import __version__
 
 __all__ = [
     "FEM_MODULES",
+    "PAIR",
     "QUASISTATIC_MODULES",
     "SOLVER_PACKAGES",
     "code_version",
@@ -83,9 +84,16 @@ def source_digest(modules: tuple[str, ...], tag: str = "") -> str:
     return f"{__version__}+{tag}{digest.hexdigest()[:12]}"
 
 
-def _body_modules(packages: tuple[str, ...], geometry: str) -> tuple[str, ...]:
-    """Every module of ``packages`` except the folders of bodies other than ``geometry``."""
-    others = tuple(f"{BODIES}.{name}." for name in body_folders() if name != geometry)
+PAIR = "pair"
+"""The body folder of two bodies as one (:mod:`restitution.bodies.pair`): part of the code
+version of a pair's collisions besides the folder of its bodies' kind."""
+
+
+def _body_modules(packages: tuple[str, ...], geometry: str, pair: bool = False) -> tuple[str, ...]:
+    """Every module of ``packages`` except the folders of bodies other than ``geometry`` (and
+    :data:`PAIR` when ``pair``)."""
+    own = {geometry, PAIR} if pair else {geometry}
+    others = tuple(f"{BODIES}.{name}." for name in body_folders() if name not in own)
     modules: tuple[str, ...] = ()
     for package in packages:
         modules += tuple(m for m in package_modules(package) if not (m + ".").startswith(others))
@@ -93,15 +101,17 @@ def _body_modules(packages: tuple[str, ...], geometry: str) -> tuple[str, ...]:
 
 
 @functools.cache
-def code_version(geometry: str = "disk") -> str:
+def code_version(geometry: str = "disk", *, pair: bool = False) -> str:
     """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
 
     The sources are every module of :data:`SOLVER_PACKAGES` except the folders of other bodies
     (``restitution.bodies.<name>`` for every ``name`` but ``geometry``): any edit of the solver
     of this body changes it, so a result store never serves numbers of other code, and adding
-    a body (a sphere) leaves the stored numbers of the others valid.
+    a body (a sphere) leaves the stored numbers of the others valid. With ``pair`` the version
+    is that of two bodies of the kind ``geometry`` meeting head-on: the folder
+    :data:`PAIR` joins the sources (a single body's version does not depend on it).
     """
-    return source_digest(_body_modules(SOLVER_PACKAGES, geometry))
+    return source_digest(_body_modules(SOLVER_PACKAGES, geometry, pair))
 
 
 BODIES = "restitution.bodies"

@@ -112,6 +112,75 @@ def body_nu(nu: float, plane: str | None, geometry: str) -> float:
     return body_kind(geometry).check_nu(nu)
 
 
+PARTNER_OPTIONS = {
+    "radius_ratio": "--radius-ratio",
+    "partner_nu": "--partner-nu",
+    "modulus_ratio": "--modulus-ratio",
+    "density_ratio": "--density-ratio",
+}
+"""The options that describe a second body (parameter name -> flag)."""
+
+
+def partner_options(f):
+    """``--radius-ratio``, ``--partner-nu``, ``--modulus-ratio``, ``--density-ratio``: a second
+    body instead of the wall (read with :func:`partner_from`)."""
+    for option in reversed(
+        (
+            click.option(
+                "--radius-ratio",
+                type=float,
+                default=None,
+                help="Meet a second body of radius R2 = this * R1 instead of the wall (two "
+                "disks; two spheres need 1). --v is then the relative normal speed of the two, "
+                "in c of the first body; --modes counts both bodies' modes below one frequency "
+                "(docs/two-disks.md).",
+            ),
+            click.option(
+                "--partner-nu",
+                type=float,
+                default=None,
+                help="Poisson number of the second body, read like --nu (with --plane) "
+                "[default: --nu].",
+            ),
+            click.option(
+                "--modulus-ratio",
+                type=float,
+                default=None,
+                help="Young modulus of the second body / the first's (E2/E1) [default: 1].",
+            ),
+            click.option(
+                "--density-ratio",
+                type=float,
+                default=None,
+                help="Density of the second body / the first's (rho2/rho1) [default: 1].",
+            ),
+        )
+    ):
+        f = option(f)
+    return f
+
+
+def partner_from(ctx: click.Context, nu: float, plane: str | None, geometry: str):
+    """The :class:`~restitution.bodies.pair.partner.Partner` of the options of
+    :func:`partner_options` (``None`` when none was given: the wall). ``--partner-nu`` is read
+    like ``--nu`` (:func:`body_nu`); equal to ``--nu`` it is the same material's."""
+    from restitution.bodies.pair.partner import Partner
+
+    p = ctx.params
+    if not any(given(ctx, name) for name in PARTNER_OPTIONS):
+        return None
+    ratios = {}
+    for name in ("radius_ratio", "modulus_ratio", "density_ratio"):
+        value = 1.0 if p[name] is None else p[name]
+        ratios[name] = positive_finite(PARTNER_OPTIONS[name], value)
+    second = None
+    if p["partner_nu"] is not None:
+        second = body_nu(p["partner_nu"], plane, geometry)
+        if second == body_nu(nu, plane, geometry):
+            second = None
+    return Partner(nu=second, **ratios)
+
+
 def positive_finite(name: str, value: float) -> float:
     if not (math.isfinite(value) and value > 0):
         raise InputError(f"{name} must be a positive number, got {value}")

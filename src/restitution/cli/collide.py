@@ -19,6 +19,8 @@ from restitution.cli._common import (
     material_from,
     note,
     nu_option,
+    partner_from,
+    partner_options,
     plane_option,
     positive_finite,
     quiet,
@@ -39,13 +41,6 @@ _EXCITE_OPTIONS = {
     "plot": "--plot",
 }
 _EXCITATIONS = ("none", "mode", "thermal")
-
-_PAIR_OPTIONS = {
-    "radius_ratio": "--radius-ratio",
-    "partner_nu": "--partner-nu",
-    "modulus_ratio": "--modulus-ratio",
-    "density_ratio": "--density-ratio",
-}
 
 _LONG_RUN_STEPS = 200_000
 """Runs expected to take more steps than this are announced with their estimate."""
@@ -193,32 +188,7 @@ def _print_summary(result, top: int = 10) -> None:
     default=None,
     help="--excite thermal: draw the histogram of epsilon to this file.",
 )
-@click.option(
-    "--radius-ratio",
-    type=float,
-    default=None,
-    help="Collide with a second body of radius R2 = this * R1 instead of the wall (two disks; "
-    "two spheres need 1). --v is then the relative normal speed of the two, in c of the first "
-    "body; --modes counts both bodies' modes below one frequency (docs/two-disks.md).",
-)
-@click.option(
-    "--partner-nu",
-    type=float,
-    default=None,
-    help="Poisson number of the second body, read like --nu (with --plane) [default: --nu].",
-)
-@click.option(
-    "--modulus-ratio",
-    type=float,
-    default=None,
-    help="Young modulus of the second body / the first's (E2/E1) [default: 1].",
-)
-@click.option(
-    "--density-ratio",
-    type=float,
-    default=None,
-    help="Density of the second body / the first's (rho2/rho1) [default: 1].",
-)
+@partner_options
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
 @strict_option
 @quiet_option
@@ -261,7 +231,7 @@ def collide(
     of the kinetic energy in the centre-of-mass frame (docs/two-disks.md).
     """
     body = body_nu(nu, plane, geometry)
-    partner = _partner(ctx, nu, plane, geometry)
+    partner = partner_from(ctx, nu, plane, geometry)
     if partner is not None:
         return _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol,
                      as_json, strict)  # fmt: skip
@@ -343,27 +313,11 @@ def collide(
             sys.exit(EXIT_NOT_CONVERGED)
 
 
-def _partner(ctx, nu, plane, geometry) -> dict | None:
-    """The second body of ``collide --radius-ratio ...`` (``None``: the wall)."""
-    from restitution.cli._common import given
-
-    p = ctx.params
-    if not any(given(ctx, name) for name in _PAIR_OPTIONS):
-        return None
-    ratios = {}
-    for name in ("radius_ratio", "modulus_ratio", "density_ratio"):
-        value = 1.0 if p[name] is None else p[name]
-        ratios[name] = positive_finite(_PAIR_OPTIONS[name], value)
-    partner_nu = nu if p["partner_nu"] is None else p["partner_nu"]
-    return {"nu": body_nu(partner_nu, plane, geometry), "nu_given": partner_nu, **ratios}
-
-
 def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol, as_json,
           strict):  # fmt: skip
     """``collide --radius-ratio ...``: two bodies head-on (:mod:`restitution.bodies.pair`)."""
     import numpy as np
 
-    from restitution.bodies.pair import pair_of
     from restitution.dynamics.collision import collide as run
 
     refuse_ignored(ctx, _EXCITE_OPTIONS, "for two bodies (they meet at rest)")
@@ -376,16 +330,10 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
     _check_up_front(v, alpha, integrator, energy_tol)
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
+    nu2 = partner.nu2(body)
     check_mode_request(body, n_modes, None, geometry)
-    check_mode_request(partner["nu"], n_modes, None, geometry)
-    # The lowest n_modes of both together lie among each body's own lowest n_modes.
-    pair = pair_of(
-        get_modes(body, count=n_modes, geometry=geometry),
-        get_modes(partner["nu"], count=n_modes, geometry=geometry),
-        radius_ratio=partner["radius_ratio"],
-        modulus_ratio=partner["modulus_ratio"],
-        density_ratio=partner["density_ratio"],
-    ).lowest(n_modes)
+    check_mode_request(nu2, n_modes, None, geometry)
+    pair = partner.pair(body, n_modes, geometry, get_modes)
     start = time.perf_counter()
     long_run = _announce(pair, v, alpha, integrator, energy_tol)
     with warnings.catch_warnings(), _elapsed(long_run):
@@ -402,11 +350,11 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
         "speed_meaning": "relative normal speed of the two centres, c of the first body",
     }
     if as_json:
-        inputs = {"geometry": geometry, "nu": body, "partner_nu": partner["nu"], "v": v,
+        inputs = {"geometry": geometry, "nu": body, "partner_nu": nu2, "v": v,
                   "alpha": alpha, "modes": n_modes, "integrator": integrator,
-                  "energy_tol": energy_tol, "radius_ratio": partner["radius_ratio"],
-                  "modulus_ratio": partner["modulus_ratio"],
-                  "density_ratio": partner["density_ratio"]}  # fmt: skip
+                  "energy_tol": energy_tol, "radius_ratio": partner.radius_ratio,
+                  "modulus_ratio": partner.modulus_ratio,
+                  "density_ratio": partner.density_ratio}  # fmt: skip
         d = envelope("collide", inputs, result.to_dict(), status=result.status,
                      advice=result.advice)  # fmt: skip
         d["pair"] = detail
@@ -422,9 +370,9 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
     else:
         _print_summary(result)
         click.echo(
-            f"two {geometry}s: R2/R1 = {partner['radius_ratio']:g}, E2/E1 = "
-            f"{partner['modulus_ratio']:g}, rho2/rho1 = {partner['density_ratio']:g}, nu2 = "
-            f"{partner['nu']:g}; v is the relative speed; modes {counts[0]} + {counts[1]}; "
+            f"two {geometry}s: R2/R1 = {partner.radius_ratio:g}, E2/E1 = "
+            f"{partner.modulus_ratio:g}, rho2/rho1 = {partner.density_ratio:g}, nu2 = "
+            f"{nu2:g}; v is the relative speed; modes {counts[0]} + {counts[1]}; "
             f"energy left in the first body {first:.6g}, in the second {second:.6g} (fractions "
             "of the kinetic energy in the centre-of-mass frame)"
         )

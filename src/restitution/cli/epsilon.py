@@ -22,13 +22,21 @@ from restitution.cli._common import (
     envelope,
     geometry_option,
     note,
+    partner_from,
+    partner_options,
     quiet,
     quiet_option,
     strict_option,
     writing,
 )
 from restitution.errors import InputError
-from restitution.limits.sweep import DEFAULTS, SPHERE_DEFAULTS, SweepSettings, defaults_for
+from restitution.limits.sweep import (
+    DEFAULTS,
+    SPHERE_DEFAULTS,
+    SweepSettings,
+    defaults_for,
+    pair_settings,
+)
 from restitution.status import Status
 
 _V_HELP = (
@@ -83,8 +91,10 @@ class _CurveCommand(_ListCommand):
 
 
 def _settings(
-    velocities=None, alphas=None, modes=None, alpha_scale=None, geometry="disk"
+    velocities=None, alphas=None, modes=None, alpha_scale=None, geometry="disk", partner=None
 ) -> SweepSettings:
+    """The body's default sweep (for a ``partner``: carried over to the pair by
+    :func:`restitution.limits.sweep.pair_settings`) with the given sets in place of its own."""
     changes = {
         "velocities": tuple(velocities) if velocities else None,
         "alphas": tuple(alphas) if alphas else None,
@@ -92,6 +102,8 @@ def _settings(
         "alpha_scale": alpha_scale,
     }
     base = defaults_for(geometry)
+    if partner is not None:
+        base = pair_settings(base, partner)
     return replace(base, **{k: v for k, v in changes.items() if v is not None})
 
 
@@ -387,8 +399,11 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
     show_default=True,
     help="Figure format.",
 )
+@partner_options
 @_executor_options
+@click.pass_context
 def curve(
+    ctx,
     nus,
     geometry,
     velocities,
@@ -403,6 +418,10 @@ def curve(
     progress,
     retry_failed,
     strict,
+    radius_ratio,
+    partner_nu,
+    modulus_ratio,
+    density_ratio,
 ):
     """epsilon(v) for one or more Poisson numbers: Fig. 1, Figs. 7 and 8, and exports.
 
@@ -411,8 +430,11 @@ def curve(
     table: v, epsilon, epsilon_err for event-driven and DEM codes) into --out; for a sphere
     (--geometry sphere) the names carry the body: fig01_epsilon_sphere,
     fig07_alpha_sphere_nu*, fig08_modes_sphere_nu*, law_sphere_nu*.json / .csv / .txt (the
-    file `restitution law --geometry sphere --law-file` reads). Exit status 1 when collisions
-    failed; with --strict, 3 when a speed is not asymptotic.
+    file `restitution law --geometry sphere --law-file` reads). With --radius-ratio (or
+    another partner option) the law of two bodies meeting head-on: v is their relative speed
+    (default speeds twice the wall's, mode windows of both bodies at the wall's frequency cutoff;
+    files law_pair_r<R2/R1>..._nu*.json). Exit status 1 when collisions failed; with --strict, 3
+    when a speed is not asymptotic.
     """
     from restitution.laws.law import EpsilonLaw, law_filename
     from restitution.limits.curves import compute_curves
@@ -426,13 +448,24 @@ def curve(
             "(-1, 0.5)); the default 0.33 0.9 is the disk's"
         )
     nus = tuple(body_nu(nu, None, geometry) for nu in (nus or (0.33, 0.9)))
-    settings = _settings(velocities, alphas, modes, alpha_scale, geometry)
+    if partner_nu is not None and len(nus) > 1:
+        raise InputError(
+            "--partner-nu names the second body's material for one --nu; give one --nu with it"
+        )
+    partner = partner_from(ctx, nus[0], None, geometry)
+    settings = _settings(velocities, alphas, modes, alpha_scale, geometry, partner)
     # The figures draw the curves' numbers whatever the body; a sphere's say so and are named
     # apart from the disk's, so one --out can hold both.
     tag, body_note = "", ""
     if geometry != "disk":
         tag = f"_{geometry}"
         body_note = f"{geometry}: nu is its 3D Poisson number, v in c = sqrt(E/rho) of it"
+    if partner is not None:
+        tag += "_pair"
+        body_note = (
+            f"two {geometry}s, R2/R1 = {partner.radius_ratio:g}: v is the relative speed, c of "
+            "the first"
+        )
     check_output_dir(out, "--out")  # before the sweep, not after it
     points = grid(nus, settings)
     report = _sweep(points, settings, store, workers, scheduler, progress, retry_failed)
@@ -480,7 +513,7 @@ def curve(
         except Exception as exc:  # noqa: BLE001 - report and go on with the other nu
             note(f"warning: no {geometry} law for nu = {nu:g}: {exc}")
             continue
-        stem = Path(law_filename(nu, geometry)).stem
+        stem = Path(law_filename(nu, geometry, partner)).stem
         with writing(out, "--out"):
             written += [
                 law.to_json(out / f"{stem}.json"),

@@ -38,7 +38,18 @@ class _LawCommand(_ListCommand):
     type=click.Choice(["wall", "grain"]),
     required=True,
     help="A rigid flat wall hit at speed w (v = w/c), or an identical grain at relative normal "
-    "speed w (v = w/(2c)).",
+    "speed w (v = w/(2c)); with --partner-radius-ratio a grain of the same material and another "
+    "size (v = w/c, the pair's law).",
+)
+@click.option(
+    "--partner-radius-ratio",
+    type=float,
+    default=None,
+    help="With --against grain: radius of the partner grain over this grain's, R2/R1, same "
+    "material (either way round; 1 = identical grains). Served by the law of the pair "
+    "(law_pair_r<R>_nu<nu_2d>.json, or --law-file from `restitution curve --nu NU_2D "
+    "--radius-ratio R`); w is the relative normal speed. With a constant, the exports give "
+    "type pairs 1-1 and 2-2 (identical grains) and 1-2 (the pair). Cylinders and thin disks only.",
 )
 @click.option(
     "--speed",
@@ -53,7 +64,16 @@ class _LawCommand(_ListCommand):
     type=click.Path(dir_okay=False, exists=True, path_type=Path),
     default=None,
     help="A law JSON from `restitution curve` for this material: the disk's law for its 2D "
-    "Poisson number (cylinder, thin disk), the sphere's (`curve --geometry sphere`) for nu.",
+    "Poisson number (cylinder, thin disk), the sphere's (`curve --geometry sphere`) for nu; with "
+    "--partner-radius-ratio the pair's (`curve --radius-ratio R`).",
+)
+@click.option(
+    "--identical-law-file",
+    type=click.Path(dir_okay=False, exists=True, path_type=Path),
+    default=None,
+    help="With --partner-radius-ratio and --reference-speed or --maxwell-temperature: the law "
+    "JSON of two identical grains of this material (`restitution curve --nu NU_2D`), for the "
+    "1-1 and 2-2 constants [default: the shipped laws].",
 )
 @click.option(
     "--export",
@@ -83,9 +103,11 @@ def law(
     rho,
     geometry,
     against,
+    partner_radius_ratio,
     speeds,
     as_json,
     law_file,
+    identical_law_file,
     export_dir,
     reference_speed,
     maxwell_temperature,
@@ -100,6 +122,14 @@ def law(
     \b
     restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
         --against wall --speed 0.5 1 5
+
+    Two grains of one material and different sizes: --against grain --partner-radius-ratio R
+    (docs/materials.md). A partner of another material is not served in SI units; collide the
+    two in reduced units (E = rho = R = 1 of the first grain, v in its c) with:
+
+    \b
+    restitution collide --radius-ratio R --modulus-ratio E2/E1 \\
+        --density-ratio RHO2/RHO1 --partner-nu NU2
     """
     from restitution.cli._common import envelope
     from restitution.errors import InputError
@@ -108,22 +138,37 @@ def law(
 
     if reference_speed is not None and maxwell_temperature is not None:
         raise InputError("give --reference-speed or --maxwell-temperature, not both")
-    s = si_law(E, nu, rho, geometry, against, path=law_file)
+    ratio = _check_ratio(partner_radius_ratio, against, geometry)
+    if identical_law_file is not None:
+        _check_identical_law_file(ratio, reference_speed, maxwell_temperature)
+    s = si_law(E, nu, rho, geometry, against, path=law_file, radius_ratio=ratio)
     speeds = list(speeds) or [0.1, 0.5, 1.0, 5.0, 10.0]
     result = s.to_dict(speeds)
     status, advice = overall_status(s.points(speeds))
-    constant = None
-    if reference_speed is not None:
+    constant = pairs = None
+    if s.law.partner is not None and (reference_speed, maxwell_temperature) != (None, None):
+        # Two sizes: a constant per pair of particle types; the pair's own is 1-2.
+        identical = _identical(E, nu, rho, geometry, identical_law_file)
+        pairs = exports.type_pair_constants(
+            s, identical, speed_m_s=reference_speed, temperature_m2_s2=maxwell_temperature
+        )
+        constant = pairs.mixed
+    elif reference_speed is not None:
         constant = exports.constant_at(s, reference_speed)
     elif maxwell_temperature is not None:
         constant = exports.maxwell_constant(s, maxwell_temperature)
     if constant is not None:
         result["constant"] = constant.to_dict()
+    if pairs is not None:
+        result["type_pairs"] = pairs.to_dict()
     if export_dir is not None:
-        result["exports"] = [str(p) for p in _export(s, constant, export_dir)]
+        result["exports"] = [str(p) for p in _export(s, pairs or constant, export_dir)]
     if as_json:
         inputs = {"E": E, "nu": nu, "rho": rho, "geometry": geometry, "against": against,
+                  "partner_radius_ratio": partner_radius_ratio,
                   "speeds_m_s": speeds, "law_file": None if law_file is None else str(law_file),
+                  "identical_law_file": (None if identical_law_file is None
+                                         else str(identical_law_file)),
                   "reference_speed": reference_speed,
                   "maxwell_temperature": maxwell_temperature,
                   "export": None if export_dir is None else str(export_dir)}  # fmt: skip
@@ -132,10 +177,17 @@ def law(
         return
     g = s.grain
     click.echo(g.describe())
+    pair = s.law.partner
+    body = g.body if pair is None else f"{g.body} pair (R2/R1 = {pair.radius_ratio:g})"
     click.echo(
-        f"against {against}: {result['against_meaning']}; {g.body} law "
+        f"against {against}: {result['against_meaning']}; {body} law "
         f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']})"
     )
+    if pair is not None and partner_radius_ratio < 1.0:
+        click.echo(
+            f"the radius ratio {partner_radius_ratio:g} is the pair R2/R1 = "
+            f"{pair.radius_ratio:g} seen from the large grain: the same collision"
+        )
     click.echo("  speed [m/s]        v/c       epsilon      error   status")
     notes = {}
     for p in s.points(speeds):
@@ -148,16 +200,85 @@ def law(
             notes[p.status] = result["statuses"][p.status]
     for status, text in notes.items():
         click.echo(f"note: {status}: {text}", err=True)
-    if constant is not None:
+    if pairs is not None:
         click.echo(
-            f"constant: epsilon = {constant.epsilon:.6f} +- {constant.epsilon_err:.2g} "
-            f"({constant.how}; {constant.status})"
+            f"type 1 = the small grain, type 2 = the large one (R2 = {pairs.radius_ratio:g} R1); "
+            f"constants per type pair:"
         )
+        for name, c in (("1-2", pairs.mixed), ("1-1, 2-2", pairs.same)):
+            click.echo(f"  {name:>8}: {_constant_text(c)}")
+        click.echo(f"  ({exports.SAME_SIZE_NOTE})")
+    elif constant is not None:
+        click.echo(f"constant: {_constant_text(constant)}")
     if export_dir is not None:
         click.echo("wrote " + ", ".join(result["exports"]))
 
 
+def _constant_text(c) -> str:
+    return f"epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g} ({c.how}; {c.status})"
+
+
+def _check_ratio(ratio: float | None, against: str, geometry: str) -> float | None:
+    """The ``radius_ratio`` to pass to :func:`si_law`: ``None`` without one (and for ``1``, the
+    identical grain); one-line refusals naming --partner-radius-ratio."""
+    from restitution.errors import InputError
+
+    if ratio is None:
+        return None
+    if not (math.isfinite(ratio) and ratio > 0):
+        raise InputError(
+            f"--partner-radius-ratio must be a positive number R2/R1 (1 = identical grains), got "
+            f"{ratio:g}"
+        )
+    if against != "grain":
+        raise InputError(
+            "--partner-radius-ratio describes a second grain: give it with --against grain, or "
+            "leave it out against a wall"
+        )
+    if ratio == 1.0:
+        return None
+    if geometry == "sphere":
+        raise InputError(
+            f"--partner-radius-ratio {ratio:g}: laws of two spheres of different sizes are not "
+            "computed yet; use --geometry cylinder or thin-disk, or leave it out (identical "
+            "spheres)"
+        )
+    return ratio
+
+
+def _check_identical_law_file(ratio, reference_speed, maxwell_temperature) -> None:
+    """Refuse --identical-law-file where nothing would read it."""
+    from restitution.errors import InputError
+
+    if ratio is None:
+        raise InputError(
+            "--identical-law-file serves the 1-1 and 2-2 constants of two grain sizes: give it "
+            "with --partner-radius-ratio other than 1 (identical grains take --law-file)"
+        )
+    if reference_speed is None and maxwell_temperature is None:
+        raise InputError(
+            "--identical-law-file serves the 1-1 and 2-2 constants: give it with "
+            "--reference-speed or --maxwell-temperature"
+        )
+
+
+def _identical(E, nu, rho, geometry, path):
+    """The law of two identical grains of the material, for the type pairs 1-1 and 2-2."""
+    from restitution.errors import InputError
+    from restitution.laws.si_law import si_law
+
+    try:
+        return si_law(E, nu, rho, geometry, "grain", path=path)
+    except InputError as exc:
+        raise InputError(
+            f"the 1-1 and 2-2 constants need the law of identical grains: {exc}; give that file "
+            "with --identical-law-file"
+        ) from None
+
+
 def _export(s, constant, out: Path) -> list[Path]:
+    """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
+    ``TypePairs`` of ``s``), the snippets into ``out``."""
     from restitution.laws import exports
 
     out.mkdir(parents=True, exist_ok=True)

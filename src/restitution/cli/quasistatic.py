@@ -14,8 +14,11 @@ from restitution.cli._common import (
     dumps,
     envelope,
     geometry_option,
+    given,
     note,
     nu_option,
+    partner_from,
+    partner_options,
     plane_option,
     quiet_option,
     refuse_ignored,
@@ -27,6 +30,11 @@ from restitution.quasistatic.hertz import (
     contact_law,
     contact_time_rate,
     quasistatic_collision,
+)
+from restitution.quasistatic.hertz_pair import (
+    pair_contact_law,
+    pair_mass,
+    pair_quasistatic_collision,
 )
 from restitution.quasistatic.hertz_sphere import (
     CONTACT_TIME_CONSTANT,
@@ -132,16 +140,32 @@ _DISK_ONLY = {"law": "--law", "plane": "--plane"}
     show_default=True,
     help="Lowest modes driven in Rayleigh's approach (the paper's Fig. 12 uses 1800).",
 )
+@partner_options
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of text.")
 @quiet_option
 @click.pass_context
-def quasistatic(ctx, nu, plane, geometry, v, law, n_modes, as_json):
+def quasistatic(
+    ctx,
+    nu,
+    plane,
+    geometry,
+    v,
+    law,
+    n_modes,
+    radius_ratio,
+    partner_nu,
+    modulus_ratio,
+    density_ratio,
+    as_json,
+):
     """Quasistatic collision (2D Hertz law for the disk, 3D Hertz for the sphere) and
     Rayleigh's energy estimate at speed V.
 
     Reports the maximal compression, the contact time (and for the disk the eq. (61)
     estimates), and the fraction of the kinetic energy left in the modes when the quasistatic
-    force drives them at the contact point (paper section 5).
+    force drives them at the contact point (paper section 5). With --radius-ratio (or another
+    partner option) two disks meet at relative speed V: their 2D Hertz law with a common
+    contact width (docs/two-disks.md), without Rayleigh's estimate.
     """
     if geometry != "disk":
         refuse_ignored(
@@ -153,6 +177,10 @@ def quasistatic(ctx, nu, plane, geometry, v, law, n_modes, as_json):
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     body = body_nu(nu, plane, geometry)
+    partner = partner_from(ctx, nu, plane, geometry)
+    if partner is not None:
+        _pair(ctx, body, partner, geometry, v, law, as_json)
+        return
     check_mode_request(body, n_modes, geometry=geometry)
     if geometry == "sphere":
         _sphere(body, v, n_modes, as_json)
@@ -183,6 +211,79 @@ def quasistatic(ctx, nu, plane, geometry, v, law, n_modes, as_json):
         f"(n={out['rayleigh_dominant_mode'][0]}, l={out['rayleigh_dominant_mode'][1]})"
     )
     _note_validity(out)
+
+
+def pair_quasistatic_summary(nu: float, partner, w: float, law: str = "centre") -> dict:
+    """What the command reports for two disks at relative speed ``w`` (``c1``): their Hertz
+    law (:func:`restitution.quasistatic.hertz_pair.pair_contact_law`), the quasistatic collision
+    with the reduced mass, and the eq. (61)-type compression that scales the pair's walls."""
+    nu2 = partner.nu2(nu)
+    kwargs = {
+        "radius_ratio": partner.radius_ratio,
+        "modulus_ratio": partner.modulus_ratio,
+    }
+    hl = pair_contact_law(nu, nu2, law=law, **kwargs)
+    q = pair_quasistatic_collision(w, nu, nu2, density_ratio=partner.density_ratio, law=law,
+                                   **kwargs)  # fmt: skip
+    return {
+        "geometry": "disk-pair",
+        "nu": nu,
+        "partner": partner.to_dict(),
+        "partner_nu": nu2,
+        "v": w,
+        "law": law,
+        "E_eff": hl.E,
+        "R_K": hl.R,
+        "law_constant": hl.constant,
+        "reduced_mass": pair_mass(partner.radius_ratio, partner.density_ratio),
+        "max_compression": float(q.max_compression[0]),
+        "max_force": float(q.max_force[0]),
+        "contact_time": float(q.contact_time[0]),
+        "wall_scale_compression": float(partner.max_compression(w)),
+        "units": {
+            "system": "E1 = rho1 = R1 = 1: the first disk's 2D constants",
+            "speed": "c1 = sqrt(E1/rho1) (v: the relative normal speed of the two centres)",
+            "length": "R1 (compressions: approach of the two centres)",
+            "time": "R1/c1",
+            "force": "E1 R1 (per unit thickness)",
+            "mass": "rho1 R1^2 (per unit thickness)",
+        },
+    }
+
+
+def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, as_json: bool) -> None:
+    """``quasistatic --radius-ratio ...``: two disks (:mod:`restitution.quasistatic.hertz_pair`)."""
+    if geometry != "disk":
+        raise InputError(
+            f"the quasistatic theory of two bodies is derived for disks; leave out the partner "
+            f"options for a {geometry}"
+        )
+    refuse_ignored(ctx, {"n_modes": "--modes"}, "for two disks (no Rayleigh estimate for pairs)")
+    # The paper's eq. (57) as printed is the default of one disk; the pair's compression is the
+    # approach of the centres, so a pair takes the centre law unless --law is given.
+    if not given(ctx, "law"):
+        law = "centre"
+    out = pair_quasistatic_summary(nu, partner, w, law)
+    if not math.isfinite(out["contact_time"]):
+        raise InputError("contact time is not finite; use a smaller --v")
+    if as_json:
+        inputs = {"geometry": geometry, "nu": nu, "partner_nu": out["partner_nu"], "v": w,
+                  "law": law, "radius_ratio": partner.radius_ratio,
+                  "modulus_ratio": partner.modulus_ratio,
+                  "density_ratio": partner.density_ratio}  # fmt: skip
+        click.echo(dumps(envelope("quasistatic", inputs, out)))
+        return
+    click.echo(
+        f"quasistatic collision of two disks, nu = {nu:g} and {out['partner_nu']:g}, R2/R1 = "
+        f"{partner.radius_ratio:g}, E2/E1 = {partner.modulus_ratio:g}, rho2/rho1 = "
+        f"{partner.density_ratio:g}; relative speed v = {w:g} c1, law '{law}'\n"
+        f"  E_eff = {out['E_eff']:.6g} E1, R_K = {out['R_K']:.6g} R1, reduced mass "
+        f"{out['reduced_mass']:.6g} rho1 R1^2\n"
+        f"  max approach of the centres  {out['max_compression']:.6g} R1 (the walls' scale: "
+        f"{out['wall_scale_compression']:.6g})\n"
+        f"  contact time     {out['contact_time']:.6g} R1/c1\n"
+        f"  max force        {out['max_force']:.6g} E1 R1"
+    )
 
 
 def _sphere(nu: float, v: float, n_modes: int, as_json: bool) -> None:

@@ -18,6 +18,13 @@ speed means (wall or two grains), ``c``, the law's source and the package versio
   the impact speeds of a gas at a granular temperature): one number for codes that take a
   constant per pair, with snippets for LAMMPS ``pair_style granular`` (:func:`lammps_snippet`),
   LIGGGHTS, MercuryDPM and YADE.
+* :func:`type_pair_constants`: the constants of a bidisperse packing of one material (type 1 the
+  small grain, type 2 the large): 1-1 and 2-2 from the law of identical grains, 1-2 from the
+  pair's law, each at the same reference speed or temperature (:class:`TypePairs`); the same
+  snippet functions write them per pair of particle types.
+
+The speed ``w`` of a law of two grains of different sizes (``SILaw.law.partner``) is their
+relative normal speed; every header says so (:attr:`SILaw.against_meaning`).
 """
 
 from __future__ import annotations
@@ -36,12 +43,13 @@ from restitution import atomic
 from restitution._version import __version__
 from restitution.errors import InputError, RestitutionError
 from restitution.laws.si_law import SILaw
-from restitution.laws.units import PARTNERS
 from restitution.status import Status
 
 __all__ = [
+    "SAME_SIZE_NOTE",
     "ClosedForm",
     "Constant",
+    "TypePairs",
     "c_header",
     "constant_at",
     "distribution_constant",
@@ -52,6 +60,7 @@ __all__ = [
     "maxwell_constant",
     "mercurydpm_snippet",
     "speed_table",
+    "type_pair_constants",
     "write_csv",
     "write_table",
     "yade_snippet",
@@ -65,22 +74,32 @@ _BODY_WORDS = {
 }
 
 
+def _law_line(s: SILaw) -> str:
+    """``law: ...``: which law serves ``s`` (the body's, or the pair's) and where it is from."""
+    g = s.grain
+    pair = s.law.partner
+    if pair is not None:
+        return (
+            f"law: the pair's (a small and a large {g.body} of one material, R2/R1 = "
+            f"{pair.radius_ratio:g}; w their relative normal speed), {g.law_nu_name} = "
+            f"{float(s.law.nu):g}, {s.law_source}"
+        )
+    if g.body == "disk":
+        return f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}"
+    return f"law: the {g.body}'s, nu = {float(s.law.nu):g}, {s.law_source}"
+
+
 def _header(s: SILaw) -> list[str]:
     g = s.grain
     lo, hi = s.computed_range_m_s
-    if g.body == "disk":
-        law_line = f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}"
-    else:
-        law_line = f"law: the {g.body}'s, nu = {float(s.law.nu):g}, {s.law_source}"
     return [
         f"restitution {__version__}, {datetime.datetime.now(datetime.UTC):%Y-%m-%dT%H:%M:%SZ}: "
         "coefficient of restitution of an elastic grain from its vibrational modes "
         "(Gerl & Zippelius model)",
         f"grain: {g.geometry}: {_BODY_WORDS[g.geometry]}",
         f"material: {g.describe()}",
-        f"partner: {s.against}: {PARTNERS[s.against]}; speed unit k c = "
-        f"{s.speed_scale_m_s:.6g} m/s",
-        law_line,
+        f"partner: {s.against}: {s.against_meaning}; speed unit k c = {s.speed_scale_m_s:.6g} m/s",
+        _law_line(s),
         f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; the law serves nothing outside them",
     ]
 
@@ -382,7 +401,7 @@ def constant_at(s: SILaw, speed_m_s: float) -> Constant:
     return Constant(
         p.epsilon,
         p.epsilon_err,
-        f"epsilon at w = {speed_m_s:g} m/s ({s.against}: {PARTNERS[s.against]})",
+        f"epsilon at w = {speed_m_s:g} m/s ({s.against}: {s.against_meaning})",
         p.status,
     )
 
@@ -402,6 +421,8 @@ def maxwell_constant(s: SILaw, temperature_m2_s2: float, *, nodes: int = 400) ->
     ``T`` is the variance of one velocity component of a grain, ``<v_x^2>`` in m^2/s^2. The
     normal impact speed ``w`` is Gaussian with variance ``sigma^2 = 2 T`` (two grains,
     relative speed) or ``T`` (a grain against a wall), and impacts happen at a rate ``~ w``.
+    For a pair's law (a small and a large grain) ``2 T`` assumes both sizes at the same
+    ``<v_x^2> = T``; the constant's ``how`` says so.
     The constant returned conserves the mean energy dissipated per unit time::
 
         1 - eps_eff^2 = <w^3 (1 - epsilon(w)^2)> / <w^3>,  weight exp(-w^2 / (2 sigma^2))
@@ -438,12 +459,13 @@ def maxwell_constant(s: SILaw, temperature_m2_s2: float, *, nodes: int = 400) ->
     half = 0.5 * (w_max - w_min)
     w = w_min + half * (x + 1.0)
     rate = half * wq * w * np.exp(-(w**2) / (2.0 * sigma2))
+    both = "" if s.law.partner is None else ", both grain sizes at <v_x^2> = T"
     return distribution_constant(
         s,
         w,
         rate,
         how=f"dissipation-weighted average over a Maxwell gas at T = {T:g} m^2/s^2 "
-        f"({s.against}: normal speed variance {sigma2:g} m^2/s^2)",
+        f"({s.against}: normal speed variance {sigma2:g} m^2/s^2{both})",
     )
 
 
@@ -483,14 +505,197 @@ def distribution_constant(s: SILaw, speeds_m_s, rates, *, how: str = "") -> Cons
     )
 
 
-def _comment(s: SILaw, c: Constant, mark: str) -> str:
-    lines = [
-        *_header(s),
-        f"constant: epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g}, {c.how}",
-        f"status: {c.status}",
+# -- constants per pair of particle types (bidisperse packings) ---------------------------------
+
+SAME_SIZE_NOTE = (
+    "identical grains of one material have the same epsilon(w) whatever their size: the law "
+    "depends on w/c only (the model has no other length), so 1-1 and 2-2 share one constant"
+)
+"""Why the type pairs 1-1 and 2-2 of one material take the same constant."""
+
+
+def _check_type_pair_laws(pair: SILaw, identical: SILaw) -> None:
+    """One-line refusal unless ``pair`` is a pair's law and ``identical`` the law of two
+    identical grains of the same material and geometry."""
+    if pair.law.partner is None:
+        raise InputError(
+            "the 1-2 constant needs the law of a small and a large grain (an SILaw with "
+            "law.partner, si_law(..., against='grain', radius_ratio=R) with R != 1); give that "
+            "as the pair's law"
+        )
+    if identical.law.partner is not None or identical.against != "grain":
+        raise InputError(
+            "the 1-1 and 2-2 constants need the law of two identical grains (si_law(..., "
+            f"against='grain') without a radius ratio), got {identical.against_meaning!r}"
+        )
+    if pair.grain != identical.grain:
+        raise InputError(
+            f"the pair's law is for {pair.grain.describe()}, the identical grains' for "
+            f"{identical.grain.describe()}; give both laws for one material and geometry"
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class TypePairs:
+    """The constants of a bidisperse packing of one material, per pair of particle types.
+
+    Type 1 is the small grain (radius ``R1``), type 2 the large one (``R2 = radius_ratio R1``).
+    Two identical grains of one material have the same ``epsilon(w)`` whatever their size (the
+    law depends on ``w / c`` only), so 1-1 and 2-2 share :attr:`same`, from the law of identical
+    grains; 1-2 (:attr:`mixed`) comes from the pair's law. Built by
+    :func:`type_pair_constants`; every snippet function takes it in place of a
+    :class:`Constant` (with ``s`` its :attr:`pair`).
+
+    Attributes
+    ----------
+    pair : SILaw
+        The pair's law: ``w`` the relative normal speed of a small and a large grain, m/s.
+    identical : SILaw
+        The law of two identical grains of the same material and geometry (``w`` their relative
+        normal speed, m/s).
+    mixed : Constant
+        Type pair 1-2: a small grain with a large one.
+    same : Constant
+        Type pairs 1-1 and 2-2: two grains of one size.
+    """
+
+    pair: SILaw
+    identical: SILaw
+    mixed: Constant
+    same: Constant
+
+    def __post_init__(self) -> None:
+        _check_type_pair_laws(self.pair, self.identical)
+
+    @property
+    def radius_ratio(self) -> float:
+        """``R2 / R1 > 1``: the large grain's radius over the small one's."""
+        return self.pair.law.partner.radius_ratio
+
+    @property
+    def constants(self) -> dict[tuple[int, int], Constant]:
+        """``(i, j) -> Constant`` for the type pairs ``(1, 1)``, ``(2, 2)`` and ``(1, 2)``."""
+        return {(1, 1): self.same, (2, 2): self.same, (1, 2): self.mixed}
+
+    def matrix(self) -> np.ndarray:
+        """epsilon per type pair, a symmetric 2 x 2 array (row, column: type - 1)."""
+        c = self.constants
+        return np.array([[c[1, 1].epsilon, c[1, 2].epsilon], [c[1, 2].epsilon, c[2, 2].epsilon]])
+
+    def to_dict(self) -> dict:
+        """JSON-ready: the types, the three constants and the two laws they come from."""
+        g = self.pair.grain
+        return {
+            "types": {
+                "1": "the small grain (radius R1)",
+                "2": f"the large grain (R2 = {self.radius_ratio:g} R1), same material",
+            },
+            "radius_ratio": self.radius_ratio,
+            **{f"{i}-{j}": c.to_dict() for (i, j), c in self.constants.items()},
+            "laws": {
+                "1-1, 2-2": {
+                    g.law_nu_name: float(self.identical.law.nu),
+                    "source": self.identical.law_source,
+                },
+                "1-2": {g.law_nu_name: float(self.pair.law.nu), "source": self.pair.law_source},
+            },  # fmt: skip
+            "note": SAME_SIZE_NOTE,
+        }
+
+
+def type_pair_constants(
+    pair: SILaw,
+    identical: SILaw,
+    *,
+    speed_m_s: float | None = None,
+    temperature_m2_s2: float | None = None,
+) -> TypePairs:
+    """The constants of a bidisperse packing per pair of particle types, at one reference.
+
+    Parameters
+    ----------
+    pair : SILaw
+        The law of a small and a large grain of one material (``pair.law.partner`` set; from
+        ``si_law(..., against="grain", radius_ratio=R)``); gives type pair 1-2.
+    identical : SILaw
+        The law of two identical grains of the same material and geometry (``si_law(...,
+        against="grain")``); gives type pairs 1-1 and 2-2.
+    speed_m_s : float, optional
+        Reference relative normal speed ``w``, m/s: each constant is its law at ``w``
+        (:func:`constant_at`).
+    temperature_m2_s2 : float, optional
+        Granular temperature ``<v_x^2>`` of both sizes, m^2/s^2: each constant is its law
+        averaged over a Maxwell gas (:func:`maxwell_constant`). Give this or ``speed_m_s``.
+
+    Returns
+    -------
+    TypePairs
+
+    Raises
+    ------
+    InputError
+        For laws that are not a pair's and identical grains' of one material, neither or both
+        references, or a reference outside either law (the message names the type pair).
+    """
+    if (speed_m_s is None) == (temperature_m2_s2 is None):
+        raise InputError(
+            "the type-pair constants need one reference: a speed (m/s) or a Maxwell "
+            "temperature (m^2/s^2), not both and not neither"
+        )
+    _check_type_pair_laws(pair, identical)
+
+    def one(s: SILaw, name: str) -> Constant:
+        try:
+            if speed_m_s is not None:
+                return constant_at(s, speed_m_s)
+            return maxwell_constant(s, temperature_m2_s2)
+        except InputError as exc:
+            raise InputError(f"type pair {name}: {exc}") from None
+
+    return TypePairs(
+        pair,
+        identical,
+        mixed=one(pair, "1-2 (small with large)"),
+        same=one(identical, "1-1 and 2-2 (identical grains)"),
+    )
+
+
+# -- snippets ------------------------------------------------------------------------------------
+
+
+def _constants(s: SILaw, c: Constant | TypePairs) -> dict[tuple[int, int], Constant]:
+    """``(i, j) -> Constant`` per pair of particle types: ``{(1, 1): c}`` for one constant."""
+    if isinstance(c, TypePairs):
+        if c.pair is not s:
+            raise InputError(
+                "constants per type pair go with their pair's law: pass TypePairs.pair as the law"
+            )
+        return c.constants
+    return {(1, 1): c}
+
+
+def _constant_line(c: Constant) -> str:
+    return f"epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g}, {c.how}"
+
+
+def _comment(s: SILaw, c: Constant | TypePairs, mark: str) -> str:
+    lines = _header(s)
+    if isinstance(c, TypePairs):
+        lines += [
+            f"types: 1 = the small grain (radius R1), 2 = the large one (R2 = "
+            f"{c.radius_ratio:g} R1), one material",
+            f"1-2 (small with large): {_constant_line(c.mixed)}; status: {c.mixed.status}",
+            f"1-1 and 2-2 (two grains of one size): {_constant_line(c.same)}; status: "
+            f"{c.same.status}",
+            f"1-1 and 2-2 {_law_line(c.identical)}",
+            SAME_SIZE_NOTE,
+        ]
+    else:
+        lines += [f"constant: {_constant_line(c)}", f"status: {c.status}"]
+    lines.append(
         "only epsilon comes from restitution; stiffness and contact time come from the code's "
-        "own contact model",
-    ]
+        "own contact model"
+    )
     return "\n".join(f"{mark} {line}" for line in lines)
 
 
@@ -504,38 +709,56 @@ def _particles(s: SILaw) -> str:
     )
 
 
-def lammps_snippet(s: SILaw, c: Constant) -> str:
+def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     """Input lines for LAMMPS ``pair_style granular`` (GRANULAR package), SI units.
 
     Hertz contact with the material's 3D ``E`` and ``nu``; ``damping coeff_restitution`` makes
     LAMMPS take the second normal coefficient as the coefficient of restitution. Frictionless
-    tangential model; replace it with yours.
+    tangential model; replace it with yours. One constant: ``pair_coeff * *``; a
+    :class:`TypePairs`: ``pair_coeff 1 1``, ``2 2`` and ``1 2`` (type 1 the small grains).
     """
     g = s.grain
+    consts = _constants(s, c)
+    if len(consts) == 1:
+        pairs, needs = {("*", "*"): consts[1, 1]}, ""
+    else:
+        pairs, needs = consts, ", create_box 2 (type 1 the small grains, type 2 the large)"
     return "\n".join(
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
-            "# needs: units si, atom_style sphere, comm_modify vel yes",
+            f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
             "pair_style granular",
-            f"pair_coeff * * hertz/material {g.E:.8g} {c.epsilon:.8f} {g.nu:.8g} "
-            "tangential linear_nohistory 1.0 0.0 damping coeff_restitution",
+            *(
+                f"pair_coeff {i} {j} hertz/material {g.E:.8g} {k.epsilon:.8f} {g.nu:.8g} "
+                "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+                for (i, j), k in pairs.items()
+            ),
             "",
         ]
     )
 
 
-def liggghts_snippet(s: SILaw, c: Constant) -> str:
-    """Input lines for LIGGGHTS (one atom type; ``coefficientRestitution peratomtypepair``)."""
+def liggghts_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+    """Input lines for LIGGGHTS (``coefficientRestitution peratomtypepair``): one atom type for
+    one constant, two for a :class:`TypePairs` (type 1 the small grains; the matrix row by
+    row)."""
     g = s.grain
+    consts = _constants(s, c)
+    n = 2 if len(consts) > 1 else 1
+    matrix = [
+        consts[min(i, j), max(i, j)].epsilon for i in range(1, n + 1) for j in range(1, n + 1)
+    ]
     return "\n".join(
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
-            f"fix m1 all property/global youngsModulus peratomtype {g.E:.8g}",
-            f"fix m2 all property/global poissonsRatio peratomtype {g.nu:.8g}",
-            f"fix m3 all property/global coefficientRestitution peratomtypepair 1 {c.epsilon:.8f}",
-            "fix m4 all property/global coefficientFriction peratomtypepair 1 0.0",
+            f"fix m1 all property/global youngsModulus peratomtype {' '.join([f'{g.E:.8g}'] * n)}",
+            f"fix m2 all property/global poissonsRatio peratomtype {' '.join([f'{g.nu:.8g}'] * n)}",
+            f"fix m3 all property/global coefficientRestitution peratomtypepair {n} "
+            + " ".join(f"{e:.8f}" for e in matrix),
+            f"fix m4 all property/global coefficientFriction peratomtypepair {n} "
+            + " ".join(["0.0"] * (n * n)),
             "pair_style gran model hertz tangential history",
             "pair_coeff * *",
             "",
@@ -543,44 +766,98 @@ def liggghts_snippet(s: SILaw, c: Constant) -> str:
     )
 
 
-def _mercury_mass(s: SILaw) -> str:
+def _mass_ratio(s: SILaw, r: float) -> str:
+    """``m2 = ... m1`` of two grains of one material with radius ratio ``r``."""
+    if s.grain.body == "sphere":
+        return f"m2 = r^3 m1 = {r**3:.6g} m1 for spheres"
+    return f"m2 = r^2 m1 = {r**2:.6g} m1 for disks of one thickness (cylinders of one length)"
+
+
+def _mercury_mass(s: SILaw, c: Constant | TypePairs) -> str:
     """What MercuryDPM's ``mass`` argument must be for this partner and body.
 
     ``setCollisionTimeAndRestitutionCoefficient(tc, eps, mass)`` takes the effective mass
     ``2 m1 m2 / (m1 + m2)`` (MercuryDPM's ``LinearViscoelasticNormalSpecies``): the particle
-    mass ``m`` for two identical grains, ``2 m`` for a grain against a wall (``m2`` infinite).
+    mass ``m`` for two identical grains, ``2 m`` for a grain against a wall (``m2`` infinite),
+    ``2 m1 m2 / (m1 + m2)`` for a small and a large grain.
     """
+    head = "mass: the effective mass 2 m1 m2 / (m1 + m2) (kg)"
+    pair = s.law.partner
+    if pair is not None:
+        ratio = _mass_ratio(s, pair.radius_ratio)
+        both = f"m1, m2 the masses of a small and a large particle ({ratio})"
+        if isinstance(c, TypePairs):
+            each = "m1 for 1-1, m2 for 2-2, 2 m1 m2 / (m1 + m2) for 1-2"
+            return f"{head} of each type pair: {each}; {both}"
+        return f"{head} of the small and the large grain; {both}"
     m = "m = 4/3 pi rho R^3" if s.grain.body == "sphere" else "m the particle mass"
     which = "two identical grains: m" if s.against == "grain" else "a grain on a wall: 2 m"
-    return f"mass: the effective mass 2 m1 m2 / (m1 + m2) (kg); for {which}, {m}"
+    return f"{head}; for {which}, {m}"
 
 
-def mercurydpm_snippet(s: SILaw, c: Constant) -> str:
-    """C++ lines for MercuryDPM (``LinearViscoelasticSpecies``; choose the collision time)."""
+def _mercury_species(name: str, rho: float, eps: float, mass: str) -> list[str]:
+    return [
+        f"auto {name} = speciesHandler.copyAndAddObject(LinearViscoelasticSpecies());",
+        f"{name}->setDensity({rho:.8g});",
+        f"{name}->setCollisionTimeAndRestitutionCoefficient(tc, {eps:.8f}, {mass});",
+    ]
+
+
+def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+    """C++ lines for MercuryDPM (``LinearViscoelasticSpecies``; choose the collision time). A
+    :class:`TypePairs` gives a species per type (``species1`` the small grains, ``species2`` the
+    large) and their mixed species (``speciesHandler.getMixedObject``)."""
     g = s.grain
+    consts = _constants(s, c)
+    if len(consts) == 1:
+        body = _mercury_species("species", g.rho, consts[1, 1].epsilon, "mass")
+    else:
+        body = [
+            "// type 1: the small grains",
+            *_mercury_species("species1", g.rho, consts[1, 1].epsilon, "m1"),
+            "// type 2: the large grains",
+            *_mercury_species("species2", g.rho, consts[2, 2].epsilon, "m2"),
+            "// 1-2: a small grain with a large one",
+            "auto species12 = speciesHandler.getMixedObject(species1, species2);",
+            "species12->setCollisionTimeAndRestitutionCoefficient(tc, "
+            f"{consts[1, 2].epsilon:.8f}, 2 * m1 * m2 / (m1 + m2));",
+        ]
     return "\n".join(
         [
             _comment(s, c, "//"),
             f"// {_particles(s)}",
-            f"// tc: your collision time (s); {_mercury_mass(s)}",
-            "auto species = speciesHandler.copyAndAddObject(LinearViscoelasticSpecies());",
-            f"species->setDensity({g.rho:.8g});",
-            f"species->setCollisionTimeAndRestitutionCoefficient(tc, {c.epsilon:.8f}, mass);",
+            f"// tc: your collision time (s); {_mercury_mass(s, c)}",
+            *body,
             "",
         ]
     )
 
 
-def yade_snippet(s: SILaw, c: Constant) -> str:
-    """Python lines for YADE (Hertz-Mindlin with ``en``)."""
+def yade_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+    """Python lines for YADE (Hertz-Mindlin with ``en``). A :class:`TypePairs` gives two
+    materials of the same constants (``mat1`` for the small grains, ``mat2`` for the large) and
+    ``en`` as a ``MatchMaker`` over their ids."""
     g = s.grain
+    consts = _constants(s, c)
+    mat = (
+        f"O.materials.append(FrictMat(young={g.E:.8g}, poisson={g.nu:.8g}, "
+        f"density={g.rho:.8g}, frictionAngle=0.0))"
+    )
+    if len(consts) == 1:
+        body = [mat, f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})"]
+    else:
+        matches = ", ".join(f"(mat{i}, mat{j}, {k.epsilon:.8f})" for (i, j), k in consts.items())
+        body = [
+            f"mat1 = {mat}  # type 1: the small grains",
+            f"mat2 = {mat}  # type 2: the large grains (same constants, own id)",
+            f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=({matches})))",
+            "# give the small particles material=mat1, the large ones material=mat2",
+        ]
     return "\n".join(
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
-            f"O.materials.append(FrictMat(young={g.E:.8g}, poisson={g.nu:.8g}, "
-            f"density={g.rho:.8g}, frictionAngle=0.0))",
-            f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={c.epsilon:.8f})",
+            *body,
             "# use ip2 in the InteractionLoop with Law2_ScGeom_MindlinPhys_Mindlin()",
             "",
         ]

@@ -115,23 +115,63 @@ _LAW_UNITS = {
 }
 
 
-def law_units(geometry: str = "disk") -> str:
-    """What ``v`` and ``epsilon`` of a law of the body ``geometry`` mean."""
-    return _LAW_UNITS[body_kind(geometry).geometry]
+PAIR_MODEL = (
+    "Two free elastic {kind}s of radii R1 = 1 and R2 = radius_ratio (constants of the first, "
+    "E1 = rho1 = 1; the second's in its units) meeting head-on, each expanded in its own free "
+    "eigenmodes, the lowest N of both below one frequency; the potential V = (1/alpha) int "
+    "exp(-alpha g) ds over the smaller body's surface, g the gap between surface points paired "
+    "by their undeformed height (docs/two-disks.md); energy loss 1 - epsilon^2 of the relative "
+    "motion extrapolated linearly in 1/alpha and in 1/sqrt(N)."
+)
+"""The model behind the laws of two bodies (``{kind}``: the bodies' kind)."""
+
+
+def law_units(geometry: str = "disk", partner=None) -> str:
+    """What ``v`` and ``epsilon`` of a law of the body ``geometry`` mean (with a ``partner``:
+    of the pair)."""
+    kind = body_kind(geometry).geometry
+    if partner is None:
+        return _LAW_UNITS[kind]
+    return (
+        f"v is the relative normal speed of the two {kind}s' centres before the collision in "
+        f"units of c1 = sqrt(E1/rho1) of the first {kind} (radius R1 = 1); the second has "
+        f"R2/R1 = {partner.radius_ratio:g}, E2/E1 = {partner.modulus_ratio:g}, rho2/rho1 = "
+        f"{partner.density_ratio:g}. epsilon = -w_after / w_before of the relative speed of the "
+        "centres of mass."
+    )
+
+
+def _model(geometry: str, partner=None) -> str:
+    """The ``model`` of a law of the body ``geometry`` (with a ``partner``: of the pair)."""
+    kind = body_kind(geometry).geometry
+    return MODELS[kind] if partner is None else PAIR_MODEL.format(kind=kind)
 
 
 NU_MATCH = 1e-4
 """Largest ``|nu - nu_law|`` for which a law serves ``nu`` as it is."""
 
 
-def _file_prefix(geometry: str) -> str:
-    """``law_nu`` for the disk (the names of the first shipped files), ``law_<body>_nu`` else."""
+def _file_prefix(geometry: str, partner=None) -> str:
+    """``law_nu`` for the disk (the names of the first shipped files), ``law_<body>_nu`` else;
+    with a ``partner`` ``law_pair_r<R2/R1>[_E<E2/E1>][_rho<rho2/rho1>][_nu2<nu2>]_nu`` (a
+    sphere's ``law_sphere_pair_...``)."""
     name = body_kind(geometry).geometry
-    return "law_nu" if name == "disk" else f"law_{name}_nu"
+    if partner is None:
+        return "law_nu" if name == "disk" else f"law_{name}_nu"
+    head = "law_pair" if name == "disk" else f"law_{name}_pair"
+    parts = [f"r{partner.radius_ratio:g}"]
+    if partner.modulus_ratio != 1.0:
+        parts.append(f"E{partner.modulus_ratio:g}")
+    if partner.density_ratio != 1.0:
+        parts.append(f"rho{partner.density_ratio:g}")
+    if partner.nu is not None:
+        parts.append(f"nu2{partner.nu:g}")
+    return f"{head}_{'_'.join(parts)}_nu"
 
 
-def law_filename(nu: float, geometry: str = "disk") -> str:
-    """File name of the law of the body ``geometry`` for ``nu``.
+def law_filename(nu: float, geometry: str = "disk", partner=None) -> str:
+    """File name of the law of the body ``geometry`` for ``nu`` (with a ``partner``, a
+    :class:`~restitution.bodies.pair.partner.Partner`: of the pair).
 
     Examples
     --------
@@ -139,13 +179,17 @@ def law_filename(nu: float, geometry: str = "disk") -> str:
     'law_nu0.33.json'
     >>> law_filename(0.3, "sphere")
     'law_sphere_nu0.3.json'
+    >>> from restitution.bodies.pair import Partner
+    >>> law_filename(0.33, partner=Partner(radius_ratio=1.4))
+    'law_pair_r1.4_nu0.33.json'
     """
-    return f"{_file_prefix(geometry)}{float(nu):g}.json"
+    return f"{_file_prefix(geometry, partner)}{float(nu):g}.json"
 
 
-def _file_nu(name: str, geometry: str) -> float | None:
-    """The ``nu`` of a law file name of the body ``geometry``; ``None`` for other names."""
-    prefix = _file_prefix(geometry)
+def _file_nu(name: str, geometry: str, partner=None) -> float | None:
+    """The ``nu`` of a law file name of the body ``geometry`` (and ``partner``); ``None`` for
+    other names."""
+    prefix = _file_prefix(geometry, partner)
     if not (name.startswith(prefix) and name.endswith(".json")):
         return None
     try:
@@ -154,11 +198,21 @@ def _file_nu(name: str, geometry: str) -> float | None:
         return None
 
 
-def _curve_command(geometry: str, nu: float | None = None) -> str:
-    """The command that computes a law file of ``geometry`` for ``nu`` (``NU`` if none)."""
+def _curve_command(geometry: str, nu: float | None = None, partner=None) -> str:
+    """The command that computes a law file of ``geometry`` (and ``partner``) for ``nu``
+    (``NU`` if none)."""
     flag = "" if geometry == "disk" else f" --geometry {geometry}"
     value = "NU" if nu is None else f"{float(nu):.6g}"
-    return f"restitution curve{flag} --nu {value} --out DIR"
+    pair = ""
+    if partner is not None:
+        pair = f" --radius-ratio {partner.radius_ratio:g}"
+        if partner.modulus_ratio != 1.0:
+            pair += f" --modulus-ratio {partner.modulus_ratio:g}"
+        if partner.density_ratio != 1.0:
+            pair += f" --density-ratio {partner.density_ratio:g}"
+        if partner.nu is not None:
+            pair += f" --partner-nu {partner.nu:g}"
+    return f"restitution curve{flag} --nu {value}{pair} --out DIR"
 
 
 # -- the law -------------------------------------------------------------------------------
@@ -237,8 +291,24 @@ class EpsilonLaw:
     @property
     def geometry(self) -> str:
         """The body of the law: ``"disk"`` (also for files written before there was another) or
-        ``"sphere"``."""
+        ``"sphere"``; for a pair the kind of both bodies."""
         return str(self.metadata.get("geometry", "disk"))
+
+    @property
+    def partner(self):
+        """``None`` for a body on the wall; for a law of two bodies the second
+        (:class:`~restitution.bodies.pair.partner.Partner`): then ``v`` is the relative speed of
+        the centres in units of the first body's ``c``."""
+        from restitution.bodies.pair.partner import Partner
+
+        stored = self.metadata.get("partner")
+        return None if stored is None else Partner.from_key(stored)
+
+    @property
+    def body_name(self) -> str:
+        """``"disk"``, ``"sphere"`` or e.g. ``"disk pair (R2/R1 = 1.4)"``: for messages."""
+        p = self.partner
+        return self.geometry if p is None else f"{self.geometry} pair ({_describe(p)})"
 
     def __repr__(self) -> str:
         lo, hi = self.valid_range
@@ -304,10 +374,11 @@ class EpsilonLaw:
         lo, hi = self.valid_range
         bad = ~((v >= lo) & (v <= hi))
         if np.any(bad):
+            meaning = "speed towards the wall" if self.partner is None else "relative speed"
             text = (
                 f"speed(s) {np.unique(v[bad])[:5].tolist()} outside the computed range "
-                f"{lo:g} <= v <= {hi:g} (units of c, speed towards the wall) of the "
-                f"{self.geometry} law for nu = {self.nu:g}"
+                f"{lo:g} <= v <= {hi:g} (units of c, {meaning}) of the "
+                f"{self.body_name} law for nu = {self.nu:g}"
             )
             flag = "" if self.geometry == "disk" else f" --geometry {self.geometry}"
             if outside == "raise":
@@ -383,6 +454,10 @@ class EpsilonLaw:
         if len(bodies) != 1:
             raise InputError(f"curves of one body are needed, got {', '.join(sorted(bodies))}")
         geometry = bodies.pop()
+        partners = {getattr(c.settings, "partner", None) for c in curves}
+        if len(partners) != 1:
+            raise InputError("curves of one partner are needed (one pair, or all on the wall)")
+        partner = partners.pop()
         kept, dropped = [], []
         for curve in curves:
             for v, c in zip(curve.velocities, curve.limits, strict=True):
@@ -420,7 +495,7 @@ class EpsilonLaw:
             if d not in groups:
                 groups.append(d)
         parameters = groups[0] if len(groups) == 1 else {"settings_groups": groups}
-        metadata = _metadata(nu, parameters, geometry)
+        metadata = _metadata(nu, parameters, geometry, partner)
         metadata["dropped"] = dropped
         metadata["points"] = points
         return cls(
@@ -443,13 +518,15 @@ class EpsilonLaw:
         asymptotic_ok=None,
         parameters=None,
         geometry: str = "disk",
+        partner=None,
     ) -> EpsilonLaw:
         """Law from given points (e.g. another program's data); ``parameters`` go to metadata,
-        ``geometry`` names the body (``"disk"`` or ``"sphere"``)."""
+        ``geometry`` names the body (``"disk"`` or ``"sphere"``), ``partner`` the second body of
+        a pair (:class:`~restitution.bodies.pair.partner.Partner`; ``v`` the relative speed)."""
         v = np.asarray(v, dtype=float)
         order = np.argsort(v)
         ok = np.ones(v.size, bool) if asymptotic_ok is None else np.asarray(asymptotic_ok, bool)
-        metadata = _metadata(nu, dict(parameters or {}), geometry)
+        metadata = _metadata(nu, dict(parameters or {}), geometry, partner)
         return cls(
             float(nu),
             v[order],
@@ -596,12 +673,12 @@ class EpsilonLaw:
     def _header_lines(self) -> list[str]:
         meta = {k: v for k, v in self.metadata.items() if k not in ("points", "dropped")}
         lines = [
-            f"restitution law epsilon(v) of the {self.geometry}, nu = {self.nu:g}",
+            f"restitution law epsilon(v) of the {self.body_name}, nu = {self.nu:g}",
             f"package: restitution {meta.get('version', __version__)} "
             f"(code {meta.get('code_version', '?')}); date: {meta.get('date')}",
-            f"body: {self.geometry}",
-            f"model: {MODELS[self.geometry]}",
-            f"units: {law_units(self.geometry)}",
+            f"body: {self.body_name}",
+            f"model: {_model(self.geometry, self.partner)}",
+            f"units: {law_units(self.geometry, self.partner)}",
             f"validity: {self._validity()['note']}",
             "parameters: " + json.dumps(meta.get("parameters", {}), default=json_default),
         ]
@@ -653,24 +730,52 @@ class EpsilonLaw:
         return Path(path)
 
 
-def _metadata(nu: float, parameters: Mapping, geometry: str = "disk") -> dict:
+def _metadata(nu: float, parameters: Mapping, geometry: str = "disk", partner=None) -> dict:
     geometry = body_kind(geometry).geometry
-    return {
+    out = {
         "geometry": geometry,
         "nu": float(nu),
-        "model": MODELS[geometry],
-        "units": law_units(geometry),
+        "model": _model(geometry, partner),
+        "units": law_units(geometry, partner),
         "parameters": {"nu": float(nu), "E": 1.0, "rho": 1.0, "R": 1.0, **parameters},
         "package": "restitution",
         "version": __version__,
-        "code_version": code_version(geometry),
+        "code_version": code_version(geometry, pair=partner is not None),
         "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "interpolant": "scipy.interpolate.PchipInterpolator through the computed points only",
     }
+    if partner is not None:
+        out["partner"] = partner.to_dict()
+    return out
 
 
-def _refuse_other_body(loaded: EpsilonLaw, geometry: str, path) -> None:
-    """One-line refusal of a law file of another body than ``geometry``."""
+def _describe(partner) -> str:
+    """``R2/R1 = 1.4`` (and the other ratios and ``nu2`` where they are not the first body's)."""
+    parts = [f"R2/R1 = {partner.radius_ratio:g}"]
+    if partner.modulus_ratio != 1.0:
+        parts.append(f"E2/E1 = {partner.modulus_ratio:g}")
+    if partner.density_ratio != 1.0:
+        parts.append(f"rho2/rho1 = {partner.density_ratio:g}")
+    if partner.nu is not None:
+        parts.append(f"nu2 = {partner.nu:g}")
+    return ", ".join(parts)
+
+
+def _refuse_other_body(loaded: EpsilonLaw, geometry: str, path, partner=None) -> None:
+    """One-line refusal of a law file of another body than ``geometry`` (or of another pair
+    than the one of ``partner``, ``None``: the body on the wall)."""
+    if loaded.geometry == geometry and loaded.partner != partner:
+
+        def name(p) -> str:
+            if p is None:
+                return f"the {geometry} on the wall (or two identical {geometry}s)"
+            return f"the pair {_describe(p)}"
+
+        want, have = name(partner), name(loaded.partner)
+        raise InputError(
+            f"the law file {path} holds a law of {have}, not of {want}; give a law file of "
+            f"{want} (`{_curve_command(geometry, None, partner)}`)"
+        )
     if loaded.geometry != geometry:
         raise InputError(
             f"the law file {path} holds a law of the {loaded.geometry}, not of the {geometry}; "
@@ -686,6 +791,7 @@ def law(
     geometry: str = "disk",
     path: str | os.PathLike | None = None,
     nu_2d: float | None = None,
+    partner=None,
 ) -> EpsilonLaw:
     """The coefficient of restitution epsilon(v) of a disk or a sphere with Poisson number ``nu``.
 
@@ -708,6 +814,11 @@ def law(
     nu_2d : float, optional
         The disk's two-dimensional Poisson number under its former keyword (``law(nu_2d=0.33)``);
         give ``nu`` or ``nu_2d``, not both.
+    partner : Partner, optional
+        The law of two bodies meeting head-on (:class:`restitution.bodies.pair.partner.Partner`,
+        the second in units of the first): ``law_pair_r1.4_nu0.33.json`` for two disks of one
+        material with ``R2/R1 = 1.4``; its ``v`` is the relative speed. ``None``: the body on
+        the wall.
 
     Returns
     -------
@@ -732,12 +843,13 @@ def law(
         nu = nu_2d
     if path is not None:
         loaded = EpsilonLaw.from_json(path)
-        _refuse_other_body(loaded, geometry, path)
+        _refuse_other_body(loaded, geometry, path, partner)
         if nu is not None and not abs(loaded.nu - float(nu)) <= NU_MATCH:
             raise InputError(
                 f"the law file {path} holds nu = {loaded.nu:g}, not the requested nu = "
                 f"{float(nu):g}; pass nu={loaded.nu:g} (or none) for this file, or a file "
-                f"computed for nu = {float(nu):g} (`{_curve_command(geometry, float(nu))}`)"
+                f"computed for nu = {float(nu):g} "
+                f"(`{_curve_command(geometry, float(nu), partner)}`)"
             )
         return loaded
     if nu is None:
@@ -748,26 +860,28 @@ def law(
         nu = 0.33
     nu = body_kind(geometry).check_nu(nu)
     data = resources.files("restitution.laws").joinpath("data")
-    name = law_filename(nu, geometry)
+    name = law_filename(nu, geometry, partner)
     try:
         text = data.joinpath(name).read_text()
     except (FileNotFoundError, NotADirectoryError, OSError):
         shipped = []
         try:
-            found = (_file_nu(p.name, geometry) for p in data.iterdir())
+            found = (_file_nu(p.name, geometry, partner) for p in data.iterdir())
             shipped = [f"{x:g}" for x in sorted(x for x in found if x is not None)]
         except (FileNotFoundError, NotADirectoryError, OSError):
             pass
         where = "" if geometry == "disk" else f"{geometry} "
+        if partner is not None:
+            where += f"pair ({_describe(partner)}) "
         load = f"path='DIR/{name}'"
         if geometry != "disk":
             load = f"{nu:g}, geometry={geometry!r}, " + load
         raise InputError(
             f"no precomputed {where}law for nu = {nu:g} "
             f"(shipped: {', '.join(shipped) or 'none'}); "
-            f"compute one with `{_curve_command(geometry, nu)}` and load it "
+            f"compute one with `{_curve_command(geometry, nu, partner)}` and load it "
             f"with restitution.law({load})"
         ) from None
     loaded = EpsilonLaw._from_dict(json.loads(text), f"restitution/laws/data/{name}")
-    _refuse_other_body(loaded, geometry, f"restitution/laws/data/{name}")
+    _refuse_other_body(loaded, geometry, f"restitution/laws/data/{name}", partner)
     return loaded

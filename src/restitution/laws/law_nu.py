@@ -44,13 +44,13 @@ from restitution.laws.law import (
 __all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_nus"]
 
 
-def shipped_nus(geometry: str = "disk") -> list[float]:
-    """The Poisson numbers with a law of the body ``geometry`` in ``restitution/laws/data``
-    (2D for the disk, 3D for the sphere), increasing."""
+def shipped_nus(geometry: str = "disk", partner=None) -> list[float]:
+    """The Poisson numbers with a law of the body ``geometry`` (with a ``partner``: of that
+    pair) in ``restitution/laws/data`` (2D for the disk, 3D for the sphere), increasing."""
     geometry = body_kind(geometry).geometry
     data = resources.files("restitution.laws").joinpath("data")
     try:
-        found = [_file_nu(p.name, geometry) for p in data.iterdir()]
+        found = [_file_nu(p.name, geometry, partner) for p in data.iterdir()]
     except (FileNotFoundError, NotADirectoryError, OSError):
         return []
     return sorted(x for x in found if x is not None)
@@ -92,6 +92,8 @@ class NuInterpolatedLaw:
             raise InputError(
                 f"interpolation in nu needs laws of one body, got {', '.join(sorted(bodies))}"
             )
+        if len({n.partner for n in self.nodes}) != 1:
+            raise InputError("interpolation in nu needs laws of one pair (or all on the wall)")
         if not nus[0] < self.nu < nus[-1]:
             raise InputError(
                 f"nu = {self.nu:g} is outside the grid {nus[0]:g} ... {nus[-1]:g}; "
@@ -102,6 +104,11 @@ class NuInterpolatedLaw:
     def geometry(self) -> str:
         """The body of the grid laws."""
         return self.nodes[0].geometry
+
+    @property
+    def partner(self):
+        """The grid laws' partner (``None``: the body on the wall)."""
+        return self.nodes[0].partner
 
     @property
     def grid(self) -> np.ndarray:
@@ -212,12 +219,15 @@ def _what(nu: float, geometry: str) -> str:
     return f"nu_2d = {nu:.6g}" if geometry == "disk" else f"{geometry} nu = {nu:.6g}"
 
 
-def _refusal(nu: float, shipped: list[float], why: str, geometry: str = "disk") -> InputError:
-    name = law_filename(nu, geometry)
+def _refusal(
+    nu: float, shipped: list[float], why: str, geometry: str = "disk", partner=None
+) -> InputError:
+    name = law_filename(nu, geometry, partner)
+    pair = "" if partner is None else f" and the pair R2/R1 = {partner.radius_ratio:g}"
     return InputError(
-        f"no law for {_what(nu, geometry)}: {why} (grid: "
+        f"no law for {_what(nu, geometry)}{pair}: {why} (grid: "
         f"{', '.join(f'{x:g}' for x in shipped) or 'none'}); compute it with "
-        f"`{_curve_command(geometry, nu)}` and pass the file DIR/{name} "
+        f"`{_curve_command(geometry, nu, partner)}` and pass the file DIR/{name} "
         "(--law-file, or path= from Python)"
     )
 
@@ -228,6 +238,7 @@ def law_for(
     geometry: str = "disk",
     path: str | os.PathLike | None = None,
     laws: list[EpsilonLaw] | None = None,
+    partner=None,
 ) -> EpsilonLaw | NuInterpolatedLaw:
     """The law ``epsilon(v)`` of the body ``geometry`` for its Poisson number ``nu``.
 
@@ -243,6 +254,10 @@ def law_for(
     laws : list of EpsilonLaw, optional
         The grid to serve from instead of the shipped laws (for tests and for a user's own
         grid), all of the body ``geometry``.
+    partner : Partner, optional
+        Serve the laws of two bodies meeting head-on
+        (:class:`restitution.bodies.pair.partner.Partner`; ``v`` the relative speed) instead of
+        the body on the wall.
 
     Returns
     -------
@@ -260,22 +275,26 @@ def law_for(
     geometry = body_kind(geometry).geometry
     if path is not None:
         one = EpsilonLaw.from_json(path)
-        _refuse_other_body(one, geometry, path)
+        _refuse_other_body(one, geometry, path, partner)
         if abs(one.nu - nu) > NU_MATCH:
             which = "nu_2d" if geometry == "disk" else "nu"
             raise InputError(
                 f"the law file {path} is for {which} = {one.nu:g}, not {nu:.6g}; compute it "
-                f"with `{_curve_command(geometry, nu)}`"
+                f"with `{_curve_command(geometry, nu, partner)}`"
             )
         return one
     body_kind(geometry).check_nu(nu)
     if laws is None:
-        shipped = shipped_nus(geometry)
+        shipped = shipped_nus(geometry, partner)
         nearest = min(shipped, key=lambda x: abs(x - nu), default=None)
         if nearest is not None and abs(nearest - nu) <= NU_MATCH:
-            return law(nearest, geometry=geometry)
-        _check_inside(nu, shipped, "shipped", geometry)
-        laws = [law(x, geometry=geometry) for x in shipped]
+            return law(nearest, geometry=geometry, partner=partner)
+        _check_inside(nu, shipped, "shipped", geometry, partner)
+        laws = [law(x, geometry=geometry, partner=partner) for x in shipped]
+    if any(a.partner != partner for a in laws):
+        raise InputError(
+            "the given laws are not all laws of the asked pair (or all of the body on the wall)"
+        )
     other = sorted({a.geometry for a in laws} - {geometry})
     if other:
         raise InputError(
@@ -287,12 +306,16 @@ def law_for(
     nearest = min(range(len(grid)), key=lambda i: abs(nus[i] - nu))
     if abs(nus[nearest] - nu) <= NU_MATCH:
         return grid[nearest]
-    _check_inside(nu, nus, "given", geometry)
+    _check_inside(nu, nus, "given", geometry, partner)
     return NuInterpolatedLaw(nu, tuple(grid))
 
 
-def _check_inside(nu: float, nus: list[float], which: str, geometry: str = "disk") -> None:
+def _check_inside(
+    nu: float, nus: list[float], which: str, geometry: str = "disk", partner=None
+) -> None:
     if len(nus) < 3:
-        raise _refusal(nu, nus, f"fewer than three {which} laws, so none is interpolated", geometry)
+        raise _refusal(
+            nu, nus, f"fewer than three {which} laws, so none is interpolated", geometry, partner
+        )
     if not nus[0] < nu < nus[-1]:
-        raise _refusal(nu, nus, f"outside the {which} grid", geometry)
+        raise _refusal(nu, nus, f"outside the {which} grid", geometry, partner)

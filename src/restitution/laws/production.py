@@ -3,7 +3,9 @@
 ``make law`` (``python -m restitution.laws.production``) recomputes every disk law file
 ``restitution/laws/data/law_nu<nu>.json`` with the current code; ``python -m
 restitution.laws.production --geometry sphere`` computes the sphere's, ``law_sphere_nu<nu>.json``
-(:data:`SPHERE_NUS`, :data:`SPHERE_GROUPS`). Both go through the same sweep, store and
+(:data:`SPHERE_NUS`, :data:`SPHERE_GROUPS`); ``make law-pair`` (``--geometry pair``) the laws of two
+disks of one material, ``law_pair_r<R2/R1>_nu<nu>.json`` (:data:`PAIR_RADIUS_RATIOS`,
+:data:`PAIR_NUS`, :func:`pair_groups`). All go through the same sweep, store and
 extrapolation as ``restitution curve`` (:mod:`restitution.limits.curves`), with a progress bar. The
 result store is reused, so an interrupted run resumes. ``tests/test_shipped_laws.py`` fails
 when the shipped files no longer match the code. ``make law`` then draws the slow-point figures
@@ -31,9 +33,12 @@ from pathlib import Path
 import numpy as np
 
 from restitution.errors import InputError
-from restitution.limits.sweep import DEFAULTS, SPHERE_DEFAULTS, SweepSettings
+from restitution.limits.sweep import DEFAULTS, SPHERE_DEFAULTS, SweepSettings, pair_settings
 
 __all__ = [
+    "PAIR_NUS",
+    "PAIR_RADIUS_RATIOS",
+    "PAIR_WALL_GROUPS",
     "SETTINGS_GROUPS",
     "SHIPPED_NUS",
     "SPHERE_GROUPS",
@@ -42,6 +47,7 @@ __all__ = [
     "SPHERE_SPEEDS",
     "build",
     "low_speed_points",
+    "pair_groups",
     "production",
 ]
 
@@ -104,6 +110,35 @@ SPHERE_GROUPS = (
     ),
 )
 """The sweeps behind the sphere's laws."""
+
+# -- two disks ------------------------------------------------------------------------------
+
+PAIR_RADIUS_RATIOS = (1.2, 1.4, 2.0)
+"""Radius ratios ``R2 / R1 >= 1`` of the shipped laws of two disks of one material (ratio 1 is the
+disk on the wall at half the speed, the disk's own law)."""
+
+PAIR_NUS = (0.33, 0.3 / 0.7, 0.9)
+"""Two-dimensional Poisson numbers of the pairs' laws: the paper's 0.33 and 0.9 (Fig. 1) and
+steel cylinders (plane strain, ``nu = 0.3``: ``nu_2d = 0.3 / 0.7``). Glass cylinders
+(``nu = 0.2481``) have ``nu_2d = 0.33``."""
+
+PAIR_WALL_GROUPS = (PAPER, SLOW[0], SLOW[2])
+"""The disk's groups that the pairs' groups are made of (:func:`pair_groups`): its speeds
+``0.02 <= v <= 0.3``, ``5e-3`` and ``1e-3``. Not ``1e-2`` and ``2e-3``: at ``R2/R1 = 2`` their
+windows would need 240640 and 204800 modes of one disk, above the mode cache's 200000; nor
+those below ``1e-3`` (windows up to ``102400 (1 + r^2)`` modes)."""
+
+
+def pair_groups(radius_ratio: float, groups=PAIR_WALL_GROUPS) -> tuple[SweepSettings, ...]:
+    """The sweeps of the law of two disks of one material with radii ``1`` and ``radius_ratio``:
+    each disk group (:data:`PAIR_WALL_GROUPS`) carried over by
+    :func:`restitution.limits.sweep.pair_settings` (relative speeds ``w = 2 v``, walls on the
+    pair's compression scale, mode windows ``N (1 + r^2)``)."""
+    from restitution.bodies.pair.partner import Partner
+
+    partner = Partner(radius_ratio=float(radius_ratio))
+    return tuple(pair_settings(g, partner) for g in groups)
+
 
 _PRODUCTION = {"disk": (SHIPPED_NUS, SETTINGS_GROUPS), "sphere": (SPHERE_NUS, SPHERE_GROUPS)}
 
@@ -209,9 +244,10 @@ def build(
 ) -> list[Path]:
     """Compute the laws for ``nus`` and write them into ``out_dir``.
 
-    The body is the groups' ``geometry`` (one for all): the files are
-    :func:`restitution.laws.law.law_filename` ``(nu, geometry)``, ``law_nu<nu>.json`` for the
-    disk and ``law_sphere_nu<nu>.json`` for the sphere.
+    The body is the groups' ``geometry`` and ``partner`` (one for all): the files are
+    :func:`restitution.laws.law.law_filename` ``(nu, geometry, partner)``, ``law_nu<nu>.json``
+    for the disk, ``law_sphere_nu<nu>.json`` for the sphere and ``law_pair_r<r>_nu<nu>.json``
+    for two disks (:func:`pair_groups`).
 
     Parameters
     ----------
@@ -241,6 +277,10 @@ def build(
     if len(bodies) != 1:
         raise InputError(f"the groups of one law need one body, got {', '.join(sorted(bodies))}")
     geometry = bodies.pop()
+    partners = {g.partner for g in groups}
+    if len(partners) != 1:
+        raise InputError("the groups of one law need one partner (one pair, or all on the wall)")
+    partner = partners.pop()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     nus = [float(nu) for nu in nus]
@@ -256,7 +296,7 @@ def build(
         if low:
             records, parameters = low_speed_points(nu, low, progress=bool(progress))
             law = law.joined(records, key="low_speed", parameters=parameters)
-        written.append(law.to_json(out / law_filename(nu, geometry)))
+        written.append(law.to_json(out / law_filename(nu, geometry, partner)))
     return written
 
 
@@ -269,18 +309,24 @@ def main(argv=None) -> None:
     parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
     parser.add_argument(
         "--geometry",
-        choices=tuple(_PRODUCTION),
+        choices=(*_PRODUCTION, "pair"),
         default="disk",
-        help="the body: disk (law_nu<nu>.json) or sphere (law_sphere_nu<nu>.json)",
+        help="the body: disk (law_nu<nu>.json), sphere (law_sphere_nu<nu>.json) or pair (two "
+        "disks of one material, law_pair_r<R2/R1>_nu<nu>.json for PAIR_RADIUS_RATIOS)",
     )
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
     args = parser.parse_args(argv)
-    nus, groups = production(args.geometry)
+    if args.geometry == "pair":
+        runs = [(PAIR_NUS, pair_groups(r)) for r in PAIR_RADIUS_RATIOS]
+    else:
+        runs = [production(args.geometry)]
     start = time.perf_counter()
-    files = build(args.out, nus, groups, store=args.store, workers=args.workers, progress=True)
+    files = []
+    for nus, groups in runs:
+        files += build(args.out, nus, groups, store=args.store, workers=args.workers, progress=True)
     elapsed = time.perf_counter() - start
-    n = _count(groups, nus)
+    n = sum(_count(groups, nus) for nus, groups in runs)
     for path in files:
         print(f"wrote {path}")
     print(f"{n} collisions (stored ones reused) in {elapsed:.0f} s, {n / elapsed:.2f} collisions/s")

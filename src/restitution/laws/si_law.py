@@ -152,9 +152,11 @@ class SILaw:
         Material (3D constants, SI) and geometry.
     against : {"wall", "grain"}
         Collision partner: ``w`` is the speed towards a rigid wall, or the relative normal speed
-        of two identical grains.
+        of two grains: identical ones, or, when the law is a pair's (``law.partner``), a grain
+        of the same material with the radius ratio ``law.partner.radius_ratio``.
     law : EpsilonLaw or NuInterpolatedLaw
-        The reduced-unit law of ``grain.body`` for ``grain.law_nu``.
+        The reduced-unit law of ``grain.body`` for ``grain.law_nu`` (of the body on the wall, or
+        of the pair).
     """
 
     grain: Grain
@@ -163,6 +165,18 @@ class SILaw:
 
     def __post_init__(self) -> None:
         partner_factor(self.against)  # validates
+        pair = self.law.partner
+        if pair is not None:
+            if self.against != "grain":
+                raise InputError(
+                    "a law of two grains serves collisions of two grains (against='grain'), "
+                    f"not against a {self.against}"
+                )
+            if not pair.same_material:
+                raise InputError(
+                    "the SI edge takes one material for both grains; a pair of two materials is "
+                    "served in reduced units (restitution.law(..., partner=...))"
+                )
         body = getattr(self.law, "geometry", "disk")
         if body != self.grain.body:
             raise InputError(
@@ -177,9 +191,31 @@ class SILaw:
             )
 
     @property
+    def against_meaning(self) -> str:
+        """What the SI speed ``w`` is: towards the wall, or the relative speed of two grains
+        (identical ones, or of the same material and the law's radius ratio)."""
+        pair = self.law.partner
+        if pair is None:
+            return PARTNERS[self.against]
+        return (
+            f"a grain of the same material {pair.radius_ratio:g} times as large, relative "
+            "normal speed w (v = w / c, the pair's law)"
+        )
+
+    @property
+    def k(self) -> float:
+        """``k`` in ``v = w / (k c)``: 1 against a wall and for a pair's law (whose ``v`` is the
+        relative speed), 2 for two identical grains (served by the law on the wall)."""
+        return 1.0 if self.law.partner is not None else partner_factor(self.against)
+
+    @property
     def speed_scale_m_s(self) -> float:
-        """``k c``: ``w = k c v`` with ``k = 1`` (wall) or 2 (grain), m/s."""
-        return self.grain.speed_scale(self.against)
+        """``k c``: ``w = k c v`` (:attr:`k`), m/s."""
+        return self.k * self.grain.c_m_s
+
+    def _reduced(self, speed_m_s):
+        """``v = w / (k c)`` of SI speed(s) ``w``, checked by :meth:`Grain.v_over_c`."""
+        return self.grain.v_over_c(speed_m_s, "wall") / self.k
 
     @property
     def speed_range_m_s(self) -> tuple[float, float]:
@@ -213,17 +249,17 @@ class SILaw:
 
     def epsilon(self, speed_m_s):
         """epsilon at SI speed(s) ``w`` (m/s); raises outside the law's range."""
-        return self.law.epsilon(self._served_v(self.grain.v_over_c(speed_m_s, self.against)))
+        return self.law.epsilon(self._served_v(self._reduced(speed_m_s)))
 
     def epsilon_err(self, speed_m_s):
         """Error of :meth:`epsilon` at ``w`` (m/s)."""
-        return self.law.epsilon_err(self._served_v(self.grain.v_over_c(speed_m_s, self.against)))
+        return self.law.epsilon_err(self._served_v(self._reduced(speed_m_s)))
 
     def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon, its error and its status at every speed (m/s); never raises for range."""
         out = []
         for w in np.atleast_1d(np.asarray(speeds_m_s, dtype=float)):
-            v = self.grain.v_over_c(float(w), self.against)
+            v = float(self._reduced(float(w)))
             status, note = _status(self.law, v)
             eps = err = None
             if status != Status.OUTSIDE:
@@ -250,20 +286,28 @@ class SILaw:
         law = {"geometry": self.law.geometry, "nu": float(self.law.nu)}
         if g.body == "disk":
             law["nu_2d"] = float(self.law.nu)
+        pair = self.law.partner
+        if pair is not None:
+            law["partner"] = pair.to_dict()
         return {
             **head,
             "law_nu": g.law_nu,
             "geometry": g.geometry,
             "body": g.body,
             "against": self.against,
-            "against_meaning": PARTNERS[self.against],
+            "against_meaning": self.against_meaning,
             "material": g.to_dict(),
             "law": {
                 **law,
                 "source": self.law_source,
                 "computed_speeds_m_s": [lo, hi],
-                "v_units": "v = w / (k c), speed towards the wall in units of c; k = "
-                f"{partner_factor(self.against):g} ({self.against}); {g.c_formula}",
+                "v_units": (
+                    "v = w / c, the relative speed of the two grains in units of c of both "
+                    f"(the pair's law); {g.c_formula}"
+                    if pair is not None
+                    else "v = w / (k c), speed towards the wall in units of c; k = "
+                    f"{partner_factor(self.against):g} ({self.against}); {g.c_formula}"
+                ),
             },
             "statuses": STATUSES,
             "points": [p.to_dict() for p in self.points(speeds_m_s)],
@@ -278,6 +322,7 @@ def si_law(
     against: str,
     *,
     path: str | os.PathLike | None = None,
+    radius_ratio: float | None = None,
 ) -> SILaw:
     """epsilon at SI speeds for a material given by its 3D constants.
 
@@ -296,7 +341,12 @@ def si_law(
         Rigid wall at speed ``w``, or two identical grains at relative normal speed ``w``.
     path : path, optional
         A law file of the grain's body for its ``law_nu`` (from ``restitution curve
-        [--geometry sphere]``).
+        [--geometry sphere]``; for a pair ``restitution curve --radius-ratio R``).
+    radius_ratio : float, optional
+        Against a grain of the same material but another size: the ratio of the two radii
+        (either way round; ``1`` is the identical grain). Served by the laws of two disks
+        (``law_pair_r<R>_nu<nu_2d>.json``, :func:`restitution.laws.law_nu.law_for` with a
+        :class:`~restitution.bodies.pair.partner.Partner`); ``w`` is the relative speed.
 
     Returns
     -------
@@ -310,4 +360,35 @@ def si_law(
     """
     grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
     partner_factor(against)
-    return SILaw(grain, against, law_for(grain.law_nu, geometry=grain.body, path=path))
+    partner = _partner(radius_ratio, against, grain)
+    return SILaw(
+        grain, against, law_for(grain.law_nu, geometry=grain.body, path=path, partner=partner)
+    )
+
+
+def _partner(radius_ratio, against: str, grain: Grain):
+    """The :class:`Partner` of a grain of the same material ``radius_ratio`` times as large (the
+    larger of the ratio and its inverse: the pair is the same either way round, its speeds in
+    ``c`` of both); ``None`` for the identical grain or no ratio."""
+    from restitution.bodies.pair.partner import Partner
+
+    if radius_ratio is None:
+        return None
+    if isinstance(radius_ratio, bool) or not isinstance(radius_ratio, int | float):
+        raise InputError(f"the radius ratio must be a positive number, got {radius_ratio!r}")
+    r = float(radius_ratio)
+    if not (np.isfinite(r) and r > 0):
+        raise InputError(f"the radius ratio must be a positive number, got {radius_ratio!r}")
+    if against != "grain":
+        raise InputError(
+            f"a radius ratio describes a second grain; it needs against='grain', not {against!r}"
+        )
+    r = max(r, 1.0 / r)
+    if r == 1.0:
+        return None
+    if grain.body != "disk":
+        raise InputError(
+            f"laws of two {grain.body}s of different sizes are not computed yet; give "
+            "radius_ratio=None (identical grains)"
+        )
+    return Partner(radius_ratio=r)

@@ -84,6 +84,7 @@ def walls_at(
     *,
     geometry: str = "disk",
     nu: float | None = None,
+    partner=None,
 ) -> tuple[float, ...]:
     """Wall hardness values (``1/R``) at speed ``v`` (``c``).
 
@@ -91,12 +92,18 @@ def walls_at(
     the body's quasistatic maximal compression against a rigid wall
     (:attr:`restitution.bodies.kinds.BodyKind.max_compression`): for the disk
     ``delta_max = v sqrt(ln(4/v))`` (eq. 61, independent of ``nu``), for the sphere Hertz's
-    ``(15 m v^2 / (16 E*))^(2/5)``, which needs the sphere's Poisson number ``nu``.
+    ``(15 m v^2 / (16 E*))^(2/5)``, which needs the sphere's Poisson number ``nu``. With a
+    ``partner`` (:class:`restitution.bodies.pair.partner.Partner`) ``v`` is the relative speed
+    of a pair and ``delta_max`` the pair's approach of the centres
+    (:meth:`~restitution.bodies.pair.partner.Partner.max_compression`).
     """
     values = tuple(alphas)
     if alpha_scale == "absolute":
         return values
-    if nu is None and geometry != "disk":
-        raise InputError(f"the walls of a {geometry} at a compression scale need its nu")
-    delta = body_kind(geometry).max_compression(float(v), 0.0 if nu is None else float(nu))
+    if partner is not None:
+        delta = partner.max_compression(float(v), geometry)
+    else:
+        if nu is None and geometry != "disk":
+            raise InputError(f"the walls of a {geometry} at a compression scale need its nu")
+        delta = body_kind(geometry).max_compression(float(v), 0.0 if nu is None else float(nu))
     return tuple(a / delta for a in values)

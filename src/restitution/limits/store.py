@@ -32,6 +32,7 @@ import numpy as np
 
 from restitution._version import __version__
 from restitution.bodies.kinds import body_kind
+from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError, RestitutionError
 from restitution.jsonable import finite_or_none, json_default
 from restitution.provenance import code_version
@@ -137,6 +138,12 @@ class PointSpec:
     geometry : str
         The body (:data:`restitution.bodies.kinds.GEOMETRIES`); its code version
         (:func:`restitution.provenance.code_version`) is part of the key.
+    partner : Partner or None
+        ``None``: the body against the rigid wall. Else the second body of a head-on pair
+        (:class:`restitution.bodies.pair.partner.Partner`, in units of the first): ``nu`` is then
+        the first body's, ``v`` the relative speed of the centres, ``n_modes`` the lowest modes
+        of both together; the key holds the partner and the pair's code version. Keys of points
+        without a partner do not name it (they are those of the stores written before pairs).
     """
 
     nu: float
@@ -147,6 +154,7 @@ class PointSpec:
     integrator: str = "split4"
     options: tuple[tuple[str, Any], ...] = ()
     geometry: str = "disk"
+    partner: Partner | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "nu", float(self.nu))
@@ -156,17 +164,36 @@ class PointSpec:
         opts = self.options.items() if isinstance(self.options, dict) else self.options
         object.__setattr__(self, "options", tuple(sorted((str(k), v) for k, v in opts)))
         body_kind(self.geometry)  # an unknown body is refused before it becomes a key
+        if self.partner is not None and not isinstance(self.partner, Partner):
+            object.__setattr__(self, "partner", Partner.from_key(self.partner))
 
     @property
     def group(self) -> tuple:
         """Everything but ``(v, alpha)``: points of one group share a mode set."""
-        return (self.geometry, self.nu, self.n_modes, self.select, self.integrator, self.options)
+        return (
+            self.geometry,
+            self.nu,
+            self.n_modes,
+            self.select,
+            self.integrator,
+            self.options,
+            self.partner,
+        )
+
+    @property
+    def code_version(self) -> str:
+        """The solver's version for this point: the body's, or its pair's with a partner."""
+        return code_version(self.geometry, pair=self.partner is not None)
 
     def inputs(self) -> dict:
         """Canonical JSON-ready inputs including the code version (exact floats as hex)."""
         d = asdict(self)
         d["options"] = {k: v for k, v in self.options}
-        d["code_version"] = code_version(self.geometry)
+        if self.partner is None:
+            del d["partner"]
+        else:
+            d["partner"] = self.partner.to_dict()
+        d["code_version"] = self.code_version
         return _canonical(d)
 
     def key(self) -> str:
@@ -435,7 +462,7 @@ class Store:
         )
         values = [
             spec.key(),
-            code_version(spec.geometry),
+            spec.code_version,
             json.dumps(spec.inputs(), sort_keys=True),
             spec.nu,
             spec.v,
@@ -536,6 +563,13 @@ class Store:
 _ROW = f"inputs, status, error, {', '.join(_SCALARS)}, result, code_version, created_at"
 
 
+def _partner(stored: dict | None, num) -> Partner | None:
+    """The :class:`Partner` of a row's canonical inputs (``None`` for a body on the wall)."""
+    if stored is None:
+        return None
+    return Partner.from_key({k: None if v is None else num(v) for k, v in stored.items()})
+
+
 def _row_to_point(row: tuple) -> StoredPoint:
     inputs, status, error, *rest = row
     scalars, (blob, version, created) = rest[: len(_SCALARS)], rest[len(_SCALARS) :]
@@ -557,6 +591,7 @@ def _row_to_point(row: tuple) -> StoredPoint:
         integrator=d["integrator"],
         options=options,
         geometry=d.get("geometry", "disk"),  # rows of 0.1.0 before the sphere name no body
+        partner=_partner(d.get("partner"), num),
     )
     values = dict(zip(_SCALARS, scalars, strict=True))
     nan = float("nan")

@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from restitution.bodies.kinds import body_kind
+from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
@@ -63,6 +64,7 @@ __all__ = [
     "defaults_for",
     "grid",
     "load_grid",
+    "pair_settings",
     "run_sweep",
 ]
 
@@ -114,6 +116,11 @@ class SweepSettings:
         The body (:data:`restitution.bodies.kinds.GEOMETRIES`): ``"disk"`` (the paper's) or
         ``"sphere"``; it decides the modes, the compression that scales the walls and the
         variable of the ``N -> infinity`` extrapolation.
+    partner : Partner or None
+        ``None``: the body against the rigid wall. Else the second body of a head-on pair
+        (:class:`restitution.bodies.pair.partner.Partner`): ``velocities`` are relative speeds
+        of the centres (``c`` of the first body), ``n_modes`` the lowest modes of both together
+        (one common frequency cutoff), the walls scaled by the pair's compression.
     """
 
     velocities: tuple[float, ...] = PAPER_VELOCITIES
@@ -129,6 +136,7 @@ class SweepSettings:
     order: str = "modes_first"
     batch_size: int = 4
     geometry: str = "disk"
+    partner: Partner | None = None
 
     def __post_init__(self) -> None:
         for name in ("velocities", "alphas", "n_modes"):
@@ -157,6 +165,11 @@ class SweepSettings:
             raise InputError(f"select must be 'lowest' or 'ranked', not {self.select!r}")
         if self.batch_size < 1:
             raise InputError("batch_size must be >= 1")
+        if self.partner is not None:
+            if not isinstance(self.partner, Partner):
+                object.__setattr__(self, "partner", Partner.from_key(self.partner))
+            if self.select != "lowest":
+                raise InputError("a pair takes the lowest modes of both bodies (select='lowest')")
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary."""
@@ -171,6 +184,7 @@ class SweepSettings:
             "order": self.order,
             "batch_size": self.batch_size,
             "geometry": self.geometry,
+            **({} if self.partner is None else {"partner": self.partner.to_dict()}),
         }
 
     def alphas_at(
@@ -179,7 +193,9 @@ class SweepSettings:
         """Wall hardness values (``1/R``) used at speed ``v`` (units of ``c``); a sphere's
         compression scale needs its Poisson number ``nu``."""
         values = self.alphas if alphas is None else tuple(float(a) for a in alphas)
-        return walls_at(v, values, self.alpha_scale, geometry=self.geometry, nu=nu)
+        return walls_at(
+            v, values, self.alpha_scale, geometry=self.geometry, nu=nu, partner=self.partner
+        )
 
 
 # Not part of a stored point's key: the integrator is keyed separately, histories are not
@@ -236,6 +252,25 @@ def defaults_for(geometry: str) -> SweepSettings:
     return _DEFAULTS_BY_GEOMETRY[body_kind(geometry).geometry]
 
 
+def pair_settings(settings: SweepSettings, partner: Partner) -> SweepSettings:
+    """The sweep of a body on the wall carried over to a pair with ``partner``.
+
+    By the identity of two identical bodies and the body on a wall at half the speed: the
+    relative speeds are ``w = 2 v``, the walls are read on the pair's compression scale
+    (:meth:`Partner.max_compression`, ``alpha delta_pair(w)`` as ``alpha delta_max(v)``), and
+    each mode window ``N`` becomes ``N (1 + r^2 rho2 / E2)`` (``r = R2/R1``), the lowest modes
+    of both bodies below the frequency of the wall's ``N`` lowest: in two dimensions a body
+    has ``~ R^2 / c^2`` times as many modes below one frequency. At ``r = 1`` every point is
+    the wall's point at half the speed with twice the modes (the same frequency cutoff)."""
+    scale = 1.0 + partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
+    return replace(
+        settings,
+        velocities=tuple(2.0 * v for v in settings.velocities),
+        n_modes=tuple(int(round(n * scale)) for n in settings.n_modes),
+        partner=partner,
+    )
+
+
 def grid(
     nus: Iterable[float],
     settings: SweepSettings = DEFAULTS,
@@ -259,7 +294,15 @@ def grid(
     ns = settings.n_modes if n_modes is None else tuple(n_modes)
     return [
         PointSpec(
-            nu, v, a, n, settings.select, settings.integrator, settings.options, settings.geometry
+            nu,
+            v,
+            a,
+            n,
+            settings.select,
+            settings.integrator,
+            settings.options,
+            settings.geometry,
+            settings.partner,
         )
         for nu in nus
         for n in ns
@@ -305,7 +348,10 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
                 )
             )
         return out
-    modes = get_modes(first.nu, count=first.n_modes, geometry=first.geometry)
+    if first.partner is not None:
+        modes = first.partner.pair(first.nu, first.n_modes, first.geometry, get_modes)
+    else:
+        modes = get_modes(first.nu, count=first.n_modes, geometry=first.geometry)
     if len(specs) > 1:
         try:
             results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)
@@ -614,6 +660,7 @@ def load_grid(
                 settings.integrator,
                 settings.options,
                 settings.geometry,
+                settings.partner,
             )
             row = store.get(spec)
             if row is None:

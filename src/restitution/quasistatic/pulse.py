@@ -162,6 +162,10 @@ def force_pulse(law: ContactLaw, v: float, *, mass: float | None = None) -> Forc
     return theory.trajectory(law, v, mass=theory.mass if mass is None else mass)
 
 
+_BLOCK = 1 << 22
+"""Most entries (8 bytes each: 32 MiB) of one block of the drive's cosine table."""
+
+
 def _nodes(half: float, omega_max: float, per_panel: int = 16) -> tuple[np.ndarray, np.ndarray]:
     """Gauss-Legendre nodes and weights on ``[0, half]``: uniform panels of at most a third of a
     period of ``omega_max`` (and at most ``half/64``), the first one split geometrically
@@ -197,5 +201,13 @@ def pulse_drive(pulse: ForcePulse, omega: np.ndarray) -> np.ndarray:
     """
     half = 0.5 * pulse.contact_time
     t, w = _nodes(half, float(np.max(omega, initial=1.0)))
-    P = pulse.force(t)
-    return np.cos(np.outer(omega, half - t)) @ (w * P)
+    wP = w * pulse.force(t)
+    lag = half - t
+    omega = np.asarray(omega, dtype=float)
+    # The nodes grow with the highest frequency, so the table cos(omega_k lag_j) would grow
+    # like N^(3/2) (24 GB for 150000 disk modes): it is built in blocks of modes instead.
+    rows = max(1, _BLOCK // max(lag.size, 1))
+    out = np.empty(omega.shape)
+    for i in range(0, omega.size, rows):
+        out[i : i + rows] = np.cos(np.outer(omega[i : i + rows], lag)) @ wP
+    return out

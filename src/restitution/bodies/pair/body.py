@@ -320,7 +320,8 @@ class BodyPair:
     def contact_time_estimate(self, w):
         """An estimate of the contact time at relative speed ``w`` (``c1``), ``R1 / c1``: the
         longer of the two bodies' own estimates against a wall at ``w / 2`` (exact for
-        identical bodies; the quasistatic theory of two bodies is to come)."""
+        identical bodies). It only sizes the run; the quasistatic theory of two bodies is
+        :mod:`restitution.quasistatic.hertz_pair`."""
         w = np.asarray(w, dtype=float)
         speed_ratio = math.sqrt(self.modulus_ratio / self.density_ratio)
         t1 = self.first.contact_time_estimate(0.5 * w)

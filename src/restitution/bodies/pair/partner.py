@@ -1,0 +1,194 @@
+"""The second body of a pair, by its constants: what the sweeps, the store and the laws key on.
+
+Units: the first body's, ``E1 = rho1 = R1 = 1`` (for disks its 2D plane-stress constants);
+speeds ``w`` (the relative normal speed of the centres) in ``c1``; compressions in ``R1``.
+
+A :class:`Partner` is the second body before any mode exists: its radius, modulus and density
+in units of the first body's and its own Poisson number (``None``: the first body's). It knows
+what the layers above need to plan a pair's collisions -- the quasistatic compression that scales
+the walls (:meth:`Partner.max_compression`), how many of each body's own modes lie below a
+common frequency (:meth:`Partner.counts`) -- and it builds the :class:`BodyPair` of the
+``N`` lowest modes of both (:meth:`Partner.pair`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from restitution.bodies.kinds import body_kind
+from restitution.bodies.pair.body import BodyPair, pair_of
+from restitution.errors import InputError
+
+__all__ = ["Partner"]
+
+_MARGIN = 1.1
+"""Each body's own modes asked for: this factor above its Weyl share of the common cutoff (then
+checked against the pair's ``N``-th frequency, and all ``N`` taken where it falls short)."""
+
+
+def _positive(name: str, value) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
+        raise InputError(f"the partner's {name} must be a positive number, got {value!r}")
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"the partner's {name} must be a positive number, got {value!r}")
+    return value
+
+
+@dataclass(frozen=True)
+class Partner:
+    """The second body of a head-on pair, in units of the first (module docs).
+
+    Attributes
+    ----------
+    radius_ratio, modulus_ratio, density_ratio : float
+        ``R2 / R1``, ``E2 / E1``, ``rho2 / rho1`` (for disks the 2D constants).
+    nu : float or None
+        The second body's own Poisson number; ``None``: the first body's (one material).
+    """
+
+    radius_ratio: float = 1.0
+    modulus_ratio: float = 1.0
+    density_ratio: float = 1.0
+    nu: float | None = None
+
+    def __post_init__(self) -> None:
+        for name in ("radius_ratio", "modulus_ratio", "density_ratio"):
+            object.__setattr__(self, name, _positive(name.replace("_", " "), getattr(self, name)))
+        if self.nu is not None:
+            if isinstance(self.nu, bool) or not isinstance(self.nu, int | float | np.floating):
+                raise InputError(f"the partner's Poisson number must be a number, got {self.nu!r}")
+            object.__setattr__(self, "nu", float(self.nu))
+
+    # -- identity ---------------------------------------------------------------------------
+
+    @property
+    def same_material(self) -> bool:
+        """Whether both bodies are of one material (only the radii may differ)."""
+        return self.modulus_ratio == 1.0 and self.density_ratio == 1.0 and self.nu is None
+
+    def key(self) -> tuple[tuple[str, float | None], ...]:
+        """Sorted ``(name, value)`` pairs: the partner's part of a store key."""
+        return (
+            ("density_ratio", self.density_ratio),
+            ("modulus_ratio", self.modulus_ratio),
+            ("nu", self.nu),
+            ("radius_ratio", self.radius_ratio),
+        )
+
+    @classmethod
+    def from_key(cls, key) -> Partner:
+        """The partner of :meth:`key` (a sequence of pairs or a dict)."""
+        return cls(**dict(key.items() if isinstance(key, dict) else key))
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary."""
+        return dict(self.key())
+
+    def nu2(self, nu1: float) -> float:
+        """The second body's Poisson number when the first body's is ``nu1``."""
+        return float(nu1) if self.nu is None else self.nu
+
+    @property
+    def speed_ratio(self) -> float:
+        """``c2 / c1 = sqrt(E2 rho1 / (E1 rho2))``."""
+        return math.sqrt(self.modulus_ratio / self.density_ratio)
+
+    # -- quasistatic scales (disks) -----------------------------------------------------------
+
+    def max_compression(self, w, geometry: str = "disk"):
+        """The pair's quasistatic largest approach of the centres at relative speed ``w``
+        (``c1``), ``R1``: eq. (61) of the disk on a wall written for the pair,
+        ``delta = s w sqrt(ln(4 R_K / (s w)))`` with ``s = sqrt(mu / (pi E_eff))``,
+        ``1/E_eff = 1 + 1/E2`` and ``ln R_K = sum_i (E_eff/E_i) ln(R_i^2 / R_eff)`` (the pair's
+        2D Hertz law, :mod:`restitution.quasistatic.hertz_pair`).
+
+        Two identical disks give ``w sqrt(ln(8/w)) = 2 delta_wall(w/2)``, the disk on a wall at
+        half the speed; a rigid, infinitely heavy and large partner gives the wall's
+        ``w sqrt(ln(4/w))``. The sweeps scale the pair's walls with it, as the disk's with
+        eq. (61)."""
+        if geometry != "disk":
+            raise InputError(
+                f"the compression of a pair of {geometry}s is not implemented; pairs of "
+                "different bodies are computed for disks"
+            )
+        r2, e2 = self.radius_ratio, self.modulus_ratio
+        m1, m2 = math.pi, math.pi * self.density_ratio * r2 * r2
+        mu = m1 * m2 / (m1 + m2)
+        e_eff = 1.0 / (1.0 + 1.0 / e2)
+        r_eff = r2 / (1.0 + r2)
+        ln_rk = e_eff * math.log(1.0 / r_eff) + (e_eff / e2) * math.log(r2 * r2 / r_eff)
+        s = math.sqrt(mu / (math.pi * e_eff))
+        x = s * np.asarray(w, dtype=float)
+        out = x * np.sqrt(np.log(4.0 * math.exp(ln_rk) / x))
+        return float(out) if out.ndim == 0 else out
+
+    # -- modes ----------------------------------------------------------------------------------
+
+    def counts(self, n_modes: int, nu1: float, geometry: str = "disk") -> tuple[int, int]:
+        """How many of each body's own lowest modes to compute so that the pair's ``n_modes``
+        lowest lie among them: each body's Weyl share of the common cutoff (frequencies in
+        ``c1 / R1``: the second body's own ``omega`` times ``c2 R1 / (c1 R2)``), times
+        :data:`_MARGIN`, plus 20; at most ``n_modes``."""
+        kind = body_kind(geometry)
+        nu2 = self.nu2(nu1)
+        scale2 = self.speed_ratio / self.radius_ratio
+
+        def total(omega: float) -> float:
+            return kind.weyl_count(omega, nu1) + kind.weyl_count(omega / scale2, nu2)
+
+        lo, hi = 0.0, 1.0
+        while total(hi) < n_modes:
+            hi *= 2.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if total(mid) < n_modes else (lo, mid)
+        shares = (kind.weyl_count(hi, nu1), kind.weyl_count(hi / scale2, nu2))
+        return tuple(min(int(n_modes), int(math.ceil(_MARGIN * s)) + 20) for s in shares)
+
+    def pair(self, nu1: float, n_modes: int, geometry: str = "disk", get_modes=None) -> BodyPair:
+        """The :class:`BodyPair` of the ``n_modes`` lowest modes of both bodies together.
+
+        ``get_modes(nu, count, geometry=...)`` supplies each body's own modes (default
+        :func:`restitution.bodies.cache.get_modes`). Each body is asked for :meth:`counts`; if
+        the pair's ``n_modes``-th frequency lies above what a body was asked for, that body is
+        asked again for all ``n_modes`` (so the selection never depends on the estimate)."""
+        if get_modes is None:
+            from restitution.bodies.cache import get_modes
+        n_modes = int(n_modes)
+        if n_modes < 1:
+            raise InputError(f"a pair needs at least one mode, got {n_modes}")
+        nu2 = self.nu2(nu1)
+        counts = list(self.counts(n_modes, nu1, geometry))
+        while True:
+            if nu2 == float(nu1):  # one mode set serves both
+                both = get_modes(nu1, max(counts), geometry=geometry)
+                first = both.take(np.arange(counts[0]))
+                second = both.take(np.arange(counts[1]))
+            else:
+                first = get_modes(nu1, counts[0], geometry=geometry)
+                second = get_modes(nu2, counts[1], geometry=geometry)
+            whole = pair_of(
+                first,
+                second,
+                radius_ratio=self.radius_ratio,
+                modulus_ratio=self.modulus_ratio,
+                density_ratio=self.density_ratio,
+            )
+            if len(whole) < n_modes:
+                counts = [n_modes, n_modes]
+                continue
+            pair = whole.lowest(n_modes)
+            cutoff = float(pair.omega.max())
+            short = [
+                i
+                for i, body in enumerate((first, second))
+                if counts[i] < n_modes and float(whole.omega[whole.member == i].max()) <= cutoff
+            ]
+            if not short:
+                return pair
+            for i in short:
+                counts[i] = n_modes
