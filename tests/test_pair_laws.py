@@ -19,7 +19,6 @@ import pytest
 from restitution.bodies.cache import get_modes
 from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.bodies.pair import Partner, pair_of
-from restitution.cli import main
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw, law_filename
 from restitution.laws.law_nu import law_for
@@ -206,22 +205,11 @@ def test_si_law_serves_the_pair_at_the_relative_speed(tmp_path):
 # -- the command line ---------------------------------------------------------------------------
 
 
-def run_cli(capsys, *args):
-    """Exit code, stdout and stderr of ``restitution ARGS``."""
-    try:
-        main([str(a) for a in args])
-        code = 0
-    except SystemExit as exc:
-        code = exc.code or 0
-    out = capsys.readouterr()
-    return code, out.out, out.err
-
-
-def test_cli_curve_writes_a_pair_law(tmp_path, capsys):
+def test_cli_curve_writes_a_pair_law(tmp_path, cli):
     out = tmp_path / "out"
-    code, text, err = run_cli(
-        capsys, "curve", "--nu", "0.33", "--radius-ratio", "1.4", "--v", "0.2", "0.4",
-        "--modes", "300", "600", "900", "--store", tmp_path / "s.sqlite", "--out", out,
+    code, text, err = cli(
+        "curve", "--nu", "0.33", "--radius-ratio", "1.4", "--v", "0.2", "0.4",
+        "--modes", "300", "600", "900", "--store", str(tmp_path / "s.sqlite"), "--out", str(out),
     )  # fmt: skip
     assert code == 0, err
     law = EpsilonLaw.from_json(out / "law_pair_r1.4_nu0.33.json")
@@ -235,19 +223,18 @@ def test_cli_curve_writes_a_pair_law(tmp_path, capsys):
     assert law.epsilon(0.2) == pytest.approx(p.epsilon, abs=1e-14)
 
 
-def test_cli_curve_refuses_a_partner_nu_for_several_nus(tmp_path, capsys):
-    code, _, err = run_cli(
-        capsys, "curve", "--nu", "0.33", "0.9", "--partner-nu", "0.5", "--out", tmp_path
-    )
+def test_cli_curve_refuses_a_partner_nu_for_several_nus(tmp_path, cli):
+    args = ("curve", "--nu", "0.33", "0.9", "--partner-nu", "0.5", "--out", str(tmp_path))
+    code, _, err = cli(*args)
     assert code == 2 and "--partner-nu" in err and len(err.strip().splitlines()) == 1
 
 
-def test_cli_quasistatic_pair_of_identical_disks_is_the_wall_at_half_speed(capsys):
+def test_cli_quasistatic_pair_of_identical_disks_is_the_wall_at_half_speed(cli):
     """Two identical disks at w: twice the approach of one disk on the wall at w/2 (centre
     law), the same contact time."""
     args = ("quasistatic", "--nu", "0.33", "--json")
-    pair = json.loads(run_cli(capsys, *args, "--radius-ratio", "1", "--v", "0.04")[1])
-    wall = json.loads(run_cli(capsys, *args, "--v", "0.02", "--law", "centre")[1])
+    pair = json.loads(cli(*args, "--radius-ratio", "1", "--v", "0.04")[1])
+    wall = json.loads(cli(*args, "--v", "0.02", "--law", "centre")[1])
     assert pair["max_compression"] == pytest.approx(2 * wall["max_compression"], rel=1e-9)
     assert pair["contact_time"] == pytest.approx(wall["contact_time"], rel=1e-9)
     assert pair["inputs"]["radius_ratio"] == 1.0

@@ -12,7 +12,11 @@ meshes), :mod:`~restitution.fem.section` (what the half disk stands for: disk or
 modal solver), :mod:`~restitution.fem.graded` (meshes sized by the contact half-width),
 :mod:`~restitution.fem.richardson` (the limit h -> 0), :mod:`~restitution.fem.limits` (epsilon
 with h -> 0 and alpha -> infinity), :mod:`~restitution.fem.reference` (stored reference values
-with provenance) and :mod:`~restitution.fem.judge` (a law against the reference).
+with provenance) and :mod:`~restitution.fem.judge` (a law against the reference). Two free disks
+meeting head-on (the judge of the modal pair): :mod:`~restitution.fem.pair_model` (both meshes
+as one body), :mod:`~restitution.fem.pair_impact` (one collision),
+:mod:`~restitution.fem.pair_limits` (both limits) and :mod:`~restitution.fem.pair_reference`
+(stored reference values of pairs).
 """
 
 from restitution.fem.compare import Comparison, compare_fem_modal
@@ -21,6 +25,8 @@ from restitution.fem.graded import ContactGrading, contact_half_width
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide
 from restitution.fem.judge import LawJudgement, judge_law
 from restitution.fem.limits import FemEpsilon, fem_epsilon
+from restitution.fem.pair_impact import PairCollision, fem_collide_pair
+from restitution.fem.pair_limits import FemPairEpsilon, fem_pair_epsilon
 from restitution.fem.reference import load_reference
 
 __all__ = [
@@ -28,13 +34,17 @@ __all__ = [
     "ContactGrading",
     "FemCollisionError",
     "FemEpsilon",
+    "FemPairEpsilon",
     "FemSettings",
     "LawJudgement",
+    "PairCollision",
     "compare_fem_modal",
     "contact_half_width",
     "fem_collide",
+    "fem_collide_pair",
     "fem_count_below",
     "fem_epsilon",
+    "fem_pair_epsilon",
     "fem_symmetric_frequencies",
     "judge_law",
     "load_reference",

@@ -1,0 +1,457 @@
+"""Two free disks meeting head-on, as one finite-element body for their contact.
+
+Units: the *first* disk's, ``E1 = rho1 = R1 = 1`` (its 2D plane-stress constants). The second
+disk has ``R2 = radius_ratio``, ``E2 = modulus_ratio``, ``rho2 = density_ratio`` and its own
+Poisson number (:class:`restitution.bodies.pair.partner.Partner`). Lengths in ``R1``, the
+relative normal speed ``w`` of the centres in ``c1 = sqrt(E1/rho1)``, ``alpha`` in ``1/R1``,
+forces per unit thickness in ``E1 R1``, energies in ``E1 R1^2``, masses in ``rho1 R1^2``.
+
+**The formulation** is the modal pair's (:mod:`restitution.bodies.pair.body`). Each disk is the
+half disk of :mod:`restitution.fem.mesh` (the symmetric family, roller on the diameter), in its
+own frame with its contact at ``+x``: ``u_i`` is the ``x`` displacement of body ``i``'s points
+*towards the other body*, rigid translation included. Surface points are paired by their
+undeformed height ``y = R1 sin(phi1) = R2 sin(phi2)``; the gap is
+
+    g(y) = X2 - X1 - [R1 cos(phi1) + u1(phi1)] - [R2 cos(phi2) + u2(phi2)]
+
+and the potential ``V = (1/alpha) int exp(-alpha g) ds_ref`` over the arc of the smaller body
+(the *reference*; the first on a tie), as half-disk integrals over ``0 <= phi_ref <= pi/2``
+(masses and energies of the half disks are halves too, so the dynamics are the whole pair's).
+The reference body's arc quadrature (:func:`restitution.fem.contact.arc_quadrature`, its
+Gauss points on the isoparametric arc) carries the integral; at each of its points the partner's
+reference position and displacement are taken at the partner's boundary point of the same
+undeformed height (the continuum's angle ``arcsin(y / R2)``; on the discrete arc the point of
+its quadratic facet whose height is ``y``), interpolated with the P2 trace of that facet.
+
+**The composite body.** Written with ``x0 = X1 - X2 + R1 + R2 - 1`` and the heights
+``H = x1_ref + x2_ref - R2`` of the paired reference points (``H = 1`` at the tip),
+``-g = x0 + H + B1 u1 + B2 u2``: the wall problem of :mod:`restitution.fem.impact` for one body
+whose dofs are both bodies' (block-diagonal stiffness and lumped mass), whose wall rows are
+``[B1 | B2]`` and whose surface heights are ``H``. Its "rigid" vector is
+``(m2 / M) t1 + (m1 / M) t2`` (``t_i`` body ``i``'s unit translation, ``m_i`` its discrete mass,
+``M = m1 + m2``): a start ``w * rigid`` gives the centre-of-mass frame, ``v1 = w m2 / M``
+towards the partner and ``v2 = w m1 / M`` towards the first, its mass ``rigid^T M rigid`` is the
+reduced mass ``mu`` and ``rigid^T M u / mu`` the approach of the centres. The collision of
+:mod:`restitution.fem.impact` (velocity Verlet, energy monitor, stability monitor, stop test)
+therefore runs the pair unchanged; ``epsilon`` is the relative speed after over before.
+
+What the stop test needs: the largest frequency ``max(omega_K1, omega_K2)``, the largest
+eigenvalue of ``M^-1 B^T W B`` of the composite (``W`` the reference weights) and, per point,
+``chi1 + chi2``: each body's static compliance of the facet behind the point relative to its
+own centre of mass. The gap's change from free vibrations of energies ``E1 + E2`` is bounded by
+``1.25 (sqrt(2 E1 chi1) + sqrt(2 E2 chi2)) <= 1.25 sqrt(2 (E1 + E2)(chi1 + chi2))``.
+
+Each body is computed in its own reduced units (:func:`restitution.fem.model.fem_model`, cached;
+two identical disks share one model) and scaled: ``K = E_i K_own`` (2D elasticity does not
+change under a change of length), ``M = rho_i R_i^2 M_own``, lengths and arc weights ``R_i``,
+frequencies ``sqrt(E_i / rho_i) / R_i``, compliances ``1 / E_i``.
+
+**Meshes.** Both meshes are graded (:func:`restitution.fem.mesh.graded_half_disk`) by the
+pair's quasistatic contact (:func:`pair_scales`): the 2D Hertz half-width ``b`` of two disks,
+``b^2 = 4 F R_eff / (pi E_eff)`` (:mod:`restitution.quasistatic.hertz_pair`), with the peak
+force ``F = 2 E0 / delta``, ``E0 = mu w^2 / 2`` and ``delta`` the pair's compression
+(:meth:`Partner.max_compression`). Body ``i`` gets the contact size
+``contact_fraction * b / R_i`` in its own units (the same physical size ``0.4 b 2^-level`` on
+both), the contact zone ``1.2 sqrt(b^2 + 14 R_eff / alpha) / R_i`` (the wall's zone of
+:func:`restitution.fem.impact.contact_angle_estimate` with the gap's curvature ``1/R_eff``) and
+the far size ``h_far`` of its own radius. Two identical disks at ``w`` and ``alpha`` get the
+meshes of the disk on the wall at ``v = w/2``, ``alpha_wall = 2 alpha``.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+import scipy.sparse as sp
+
+from restitution.bodies.material import Material
+from restitution.bodies.pair.partner import Partner
+from restitution.errors import InputError
+from restitution.fem.contact import ArcQuadrature
+from restitution.fem.elasticity import HalfDisk, as_material
+from restitution.fem.graded import ContactGrading, default_grading
+from restitution.fem.impact import FemSettings
+from restitution.fem.model import FemModel, _largest_eigenvalue, fem_model
+
+__all__ = [
+    "PairModel",
+    "PairScales",
+    "check_pair_inputs",
+    "pair_mesh_settings",
+    "pair_model",
+    "pair_scales",
+]
+
+_TRACE = 3
+"""Nodes of a quadratic arc facet: its two vertices and its midpoint."""
+
+
+def check_pair_inputs(partner, w: float, alpha: float | None = None) -> tuple[Partner, float]:
+    """Refuse what the FEM pair cannot compute; the :class:`Partner` and ``w`` as a float.
+
+    ``partner`` must be a :class:`Partner` of disks, ``w`` (``c1``) in ``(0, 1)``, ``alpha``
+    (``1/R1``, when given) positive and finite.
+    """
+    if not isinstance(partner, Partner):
+        raise InputError(
+            "the second disk must be given as a restitution.bodies.pair.Partner (its radius, "
+            f"modulus and density ratios and Poisson number), got {partner!r}"
+        )
+    w = float(w)
+    if not 0.0 < w < 1.0:
+        raise InputError(
+            f"the relative normal speed w of the centres must lie in (0, 1) in units of c1, got {w}"
+        )
+    if alpha is not None and not (alpha > 0 and math.isfinite(alpha)):
+        raise InputError(f"the contact hardness alpha must be positive (1/R1), got {alpha}")
+    return partner, w
+
+
+@dataclass(frozen=True)
+class PairScales:
+    """The pair's quasistatic contact at relative speed ``w`` (first disk's units).
+
+    Attributes
+    ----------
+    w : float
+        Relative normal speed of the centres, ``c1``.
+    compression : float
+        Largest approach of the centres, ``R1`` (:meth:`Partner.max_compression`).
+    force : float
+        Peak contact force of the whole disks, ``2 E0 / compression``, ``E1 R1``.
+    half_width : float
+        2D Hertz half-width ``b`` of the common contact, ``R1``.
+    pressure : float
+        Hertz peak pressure ``2 F / (pi b)``, ``E1``.
+    contact_time : float
+        ``pi compression / w``, ``R1 / c1`` (eq. 61's ``pi sqrt(ln(4/v))`` on the wall).
+    effective_radius : float
+        ``R1 R2 / (R1 + R2)``, ``R1``.
+    """
+
+    w: float
+    compression: float
+    force: float
+    half_width: float
+    pressure: float
+    contact_time: float
+    effective_radius: float
+
+
+def _whole_masses(partner: Partner) -> tuple[float, float]:
+    """Masses of the whole disks per unit thickness, ``rho1 R1^2``."""
+    return math.pi, math.pi * partner.density_ratio * partner.radius_ratio**2
+
+
+def pair_scales(partner: Partner, w: float) -> PairScales:
+    """The quasistatic scales of the pair at relative speed ``w`` (``c1``) that size its meshes
+    and its time step (module docs); for identical disks the wall's at ``v = w/2``.
+
+    Examples
+    --------
+    >>> s = pair_scales(Partner(), 0.2)
+    >>> from restitution.fem.graded import contact_half_width
+    >>> round(s.half_width, 12) == round(contact_half_width(0.1), 12)
+    True
+    """
+    partner, w = check_pair_inputs(partner, w)
+    m1, m2 = _whole_masses(partner)
+    mu = m1 * m2 / (m1 + m2)
+    delta = float(partner.max_compression(w))
+    force = mu * w**2 / delta
+    r2, e2 = partner.radius_ratio, partner.modulus_ratio
+    r_eff = r2 / (1.0 + r2)
+    e_eff = e2 / (1.0 + e2)
+    b = math.sqrt(4.0 * force * r_eff / (math.pi * e_eff))
+    return PairScales(
+        w=w,
+        compression=delta,
+        force=force,
+        half_width=b,
+        pressure=2.0 * force / (math.pi * b),
+        contact_time=math.pi * delta / w,
+        effective_radius=r_eff,
+    )
+
+
+def pair_mesh_settings(
+    partner: Partner,
+    w: float,
+    alpha: float,
+    level: int,
+    grading: ContactGrading | None = None,
+    base: FemSettings | None = None,
+) -> tuple[FemSettings, FemSettings]:
+    """The two bodies' mesh settings (each in its own units) for ``w`` (``c1``), ``alpha``
+    (``1/R1``) and the mesh ``level`` (module docs: meshes); integrator fields from ``base``.
+    """
+    partner, w = check_pair_inputs(partner, w, alpha)
+    if int(level) != level or level < 0:
+        raise InputError(f"the mesh level must be a non-negative integer, got {level}")
+    grading = grading or default_grading("disk")
+    base = base or FemSettings()
+    scales = pair_scales(partner, w)
+    b = scales.half_width
+    zone = 1.2 * math.sqrt(b**2 + 14.0 * scales.effective_radius / alpha)
+    out = []
+    for radius in (1.0, partner.radius_ratio):
+        out.append(
+            replace(
+                base,
+                refine=int(level),
+                contact_angle=float(min(zone / radius, 0.5 * math.pi)),
+                h_contact=min(grading.contact_fraction * b / radius, grading.h_far),
+                h_far=grading.h_far,
+                grading=grading.grading,
+            )
+        )
+    return out[0], out[1]
+
+
+@dataclass(frozen=True)
+class _Trace:
+    """The quadratic arc facets of one body (own units): kept ``u_x`` dofs of the two vertices
+    and the midpoint, their reference coordinates and the facet's compliance ``chi``."""
+
+    nodes: np.ndarray  # (F, 3) int
+    x: np.ndarray  # (F, 3)
+    y: np.ndarray  # (F, 3)
+    chi: np.ndarray  # (F,)
+
+
+def _trace(model: FemModel) -> _Trace:
+    """The arc facets behind a model's quadrature (:class:`restitution.fem.contact.ArcQuadrature`
+    keeps, per point, its facet's ``u_x`` dofs in the order of the P2 shape functions, and the
+    model the facet's largest nodal compliance)."""
+    nodes, first = np.unique(model.quad.facet_nodes, axis=0, return_index=True)
+    disk = model.disk
+    where = disk.basis.doflocs[:, disk.free]
+    return _Trace(nodes=nodes, x=where[0][nodes], y=where[1][nodes], chi=model.chi[first])
+
+
+def _trace_at_heights(
+    model: FemModel, height: np.ndarray
+) -> tuple[sp.csr_matrix, np.ndarray, np.ndarray]:
+    """The body's boundary points of undeformed heights ``height`` (own units, in ``[0, 1]``).
+
+    On the facet whose end heights bracket ``y``, the facet parameter ``t`` solves
+    ``Y(t) = y`` for the quadratic ``Y(t) = y_a (1-t)(1-2t) + y_b t(2t-1) + 4 y_m t(1-t)``
+    (the root in ``[0, 1]`` nearest the linear guess, polished by two Newton steps).
+
+    Returns
+    -------
+    B : scipy.sparse.csr_matrix, shape (P, n)
+        ``u_x`` at the points from the body's kept dofs (the P2 trace of each facet).
+    x : numpy.ndarray, shape (P,)
+        Reference ``x`` of the points (own ``R``).
+    chi : numpy.ndarray, shape (P,)
+        Compliance of each point's facet (own ``R / E``).
+    """
+    tr = _trace(model)
+    y = np.asarray(height, dtype=float)
+    lo = np.minimum(tr.y[:, 0], tr.y[:, 1])
+    hi = np.maximum(tr.y[:, 0], tr.y[:, 1])
+    top = float(hi.max())
+    if y.min() < -1e-12 or y.max() > top + 1e-9:
+        raise InputError(
+            f"heights {y.min():.3g}-{y.max():.3g} lie outside the partner's arc (0-{top:.6g}); "
+            "the reference must be the smaller body"
+        )
+    y = np.clip(y, 0.0, top)
+    inside = (lo[None, :] <= y[:, None]) & (y[:, None] <= hi[None, :])
+    facet = np.argmax(inside, axis=1)
+    ya, yb, ym = tr.y[facet, 0], tr.y[facet, 1], tr.y[facet, 2]
+    # Y(t) = ya + t (-3 ya - yb + 4 ym) + t^2 (2 ya + 2 yb - 4 ym)
+    qa = 2.0 * ya + 2.0 * yb - 4.0 * ym
+    qb = -3.0 * ya - yb + 4.0 * ym
+    qc = ya - y
+    guess = np.where(yb != ya, (y - ya) / np.where(yb != ya, yb - ya, 1.0), 0.5)
+    disc = np.sqrt(np.maximum(qb * qb - 4.0 * qa * qc, 0.0))
+    q = -0.5 * (qb + np.copysign(disc, qb))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        roots = np.stack([q / qa, qc / q])
+    roots = np.where(np.isfinite(roots), roots, guess)
+    t = roots[np.argmin(np.abs(roots - guess), axis=0), np.arange(y.size)]
+    for _ in range(2):
+        slope = qb + 2.0 * qa * t
+        step = np.where(np.abs(slope) > 1e-300, (qa * t * t + qb * t + qc) / slope, 0.0)
+        t = t - step
+    t = np.clip(t, 0.0, 1.0)
+    shape = np.stack([(1 - t) * (1 - 2 * t), t * (2 * t - 1), 4 * t * (1 - t)], axis=1)
+    rows = np.repeat(np.arange(y.size), _TRACE)
+    B = sp.csr_matrix(
+        (shape.ravel(), (rows, tr.nodes[facet].ravel())), shape=(y.size, model.disk.n_dofs)
+    )
+    x = (shape * tr.x[facet]).sum(axis=1)
+    return B, x, tr.chi[facet]
+
+
+def _contact_chord(model: FemModel, half_angle: float) -> float:
+    """Longest arc chord (own ``R``) of the facets that reach into ``|phi| <= half_angle``
+    (all arc facets when none does), as :func:`restitution.fem.graded.mesh_summary`."""
+    tr = _trace(model)
+    chord = np.hypot(tr.x[:, 1] - tr.x[:, 0], tr.y[:, 1] - tr.y[:, 0])
+    angle = np.minimum(np.arctan2(tr.y[:, 0], tr.x[:, 0]), np.arctan2(tr.y[:, 1], tr.x[:, 1]))
+    inside = angle <= half_angle
+    return float(chord[inside].max() if np.any(inside) else chord.max())
+
+
+@dataclass(frozen=True, eq=False)
+class PairModel:
+    """Both meshes of a pair and the composite body the collision integrates (module docs).
+
+    Attributes
+    ----------
+    partner : Partner
+    materials : tuple of Material
+        Each body's material in its own reduced units (``E = rho = 1``, its own ``nu``).
+    bodies : tuple of FemModel
+        Each body's model in its own units.
+    reference : int
+        The body whose arc carries the potential: 0 (the first) unless the second is smaller.
+    composite : FemModel
+        The pair as one body in the first disk's units; its dofs are the first body's followed
+        by the second's (``R1``); ``disk.mesh`` and ``disk.basis`` are ``None`` (two meshes).
+    n_first : int
+        Kept dofs of the first body.
+    masses : tuple of float
+        The discrete half-disk masses ``m1, m2`` (``rho1 R1^2``).
+    contact_chords : tuple of float
+        Each body's longest arc chord in the Hertz half-width ``b``, ``R1``.
+    """
+
+    partner: Partner
+    materials: tuple[Material, Material]
+    bodies: tuple[FemModel, FemModel]
+    reference: int
+    composite: FemModel
+    n_first: int
+    masses: tuple[float, float]
+    contact_chords: tuple[float, float]
+
+    @property
+    def n_dofs(self) -> tuple[int, int]:
+        """Kept dofs of each half disk."""
+        return tuple(int(m.disk.n_dofs) for m in self.bodies)
+
+    def split(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """A composite vector as the two bodies' parts (``R1``, first-disk units)."""
+        return u[: self.n_first], u[self.n_first :]
+
+
+def _scale(partner: Partner, body: int) -> tuple[float, float, float]:
+    """``(R, E, rho)`` of ``body`` in the first disk's units."""
+    if body == 0:
+        return 1.0, 1.0, 1.0
+    return partner.radius_ratio, partner.modulus_ratio, partner.density_ratio
+
+
+@functools.lru_cache(maxsize=4)
+def pair_model(
+    nu: float, partner: Partner, first: FemSettings, second: FemSettings, half_width: float
+) -> PairModel:
+    """Both bodies' models and the composite body (cached).
+
+    Parameters
+    ----------
+    nu : float
+        The first disk's 2D Poisson number.
+    partner : Partner
+    first, second : FemSettings
+        Each body's mesh in its own units (:func:`pair_mesh_settings`).
+    half_width : float
+        The pair's Hertz half-width ``b`` (``R1``), for the contact chords only.
+    """
+    materials = (as_material(float(nu)), as_material(partner.nu2(float(nu))))
+    models = tuple(
+        fem_model(
+            material, int(s.refine), float(s.contact_angle), s.h_contact, s.h_far, s.grading,
+            s.n_gauss, "disk",
+        )
+        for material, s in zip(materials, (first, second), strict=True)
+    )  # fmt: skip
+    ref = 0 if partner.radius_ratio >= 1.0 else 1
+    other = 1 - ref
+    scale = [_scale(partner, i) for i in (0, 1)]
+    r_ref, r_other = scale[ref][0], scale[other][0]
+
+    # The reference's quadrature; its points' heights from the P2 trace of its own facets.
+    rq = models[ref].quad
+    where = models[ref].disk.basis.doflocs[:, models[ref].disk.free]
+    height = r_ref * (rq.B @ where[1])
+    B_other, x_other, chi_other = _trace_at_heights(models[other], height / r_other)
+    blocks = [None, None]
+    x_ref = [None, None]
+    chi = [None, None]
+    blocks[ref], x_ref[ref], chi[ref] = rq.B, r_ref * rq.x_ref, models[ref].chi
+    blocks[other], x_ref[other], chi[other] = B_other, r_other * x_other, chi_other
+
+    stiffness, mass_diagonal, translation = [], [], []
+    for i, model in enumerate(models):
+        radius, modulus, density = scale[i]
+        stiffness.append(modulus * model.disk.K)
+        mass_diagonal.append(density * radius**2 * model.disk.M.diagonal())
+        translation.append(model.disk.rigid)
+    m = tuple(float(t @ (md * t)) for t, md in zip(translation, mass_diagonal, strict=True))
+    total = m[0] + m[1]
+    rigid = np.concatenate([m[1] / total * translation[0], m[0] / total * translation[1]])
+    mass_diag = np.concatenate(mass_diagonal)
+    K = sp.block_diag(stiffness, format="csr")
+    M = sp.diags(mass_diag).tocsr()
+    n = mass_diag.size
+    n_first = int(models[0].disk.n_dofs)
+    weight = r_ref * rq.weight
+    B = sp.hstack(blocks, format="csr")
+    offset = 0 if ref == 0 else n_first
+    quad = ArcQuadrature(
+        phi=rq.phi,
+        x_ref=x_ref[0] + x_ref[1] - partner.radius_ratio,
+        weight=weight,
+        B=B,
+        BT=B.T.tocsr(),
+        facet_nodes=rq.facet_nodes + offset,
+    )
+    disk = HalfDisk(
+        material=materials[0],
+        discretisation="P2+lumped",
+        geometry="disk",
+        mesh=None,
+        basis=None,
+        free=np.arange(n),
+        K=K,
+        M=M,
+        rigid=rigid,
+        mass=float(rigid @ (M @ rigid)),
+    )
+    omega = [
+        model.omega_K * math.sqrt(scale[i][1] / scale[i][2]) / scale[i][0]
+        for i, model in enumerate(models)
+    ]
+    BtWB = (B.T @ sp.diags(weight) @ B).tocsr()
+    composite = FemModel(
+        disk=disk,
+        quad=quad,
+        inverse_mass=1.0 / mass_diag,
+        r=M @ rigid,
+        omega_K=max(omega),
+        lambda_B=_largest_eigenvalue(BtWB, mass_diag),
+        chi=chi[0] / scale[0][1] + chi[1] / scale[1][1],
+        h_min=min(model.h_min * scale[i][0] for i, model in enumerate(models)),
+    )
+    chords = tuple(
+        scale[i][0] * _contact_chord(model, half_width / scale[i][0])
+        for i, model in enumerate(models)
+    )
+    return PairModel(
+        partner=partner,
+        materials=materials,
+        bodies=models,
+        reference=ref,
+        composite=composite,
+        n_first=n_first,
+        masses=m,
+        contact_chords=chords,
+    )
