@@ -151,6 +151,19 @@ NU_MATCH = 1e-4
 """Largest ``|nu - nu_law|`` for which a law serves ``nu`` as it is."""
 
 
+def _partner_fields(partner) -> list[tuple[str, str, str, float]]:
+    """``(file tag, name, option, value)`` of each constant of ``partner`` that a law must name:
+    the radius ratio always, the others where they are not the first body's."""
+    fields = [("r", "R2/R1", "--radius-ratio", partner.radius_ratio)]
+    if partner.modulus_ratio != 1.0:
+        fields.append(("E", "E2/E1", "--modulus-ratio", partner.modulus_ratio))
+    if partner.density_ratio != 1.0:
+        fields.append(("rho", "rho2/rho1", "--density-ratio", partner.density_ratio))
+    if partner.nu is not None:
+        fields.append(("nu2", "nu2", "--partner-nu", partner.nu))
+    return fields
+
+
 def _file_prefix(geometry: str, partner=None) -> str:
     """``law_nu`` for the disk (the names of the first shipped files), ``law_<body>_nu`` else;
     with a ``partner`` ``law_pair_r<R2/R1>[_E<E2/E1>][_rho<rho2/rho1>][_nu2<nu2>]_nu`` (a
@@ -159,13 +172,7 @@ def _file_prefix(geometry: str, partner=None) -> str:
     if partner is None:
         return "law_nu" if name == "disk" else f"law_{name}_nu"
     head = "law_pair" if name == "disk" else f"law_{name}_pair"
-    parts = [f"r{partner.radius_ratio:g}"]
-    if partner.modulus_ratio != 1.0:
-        parts.append(f"E{partner.modulus_ratio:g}")
-    if partner.density_ratio != 1.0:
-        parts.append(f"rho{partner.density_ratio:g}")
-    if partner.nu is not None:
-        parts.append(f"nu2{partner.nu:g}")
+    parts = [f"{tag}{value:g}" for tag, _, _, value in _partner_fields(partner)]
     return f"{head}_{'_'.join(parts)}_nu"
 
 
@@ -205,13 +212,7 @@ def _curve_command(geometry: str, nu: float | None = None, partner=None) -> str:
     value = "NU" if nu is None else f"{float(nu):.6g}"
     pair = ""
     if partner is not None:
-        pair = f" --radius-ratio {partner.radius_ratio:g}"
-        if partner.modulus_ratio != 1.0:
-            pair += f" --modulus-ratio {partner.modulus_ratio:g}"
-        if partner.density_ratio != 1.0:
-            pair += f" --density-ratio {partner.density_ratio:g}"
-        if partner.nu is not None:
-            pair += f" --partner-nu {partner.nu:g}"
+        pair = "".join(f" {option} {value:g}" for _, _, option, value in _partner_fields(partner))
     return f"restitution curve{flag} --nu {value}{pair} --out DIR"
 
 
@@ -751,14 +752,7 @@ def _metadata(nu: float, parameters: Mapping, geometry: str = "disk", partner=No
 
 def _describe(partner) -> str:
     """``R2/R1 = 1.4`` (and the other ratios and ``nu2`` where they are not the first body's)."""
-    parts = [f"R2/R1 = {partner.radius_ratio:g}"]
-    if partner.modulus_ratio != 1.0:
-        parts.append(f"E2/E1 = {partner.modulus_ratio:g}")
-    if partner.density_ratio != 1.0:
-        parts.append(f"rho2/rho1 = {partner.density_ratio:g}")
-    if partner.nu is not None:
-        parts.append(f"nu2 = {partner.nu:g}")
-    return ", ".join(parts)
+    return ", ".join(f"{name} = {value:g}" for _, name, _, value in _partner_fields(partner))
 
 
 def _refuse_other_body(loaded: EpsilonLaw, geometry: str, path, partner=None) -> None:
