@@ -12,6 +12,7 @@ from pathlib import Path
 import click
 
 from restitution import atomic
+from restitution.cli._common import note, quiet_option
 from restitution.cli.epsilon import _ListCommand
 from restitution.jsonable import json_default
 from restitution.status import Status
@@ -97,6 +98,7 @@ class _LawCommand(_ListCommand):
     help="Constant for one-number codes: epsilon averaged (dissipation-weighted) over a Maxwell "
     "gas at this granular temperature <v_x^2>, m^2/s^2.",
 )
+@quiet_option
 def law(
     E,
     nu,
@@ -199,7 +201,10 @@ def law(
         if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
             notes[p.status] = result["statuses"][p.status]
     for status, text in notes.items():
-        click.echo(f"note: {status}: {text}", err=True)
+        if status == Status.OUTSIDE:
+            lo, hi = s.computed_range_m_s
+            text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
+        note(f"note: {status}: {text}")
     if pairs is not None:
         click.echo(
             f"type 1 = the small grain, type 2 = the large one (R2 = {pairs.radius_ratio:g} R1); "

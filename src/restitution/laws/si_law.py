@@ -268,6 +268,9 @@ class SILaw:
                     err = float(self.law.epsilon_err(self._served_v(v)))
                 except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
                     status, note = Status.OUTSIDE, str(exc)
+            if status == Status.OUTSIDE:
+                lo, hi = self.speed_range_m_s
+                note += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
             out.append(SIPoint(float(w), v, eps, err, status, note))
         return tuple(out)
 
