@@ -23,6 +23,7 @@ RANK = {
     "jsonable": 0,
     "provenance": 0,
     "atomic": 0,
+    "budget": 0,
     "bodies": 1,
     "dynamics": 2,
     "vibrating": 3,

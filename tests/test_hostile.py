@@ -24,6 +24,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from _cli_checks import one_line_error
 
 import restitution
 from restitution import get_modes
@@ -41,16 +42,6 @@ from restitution.limits.store import PointSpec, Store, StoreError
 from restitution.limits.sweep import DEFAULTS, grid, run_sweep
 
 # -- helpers -------------------------------------------------------------------------------
-
-
-def one_line_error(code, err, *words):
-    lines = [x for x in err.splitlines() if x.strip()]
-    assert code == 2, err
-    assert len(lines) == 1 and lines[0].startswith("error: "), err
-    assert "Traceback" not in err
-    for w in words:
-        assert w in lines[0], (w, lines[0])
-    return lines[0]
 
 
 @pytest.fixture

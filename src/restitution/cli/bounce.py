@@ -43,13 +43,18 @@ from restitution.errors import InputError
 @click.option("--plot", type=click.Path(dir_okay=False, path_type=Path), default=None,
               help="Draw the impact speeds against a constant-eps disk to this file.")  # fmt: skip
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
+@click.option("--force", is_flag=True,
+              help="Run even when the estimated time exceeds the bound of one run (1 h); "
+              "the memory bound is never lifted.")  # fmt: skip
 @quiet_option
 def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, energy_tol,
-           plot, as_json):  # fmt: skip
+           plot, as_json, force):  # fmt: skip
     """Successive collisions of one disk under gravity or between two walls.
 
     Units: E = rho = R = 1; speeds in c, times in R/c, energies in E R^2 (m = pi), gravity in
     c^2/R. Per collision: impact speed, epsilon, vibrational energy, contact time, flight time.
+    A sequence that would not fit in memory, or take more than an hour (unless --force), is
+    refused before it starts.
     """
     from restitution.dynamics.collision import CollisionSettings
 
@@ -72,13 +77,20 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
     if plot is not None:
         check_figure_file(plot, "--plot")
     from restitution.vibrating.sequences import bounce as run
-    from restitution.vibrating.sequences import constant_epsilon_speeds
+    from restitution.vibrating.sequences import (
+        check_bounce_memory,
+        check_bounce_time,
+        constant_epsilon_speeds,
+    )
 
+    check_bounce_memory(collisions, cli=True, json=as_json, name="--collisions")
     ms = get_modes(material, count=n_modes)
+    check_bounce_time(ms, v, alpha, collisions, force=force, name="--collisions",
+                      override="--force", energy_tol=energy_tol)  # fmt: skip
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         seq = run(ms, v, alpha, collisions, gravity=gravity, walls_distance=walls_distance,
-                  energy_tol=energy_tol)  # fmt: skip
+                  energy_tol=energy_tol, force=force)  # fmt: skip
     constant = constant_epsilon_speeds(v, float(seq.epsilon[0]), collisions)
     if plot is not None:
         from restitution.reproduction.figures.vibrating import BounceData, plot_bounce

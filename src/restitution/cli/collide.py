@@ -457,6 +457,9 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
             raise InputError(f"--temperature must be a number >= 0, got {p['temperature']}")
         if p["samples"] is not None and p["samples"] < 1:
             raise InputError(f"--samples must be at least 1, got {p['samples']}")
+        from restitution.vibrating.ensemble import check_ensemble_memory
+
+        check_ensemble_memory(p["samples"] or 1, n_modes, json=as_json, name="--samples")
         if p["plot"] is not None:
             from restitution.cli._common import check_figure_file
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.bodies.disk.modes import ModeSet
+from restitution.budget import check_memory
 from restitution.dynamics.collision import CollisionError, CollisionSettings, collide_batch
 from restitution.errors import InputError
 from restitution.vibrating.vibration import (
@@ -27,7 +28,9 @@ from restitution.vibrating.vibration import (
 
 __all__ = [
     "Ensemble",
+    "check_ensemble_memory",
     "collide_states",
+    "ensemble_bytes_per_sample",
     "SinusoidFit",
     "fit_sinusoid",
     "phase_scan",
@@ -184,6 +187,59 @@ def collide_states(
     return out
 
 
+# Bytes per sample besides the states, measured with tracemalloc: the memory held during the
+# loop of thermal_ensemble grew by 262-330 B per sample (N = 5, 40, 400; samples 64 to 256):
+# the five lists of Python floats and the arrays made of them (203 B alone) and what the
+# collision path keeps per collision. The JSON document of the command line (Ensemble.to_dict,
+# then the CLI's dumps) peaked at 2821 B per sample (2e4 samples); the arrays of the Ensemble,
+# 40 B, are alive then, the states no longer are.
+_RECORD_BYTES = 350.0
+_JSON_BYTES = 2900.0
+
+
+def ensemble_bytes_per_sample(n_modes: int, *, json: bool = False) -> float:
+    """Peak memory of :func:`thermal_ensemble` per sample, bytes.
+
+    Drawing the states holds ``Q``, ``P`` and one temporary array of the same shape (three
+    times ``N`` doubles); the collisions then run with ``Q``, ``P`` and the per-sample results.
+    With ``json``, the JSON document of the command line (after the states are gone) counts
+    too.
+    """
+    states = 8.0 * n_modes
+    per = max(3 * states, 2 * states + _RECORD_BYTES)
+    return max(per, 40.0 + _JSON_BYTES) if json else per
+
+
+def check_ensemble_memory(
+    samples: int, n_modes: int, *, json: bool = False, name: str = "samples"
+) -> float:
+    """Refuse an ensemble whose thermal states (and results) would not fit in this machine's
+    memory budget (:func:`restitution.budget.check_memory`); returns the bytes needed.
+
+    Parameters
+    ----------
+    samples : int
+        Collisions of the ensemble.
+    n_modes : int
+        Modes of the mode set.
+    json : bool
+        Count the JSON document the command line prints too.
+    name : str
+        The input as the caller knows it (``"--samples"`` on the command line).
+
+    Raises
+    ------
+    InputError
+        One line with the bytes needed and available and the most samples that fit.
+    """
+    for label, value in (("samples", samples), ("n_modes", n_modes)):
+        if not isinstance(value, int | np.integer) or isinstance(value, bool) or value < 1:
+            raise InputError(f"{label} must be a positive integer, got {value!r}")
+    per = ensemble_bytes_per_sample(n_modes, json=json)
+    what = f"the thermal states of {n_modes} modes" + (" and the JSON output" if json else "")
+    return check_memory(name, int(samples), per, "sample", what)
+
+
 def thermal_ensemble(
     modes: ModeSet,
     v: float,
@@ -201,7 +257,9 @@ def thermal_ensemble(
     (mean energy per mode, reduced units), drawn with ``numpy.random.default_rng(seed)``.
 
     The states are drawn all at once, so a sample does not depend on ``batch_size``;
-    ``progress`` is called with the number of collisions finished after every batch.
+    ``progress`` is called with the number of collisions finished after every batch. An
+    ensemble whose states would not fit in memory is refused before anything is drawn
+    (:func:`check_ensemble_memory`).
     """
     if not isinstance(samples, int | np.integer) or isinstance(samples, bool) or samples < 1:
         raise InputError(f"samples must be a positive integer, got {samples!r}")
@@ -211,6 +269,7 @@ def thermal_ensemble(
         not isinstance(seed, int | np.integer) or isinstance(seed, bool) or seed < 0
     ):
         raise InputError(f"the seed must be an integer >= 0 (or None), got {seed!r}")
+    check_ensemble_memory(samples, len(modes))
     Q, P = thermal_state(modes, temperature, np.random.default_rng(seed), size=int(samples))
     out = {k: [] for k in ("eps", "before", "after", "drift", "contact")}
     failures: list[str] = []

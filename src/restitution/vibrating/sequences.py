@@ -25,14 +25,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.bodies.disk.modes import ModeSet
+from restitution.budget import check_memory, check_time, collision_seconds
 from restitution.dynamics.collision import CollisionSettings, collide, start_position
-from restitution.dynamics.results import CollisionResult
+from restitution.dynamics.steps import estimate_work
 from restitution.errors import InputError
 from restitution.vibrating.vibration import next_initial_state
 
 __all__ = [
     "Sequence",
     "bounce",
+    "bounce_bytes_per_collision",
+    "check_bounce_memory",
+    "check_bounce_time",
     "constant_epsilon_speeds",
     "memoryless_speeds",
 ]
@@ -140,6 +144,107 @@ class Sequence:
         }
 
 
+# Bytes per collision, measured with tracemalloc: the memory held during the loop of bounce
+# grew by 650-1720 B per collision (N = 5, 40, 400; collisions 20 to 140). The record's eleven
+# lists of Python floats and their arrays take about 450 B of it; the rest is what the
+# collision path keeps per collision. The command line adds its constant-epsilon speeds, 8 B,
+# and with --json its document (Sequence.to_dict and the speeds, then the CLI's dumps), 4863 B
+# at its peak (2e4 collisions).
+_RECORD_BYTES = 1800.0
+_CLI_BYTES = 8.0
+_JSON_BYTES = 4900.0
+
+
+def bounce_bytes_per_collision(*, cli: bool = False, json: bool = False) -> float:
+    """Memory of :func:`bounce`'s record per collision, bytes (independent of the modes).
+
+    With ``cli``, the command line's table of constant-epsilon speeds too; with ``json``, its
+    JSON document.
+    """
+    return _RECORD_BYTES + (_CLI_BYTES if cli or json else 0.0) + (_JSON_BYTES if json else 0.0)
+
+
+def _check_collisions(collisions) -> int:
+    if (
+        not isinstance(collisions, int | np.integer)
+        or isinstance(collisions, bool | np.bool_)
+        or collisions < 1
+    ):
+        raise InputError(f"the number of collisions must be a positive integer, got {collisions!r}")
+    return int(collisions)
+
+
+def check_bounce_memory(
+    collisions: int, *, cli: bool = False, json: bool = False, name: str = "collisions"
+) -> float:
+    """Refuse a sequence whose record would not fit in this machine's memory budget
+    (:func:`restitution.budget.check_memory`; never overridden); returns the bytes needed.
+
+    ``cli`` and ``json`` count the command line's output (:func:`bounce_bytes_per_collision`);
+    ``name`` is the input as the caller knows it (``"--collisions"`` on the command line).
+
+    Raises
+    ------
+    InputError
+        One line with the bytes needed and available and the most collisions that fit.
+    """
+    per = bounce_bytes_per_collision(cli=cli, json=json)
+    what = "the record of the sequence" + (" and its JSON output" if json else "")
+    return check_memory(name, _check_collisions(collisions), per, "collision", what)
+
+
+def check_bounce_time(
+    modes: ModeSet,
+    v: float,
+    alpha: float,
+    collisions: int,
+    settings: CollisionSettings | None = None,
+    *,
+    force: bool = False,
+    name: str = "collisions",
+    override: str = "force=True",
+    **overrides,
+) -> float:
+    """Refuse a sequence estimated to take longer than
+    :data:`restitution.budget.TIME_BOUND_S` unless ``force``; returns the estimate, seconds.
+
+    Every collision is taken to cost what the first one does: the steps of
+    :func:`restitution.dynamics.steps.estimate_work` at speed ``v`` (``c``) and wall ``alpha``
+    (``1/R``) times the measured cost of a step of this many modes
+    (:func:`restitution.budget.collision_seconds`). Later impact speeds differ, so this is an
+    estimate (within a factor 2 in the measurements), not a bound.
+
+    Raises
+    ------
+    InputError
+        One line with the estimated time, the bound and the most collisions that fit in it.
+    """
+    collisions = _check_collisions(collisions)
+    _check_speed(v, alpha)
+    settings = settings or CollisionSettings()
+    if overrides:
+        settings = CollisionSettings(**{**settings.__dict__, **overrides})
+    est = estimate_work(modes, np.array([float(v)]), np.array([float(alpha)]), settings)
+    per = collision_seconds(est.steps, len(modes))
+    what = f"about {float(f'{est.steps:.2g}'):.0f} steps of {len(modes)} modes"
+    return check_time(name, collisions, per, "collision", what, force=force, override=override)
+
+
+def _is_real(value) -> bool:
+    return (
+        isinstance(value, int | float | np.integer | np.floating)
+        and not isinstance(value, bool | np.bool_)
+        and math.isfinite(value)
+    )
+
+
+def _check_speed(v, alpha) -> None:
+    if not (_is_real(v) and 0 < v < 1):
+        raise InputError(f"the impact speed v must lie in (0, 1) (units of c), got {v!r}")
+    if not (_is_real(alpha) and alpha > 0):
+        raise InputError(f"the wall hardness alpha must be a positive number (1/R), got {alpha!r}")
+
+
 def bounce(
     modes: ModeSet,
     v: float,
@@ -151,9 +256,15 @@ def bounce(
     initial=None,
     settings: CollisionSettings | None = None,
     progress: Callable[[int], None] | None = None,
+    force: bool = False,
     **overrides,
 ) -> Sequence:
     """``collisions`` successive collisions of one disk, its vibrations carried over.
+
+    Before the first collision the record's memory and the run's time are estimated: a
+    sequence that would not fit in memory is refused (:func:`check_bounce_memory`), one
+    estimated to take longer than :data:`restitution.budget.TIME_BOUND_S` too unless ``force``
+    (:func:`check_bounce_time`).
 
     Parameters
     ----------
@@ -168,19 +279,37 @@ def bounce(
         Modal state at the first reference instant; omitted: the disk at rest.
     progress : callable, optional
         Called with the number of collisions done after each.
+    force : bool
+        Run even when the estimated time exceeds the bound (never beyond the memory bound).
     """
-    if not isinstance(collisions, int | np.integer) or collisions < 1:
-        raise InputError(f"the number of collisions must be a positive integer, got {collisions}")
+    collisions = _check_collisions(collisions)
     if (gravity is None) == (walls_distance is None):
         raise InputError("give exactly one of gravity (c^2/R) and walls_distance (R)")
-    rows: list[tuple[CollisionResult, float, float]] = []
+    if gravity is not None and not (_is_real(gravity) and gravity > 0):
+        raise InputError(f"gravity must be a positive acceleration in c^2/R, got {gravity!r}")
+    if walls_distance is not None and not (_is_real(walls_distance) and walls_distance > 2):
+        raise InputError(
+            f"the walls' distance must exceed the disk's diameter 2 R, got {walls_distance!r}"
+        )
+    check_bounce_memory(collisions)
+    check_bounce_time(modes, v, alpha, collisions, settings, force=force, **overrides)
+    # Only the numbers of the record are kept, never the collision results (their arrays
+    # grow with the modes): the memory of a sequence is bounce_bytes_per_collision().
+    keys = ("v", "epsilon", "vibration_before", "vibration_after", "contact_time",
+            "energy_drift", "time", "x_start", "x_end", "t_end")  # fmt: skip
+    rows: dict[str, list] = {k: [] for k in keys}
     flights: list[float] = []
     clock = 0.0
     speed, state = v, initial
     for k in range(collisions):
         x0 = start_position(modes, speed, alpha, settings)
         r = collide(modes, speed, alpha, settings, initial=state, **overrides)
-        rows.append((r, x0, clock))
+        e_unit = 0.5 * math.pi * r.v**2
+        record = (r.v, r.epsilon, r.mode_energy_before.sum() * e_unit,
+                  r.mode_energy_after.sum() * e_unit, r.contact_time, r.energy_drift, clock, x0,
+                  r.final_x0, r.t_end)  # fmt: skip
+        for key, value in zip(keys, record, strict=True):
+            rows[key].append(value)
         if progress is not None:
             progress(k + 1)
         if k == collisions - 1:
@@ -190,27 +319,13 @@ def bounce(
         flights.append(h.flight_time)
         clock += r.t_end + h.flight_time
         speed, state = h.v, (h.Q, h.P)
-    e_unit = [0.5 * math.pi * r.v**2 for r, _, _ in rows]
     return Sequence(
         gravity=gravity,
         walls_distance=walls_distance,
         alpha=float(alpha),
         n_modes=len(modes),
-        v=np.array([r.v for r, _, _ in rows]),
-        epsilon=np.array([r.epsilon for r, _, _ in rows]),
-        vibration_before=np.array(
-            [r.mode_energy_before.sum() * e for (r, _, _), e in zip(rows, e_unit, strict=True)]
-        ),  # fmt: skip
-        vibration_after=np.array(
-            [r.mode_energy_after.sum() * e for (r, _, _), e in zip(rows, e_unit, strict=True)]
-        ),  # fmt: skip
-        contact_time=np.array([r.contact_time for r, _, _ in rows]),
-        energy_drift=np.array([r.energy_drift for r, _, _ in rows]),
-        time=np.array([c for _, _, c in rows]),
         flight_time=np.array([*flights, math.nan]),
-        x_start=np.array([x for _, x, _ in rows]),
-        x_end=np.array([r.final_x0 for r, _, _ in rows]),
-        t_end=np.array([r.t_end for r, _, _ in rows]),
+        **{k: np.array(rows[k]) for k in keys},
     )
 
 
