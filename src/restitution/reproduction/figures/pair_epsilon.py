@@ -142,12 +142,12 @@ def plot(curves: tuple[PairCurve, ...], path=None, nu: float = 0.33, notes=()):
     left.set_title(f"two disks of one material, nu_2d = {nu:g}", fontsize=10)
     left.legend(fontsize=7, loc="lower left")
     right.set_xscale("log")
-    right.set_ylim(0, 0.6)
+    right.set_ylim(0, 1)
     right.axhline(0.5, color="0.6", lw=0.5)
     right.set_xlabel("relative speed w [c]")
     right.set_ylabel("share of the lost energy in the small disk")
     right.set_title(f"one collision per speed, alpha delta = {SHARE_PRODUCT:g}", fontsize=10)
-    right.legend(fontsize=7, loc="upper right")
+    right.legend(fontsize=7, loc="upper left")
     add_notes(fig, ["left: the shipped laws (bands: their errors; hollow: not every "
                     "extrapolation check passed); right: finite N and alpha, not extrapolated",
                     *notes])  # fmt: skip
