@@ -363,7 +363,7 @@ def test_shipped_pair_reference_has_provenance_and_the_asked_points():
     # The judge takes pair points with the law of their pair.
     law = type("Flat", (), {"epsilon": lambda self, v: 0.9, "epsilon_err": lambda self, v: 0.01})
     judged = judge_law(load_pair_reference(partner=BIDISPERSE), law())
-    assert len(judged.points) == 3
+    assert len(judged.points) == 4
 
 
 # -- against the modal pair (slow) --------------------------------------------------------

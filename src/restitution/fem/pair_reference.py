@@ -69,11 +69,13 @@ PAIR_REFERENCE_POINTS = (
     (0.33, Partner(1.4), 0.6, 1),
     (0.33, Partner(2.0), 0.2, 1),
     (0.9, Partner(1.4), 0.2, 1),
+    (0.33, Partner(1.4), 0.01, 1),
 )
 """``(nu, partner, w, first level)`` of the shipped reference: one material (the partner's
 ``nu`` is the first disk's), radius ratio 1.4 (the bidisperse packings' ratio) at ``w = 0.2`` and
-``0.6``, ratio 2 at ``w = 0.2``, and ``nu = 0.9`` at ratio 1.4, ``w = 0.2``. Levels 1-3, as for
-the disk on the wall at ``v >= 0.1`` (level 0 is not asymptotic there)."""
+``0.6``, ratio 2 at ``w = 0.2``, ``nu = 0.9`` at ratio 1.4, ``w = 0.2``, and a slow point, ratio
+1.4 at ``w = 0.01`` (535 s). Levels 1-3, as for the disk on the wall at ``v >= 0.01`` (level 0 is
+not asymptotic at ``w = 0.2``)."""
 
 
 def fem_pair_code_version() -> str:
