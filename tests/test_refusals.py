@@ -85,16 +85,21 @@ def test_the_library_refuses_before_drawing(machine, no_integration):
 
 def test_a_small_ensemble_is_unchanged():
     """Regression values: this package's own earlier output (commit fee1dd9, before the memory
-    check), not an independent reference. The check must not change how states are drawn."""
+    check), not an independent reference. The check must not change how states are drawn: a
+    changed draw moves these numbers at order one. They are compared to 1e-12 relative, not bit
+    for bit: modes computed afresh (a clean clone's empty mode cache) and modes from an older
+    cache differ in the last bits, which moved epsilon by 1.4e-14 (measured on a clean clone)."""
     ms = get_modes(0.33, count=10)
     e0 = float(kinetic_energy(ms, 0.1))
     ens = thermal_ensemble(ms, 0.1, 500.0, 0.1 * e0, 4, seed=7)
     earlier = ["0x1.032295d89b749p+0", "0x1.b3ba7c4bc18d1p-1", "0x1.9dccfbdd0c8f2p-1",
                "0x1.883f6eef89cb3p-1"]  # fmt: skip
-    assert [x.hex() for x in ens.epsilon.tolist()] == earlier
+    np.testing.assert_allclose(ens.epsilon, [float.fromhex(x) for x in earlier], rtol=1e-12)
     before = ["0x1.8ce3d8bdbf382p-1", "0x1.7c592497f35acp-1", "0x1.d6a3bb0770124p-1",
               "0x1.a39194ca554ebp-1"]  # fmt: skip
-    assert [x.hex() for x in ens.mode_energy_before.tolist()] == before
+    np.testing.assert_allclose(
+        ens.mode_energy_before, [float.fromhex(x) for x in before], rtol=1e-12
+    )
 
 
 # -- bounce ----------------------------------------------------------------------------------
@@ -167,8 +172,9 @@ def test_a_short_bounce_is_unchanged():
         "x_end": ["-0x1.20d6773db7414p+0", "-0x1.2d56e581d8a72p+0", "-0x1.2a2c7e847b712p+0"],
         "t_end": ["0x1.b34d6a161e23ap+2", "0x1.da86b09020acap+2", "0x1.acd14cd597a2dp+2"],
     }  # fmt: skip
-    for key, values in earlier.items():
-        assert [x.hex() for x in getattr(seq, key).tolist()] == values, key
+    for key, values in earlier.items():  # to round-off of the modes (see the ensemble's test)
+        expected = [float.fromhex(x) for x in values]
+        np.testing.assert_allclose(getattr(seq, key), expected, rtol=1e-12, err_msg=key)
 
 
 # -- workers ---------------------------------------------------------------------------------
