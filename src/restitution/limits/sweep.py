@@ -187,6 +187,22 @@ class SweepSettings:
             **({} if self.partner is None else {"partner": self.partner.to_dict()}),
         }
 
+    def point(self, nu: float, v: float, alpha: float, n_modes: int) -> PointSpec:
+        """The store key of one collision of this sweep: ``nu``, speed ``v`` (``c``), wall
+        ``alpha`` (``1/R``) and ``n_modes`` with the sweep's solver settings, body and
+        partner."""
+        return PointSpec(
+            nu,
+            v,
+            alpha,
+            n_modes,
+            self.select,
+            self.integrator,
+            self.options,
+            self.geometry,
+            self.partner,
+        )
+
     def alphas_at(
         self, v: float, alphas: Iterable[float] | None = None, *, nu: float | None = None
     ) -> tuple[float, ...]:
@@ -293,17 +309,7 @@ def grid(
     vs = settings.velocities if velocities is None else tuple(velocities)
     ns = settings.n_modes if n_modes is None else tuple(n_modes)
     return [
-        PointSpec(
-            nu,
-            v,
-            a,
-            n,
-            settings.select,
-            settings.integrator,
-            settings.options,
-            settings.geometry,
-            settings.partner,
-        )
+        settings.point(nu, v, a, n)
         for nu in nus
         for n in ns
         for v in vs
@@ -651,17 +657,7 @@ def load_grid(
     missing, failures = [], []
     for i, a in enumerate(als):
         for j, n in enumerate(ns):
-            spec = PointSpec(
-                nu,
-                v,
-                a,
-                n,
-                settings.select,
-                settings.integrator,
-                settings.options,
-                settings.geometry,
-                settings.partner,
-            )
+            spec = settings.point(nu, v, a, n)
             row = store.get(spec)
             if row is None:
                 missing.append(spec)

@@ -170,16 +170,13 @@ def sweep_contact_times(
     points : tuple of (v, alpha, N)
         Where each point came from.
     """
-    from restitution.limits.store import PointSpec
-
     vs, taus, where = [], [], []
     n = max(settings.n_modes)
     for v in settings.velocities:
         if v > v_max:
             continue
         alpha = max(settings.alphas_at(v))
-        spec = PointSpec(nu, v, alpha, n, settings.select, settings.integrator, settings.options)
-        row = store.get(spec)
+        row = store.get(settings.point(nu, v, alpha, n))
         if row is not None and row.ok and math.isfinite(row.contact_time):
             vs.append(v)
             taus.append(row.contact_time)
