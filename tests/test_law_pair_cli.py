@@ -385,3 +385,24 @@ def test_law_is_quiet_after_the_command_and_outside_says_the_served_speeds(cli):
     code, out, _ = cli(*args, "--json")
     outside = json.loads(out)["points"][0]
     assert outside["status"] == "outside" and f"{1e-4 * c:.4g} m/s" in outside["note"]
+
+
+def test_export_without_a_closed_form_still_writes_the_table_and_the_code(
+    cli, tmp_path, monkeypatch
+):
+    """When no three-parameter form follows the points within their errors, the export keeps
+    the table, the C header and the Fortran (they evaluate the law's table) and says why."""
+    from restitution.errors import RestitutionError
+    from restitution.laws import exports
+
+    def refuse(s):
+        raise RestitutionError("no run of 4 points follows the form")
+
+    monkeypatch.setattr(exports, "fit_closed_form", refuse)
+    code, out, err = cli("law", "--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--geometry",
+                         "cylinder", "--against", "wall", "--speed", "100", "--export",
+                         str(tmp_path / "x"))  # fmt: skip
+    assert code == 0, err
+    names = sorted(p.name for p in (tmp_path / "x").iterdir())
+    assert names == ["epsilon.csv", "epsilon.f90", "epsilon.h", "epsilon_table.txt"]
+    assert "no closed form written: no run of 4 points" in err

@@ -284,22 +284,31 @@ def _identical(E, nu, rho, geometry, path):
 def _export(s, constant, out: Path) -> list[Path]:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``), the snippets into ``out``."""
+    from restitution.errors import RestitutionError
     from restitution.laws import exports
 
     out.mkdir(parents=True, exist_ok=True)
-    fit = exports.fit_closed_form(s)
+    # The three-parameter form exists only where it follows the points within their errors;
+    # the C and Fortran evaluate the law's table either way.
+    try:
+        fit = exports.fit_closed_form(s)
+    except RestitutionError as exc:
+        fit = None
+        note(f"note: no closed form written: {exc}")
     stem = "epsilon"
     written = [
         exports.write_table(s, out / f"{stem}_table.txt"),
         exports.write_csv(s, out / f"{stem}.csv"),
     ]
-    fit_path = out / f"{stem}_closed_form.json"
-    atomic.write_text(fit_path, json.dumps(fit.to_dict(), indent=1) + "\n")
+    if fit is not None:
+        fit_path = out / f"{stem}_closed_form.json"
+        atomic.write_text(fit_path, json.dumps(fit.to_dict(), indent=1) + "\n")
+        written.append(fit_path)
     header = out / f"{stem}.h"
     atomic.write_text(header, exports.c_header(s, fit))
     fortran = out / f"{stem}.f90"
     atomic.write_text(fortran, exports.fortran_include(s, fit))
-    written += [fit_path, header, fortran]
+    written += [header, fortran]
     if constant is not None:
         for name, func in (
             ("lammps.in", exports.lammps_snippet),

@@ -10,13 +10,18 @@ speed means (wall or two grains), ``c``, the law's source and the package versio
   between ``[v, e]`` pairs (AcuTrace style); the CSV adds ``v_over_c`` and the status.
 * :func:`fit_closed_form`: the form ``epsilon(w) = 1 - a x^p / (1 + b x^p)``, ``x = w / (k c)``,
   fitted to the computed points (weighted by their errors), with covariance, maximum deviation
-  and validity range; :func:`c_header` and :func:`fortran_include` evaluate it.
+  and the range where it follows every point within its error (and only there).
+* :func:`pchip_table`: the law as a monotone piecewise-cubic table in m/s, which
+  :func:`c_header` (C99) and :func:`fortran_include` (Fortran 2003) evaluate on the computed
+  speeds, returning :data:`OUTSIDE` (``-1``) outside them; their headers state the range and
+  the maximum deviation from the law in its error bars.
   Why this form: ``epsilon(0) = 1`` (the quasistatic limit), a power law ``1 - epsilon ~ a x^p``
   at small speeds (Rayleigh's estimate, paper section 5, gives a power of the speed), a
   saturation at large speeds through ``b``, three parameters, and one line of C.
 * :func:`constant_at` (epsilon at a reference speed) and :func:`maxwell_constant` (averaged over
   the impact speeds of a gas at a granular temperature): one number for codes that take a
-  constant per pair, with snippets for LAMMPS ``pair_style granular`` (:func:`lammps_snippet`),
+  constant per pair, with snippets for LAMMPS ``pair_style granular`` or, against a wall,
+  ``fix wall/gran granular`` (:func:`lammps_snippet`),
   LIGGGHTS, MercuryDPM and YADE.
 * :func:`type_pair_constants`: the constants of a bidisperse packing of one material (type 1 the
   small grain, type 2 the large): 1-1 and 2-2 from the law of identical grains, 1-2 from the
@@ -33,10 +38,12 @@ import csv
 import datetime
 import math
 import os
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from scipy.interpolate import PchipInterpolator
 from scipy.optimize import curve_fit
 
 from restitution import atomic
@@ -47,8 +54,10 @@ from restitution.status import Status
 
 __all__ = [
     "SAME_SIZE_NOTE",
+    "OUTSIDE",
     "ClosedForm",
     "Constant",
+    "PchipTable",
     "TypePairs",
     "c_header",
     "constant_at",
@@ -59,6 +68,7 @@ __all__ = [
     "lammps_snippet",
     "maxwell_constant",
     "mercurydpm_snippet",
+    "pchip_table",
     "speed_table",
     "type_pair_constants",
     "write_csv",
@@ -195,14 +205,15 @@ class ClosedForm:
     speed_scale_m_s : float
         ``k c``, m/s.
     max_deviation : float
-        Largest ``|form - epsilon|`` over the fitted points.
+        Largest ``|form - epsilon|`` over the points in :attr:`valid_m_s`.
     max_deviation_sigma : float
-        Largest ``|form - epsilon| / epsilon_err`` over the fitted points.
+        Largest ``|form - epsilon| / epsilon_err`` over those points, at most 1.
     chi2_dof : float
         ``chi^2`` per degree of freedom of the weighted fit.
     valid_m_s : tuple of float
-        Fitted speeds ``(w_min, w_max)`` in m/s. The form has ``epsilon(0) = 1`` built in, but
-        it is validated only on ``[w_min, w_max]``; outside, it is a guess.
+        ``(w_min, w_max)`` in m/s: the range of computed points the form follows within their
+        errors (:func:`fit_closed_form`). Outside it the form is not valid: it misses the law
+        by more than the errors, or the law has no points there.
     """
 
     a: float
@@ -231,6 +242,9 @@ class ClosedForm:
     def to_dict(self) -> dict:
         return {
             "form": "epsilon(w) = 1 - a x^p / (1 + b x^p), x = w / speed_scale_m_s",
+            "valid": "only for valid_m_s[0] <= w <= valid_m_s[1] (m/s), where it follows every "
+            "computed point within its error (max_deviation_sigma <= 1); elsewhere use the "
+            "table (epsilon.h, epsilon.f90, epsilon_table.txt)",
             "a": self.a,
             "b": self.b,
             "p": self.p,
@@ -252,35 +266,73 @@ def _decreasing_tail(eps: np.ndarray) -> int:
     return k
 
 
+_SIGMA_FLOOR = 1e-12
+"""Smallest error bar a point is weighted with (a zero error bar would divide by zero)."""
+
+
+def _fit(v: np.ndarray, eps: np.ndarray, sigma: np.ndarray, p0) -> np.ndarray:
+    popt, _ = curve_fit(_form, v, eps, p0=p0, sigma=sigma, absolute_sigma=True, maxfev=20000)
+    return popt
+
+
 def fit_closed_form(s: SILaw) -> ClosedForm:
-    """Fit :class:`ClosedForm` to the law's computed points, weighted by their errors.
+    """Fit :class:`ClosedForm` to the law's computed points, weighted by their errors, on the
+    widest range of speeds where it follows every point within its error bar.
 
     The form falls monotonically with the speed; the two-dimensional law does not (it has a
-    maximum near ``v = 0.002 - 0.02 c``, docs/results.md). The fit therefore takes the points
-    from the law's last maximum up, and its validity range says so: below it, use the table.
+    maximum near ``v = 0.002 - 0.02 c``, docs/results.md), so the fit starts at the law's last
+    maximum. Three parameters do not follow the shipped laws to their error bars over that
+    whole tail: the range is then narrowed, one end at a time (the end point that misses more
+    goes), and the form refitted, until every point left is within ``1 sigma``
+    (:attr:`ClosedForm.max_deviation_sigma` ``<= 1``). ``valid_m_s`` is that range; outside it,
+    use :func:`pchip_table` (what :func:`c_header` and :func:`fortran_include` evaluate).
+
+    Raises
+    ------
+    InputError
+        For a law with fewer than 4 points on its decreasing tail.
+    RestitutionError
+        When the form fits no range of 4 or more points within their errors, or has a pole
+        inside the range it fits.
     """
-    v = np.asarray(s.law.v, dtype=float)
-    eps = np.asarray(s.law.epsilon_points, dtype=float)
-    err = np.asarray(s.law.epsilon_err_points, dtype=float)
-    start = _decreasing_tail(eps)
-    v, eps, err = v[start:], eps[start:], err[start:]
-    if v.size < 4:
-        raise InputError(f"a three-parameter fit needs at least 4 points, the law has {v.size}")
-    sigma = np.maximum(err, 1e-6)
-    try:
-        popt, pcov = curve_fit(
-            _form, v, eps, p0=(1.0, 0.0, 0.8), sigma=sigma, absolute_sigma=True, maxfev=20000
-        )
-    except (RuntimeError, ValueError) as exc:
-        raise RestitutionError(f"the closed form did not fit the law's points: {exc}") from exc
+    v_all = np.asarray(s.law.v, dtype=float)
+    eps_all = np.asarray(s.law.epsilon_points, dtype=float)
+    sig_all = np.maximum(np.asarray(s.law.epsilon_err_points, dtype=float), _SIGMA_FLOOR)
+    lo, hi = _decreasing_tail(eps_all), v_all.size
+    if hi - lo < 4:
+        raise InputError(f"a three-parameter fit needs at least 4 points, the law has {hi - lo}")
+    p0 = (1.0, 0.0, 0.8)
+    while True:
+        v, eps, sigma = v_all[lo:hi], eps_all[lo:hi], sig_all[lo:hi]
+        try:
+            popt = _fit(v, eps, sigma, p0)
+        except (RuntimeError, ValueError) as exc:
+            raise RestitutionError(f"the closed form did not fit the law's points: {exc}") from exc
+        a, b, p = (float(x) for x in popt)
+        if b < 0 and p > 0 and (-1.0 / b) ** (1.0 / p) <= v[-1]:
+            raise RestitutionError(
+                f"the closed form fitted to the law has a pole at v = {(-1.0 / b) ** (1.0 / p):.3g}"
+                " c inside the computed range; use the table instead"
+            )
+        z = np.abs(_form(v, *popt) - eps) / sigma
+        if np.all(np.isfinite(z)) and z.max() <= 1.0:
+            break
+        if hi - lo <= 4:
+            raise RestitutionError(
+                "the closed form follows no range of 4 or more computed points within their "
+                "errors; use the table (pchip_table, epsilon.h)"
+            )
+        # Drop the end that misses more (a twentieth of the points at once on long laws).
+        step = max(1, min((hi - lo - 4), (hi - lo) // 20))
+        if z[:step].max() >= z[-step:].max():
+            lo += step
+        else:
+            hi -= step
+        p0 = tuple(popt) if np.all(np.isfinite(popt)) else p0
+    popt, pcov = curve_fit(_form, v, eps, p0=popt, sigma=sigma, absolute_sigma=True, maxfev=20000)
     a, b, p = (float(x) for x in popt)
-    if b < 0 and p > 0 and (-1.0 / b) ** (1.0 / p) <= v[-1]:
-        raise RestitutionError(
-            f"the closed form fitted to the law has a pole at v = {(-1.0 / b) ** (1.0 / p):.3g} c "
-            "inside the computed range; use the table instead"
-        )
     resid = _form(v, *popt) - eps
-    chi2_dof = float(np.sum((resid / sigma) ** 2) / (v.size - 3))
+    chi2_dof = float(np.sum((resid / sigma) ** 2) / max(v.size - 3, 1))
     return ClosedForm(
         a=a,
         b=b,
@@ -294,18 +346,102 @@ def fit_closed_form(s: SILaw) -> ClosedForm:
     )
 
 
-def _fit_comment(s: SILaw, f: ClosedForm) -> list[str]:
-    da, db, dp = f.errors
-    return [
+# -- the table that C and Fortran evaluate -----------------------------------------------------
+
+
+OUTSIDE = -1.0
+"""What the C and Fortran functions return outside the table's range (and for a NaN speed):
+epsilon is never negative, so ``-1`` cannot be mistaken for a value. No extrapolation."""
+
+
+@dataclass(frozen=True)
+class PchipTable:
+    """The law as a monotone piecewise-cubic table in m/s: what :func:`c_header` and
+    :func:`fortran_include` evaluate.
+
+    Between knots ``w_i`` the value is the cubic Hermite polynomial through ``(w_i, e_i)`` and
+    ``(w_{i+1}, e_{i+1})`` with slopes ``d_i``, ``d_{i+1}``: Fritsch-Carlson / PCHIP slopes
+    (:class:`scipy.interpolate.PchipInterpolator`), monotone wherever the points are, the
+    interpolant the law itself uses between its computed points.
+
+    Attributes
+    ----------
+    w_m_s : numpy.ndarray
+        Knots: the computed speeds, m/s.
+    epsilon : numpy.ndarray
+        The law's points at the knots.
+    slope_s_m : numpy.ndarray
+        ``d epsilon / d w`` at the knots, s/m.
+    max_deviation : float
+        Largest ``|table - law|`` on the knots and 16 speeds inside every interval.
+    max_deviation_sigma : float
+        The same in units of the law's error there (:meth:`SILaw.epsilon_err`).
+    """
+
+    w_m_s: np.ndarray
+    epsilon: np.ndarray
+    slope_s_m: np.ndarray
+    max_deviation: float
+    max_deviation_sigma: float
+
+    @property
+    def range_m_s(self) -> tuple[float, float]:
+        """``(w_min, w_max)``, m/s: the table's range (the law's computed speeds)."""
+        return float(self.w_m_s[0]), float(self.w_m_s[-1])
+
+    def __call__(self, speed_m_s):
+        """The table at speed(s) ``w`` (m/s) as C and Fortran evaluate it: :data:`OUTSIDE`
+        outside :attr:`range_m_s`."""
+        w = np.atleast_1d(np.asarray(speed_m_s, dtype=float))
+        x, y, d = self.w_m_s, self.epsilon, self.slope_s_m
+        inside = (w >= x[0]) & (w <= x[-1])
+        i = np.clip(np.searchsorted(x, np.where(inside, w, x[0]), side="right") - 1, 0, x.size - 2)
+        h = x[i + 1] - x[i]
+        t = (np.where(inside, w, x[0]) - x[i]) / h
+        val = (
+            (1 + 2 * t) * (1 - t) ** 2 * y[i]
+            + t * (1 - t) ** 2 * h * d[i]
+            + t**2 * (3 - 2 * t) * y[i + 1]
+            - t**2 * (1 - t) * h * d[i + 1]
+        )
+        out = np.where(inside, val, OUTSIDE)
+        return float(out[0]) if np.ndim(speed_m_s) == 0 else out
+
+
+def pchip_table(s: SILaw) -> PchipTable:
+    """:class:`PchipTable` of the law over its computed speeds, with its measured deviation."""
+    w = np.asarray(s.law.v, dtype=float) * s.speed_scale_m_s
+    eps = np.asarray(s.law.epsilon_points, dtype=float)
+    slope = PchipInterpolator(w, eps).derivative()(w)
+    t = PchipTable(w, eps, slope, 0.0, 0.0)
+    inner = np.linspace(0.0, 1.0, 18)[1:-1]
+    probe = np.concatenate([w, (w[:-1, None] + np.diff(w)[:, None] * inner).ravel()])
+    probe = probe[(probe >= w[0]) & (probe <= w[-1])]
+    dev = np.abs(t(probe) - s.epsilon(probe))
+    err = np.maximum(s.epsilon_err(probe), _SIGMA_FLOOR)
+    return PchipTable(w, eps, slope, float(dev.max()), float((dev / err).max()))
+
+
+def _table_comment(s: SILaw, t: PchipTable, f: ClosedForm | None) -> list[str]:
+    lo, hi = t.range_m_s
+    lines = [
         *_header(s),
-        "closed form: epsilon(w) = 1 - a x^p / (1 + b x^p), x = w / SPEED_SCALE (w in m/s)",
-        f"a = {f.a:.6g} +- {da:.2g}, b = {f.b:.6g} +- {db:.2g}, p = {f.p:.6g} +- {dp:.2g} "
-        f"(covariance in the JSON export)",
-        f"max deviation from the computed points: {f.max_deviation:.3g} "
-        f"({f.max_deviation_sigma:.3g} of their error bars); chi2/dof = {f.chi2_dof:.3g}",
-        f"valid for 0 <= w <= {f.valid_m_s[1]:.6g} m/s (fitted {f.valid_m_s[0]:.6g} ... "
-        f"{f.valid_m_s[1]:.6g} m/s)",
+        f"epsilon(w): monotone piecewise-cubic (PCHIP) table of the law's {t.w_m_s.size} "
+        f"computed points, w in m/s, valid for {lo:.6g} <= w <= {hi:.6g} m/s only",
+        f"max deviation from the law over that range: {t.max_deviation:.2g} "
+        f"({t.max_deviation_sigma:.2g} sigma; sigma the law's error there)",
+        f"outside that range (and for a NaN speed) it returns {OUTSIDE:g}: no extrapolation",
     ]
+    if f is not None:
+        da, db, dp = f.errors
+        lines += [
+            "three-parameter closed form (epsilon_closed_form.json): epsilon(w) = 1 - a x^p / "
+            f"(1 + b x^p), x = w / {f.speed_scale_m_s:.6g} m/s, a = {f.a:.6g} +- {da:.2g}, "
+            f"b = {f.b:.6g} +- {db:.2g}, p = {f.p:.6g} +- {dp:.2g}",
+            f"  within the points' errors only on {f.valid_m_s[0]:.6g} ... {f.valid_m_s[1]:.6g} "
+            f"m/s (max deviation {f.max_deviation_sigma:.2g} sigma there); not valid elsewhere",
+        ]
+    return lines
 
 
 def _c_ident(name: str) -> str:
@@ -315,46 +451,125 @@ def _c_ident(name: str) -> str:
     return out
 
 
-def c_header(s: SILaw, f: ClosedForm, name: str = "restitution") -> str:
-    """A C99 header defining ``double NAME_epsilon(double w_m_s)`` (the closed form)."""
+def _rows(values: np.ndarray, fmt, per_line: int, indent: str, sep: str) -> list[str]:
+    items = [fmt(float(x)) for x in values]
+    return [
+        indent + ", ".join(items[i : i + per_line]) + sep for i in range(0, len(items), per_line)
+    ]
+
+
+def c_header(
+    s: SILaw, f: ClosedForm | None = None, name: str = "restitution", *, table=None
+) -> str:
+    """A C99 header defining ``double NAME_epsilon(double w_m_s)``: the law's PCHIP table
+    (:func:`pchip_table`), ``NAME_OUTSIDE`` (``-1``) outside ``[NAME_W_MIN_M_S,
+    NAME_W_MAX_M_S]``. ``f`` (the closed form) only adds its coefficients to the comment."""
+    t = table if table is not None else pchip_table(s)
     n = _c_ident(name)
-    guard = n.upper() + "_EPSILON_H"
-    lines = ["/*", *(f" * {line}" for line in _fit_comment(s, f)), " */"]
+    up = n.upper()
+    lines = ["/*", *(f" * {line}" for line in _table_comment(s, t, f)), " */"]
+    arrays = []
+    for suffix, values in (("W", t.w_m_s), ("E", t.epsilon), ("D", t.slope_s_m)):
+        rows = _rows(values, repr, 4, "    ", ",")
+        rows[-1] = rows[-1][:-1]
+        arrays += [f"static const double {n}_tab_{suffix.lower()}[{up}_N] = {{", *rows, "};"]
     lines += [
-        f"#ifndef {guard}",
-        f"#define {guard}",
-        "#include <math.h>",
-        f"#define {n.upper()}_SPEED_SCALE_M_S {f.speed_scale_m_s!r}",
-        f"#define {n.upper()}_W_MAX_M_S {f.valid_m_s[1]!r}",
-        "/* coefficient of restitution at impact speed w_m_s (m/s; see 'partner' above) */",
+        f"#ifndef {up}_EPSILON_H",
+        f"#define {up}_EPSILON_H",
+        f"#define {up}_N {t.w_m_s.size}",
+        f"#define {up}_W_MIN_M_S {t.range_m_s[0]!r}",
+        f"#define {up}_W_MAX_M_S {t.range_m_s[1]!r}",
+        f"#define {up}_OUTSIDE ({OUTSIDE!r})",
+        "/* knots (m/s), epsilon there, d epsilon / d w there (s/m) */",
+        *arrays,
+        "/* coefficient of restitution at impact speed w_m_s (m/s; see 'partner' above);",
+        f"   {up}_OUTSIDE outside [{up}_W_MIN_M_S, {up}_W_MAX_M_S] or for NaN */",
         f"static inline double {n}_epsilon(double w_m_s)",
         "{",
-        f"    const double xp = pow(w_m_s / {n.upper()}_SPEED_SCALE_M_S, {f.p!r});",
-        f"    return 1.0 - {f.a!r} * xp / (1.0 + {f.b!r} * xp);",
+        f"    int lo = 0, hi = {up}_N - 1;",
+        "    double h, t;",
+        f"    if (!(w_m_s >= {up}_W_MIN_M_S && w_m_s <= {up}_W_MAX_M_S)) return {up}_OUTSIDE;",
+        "    while (hi - lo > 1) {",
+        "        const int mid = (lo + hi) / 2;",
+        f"        if ({n}_tab_w[mid] <= w_m_s) lo = mid; else hi = mid;",
+        "    }",
+        f"    h = {n}_tab_w[hi] - {n}_tab_w[lo];",
+        f"    t = (w_m_s - {n}_tab_w[lo]) / h;",
+        f"    return (1.0 + 2.0 * t) * (1.0 - t) * (1.0 - t) * {n}_tab_e[lo]",
+        f"        + t * (1.0 - t) * (1.0 - t) * h * {n}_tab_d[lo]",
+        f"        + t * t * (3.0 - 2.0 * t) * {n}_tab_e[hi]",
+        f"        - t * t * (1.0 - t) * h * {n}_tab_d[hi];",
         "}",
-        f"#endif /* {guard} */",
+        f"#endif /* {up}_EPSILON_H */",
         "",
     ]
     return "\n".join(lines)
+
+
+def _fortran_comment(line: str, width: int = 128) -> list[str]:
+    """``line`` in pieces of at most ``width`` characters, cut after ``, `` or ``; `` (free-form
+    Fortran allows 132 characters per line, comments included), then at spaces if need be."""
+    parts, cur = [], ""
+    for chunk in re.split(r"(?<=[,;] )", line):
+        if cur and len(cur) + len(chunk) > width:
+            parts.append(cur.rstrip())
+            cur = "  "
+        cur += chunk
+    parts.append(cur.rstrip())
+    out = []
+    for part in parts:
+        while len(part) > width:
+            cut = part.rfind(" ", 0, width)
+            cut = cut if cut > 2 else width
+            out.append(part[:cut])
+            part = "  " + part[cut:].lstrip()
+        out.append(part)
+    return out
 
 
 def _fortran_real(x: float) -> str:
     return f"{x:.17e}".replace("e", "d")
 
 
-def fortran_include(s: SILaw, f: ClosedForm, name: str = "restitution") -> str:
-    """A Fortran include file with ``pure function NAME_epsilon(w_m_s)`` (the closed form).
-
-    Include it after ``contains`` in a module or program.
-    """
+def fortran_include(
+    s: SILaw, f: ClosedForm | None = None, name: str = "restitution", *, table=None
+) -> str:
+    """A Fortran 90 include file with ``pure function NAME_epsilon(w_m_s)``: the law's PCHIP
+    table (:func:`pchip_table`), ``-1d0`` outside its range. Include it after ``contains`` in a
+    module or program (one with ``implicit none``). ``f`` only adds its coefficients to the
+    comment."""
+    t = table if table is not None else pchip_table(s)
     n = _c_ident(name)
-    lines = [f"! {line}" for line in _fit_comment(s, f)]
+    lines = [f"! {part}" for line in _table_comment(s, t, f) for part in _fortran_comment(line)]
     lines += [
         f"pure function {n}_epsilon(w_m_s) result(eps)",
+        "  implicit none",
         "  double precision, intent(in) :: w_m_s",
-        "  double precision :: eps, xp",
-        f"  xp = (w_m_s / {_fortran_real(f.speed_scale_m_s)})**{_fortran_real(f.p)}",
-        f"  eps = 1d0 - {_fortran_real(f.a)} * xp / (1d0 + {_fortran_real(f.b)} * xp)",
+        "  double precision :: eps, h, t",
+        "  integer :: lo, hi, mid",
+        f"  integer, parameter :: n = {t.w_m_s.size}",
+    ]
+    for arr, values in (("tw", t.w_m_s), ("te", t.epsilon), ("td", t.slope_s_m)):
+        rows = _rows(values, _fortran_real, 4, "    ", ", &")
+        rows[-1] = rows[-1][: -len(", &")] + " /)"
+        lines += [f"  double precision, parameter :: {arr}(n) = (/ &", *rows]
+    lines += [
+        f"  eps = {_fortran_real(OUTSIDE)}",
+        "  if (.not. (w_m_s >= tw(1) .and. w_m_s <= tw(n))) return",
+        "  lo = 1",
+        "  hi = n",
+        "  do while (hi - lo > 1)",
+        "    mid = (lo + hi) / 2",
+        "    if (tw(mid) <= w_m_s) then",
+        "      lo = mid",
+        "    else",
+        "      hi = mid",
+        "    end if",
+        "  end do",
+        "  h = tw(hi) - tw(lo)",
+        "  t = (w_m_s - tw(lo)) / h",
+        "  eps = (1d0 + 2d0 * t) * (1d0 - t)**2 * te(lo) + t * (1d0 - t)**2 * h * td(lo) &",
+        "    + t**2 * (3d0 - 2d0 * t) * te(hi) - t**2 * (1d0 - t) * h * td(hi)",
         f"end function {n}_epsilon",
         "",
     ]
@@ -709,31 +924,55 @@ def _particles(s: SILaw) -> str:
     )
 
 
+def _lammps_model(g, eps: float) -> str:
+    """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu``, epsilon as the
+    restitution coefficient, frictionless tangential model."""
+    return (
+        f"hertz/material {g.E:.8g} {eps:.8f} {g.nu:.8g} "
+        "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+    )
+
+
 def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
-    """Input lines for LAMMPS ``pair_style granular`` (GRANULAR package), SI units.
+    """Input lines for LAMMPS (GRANULAR package), SI units.
 
     Hertz contact with the material's 3D ``E`` and ``nu``; ``damping coeff_restitution`` makes
     LAMMPS take the second normal coefficient as the coefficient of restitution. Frictionless
-    tangential model; replace it with yours. One constant: ``pair_coeff * *``; a
-    :class:`TypePairs`: ``pair_coeff 1 1``, ``2 2`` and ``1 2`` (type 1 the small grains).
+    tangential model; replace it with yours.
+
+    * Two grains: ``pair_style granular`` with ``pair_coeff * *`` for one constant, or
+      ``pair_coeff 1 1``, ``2 2`` and ``1 2`` for a :class:`TypePairs` (type 1 the small
+      grains).
+    * A wall: ``fix wall/gran granular`` with the same model and a ``zplane`` wall at ``z = 0``
+      (replace the wall geometry with yours). ``pair_coeff`` does not act on walls: a grain
+      would pass through them. Grain-grain contacts need the law of two grains
+      (``--against grain``), not this constant.
     """
     g = s.grain
     consts = _constants(s, c)
+    head = [_comment(s, c, "#"), f"# {_particles(s)}"]
+    if s.against == "wall":
+        return "\n".join(
+            [
+                *head,
+                "# needs: units si, atom_style sphere, comm_modify vel yes",
+                "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
+                "wall); grain-grain contacts take the law of two grains (--against grain)",
+                "fix restitution_wall all wall/gran granular "
+                f"{_lammps_model(g, consts[1, 1].epsilon)} zplane 0.0 NULL",
+                "",
+            ]
+        )
     if len(consts) == 1:
         pairs, needs = {("*", "*"): consts[1, 1]}, ""
     else:
         pairs, needs = consts, ", create_box 2 (type 1 the small grains, type 2 the large)"
     return "\n".join(
         [
-            _comment(s, c, "#"),
-            f"# {_particles(s)}",
+            *head,
             f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
             "pair_style granular",
-            *(
-                f"pair_coeff {i} {j} hertz/material {g.E:.8g} {k.epsilon:.8f} {g.nu:.8g} "
-                "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
-                for (i, j), k in pairs.items()
-            ),
+            *(f"pair_coeff {i} {j} {_lammps_model(g, k.epsilon)}" for (i, j), k in pairs.items()),
             "",
         ]
     )
