@@ -263,12 +263,6 @@ def test_unknown_figure_format(cli, tmp_path):
     one_line_error(code, err, "unknown figure format", ".png")
 
 
-def test_output_into_a_missing_directory(cli, tmp_path):
-    target = tmp_path / "missing" / "m.csv"
-    code, _, err = cli("modes", "--count", "20", "--output", str(target))
-    one_line_error(code, err, "does not exist")
-
-
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
 def test_output_to_a_full_disk(cli):
     code, _, err = cli("modes", "--count", "20", "--output", "/dev/full")

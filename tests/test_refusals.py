@@ -6,6 +6,7 @@ machine's memory and cores are monkeypatched, so the numbers below do not depend
 machine the tests run on, and nothing is integrated or drawn before a refusal.
 """
 
+import json
 import math
 
 import numpy as np
@@ -238,3 +239,20 @@ def test_the_machine_is_read_from_the_standard_library():
     assert budget.format_bytes(1.5 * GIB) == "1.5 GiB" and budget.format_bytes(512) == "512 B"
     assert budget.format_duration(3600) == "1 h" and budget.format_duration(0.03) == "30 ms"
     assert budget.format_duration(90) == "1.5 min" and budget.format_duration(3e5) == "3.47 days"
+
+
+# -- output folders ------------------------------------------------------------------------------
+
+
+def test_output_files_get_their_folders_as_exports_do(cli, tmp_path):
+    """Issue 30: ``--export`` created folders but ``--output`` refused a missing one; one rule
+    now, and a file in the way of a folder is still refused in one line."""
+    target = tmp_path / "new" / "sub" / "modes.json"
+    code, _, err = cli("modes", "--nu", "0.33", "--count", "10", "--format", "json",
+                       "--output", str(target))  # fmt: skip
+    assert code == 0, err
+    assert len(json.loads(target.read_text())["modes"]) == 10
+    (tmp_path / "afile").write_text("x")
+    code, _, err = cli("modes", "--nu", "0.33", "--count", "10", "--format", "json",
+                       "--output", str(tmp_path / "afile" / "modes.json"))  # fmt: skip
+    one_line_error(code, err, "is a file, not a directory")

@@ -218,16 +218,17 @@ def writing(path: Path, option: str) -> Iterator[None]:
 
 
 def check_output_file(path: Path, option: str) -> None:
-    """Fail before any computation when ``path`` cannot be created or written."""
+    """Fail before any computation when ``path`` cannot be created or written; its folder is
+    created if missing, as :func:`check_output_dir` creates an output folder (one rule for
+    ``--output``, ``--out`` and ``--export``)."""
     if path.is_dir():
         raise OutputError(f"{option} {path} is a directory; give a file name")
     parent = path.parent
-    if not parent.is_dir():
-        raise OutputError(
-            f"{option} {path}: the directory {parent} does not exist; create it first"
-        )
+    if parent.exists() and not parent.is_dir():
+        raise OutputError(f"{option} {path}: {parent} is a file, not a directory")
     existed = path.exists()
     with writing(path, option):
+        parent.mkdir(parents=True, exist_ok=True)
         with open(path, "ab"):
             pass
     if not existed:
