@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Callable
 
 from restitution.errors import InputError
 
@@ -25,12 +26,15 @@ __all__ = [
     "TIME_BOUND_S",
     "available_memory",
     "check_memory",
+    "check_memory_total",
     "check_time",
+    "check_time_total",
     "collision_seconds",
     "cpu_count",
     "format_bytes",
     "format_duration",
     "memory_budget",
+    "named",
 ]
 
 MEMORY_SHARE = 0.5
@@ -105,7 +109,7 @@ def format_duration(seconds: float) -> str:
     return f"{seconds:.3g} s" if seconds >= 1 else f"{seconds * 1e3:.3g} ms"
 
 
-def _named(name: str, value) -> str:
+def named(name: str, value) -> str:
     """``--samples 5`` for an option, ``samples = 5`` for a parameter."""
     return f"{name} {value}" if name.startswith("-") else f"{name} = {value}"
 
@@ -137,15 +141,46 @@ def check_memory(
     InputError
         One line: the bytes needed and available, and the largest count that fits.
     """
-    need = fixed + value * per_item
+    return check_memory_total(
+        name,
+        value,
+        fixed + value * per_item,
+        f"{what} ({format_bytes(per_item)} per {item})",
+        lambda budget: _fit(budget - fixed, per_item, item),
+    )
+
+
+def check_memory_total(
+    name: str, value, need: float, what: str, fit: Callable[[float], str]
+) -> float:
+    """Refuse an input whose work needs ``need`` bytes beyond :func:`memory_budget`; returns
+    ``need``. The general form of :func:`check_memory`, for costs that are not a count times
+    a size (a mesh level, a speed).
+
+    Parameters
+    ----------
+    name, value
+        The input at fault as the caller knows it (``"--mesh-refine"``) and its value.
+    need : float
+        Estimated bytes.
+    what : str
+        What the memory holds and how it was estimated.
+    fit : callable
+        ``fit(budget)``: the largest (or smallest) value that fits in ``budget`` bytes, in
+        words (``"--mesh-refine 3 is the finest that fits"``).
+
+    Raises
+    ------
+    InputError
+        One line: the bytes needed and available, and what fits.
+    """
     available = available_memory()
     budget = MEMORY_SHARE * available
     if need > budget:
         raise InputError(
-            f"{_named(name, value)} needs about {format_bytes(need)} of memory for {what} "
-            f"({format_bytes(per_item)} per {item}), more than the {format_bytes(budget)} one "
-            f"run may use here ({MEMORY_SHARE:.0%} of the {format_bytes(available)} available "
-            f"now); {_fit(budget - fixed, per_item, item)}"
+            f"{named(name, value)} needs about {format_bytes(need)} of memory for {what}, "
+            f"more than the {format_bytes(budget)} one run may use here ({MEMORY_SHARE:.0%} "
+            f"of the {format_bytes(available)} available now); {fit(budget)}"
         )
     return need
 
@@ -183,13 +218,50 @@ def check_time(
     InputError
         One line: the estimated and allowed time, and the largest count that fits.
     """
+    return check_time_total(
+        name,
+        value,
+        value * per_item,
+        f"{format_duration(per_item)} per {item}: {what}",
+        lambda limit: _fit(limit, per_item, item),
+        force=force,
+        override=override,
+        bound=bound,
+    )
+
+
+def check_time_total(
+    name: str,
+    value,
+    need: float,
+    what: str,
+    fit: Callable[[float], str],
+    *,
+    force: bool,
+    override: str,
+    bound: float | None = None,
+) -> float:
+    """Refuse an input whose work would take ``need`` seconds beyond ``bound`` unless
+    ``force``; returns ``need``. The general form of :func:`check_time`, for costs that are
+    not a count times a duration (a mesh level, a speed).
+
+    Parameters
+    ----------
+    name, value, need, what : see :func:`check_memory_total` (``need`` in seconds)
+    fit : callable
+        ``fit(bound)``: what fits in ``bound`` seconds, in words; ``" in it"`` follows.
+    force, override, bound : see :func:`check_time`
+
+    Raises
+    ------
+    InputError
+        One line: the estimated and allowed time, what fits, and how to force.
+    """
     bound = TIME_BOUND_S if bound is None else bound
-    need = value * per_item
     if need > bound and not force:
         raise InputError(
-            f"{_named(name, value)} would take about {format_duration(need)} "
-            f"({format_duration(per_item)} per {item}: {what}), more than the "
-            f"{format_duration(bound)} bound of one run; {_fit(bound, per_item, item)} in it, "
-            f"or give {override} (it lifts the time bound, never the memory bound)"
+            f"{named(name, value)} would take about {format_duration(need)} ({what}), more "
+            f"than the {format_duration(bound)} bound of one run; {fit(bound)} in it, or give "
+            f"{override} (it lifts the time bound, never the memory bound)"
         )
     return need

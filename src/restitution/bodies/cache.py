@@ -24,7 +24,7 @@ from restitution._version import __version__
 from restitution.bodies.base import ModalBody
 from restitution.bodies.kinds import BodyKind, body_kind
 from restitution.bodies.material import Material, require_reduced
-from restitution.errors import InputError, RestitutionError
+from restitution.errors import InputError, RestitutionError, describe, is_integer, is_real
 
 __all__ = ["MAX_MODES", "CacheError", "cache_dir", "check_mode_request", "get_modes"]
 
@@ -67,30 +67,50 @@ def cache_dir() -> Path:
 
 def check_mode_request(
     nu: float, count: int | None, omega_max: float | None = None, geometry: str = "disk"
-) -> None:
-    """Refuse at once a mode request beyond the body's ``max_modes`` (directly or through
-    ``omega_max``).
+) -> int | None:
+    """Refuse at once a mode request of the wrong type, or beyond the body's ``max_modes``
+    (directly or through ``omega_max``).
+
+    Returns
+    -------
+    int or None
+        ``count`` as a Python ``int`` (a NumPy integer is one).
 
     Raises
     ------
     InputError
-        Saying what is feasible.
+        Saying what is allowed and feasible: ``count`` an integer (not a bool, a float or an
+        array), ``omega_max`` a number (``c/R``), ``nu`` in the body's range.
     """
     kind = body_kind(geometry)
+    nu = kind.check_nu(nu)
     limit = kind.max_modes
-    if count is not None and isinstance(count, int | np.integer) and count > limit:
+    if count is not None:
+        if not is_integer(count):
+            raise InputError(
+                f"count must be a positive integer (the number of modes), got {describe(count)}; "
+                "pass an int >= 1, e.g. count=100"
+            )
+        count = int(count)
+        if count > limit:
+            raise InputError(
+                f"{count} modes of the {geometry} are not feasible here: at most {limit} "
+                "(every collision step costs ~N); the paper uses up to 1800"
+            )
+    if omega_max is not None and not is_real(omega_max):
         raise InputError(
-            f"{count} modes of the {geometry} are not feasible here: at most {limit} "
-            "(every collision step costs ~N); the paper uses up to 1800"
+            f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
+            "finite float > 0, e.g. omega_max=40.0"
         )
     if omega_max is not None and math.isfinite(omega_max) and omega_max > 0:
-        expected = kind.weyl_count(float(omega_max), float(nu))
+        expected = kind.weyl_count(float(omega_max), nu)
         if expected > limit:
             raise InputError(
                 f"omega_max = {omega_max:g} c/R means about {expected:.3g} modes of the "
                 f"{geometry} (Weyl's law), more than the feasible {limit}; use omega_max below "
-                f"{kind.omega_for(limit, float(nu)):.0f}"
+                f"{kind.omega_for(limit, nu):.0f}"
             )
+    return count
 
 
 def _key(kind: BodyKind, nu: float, count: int | None, omega_max: float | None) -> str:
@@ -160,10 +180,21 @@ def get_modes(
         modes), :data:`restitution.bodies.kinds.GEOMETRIES`.
     use_cache : bool
         ``False`` bypasses the cache entirely.
+
+    Raises
+    ------
+    InputError
+        If an argument has the wrong type or range (:func:`check_mode_request`), or
+        ``use_cache`` is not a bool.
     """
     kind = body_kind(geometry)
     nu = kind.check_nu(require_reduced(material, "the modal path"))
-    check_mode_request(nu, count, omega_max, geometry)
+    count = check_mode_request(nu, count, omega_max, geometry)
+    if not isinstance(use_cache, bool | np.bool_):
+        raise InputError(
+            f"use_cache must be True or False, got {describe(use_cache)}; pass use_cache=False "
+            "to bypass the cache"
+        )
     if not use_cache:
         return kind.compute(nu, count=count, omega_max=omega_max)
     key = _key(kind, nu, count, omega_max)

@@ -26,7 +26,7 @@ from restitution.bodies.sphere import surface as sphere_surface
 from restitution.bodies.sphere.modes import _ALGORITHM_VERSION as _SPHERE_ALGORITHM
 from restitution.bodies.sphere.modes import SphereModes, compute_sphere_modes
 from restitution.bodies.sphere.modes import weyl_count as sphere_weyl_count
-from restitution.errors import InputError
+from restitution.errors import InputError, real
 
 __all__ = ["GEOMETRIES", "KINDS", "BodyKind", "body_kind"]
 
@@ -75,19 +75,14 @@ class BodyKind:
     units: dict[str, str]
 
     def check_nu(self, nu) -> float:
-        """``nu`` as a float if it lies in ``(nu_low, nu_high)``, else :class:`InputError`."""
-        if isinstance(nu, bool) or not isinstance(nu, int | float):
-            try:
-                nu = float(nu)
-            except (TypeError, ValueError):
-                raise InputError(
-                    f"the Poisson number of the {self.geometry} must be a number, got {nu!r}"
-                ) from None
-        nu = float(nu)
-        if not (math.isfinite(nu) and self.nu_low < nu < self.nu_high):
+        """``nu`` as a float if it is a number in ``(nu_low, nu_high)``, else
+        :class:`InputError` naming ``nu`` (a bool or a string is not a number)."""
+        allowed = f"in ({self.nu_low:g}, {self.nu_high:g})"
+        nu = real(nu, "nu", f"{allowed} (the Poisson number of the {self.geometry})")
+        if not self.nu_low < nu < self.nu_high:
             raise InputError(
-                f"the Poisson number of the {self.geometry} must lie in "
-                f"({self.nu_low:g}, {self.nu_high:g}), got {nu!r}"
+                f"the Poisson number nu of the {self.geometry} must lie {allowed}, got {nu!r}; "
+                f"pass nu {allowed}"
             )
         return nu
 

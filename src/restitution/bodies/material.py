@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
-from restitution.errors import InputError
+from restitution.errors import InputError, describe, is_real, real
 
 __all__ = ["Material", "MaterialError", "require_reduced"]
 
@@ -29,11 +29,10 @@ class MaterialError(InputError):
     """Raised for elastic constants outside their physical range."""
 
 
-def _check_finite(name: str, value: float) -> float:
-    value = float(value)
-    if not math.isfinite(value):
-        raise MaterialError(f"{name} must be a finite number, got {value!r}")
-    return value
+def _check_finite(name: str, value: float, allowed: str) -> float:
+    """``value`` as a float if it is a finite real number, else a one-line
+    :class:`MaterialError` that names ``name`` and its ``allowed`` range."""
+    return real(value, name, allowed, error=MaterialError)
 
 
 @dataclass(frozen=True)
@@ -63,9 +62,9 @@ class Material:
     rho: float = 1.0
 
     def __post_init__(self) -> None:
-        nu = _check_finite("nu", self.nu)
-        E = _check_finite("E", self.E)
-        rho = _check_finite("rho", self.rho)
+        nu = _check_finite("nu", self.nu, "in (-1, 1)")
+        E = _check_finite("E", self.E, "> 0")
+        rho = _check_finite("rho", self.rho, "> 0")
         if not -1.0 < nu < 1.0:
             raise MaterialError(
                 f"the two-dimensional Poisson number must lie in (-1, 1), got nu = {nu}"
@@ -108,33 +107,36 @@ class Material:
             (steel, thin disk: 5.2 km/s, the bar speed; long cylinder: 5.4 km/s, the plate
             speed ``sqrt(E / (rho (1 - nu^2)))``).
         """
-        E = _check_finite("E", E)
-        nu = _check_finite("nu", nu)
+        E = _check_finite("E", E, "> 0")
+        nu = _check_finite("nu", nu, "in (-1, 0.5]")
         if not -1.0 < nu <= 0.5:
             raise MaterialError(
                 f"the three-dimensional Poisson number must lie in (-1, 0.5], got nu = {nu}"
             )
         if E <= 0.0:
             raise MaterialError(f"Young's modulus must be positive, got E = {E}")
-        rho = _check_finite("rho", rho)
+        rho = _check_finite("rho", rho, "> 0")
         if rho <= 0.0:
             raise MaterialError(f"the density must be positive, got rho = {rho}")
+        if not (isinstance(plane, str) and plane in ("stress", "strain")):
+            raise MaterialError(
+                f"plane must be 'stress' (thin disk) or 'strain' (long cylinder), got "
+                f"{describe(plane)}"
+            )
         if plane == "stress":
             return cls(nu=nu, E=E, rho=rho)
-        if plane == "strain":
-            if nu == 0.5:
-                raise MaterialError(
-                    "plane strain with nu = 0.5 (incompressible) maps to nu_2d = 1, which is "
-                    "outside (-1, 1); use nu < 0.5"
-                )
-            return cls(nu=nu / (1.0 - nu), E=E / (1.0 - nu**2), rho=rho)
-        raise MaterialError(f"plane must be 'stress' or 'strain', got {plane!r}")
+        if nu == 0.5:
+            raise MaterialError(
+                "plane strain with nu = 0.5 (incompressible) maps to nu_2d = 1, which is "
+                "outside (-1, 1); use nu < 0.5"
+            )
+        return cls(nu=nu / (1.0 - nu), E=E / (1.0 - nu**2), rho=rho)
 
     @classmethod
     def from_moduli(cls, mu: float, K: float, rho: float = 1.0) -> Material:
         """Material from the 2D shear modulus ``mu`` and compression modulus ``K`` (eq. 4)."""
-        mu = _check_finite("mu", mu)
-        K = _check_finite("K", K)
+        mu = _check_finite("mu", mu, "> 0")
+        K = _check_finite("K", K, "> 0")
         if mu <= 0.0 or K <= 0.0:
             raise MaterialError(f"mu and K must both be positive, got mu = {mu}, K = {K}")
         return cls(nu=(K - mu) / (K + mu), E=4.0 * mu * K / (K + mu), rho=rho)
@@ -197,6 +199,11 @@ def require_reduced(material: Material | float, where: str) -> float:
         ``E = rho = 1`` instead (nothing is accepted and then ignored).
     """
     if not isinstance(material, Material):
+        if not is_real(material):
+            raise MaterialError(
+                f"material must be a Material or a Poisson number (a float), got "
+                f"{describe(material)}; pass e.g. 0.33 or Material(0.33)"
+            )
         return Material(nu=material).nu
     if not material.is_reduced:
         raise MaterialError(

@@ -53,7 +53,15 @@ from scipy.interpolate import PchipInterpolator
 from restitution import atomic
 from restitution._version import __version__
 from restitution.bodies.kinds import body_kind
-from restitution.errors import InputError, RestitutionError
+from restitution.errors import (
+    InputError,
+    RestitutionError,
+    describe,
+    is_integer,
+    is_real,
+    is_real_array,
+    real,
+)
 from restitution.jsonable import json_default
 from restitution.provenance import code_version
 from restitution.status import Status
@@ -221,13 +229,71 @@ def _curve_command(geometry: str, nu: float | None = None, partner=None) -> str:
 
 def _speeds(v) -> np.ndarray:
     """``v`` as a float array, or a one-line :class:`InputError`."""
+    if not is_real_array(v) or np.isnan(np.asarray(v, dtype=float)).any():
+        raise InputError(
+            f"speeds must be numbers (units of c), got {describe(v)}; pass v as a float or a "
+            "list of floats"
+        )
+    return np.asarray(v, dtype=float)
+
+
+def _check_partner(partner) -> None:
+    """One-line :class:`InputError` unless ``partner`` is ``None`` or a ``Partner``."""
+    from restitution.bodies.pair.partner import Partner
+
+    if partner is not None and not isinstance(partner, Partner):
+        raise InputError(
+            "partner must be None (the body on the wall) or a "
+            f"restitution.bodies.pair.Partner, got {describe(partner)}; pass e.g. "
+            "Partner(radius_ratio=1.4)"
+        )
+
+
+def _check_file_values(nu, points) -> None:
+    """:class:`InputError` naming the first entry of a law file that is not what it must be:
+    ``nu``, every point's ``v``, ``epsilon`` and ``epsilon_err`` numbers (a JSON bool, string
+    or null is not), ``asymptotic_ok`` a bool."""
+    if not is_real(nu):
+        raise InputError(f"its nu is {describe(nu)}, not a number")
+    if not isinstance(points, list):
+        raise InputError(f"its points are {describe(points)}, not a list")
+    for k, point in enumerate(points):
+        if not isinstance(point, dict):
+            raise InputError(f"its point {k} is {describe(point)}, not an object")
+        for key in ("v", "epsilon", "epsilon_err"):
+            if key in point and not is_real(point[key]):
+                raise InputError(
+                    f"its point {k} holds {key} = {describe(point[key])}, not a number"
+                )
+        if "asymptotic_ok" in point and not isinstance(point["asymptotic_ok"], bool):
+            raise InputError(
+                f"its point {k} holds asymptotic_ok = {describe(point['asymptotic_ok'])}, not "
+                "true or false"
+            )
+
+
+def _check_file_partner(stored) -> None:
+    """:class:`InputError` unless a law file's ``partner`` is absent or a partner's key."""
+    from restitution.bodies.pair.partner import Partner
+
+    if stored is None:
+        return
     try:
-        arr = np.asarray(v, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(f"speeds must be numbers (units of c), got {v!r}") from None
-    if np.isnan(arr).any():
-        raise InputError(f"speeds must be numbers (units of c), got {v!r}")
-    return arr
+        Partner.from_key(stored)
+    except (TypeError, ValueError, AttributeError):  # InputError is a ValueError
+        raise InputError(
+            f"its partner is {describe(stored)}, not an object of radius_ratio, modulus_ratio, "
+            "density_ratio and nu"
+        ) from None
+
+
+def _check_path(path) -> None:
+    """One-line :class:`InputError` unless ``path`` is a file path (``str`` or path-like)."""
+    if not isinstance(path, str | os.PathLike):
+        raise InputError(
+            f"path must be the path of a law JSON file (a str or pathlib.Path), got "
+            f"{describe(path)}; pass e.g. path='DIR/law_nu0.33.json'"
+        )
 
 
 @dataclass(frozen=True)
@@ -282,9 +348,36 @@ class EpsilonLaw:
     metadata: dict = field(default_factory=dict)
 
     def __post_init__(self) -> None:
+        if not is_real(self.nu):
+            raise InputError(
+                f"nu must be a number (the body's Poisson number), got {describe(self.nu)}; "
+                "pass nu as a float"
+            )
+        for name in ("v", "epsilon_points", "epsilon_err_points"):
+            if not is_real_array(getattr(self, name)):
+                raise InputError(
+                    f"{name} must be an array of numbers, got {describe(getattr(self, name))}; "
+                    "pass a list or array of floats"
+                )
         v = np.asarray(self.v, dtype=float)
-        if v.size < 2 or np.any(v <= 0) or np.any(np.diff(v) <= 0):
-            raise InputError("a law needs at least two speeds, positive and increasing")
+        if (
+            v.ndim != 1
+            or v.size < 2
+            or not np.all(np.isfinite(v))
+            or np.any(v <= 0)
+            or np.any(np.diff(v) <= 0)
+        ):
+            raise InputError("a law needs at least two speeds v, positive, finite and increasing")
+        for name in ("epsilon_points", "epsilon_err_points", "asymptotic_ok"):
+            try:
+                shape = np.shape(getattr(self, name))
+            except ValueError:  # a ragged list
+                shape = None
+            if shape != v.shape:
+                raise InputError(
+                    f"{name} must hold one value per speed ({v.size}), got shape {shape}; pass "
+                    "arrays of the length of v"
+                )
         if not np.all(np.isfinite(self.epsilon_points)):
             raise InputError("a law's epsilon values must be finite")
         body_kind(self.geometry).check_nu(self.nu)
@@ -370,8 +463,8 @@ class EpsilonLaw:
         return PchipInterpolator(self.v, values, extrapolate=False)
 
     def _check(self, v: np.ndarray, outside: str) -> np.ndarray:
-        if outside not in ("raise", "warn", "nan"):
-            raise InputError(f"outside must be 'raise', 'warn' or 'nan', not {outside!r}")
+        if not (isinstance(outside, str) and outside in ("raise", "warn", "nan")):
+            raise InputError(f"outside must be 'raise', 'warn' or 'nan', not {describe(outside)}")
         lo, hi = self.valid_range
         bad = ~((v >= lo) & (v <= hi))
         if np.any(bad):
@@ -524,6 +617,24 @@ class EpsilonLaw:
         """Law from given points (e.g. another program's data); ``parameters`` go to metadata,
         ``geometry`` names the body (``"disk"`` or ``"sphere"``), ``partner`` the second body of
         a pair (:class:`~restitution.bodies.pair.partner.Partner`; ``v`` the relative speed)."""
+        real(nu, "nu", "(the body's Poisson number)")
+        for name, values in (("v", v), ("epsilon", epsilon), ("epsilon_err", epsilon_err)):
+            if not (is_real_array(values) and np.ndim(values) == 1):
+                raise InputError(
+                    f"{name} must be a 1-D array of numbers, got {describe(values)}; pass a list "
+                    "or array of floats, one per speed"
+                )
+            if np.size(values) != np.size(v):
+                raise InputError(
+                    f"{name} holds {np.size(values)} values for {np.size(v)} speeds v; pass one "
+                    "per speed"
+                )
+        if parameters is not None and not isinstance(parameters, Mapping):
+            raise InputError(
+                f"parameters must be a dict (or None), got {describe(parameters)}; pass e.g. "
+                "parameters={'source': 'my data'}"
+            )
+        _check_partner(partner)
         v = np.asarray(v, dtype=float)
         order = np.argsort(v)
         ok = np.ones(v.size, bool) if asymptotic_ok is None else np.asarray(asymptotic_ok, bool)
@@ -569,30 +680,48 @@ class EpsilonLaw:
 
     @classmethod
     def from_json(cls, path: str | os.PathLike) -> EpsilonLaw:
-        """Read a law written by :meth:`to_json` (or shipped with the package)."""
+        """Read a law written by :meth:`to_json` (or shipped with the package).
+
+        Raises
+        ------
+        InputError
+            If ``path`` is not a path, cannot be read, or does not hold a valid law (a
+            non-number where a number belongs, an impossible epsilon, ...).
+        """
+        _check_path(path)
         path = Path(path)
         try:
             d = json.loads(path.read_text())
         except (OSError, ValueError) as exc:
-            raise RestitutionError(f"cannot read law file {path}: {exc}") from exc
+            raise InputError(
+                f"cannot read law file {path}: {exc}; give the path of a law JSON file"
+            ) from None
         return cls._from_dict(d, str(path))
 
     @classmethod
     def _from_dict(cls, d: dict, source: str) -> EpsilonLaw:
+        again = "regenerate the file, or load another"
         if not isinstance(d, dict) or d.get("format") != _FORMAT:
-            raise RestitutionError(f"{source} is not a restitution law file (format {_FORMAT!r})")
+            raise InputError(
+                f"{source} is not a restitution law file (format {_FORMAT!r}); give a file "
+                "written by restitution curve or EpsilonLaw.to_json"
+            )
         if d.get("format_version") not in (1, _FORMAT_VERSION):
-            raise RestitutionError(
+            raise InputError(
                 f"{source} has law format version {d.get('format_version')}; this code reads "
-                f"1 and {_FORMAT_VERSION}"
+                f"1 and {_FORMAT_VERSION} ({again})"
             )
         # Version 1 files also described an anchor epsilon(0) = 1; it is not used any more.
         try:
+            if not isinstance(d.get("metadata"), dict):
+                raise InputError(f"its metadata are {describe(d.get('metadata'))}, not an object")
             points = d["metadata"]["points"]
             metadata = dict(d["metadata"])
             metadata["source"] = source
             geometry = metadata.get("geometry", "disk")  # files from before the sphere: disks
             body_kind(geometry)
+            _check_file_values(metadata["nu"], points)
+            _check_file_partner(metadata.get("partner"))
             arrays = {
                 "nu": float(d["metadata"]["nu"]),
                 "v": np.array([p["v"] for p in points], dtype=float),
@@ -600,21 +729,25 @@ class EpsilonLaw:
                 "epsilon_err_points": np.array([p["epsilon_err"] for p in points], dtype=float),
                 "asymptotic_ok": np.array([p["asymptotic_ok"] for p in points], dtype=bool),
             }
-        except (KeyError, TypeError, ValueError, InputError) as exc:
-            raise RestitutionError(f"{source} is not a valid law file: {exc}") from None
+        except KeyError as exc:
+            raise InputError(
+                f"{source} is not a valid law file: it lacks the key {exc} ({again})"
+            ) from None
+        except (TypeError, ValueError) as exc:  # InputError is a ValueError
+            raise InputError(f"{source} is not a valid law file: {exc} ({again})") from None
         eps, err = arrays["epsilon_points"], arrays["epsilon_err_points"]
         bad = np.flatnonzero(~((eps > 0) & (eps <= 1) & np.isfinite(err) & (err >= 0)))
         if bad.size:
             k = int(bad[0])
-            raise RestitutionError(
+            raise InputError(
                 f"{source} is not a valid law file: at v = {arrays['v'][k]:g} it holds epsilon "
                 f"= {float(eps[k])!r} +- {float(err[k])!r}; an elastic body's law has "
-                "0 < epsilon <= 1 and a finite error >= 0 (regenerate the file, or load another)"
+                f"0 < epsilon <= 1 and a finite error >= 0 ({again})"
             )
         try:
             return cls(**arrays, metadata=metadata)
         except InputError as exc:
-            raise RestitutionError(f"{source} is not a valid law file: {exc}") from None
+            raise InputError(f"{source} is not a valid law file: {exc} ({again})") from None
 
     # -- exports -------------------------------------------------------------------------
 
@@ -713,8 +846,11 @@ class EpsilonLaw:
         else 0. A plain whitespace table with ``#`` comment lines, for event-driven and DEM
         codes that interpolate linearly; returns the path.
         """
-        if points < 2:
-            raise InputError("a table needs at least 2 points")
+        if not (is_integer(points) and points >= 2):
+            raise InputError(
+                f"points must be an integer >= 2 (rows of the table), got {describe(points)}; "
+                "pass e.g. points=301"
+            )
         lo, hi = self.valid_range
         v = np.unique(np.r_[np.geomspace(lo, hi, points), self.v])
         table = np.column_stack(
@@ -825,7 +961,14 @@ def law(
         If no precomputed law exists for ``nu``, or the file at ``path`` holds a law of another
         body or ``nu``; the message says what to do.
     """
-    geometry = body_kind(geometry).geometry
+    kind = body_kind(geometry)
+    geometry = kind.geometry
+    allowed = f"in ({kind.nu_low:g}, {kind.nu_high:g})"
+    if nu is not None:
+        nu = kind.check_nu(real(nu, "nu", allowed))
+    if nu_2d is not None:
+        nu_2d = real(nu_2d, "nu_2d", "in (-1, 1)")
+    _check_partner(partner)
     if nu_2d is not None:
         if nu is not None:
             raise InputError("give the Poisson number once: nu or nu_2d (its former name)")
@@ -834,7 +977,7 @@ def law(
                 f"nu_2d is the disk's two-dimensional Poisson number; the {geometry}'s law takes "
                 f"its own nu: law(nu, geometry={geometry!r})"
             )
-        nu = nu_2d
+        nu = kind.check_nu(nu_2d)
     if path is not None:
         loaded = EpsilonLaw.from_json(path)
         _refuse_other_body(loaded, geometry, path, partner)

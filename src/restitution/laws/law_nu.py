@@ -21,7 +21,6 @@ body ``geometry`` and from its laws only,
 
 from __future__ import annotations
 
-import math
 import os
 from dataclasses import dataclass
 from importlib import resources
@@ -30,10 +29,11 @@ import numpy as np
 from scipy.interpolate import PchipInterpolator
 
 from restitution.bodies.kinds import body_kind
-from restitution.errors import InputError
+from restitution.errors import InputError, real
 from restitution.laws.law import (
     NU_MATCH,
     EpsilonLaw,
+    _check_partner,
     _curve_command,
     _file_nu,
     _refuse_other_body,
@@ -269,10 +269,9 @@ def law_for(
         When ``nu`` is neither on nor inside a grid of at least three laws; the message names
         the grid and the command that computes the law.
     """
-    nu = float(nu)
-    if not math.isfinite(nu):
-        raise InputError(f"nu must be a finite number, got {nu}")
+    nu = real(nu, "nu", "(the body's Poisson number)")
     geometry = body_kind(geometry).geometry
+    _check_partner(partner)
     if path is not None:
         one = EpsilonLaw.from_json(path)
         _refuse_other_body(one, geometry, path, partner)

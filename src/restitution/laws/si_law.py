@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from restitution.errors import InputError
+from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for
 from restitution.laws.units import PARTNERS, Grain, partner_factor
@@ -164,6 +164,16 @@ class SILaw:
     law: EpsilonLaw | NuInterpolatedLaw
 
     def __post_init__(self) -> None:
+        if not isinstance(self.grain, Grain):
+            raise InputError(
+                f"grain must be a Grain, got {describe(self.grain)}; pass e.g. Grain(E=63e9, "
+                "nu=0.25, rho=2500, geometry='cylinder'), or call si_law(...)"
+            )
+        if not isinstance(self.law, EpsilonLaw | NuInterpolatedLaw):
+            raise InputError(
+                f"law must be an EpsilonLaw (restitution.law) or a law interpolated in nu, got "
+                f"{describe(self.law)}; pass restitution.law(...), or call si_law(...)"
+            )
         partner_factor(self.against)  # validates
         pair = self.law.partner
         if pair is not None:
@@ -258,7 +268,7 @@ class SILaw:
     def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon, its error and its status at every speed (m/s); never raises for range."""
         out = []
-        for w in np.atleast_1d(np.asarray(speeds_m_s, dtype=float)):
+        for w in np.atleast_1d(real_array(speeds_m_s, "speeds_m_s", "(m/s)")):
             v = float(self._reduced(float(w)))
             status, note = _status(self.law, v)
             eps = err = None
@@ -377,11 +387,17 @@ def _partner(radius_ratio, against: str, grain: Grain):
 
     if radius_ratio is None:
         return None
-    if isinstance(radius_ratio, bool) or not isinstance(radius_ratio, int | float):
-        raise InputError(f"the radius ratio must be a positive number, got {radius_ratio!r}")
+    if not is_real(radius_ratio):
+        raise InputError(
+            f"the radius ratio must be a positive number, got {describe(radius_ratio)}; pass "
+            "radius_ratio as a float > 0"
+        )
     r = float(radius_ratio)
     if not (np.isfinite(r) and r > 0):
-        raise InputError(f"the radius ratio must be a positive number, got {radius_ratio!r}")
+        raise InputError(
+            f"the radius ratio must be a positive number, got {radius_ratio!r}; pass "
+            "radius_ratio as a finite float > 0"
+        )
     if against != "grain":
         raise InputError(
             f"a radius ratio describes a second grain; it needs against='grain', not {against!r}"

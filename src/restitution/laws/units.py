@@ -34,7 +34,7 @@ import numpy as np
 
 from restitution.bodies.kinds import body_kind
 from restitution.bodies.material import Material
-from restitution.errors import InputError
+from restitution.errors import InputError, describe, is_real, non_negative
 
 __all__ = [
     "BODIES",
@@ -62,11 +62,13 @@ PARTNERS: dict[str, str] = {
 
 def partner_factor(against: str) -> float:
     """``k`` in ``v = w / (k c)``: 1 against a wall, 2 for two identical grains."""
-    if against == "wall":
+    if isinstance(against, str) and against == "wall":
         return 1.0
-    if against == "grain":
+    if isinstance(against, str) and against == "grain":
         return 2.0
-    raise InputError(f"the collision partner must be 'wall' or 'grain', got {against!r}")
+    raise InputError(
+        f"against (the collision partner) must be 'wall' or 'grain', got {describe(against)}"
+    )
 
 
 @dataclass(frozen=True)
@@ -102,15 +104,18 @@ class Grain:
     geometry: Geometry
 
     def __post_init__(self) -> None:
-        if self.geometry not in GEOMETRIES:
+        if not (isinstance(self.geometry, str) and self.geometry in GEOMETRIES):
             raise InputError(
                 f"the geometry must be 'cylinder' (plane strain), 'thin-disk' (plane stress) or "
-                f"'sphere', got {self.geometry!r}"
+                f"'sphere', got {describe(self.geometry)}"
             )
         for name, unit in (("E", "Pa"), ("nu", "dimensionless"), ("rho", "kg/m^3")):
             value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, float, np.number)):
-                raise InputError(f"{name} must be a number ({unit}), got {value!r}")
+            if not is_real(value):
+                raise InputError(
+                    f"{name} must be a number ({unit}), got {describe(value)}; pass {name} as a "
+                    "float"
+                )
             object.__setattr__(self, name, float(value))
         # One-line messages for E, nu, rho: the 3D checks of Material.from_3d (nu in
         # (-1, 0.5]), then the sphere's open interval.
@@ -200,15 +205,13 @@ class Grain:
         float or numpy.ndarray
             ``v = w / (k c)`` with ``k = 1`` (wall) or ``2`` (grain).
         """
-        w = np.asarray(speed_m_s, dtype=float)
-        if not np.all(np.isfinite(w)) or np.any(w < 0):
-            raise InputError(f"speeds must be finite and non-negative (m/s), got {speed_m_s!r}")
+        w = non_negative(speed_m_s, "speeds", "m/s")
         v = w / self.speed_scale(against)
         return float(v) if np.ndim(speed_m_s) == 0 else v
 
     def speed_m_s(self, v, against: str):
         """SI speed ``w`` (m/s) of reduced speed(s) ``v``: the inverse of :meth:`v_over_c`."""
-        v_arr = np.asarray(v, dtype=float)
+        v_arr = non_negative(v, "speeds", "units of c")
         w = v_arr * self.speed_scale(against)
         return float(w) if np.ndim(v) == 0 else w
 

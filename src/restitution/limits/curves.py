@@ -20,7 +20,8 @@ from typing import Any
 import numpy as np
 
 from restitution._version import __version__
-from restitution.errors import InputError
+from restitution.bodies.kinds import body_kind
+from restitution.errors import InputError, describe, is_real, real
 from restitution.jsonable import finite_or_none
 from restitution.limits.extrapolation import (
     CombinedLimit,
@@ -103,8 +104,21 @@ def compute_curves(
     Returns
     -------
     dict of float to Curve
+
+    Raises
+    ------
+    InputError
+        If ``nus`` is not an iterable of Poisson numbers in the body's range, ``settings`` not
+        a :class:`SweepSettings` or ``run`` not a bool.
     """
-    nus = [float(nu) for nu in nus]
+    _check_settings(settings)
+    _check_run(run)
+    if isinstance(nus, str | bytes) or is_real(nus) or not isinstance(nus, Iterable):
+        raise InputError(
+            f"nus must be a list of Poisson numbers, got {describe(nus)}; pass e.g. nus=[0.33]"
+        )
+    kind = body_kind(settings.geometry)
+    nus = [kind.check_nu(nu) for nu in nus]
     own = not isinstance(store, Store)
     db = Store(store) if own else store
     try:
@@ -220,6 +234,44 @@ class PointEpsilon:
         }
 
 
+def _check_point(nu, v, alpha, settings, run: bool) -> tuple[float, float, float | None]:
+    """``(nu, v, alpha)`` of :func:`epsilon_at` as floats, or a one-line :class:`InputError`
+    naming the argument: before any store is opened, and with ``run=False`` too (a ``nu`` no
+    body has would otherwise read a grid of missing points and answer ``nan``)."""
+    _check_settings(settings)
+    _check_run(run)
+    nu = body_kind(settings.geometry).check_nu(nu)
+    v = real(v, "v", "in (0, 1) (units of c)")
+    if not 0.0 < v < 1.0:
+        raise InputError(
+            f"v must lie in (0, 1): the {settings.geometry}'s speed towards the wall in units of "
+            f"c, got {v!r}; pass 0 < v < 1"
+        )
+    if alpha is not None:
+        alpha = real(alpha, "alpha", "> 0 (the wall hardness, 1/R)")
+        if not alpha > 0.0:
+            raise InputError(
+                f"the wall hardness alpha must be positive (1/R), got {alpha!r}; pass alpha > 0, "
+                "or leave it out to take the limit alpha -> infinity too"
+            )
+    return nu, v, alpha
+
+
+def _check_settings(settings) -> None:
+    if not isinstance(settings, SweepSettings):
+        raise InputError(
+            f"settings must be a SweepSettings, got {describe(settings)}; pass e.g. "
+            "SweepSettings(n_modes=(300, 400)) or leave it out for the defaults"
+        )
+
+
+def _check_run(run) -> None:
+    if not isinstance(run, bool | np.bool_):
+        raise InputError(
+            f"run must be True or False, got {describe(run)}; pass run=False to read the store only"
+        )
+
+
 def epsilon_at(
     nu: float,
     v: float,
@@ -241,12 +293,18 @@ def epsilon_at(
     With ``alpha`` only ``N -> infinity`` is taken at that wall hardness; without it both limits
     on the grid ``settings.alphas_at(v) x settings.n_modes``. Missing collisions are computed first
     (unless ``run=False``); the executor keywords go to :func:`restitution.limits.sweep.run_sweep`.
+
+    Raises
+    ------
+    InputError
+        Before any store is read, if ``nu`` is not a number in the body's range, ``v`` not in
+        ``(0, 1)``, ``alpha`` neither ``None`` nor a positive number, ``settings`` not a
+        :class:`SweepSettings` or ``run`` not a bool.
     """
-    if alpha is not None and not (alpha > 0 and math.isfinite(alpha)):
-        raise InputError(f"the wall hardness alpha must be positive (1/R), got {alpha}")
-    settings = replace(settings, velocities=(float(v),))
+    nu, v, alpha = _check_point(nu, v, alpha, settings, run)
+    settings = replace(settings, velocities=(v,))
     if alpha is not None:
-        settings = replace(settings, alphas=(float(alpha),), alpha_scale="absolute")
+        settings = replace(settings, alphas=(alpha,), alpha_scale="absolute")
     own = not isinstance(store, Store)
     db = Store(store) if own else store
     try:
@@ -281,8 +339,8 @@ def epsilon_at(
         ok = False
         msg = "; ".join(filter(None, [msg, f"{len(failures)} grid point(s) failed"]))
     return PointEpsilon(
-        float(nu),
-        float(v),
+        nu,
+        v,
         alpha,
         eps,
         eps_err,

@@ -46,7 +46,15 @@ from restitution.bodies.disk.frequency_equation import (
 )
 from restitution.bodies.material import Material, require_reduced
 from restitution.bodies.roots import bracket_and_polish, null_vector
-from restitution.errors import InputError, RestitutionError
+from restitution.errors import (
+    InputError,
+    RestitutionError,
+    describe,
+    is_integer,
+    is_real,
+    non_negative,
+    real,
+)
 
 __all__ = ["ModeSet", "compute_modes", "weyl_count", "ModeError"]
 
@@ -205,8 +213,27 @@ def weyl_count(omega: float, nu: float) -> float:
 
     Half of the in-plane count ``(area / 4 pi) omega^2 (1/c_p^2 + 1/c_s^2)`` for the unit disk,
     since the symmetric and antisymmetric families share the spectrum (except ``n = 0``).
+
+    Parameters
+    ----------
+    omega : float or array_like
+        Frequency, ``c / R``, finite and ``>= 0``.
+    nu : float
+        Two-dimensional Poisson number, in (-1, 1).
     """
+    omega = _check_weyl(omega, nu, (-1.0, 1.0))
     return omega**2 / 8.0 * ((1.0 - nu**2) + 2.0 * (1.0 + nu))
+
+
+def _check_weyl(omega, nu, nu_range: tuple[float, float]):
+    """``omega`` (a list as an array) if it holds finite numbers ``>= 0`` and ``nu`` is a number
+    in the open interval ``nu_range``, else a one-line :class:`InputError`."""
+    w = non_negative(omega, "omega", "c/R")
+    lo, hi = nu_range
+    allowed = f"in ({lo:g}, {hi:g})"
+    if not lo < real(nu, "nu", allowed) < hi:
+        raise InputError(f"nu must lie {allowed}, got {nu!r}; pass a Poisson number {allowed}")
+    return omega if is_real(omega) or isinstance(omega, np.ndarray) else w
 
 
 @functools.cache
@@ -411,6 +438,27 @@ def _as_nu(material: Material | float) -> float:
     return require_reduced(material, "the modal path")
 
 
+def _check_request(count, omega_max) -> None:
+    """One-line :class:`InputError` unless exactly one of ``count`` (an integer >= 1) and
+    ``omega_max`` (a finite number > 0) is given."""
+    if (count is None) == (omega_max is None):
+        raise InputError(
+            f"give exactly one of count and omega_max, got count={count!r} and "
+            f"omega_max={omega_max!r}; pass e.g. count=100"
+        )
+    if omega_max is not None:
+        if not (is_real(omega_max) and math.isfinite(omega_max) and omega_max > 0):
+            raise InputError(
+                f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
+                "finite float > 0, e.g. omega_max=40.0"
+            )
+    elif not (is_integer(count) and count >= 1):
+        raise InputError(
+            f"count must be a positive integer (the number of modes), got {describe(count)}; "
+            "pass an int >= 1, e.g. count=100"
+        )
+
+
 def compute_modes(
     material: Material | float,
     count: int | None = None,
@@ -435,15 +483,10 @@ def compute_modes(
         Sorted by frequency; the rigid translation and the torsional ``n = 0`` family excluded.
     """
     nu = _as_nu(material)
-    if (count is None) == (omega_max is None):
-        raise InputError("give exactly one of count and omega_max")
+    _check_request(count, omega_max)
     if omega_max is not None:
-        if not (math.isfinite(omega_max) and omega_max > 0):
-            raise InputError(f"omega_max must be a positive number, got {omega_max!r}")
         n, w = _all_roots(nu, float(omega_max))
         return _build(n, w, nu)
-    if not (isinstance(count, int | np.integer) and count >= 1):
-        raise InputError(f"count must be a positive integer, got {count!r}")
     # Invert Weyl's law for a first frequency bound, then widen until enough roots exist.
     # (The perimeter correction to Weyl's law is positive, so this bound is usually enough.)
     w_max = math.sqrt(8.0 * count / ((1.0 - nu**2) + 2.0 * (1.0 + nu))) + 2.0

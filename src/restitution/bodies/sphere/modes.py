@@ -55,7 +55,15 @@ from scipy.special import roots_legendre, spherical_jn
 from restitution.bodies.base import SurfaceQuadrature
 from restitution.bodies.roots import bracket_and_polish, null_vector
 from restitution.bodies.sphere import surface
-from restitution.errors import InputError, RestitutionError
+from restitution.errors import (
+    InputError,
+    RestitutionError,
+    describe,
+    is_integer,
+    is_real,
+    non_negative,
+    real,
+)
 
 __all__ = [
     "SphereModes",
@@ -82,9 +90,12 @@ class SphereModeError(RestitutionError):
 
 
 def _check_nu(nu: float) -> float:
-    nu = float(nu)
+    nu = real(nu, "nu", "in (-1, 0.5)")
     if not (-1.0 < nu < 0.5):
-        raise InputError(f"the Poisson number of the sphere must be in (-1, 0.5), got {nu!r}")
+        raise InputError(
+            f"the Poisson number nu of the sphere must be in (-1, 0.5), got {nu!r}; pass nu in "
+            "(-1, 0.5)"
+        )
     return nu
 
 
@@ -124,7 +135,13 @@ def weyl_count(omega: float, nu: float) -> float:
         N(omega) ~ (omega^2 / 8) (1 / c_L^2 + 1 / c_T^2),
 
     with corrections of order ``omega`` (surface terms, the Rayleigh branch).
+
+    ``omega`` (``c / R``) must hold finite numbers ``>= 0``, ``nu`` lie in (-1, 0.5).
     """
+    w = non_negative(omega, "omega", "c/R")
+    _check_nu(nu)
+    if not (is_real(omega) or isinstance(omega, np.ndarray)):
+        omega = w  # a list
     c_L, c_T = speeds(nu)
     return omega**2 / 8.0 * (1.0 / c_L**2 + 1.0 / c_T**2)
 
@@ -401,13 +418,22 @@ def compute_sphere_modes(
     """
     nu = _check_nu(nu)
     if (count is None) == (omega_max is None):
-        raise InputError("give exactly one of count and omega_max")
+        raise InputError(
+            f"give exactly one of count and omega_max, got count={count!r} and "
+            f"omega_max={omega_max!r}; pass e.g. count=100"
+        )
     if omega_max is not None:
-        if not (math.isfinite(omega_max) and omega_max > 0):
-            raise InputError(f"omega_max must be a positive number, got {omega_max!r}")
+        if not (is_real(omega_max) and math.isfinite(omega_max) and omega_max > 0):
+            raise InputError(
+                f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
+                "finite float > 0, e.g. omega_max=40.0"
+            )
         return _build(*_roots(nu, float(omega_max)), nu)
-    if not (isinstance(count, int | np.integer) and count >= 1):
-        raise InputError(f"count must be a positive integer, got {count!r}")
+    if not (is_integer(count) and count >= 1):
+        raise InputError(
+            f"count must be a positive integer (the number of modes), got {describe(count)}; "
+            "pass an int >= 1, e.g. count=100"
+        )
     c_L, c_T = speeds(nu)
     w_max = math.sqrt(8.0 * count / (1.0 / c_L**2 + 1.0 / c_T**2)) + 2.0
     for _ in range(30):
