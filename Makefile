@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick law law-sphere law-pair sphere-figures test test-slow lint bench clean
+.PHONY: setup paper paper-quick law law-sphere law-pair damping-figure sphere-figures test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -40,6 +40,10 @@ law-sphere: $(STAMP)
 law-pair: $(STAMP)
 	$(BIN)/python -m restitution.laws.production --geometry pair
 	$(BIN)/python -m restitution.reproduction.figures.pair_epsilon --figures docs/figures
+
+# epsilon(w) of damping steel grains (docs/damping.md): the elastic laws and the viscous loss.
+damping-figure: $(STAMP)
+	$(BIN)/python -m restitution.reproduction.figures.damping --figures docs/figures
 
 # The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
 sphere-figures: $(STAMP)

@@ -144,3 +144,28 @@ def test_two_threads_stop_together_on_a_timeout(monkeypatch):
         assert got[threads]["status"][0] == kernel.STATUS_TIMEOUT
         assert got[threads]["steps"][0] == 50
     assert_array_equal(got[1]["final_Q"], got[2]["final_Q"])
+
+
+@pytest.mark.parametrize("count", [300, 2200])  # one thread per member; two threads share one
+def test_raised_stop_flag_ends_every_member_at_its_next_check(count):
+    """Ctrl-C raises the kernel's stop flag (run_batch's _in_threads); each member, and both
+    threads of a shared member together, then returns within CHECK_EVERY steps."""
+    import numpy as np
+
+    from restitution.dynamics.compiled_path import KERNEL_WEIGHTS
+    from restitution.dynamics.kernel import CHECK_EVERY, STATUS_INTERRUPTED, run_batch
+    from restitution.dynamics.settings import CONTACT_TOL, STOP_LOG
+    from restitution.dynamics.start import start_of
+
+    body = get_modes(0.33, count=count)
+    v, alpha = np.array([0.1, 0.2][: 1 if count > 2000 else 2]), np.array([300.0, 300.0])
+    alpha = alpha[: v.size]
+    quad = body.surface_quadrature(body.default_nodes(300.0))
+    begin = start_of(body, v, alpha, quad, None)
+    got = run_batch(
+        body.omega, body.mass, quad, v, alpha, begin.x0, np.full(v.size, 1e-3), begin.t_max,
+        KERNEL_WEIGHTS["split4"], 10**7, None, STOP_LOG, CONTACT_TOL,
+        stop=np.ones(1, dtype=np.int64),
+    )  # fmt: skip
+    assert list(got["status"]) == [STATUS_INTERRUPTED] * v.size
+    assert list(got["steps"]) == [CHECK_EVERY] * v.size

@@ -132,7 +132,9 @@ def _argv(inputs: dict) -> list[str]:
              "against": "--against", "partner_radius_ratio": "--partner-radius-ratio",
              "law_file": "--law-file", "identical_law_file": "--identical-law-file",
              "reference_speed": "--reference-speed",
-             "maxwell_temperature": "--maxwell-temperature", "export": "--export"}  # fmt: skip
+             "maxwell_temperature": "--maxwell-temperature", "export": "--export",
+             "measured_epsilon": "--measured-epsilon", "measured_speed_m_s": "--measured-speed",
+             "relaxation_time_s": "--relaxation-time", "radius_m": "--radius"}  # fmt: skip
     argv = ["law", "--json", "--speed", *map(repr, inputs["speeds_m_s"])]
     assert set(inputs) == {*flags, "speeds_m_s"}
     for key, flag in flags.items():

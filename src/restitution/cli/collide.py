@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import sys
 import time
 import warnings
@@ -10,6 +11,7 @@ from pathlib import Path
 import click
 
 from restitution.bodies.cache import check_mode_request, get_modes
+from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
     body_nu,
@@ -60,6 +62,12 @@ def _print_summary(result, top: int = 10) -> None:
         f"max force {result.max_force:.5g} E, energy drift {result.energy_drift:.2e}, "
         f"dt {result.dt:.3g}, {result.n_steps} steps, {result.wall_time_s:.2f} s"
     )
+    if result.relaxation_time:
+        console.print(
+            f"damping: tau = {result.relaxation_time:g} R/c; dissipated "
+            f"{result.energy_dissipated:.6g}, left in the vibrations "
+            f"{float(result.mode_energy_after.sum()):.6g} (fractions of E0)"
+        )
     if result.mode_n.size:
         import numpy as np
 
@@ -188,6 +196,15 @@ def _print_summary(result, top: int = 10) -> None:
     default=None,
     help="--excite thermal: draw the histogram of epsilon to this file.",
 )
+@click.option(
+    "--relaxation-time",
+    type=float,
+    default=0.0,
+    show_default=True,
+    help="A damping material: Kelvin-Voigt relaxation time tau in R/c (viscosities = tau x "
+    "moduli); every mode is damped at tau omega^2 and the dissipated energy is reported. Runs "
+    "--integrator split (docs/damping.md). 0: elastic.",
+)
 @partner_options
 @click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
 @strict_option
@@ -218,6 +235,7 @@ def collide(
     partner_nu,
     modulus_ratio,
     density_ratio,
+    relaxation_time,
     as_json,
     strict,
 ):
@@ -232,9 +250,10 @@ def collide(
     """
     body = body_nu(nu, plane, geometry)
     partner = partner_from(ctx, nu, plane, geometry)
+    integrator = _damped_integrator(ctx, relaxation_time, integrator, excite, method, select)
     if partner is not None:
         return _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol,
-                     as_json, strict)  # fmt: skip
+                     as_json, strict, relaxation_time)  # fmt: skip
     material = material_from(nu, plane) if geometry == "disk" else None
     if geometry != "disk" and excite != "none":
         raise InputError(f"--excite is available for disks only; leave it out for a {geometry}")
@@ -285,6 +304,8 @@ def collide(
                 )
             else:
                 ms = get_modes(body, count=n_modes, geometry=geometry)
+            if relaxation_time:
+                ms = Viscoelastic(ms, relaxation_time)
             long_run = _announce(ms, v, alpha, integrator, energy_tol)
             with _elapsed(long_run):
                 result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
@@ -296,7 +317,11 @@ def collide(
             inputs["mesh_refine"] = mesh_refine
         else:
             inputs.update(
-                modes=n_modes, select=select, integrator=integrator, energy_tol=energy_tol
+                modes=n_modes,
+                select=select,
+                integrator=integrator,
+                energy_tol=energy_tol,
+                relaxation_time=relaxation_time,
             )
         d = envelope(
             "collide", inputs, result.to_dict(), status=result.status, advice=result.advice
@@ -314,7 +339,7 @@ def collide(
 
 
 def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol, as_json,
-          strict):  # fmt: skip
+          strict, relaxation_time=0.0):  # fmt: skip
     """``collide --radius-ratio ...``: two bodies head-on (:mod:`restitution.bodies.pair`)."""
     import numpy as np
 
@@ -334,6 +359,8 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
     check_mode_request(body, n_modes, None, geometry)
     check_mode_request(nu2, n_modes, None, geometry)
     pair = partner.pair(body, n_modes, geometry, get_modes)
+    if relaxation_time:
+        pair = Viscoelastic(pair, relaxation_time)
     start = time.perf_counter()
     long_run = _announce(pair, v, alpha, integrator, energy_tol)
     with warnings.catch_warnings(), _elapsed(long_run):
@@ -354,7 +381,8 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
                   "alpha": alpha, "modes": n_modes, "integrator": integrator,
                   "energy_tol": energy_tol, "radius_ratio": partner.radius_ratio,
                   "modulus_ratio": partner.modulus_ratio,
-                  "density_ratio": partner.density_ratio}  # fmt: skip
+                  "density_ratio": partner.density_ratio,
+                  "relaxation_time": relaxation_time}  # fmt: skip
         d = envelope("collide", inputs, result.to_dict(), status=result.status,
                      advice=result.advice)  # fmt: skip
         d["pair"] = detail
@@ -378,6 +406,30 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
         )
     if result.status != Status.OK and strict:
         sys.exit(EXIT_NOT_CONVERGED)
+
+
+def _damped_integrator(ctx, tau: float, integrator: str, excite, method, select) -> str:
+    """The integrator of a run with ``--relaxation-time tau``: Strang's splitting when the user
+    left ``--integrator`` at its default; the options a damped body cannot take are refused."""
+    if not (math.isfinite(tau) and tau >= 0):
+        raise InputError(f"--relaxation-time must be a finite number >= 0 (R/c), got {tau}")
+    if tau == 0:
+        return integrator
+    for name, value, allowed, why in (
+        ("--excite", excite, "none", "a damped body starts at rest"),
+        ("--method", method, "modal", "the FEM route has no damping"),
+        ("--select", select, "lowest", "a damped body takes its lowest modes"),
+    ):
+        if value != allowed:
+            raise InputError(f"{name} {value} does not go with --relaxation-time: {why}")
+    if ctx.get_parameter_source("integrator") == click.core.ParameterSource.DEFAULT:
+        return "split"
+    if integrator != "split":
+        raise InputError(
+            f"--relaxation-time runs --integrator split, got {integrator}: Yoshida's split4 "
+            "steps backwards, where damped modes grow; leave --integrator out"
+        )
+    return integrator
 
 
 def _check_up_front(v: float, alpha: float, integrator: str, energy_tol: float) -> None:

@@ -98,6 +98,34 @@ class _LawCommand(_ListCommand):
     help="Constant for one-number codes: epsilon averaged (dissipation-weighted) over a Maxwell "
     "gas at this granular temperature <v_x^2>, m^2/s^2.",
 )
+@click.option(
+    "--measured-epsilon",
+    type=float,
+    default=None,
+    help="Material damping from one measurement: the coefficient of restitution measured at "
+    "--measured-speed (same partner). The relaxation time is inferred from it and epsilon(w) "
+    "given with its elastic and viscous parts (docs/damping.md).",
+)
+@click.option(
+    "--measured-speed",
+    type=float,
+    default=None,
+    help="Impact speed of --measured-epsilon, m/s.",
+)
+@click.option(
+    "--relaxation-time",
+    type=float,
+    default=None,
+    help="Material damping given directly: the Kelvin-Voigt relaxation time (viscosities = "
+    "tau x moduli), s; needs --radius.",
+)
+@click.option(
+    "--radius",
+    type=float,
+    default=None,
+    help="Radius of the grain, m (with --relaxation-time; for two sizes the smaller grain's). "
+    "The elastic law needs no radius; the viscous loss depends on tau c / R.",
+)
 @quiet_option
 def law(
     E,
@@ -113,6 +141,10 @@ def law(
     export_dir,
     reference_speed,
     maxwell_temperature,
+    measured_epsilon,
+    measured_speed,
+    relaxation_time,
+    radius,
 ):
     """Coefficient of restitution of a real material at impact speeds in m/s.
 
@@ -132,6 +164,13 @@ def law(
     \b
     restitution collide --radius-ratio R --modulus-ratio E2/E1 \\
         --density-ratio RHO2/RHO1 --partner-nu NU2
+
+    Material damping (a Kelvin-Voigt relaxation time) adds the viscous loss to the loss to
+    vibrations, from one measured coefficient of restitution or from the relaxation time:
+
+    \b
+    restitution law --E 210e9 --nu 0.3 --rho 7850 --geometry sphere \\
+        --against wall --measured-epsilon 0.9 --measured-speed 1 --speed 0.1 1 10
     """
     from restitution.cli._common import envelope
     from restitution.errors import InputError
@@ -145,8 +184,25 @@ def law(
         _check_identical_law_file(ratio, reference_speed, maxwell_temperature)
     s = si_law(E, nu, rho, geometry, against, path=law_file, radius_ratio=ratio)
     speeds = list(speeds) or [0.1, 0.5, 1.0, 5.0, 10.0]
-    result = s.to_dict(speeds)
-    status, advice = overall_status(s.points(speeds))
+    damped = _damped(s, measured_epsilon, measured_speed, relaxation_time, radius)
+    if (
+        damped is not None
+        and s.law.partner is not None
+        and ratio_constants(reference_speed, maxwell_temperature)
+    ):
+        raise InputError(
+            "constants per type pair of damping grains are not computed (tau c / R differs for "
+            "the two sizes); drop --reference-speed/--maxwell-temperature, or the damping"
+        )
+    if damped is None:
+        result = s.to_dict(speeds)
+        status, advice = overall_status(s.points(speeds))
+    else:
+        result = damped.to_dict(speeds)
+        status, advice = overall_status(damped.points(speeds))
+        if (reference_speed, maxwell_temperature, export_dir) != (None, None, None):
+            # Constants, tables and snippets of the damped law: the sum at every computed speed.
+            s = damped.as_si_law()
     constant = pairs = None
     if s.law.partner is not None and (reference_speed, maxwell_temperature) != (None, None):
         # Two sizes: a constant per pair of particle types; the pair's own is 1-2.
@@ -173,7 +229,9 @@ def law(
                                          else str(identical_law_file)),
                   "reference_speed": reference_speed,
                   "maxwell_temperature": maxwell_temperature,
-                  "export": None if export_dir is None else str(export_dir)}  # fmt: skip
+                  "export": None if export_dir is None else str(export_dir),
+                  "measured_epsilon": measured_epsilon, "measured_speed_m_s": measured_speed,
+                  "relaxation_time_s": relaxation_time, "radius_m": radius}  # fmt: skip
         d = envelope("law", inputs, result, status=status, advice=advice, units=SI_UNITS)
         click.echo(json.dumps(d, indent=1, default=json_default))
         return
@@ -190,21 +248,10 @@ def law(
             f"the radius ratio {partner_radius_ratio:g} is the pair R2/R1 = "
             f"{pair.radius_ratio:g} seen from the large grain: the same collision"
         )
-    click.echo("  speed [m/s]        v/c       epsilon      error   status")
-    notes = {}
-    for p in s.points(speeds):
-        # Enough decimals for two significant digits of the error (slow impacts: 1 - 1e-8).
-        places = 6 if not p.epsilon_err else max(6, 1 - math.floor(math.log10(p.epsilon_err)))
-        eps = "-" if p.epsilon is None else f"{p.epsilon:.{places}f}"
-        err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.2g}"
-        click.echo(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}")
-        if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
-            notes[p.status] = result["statuses"][p.status]
-    for status, text in notes.items():
-        if status == Status.OUTSIDE:
-            lo, hi = s.computed_range_m_s
-            text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
-        note(f"note: {status}: {text}")
+    if damped is not None:
+        _damped_table(damped, speeds, result)
+    else:
+        _table(s, speeds, result)
     if pairs is not None:
         click.echo(
             f"type 1 = the small grain, type 2 = the large one (R2 = {pairs.radius_ratio:g} R1); "
@@ -320,3 +367,89 @@ def _export(s, constant, out: Path) -> list[Path]:
             atomic.write_text(path, func(s, constant))
             written.append(path)
     return written
+
+
+def ratio_constants(reference_speed, maxwell_temperature) -> bool:
+    """Whether a constant for one-number codes is asked for."""
+    return (reference_speed, maxwell_temperature) != (None, None)
+
+
+def _places(err) -> int:
+    """Decimals for two significant digits of the error (slow impacts: 1 - 1e-8)."""
+    return 6 if not err else max(6, 1 - math.floor(math.log10(err)))
+
+
+def _outside_notes(s, notes: dict) -> None:
+    for status, text in notes.items():
+        if status == Status.OUTSIDE:
+            lo, hi = s.computed_range_m_s
+            text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
+        note(f"note: {status}: {text}")
+
+
+def _table(s, speeds, result) -> None:
+    """The elastic law's rows."""
+    click.echo("  speed [m/s]        v/c       epsilon      error   status")
+    notes = {}
+    for p in s.points(speeds):
+        places = _places(p.epsilon_err)
+        eps = "-" if p.epsilon is None else f"{p.epsilon:.{places}f}"
+        err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.2g}"
+        click.echo(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}")
+        if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
+            notes[p.status] = result["statuses"][p.status]
+    _outside_notes(s, notes)
+
+
+def _damped_table(d, speeds, result) -> None:
+    """Rows of a damping grain: both losses, and each alone."""
+    line = f"damping: tau c/R = {d.tau:.6g} +- {d.tau_err:.2g}"
+    if d.relaxation_time_s is not None:
+        line += f" (tau = {d.relaxation_time_s:.4g} s for R = {d.radius_m:g} m)"
+    if d.measured is not None:
+        line += f", from epsilon = {d.measured[0]:g} measured at {d.measured[1]:g} m/s"
+    click.echo(line)
+    click.echo("  speed [m/s]        v/c       epsilon      error    elastic    viscous   status")
+    notes = {}
+    for p in d.points(speeds):
+        places = _places(p.epsilon_err)
+        eps = "-" if p.epsilon is None else f"{p.epsilon:.{places}f}"
+        err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.2g}"
+        el = "-" if p.epsilon_elastic is None else f"{p.epsilon_elastic:.6f}"
+        vi = "-" if p.epsilon_viscous is None else f"{p.epsilon_viscous:.6f}"
+        click.echo(
+            f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}  {el:>9}  {vi:>9}   "
+            f"{p.status}"
+        )
+        if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
+            notes[p.status] = result["statuses"].get(p.status) or p.note
+    _outside_notes(d.si, notes)
+
+
+def _damped(s, measured_epsilon, measured_speed, relaxation_time, radius):
+    """The damped law the options ask for, or ``None`` without damping options."""
+    from restitution.errors import InputError
+    from restitution.laws.damped import damped_law
+
+    if (measured_epsilon, measured_speed, relaxation_time) == (None, None, None):
+        if radius is not None:
+            raise InputError("--radius goes with --relaxation-time; give both or neither")
+        return None
+    if relaxation_time is not None and (measured_epsilon, measured_speed) != (None, None):
+        raise InputError(
+            "give --relaxation-time (with --radius) or --measured-epsilon with --measured-speed, "
+            "not both"
+        )
+    if relaxation_time is None and None in (measured_epsilon, measured_speed):
+        raise InputError("--measured-epsilon and --measured-speed go together; give both")
+    if relaxation_time is not None and radius is None:
+        raise InputError(
+            "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
+        )
+    return damped_law(
+        s,
+        relaxation_time_s=relaxation_time,
+        radius_m=radius,
+        measured_epsilon=measured_epsilon,
+        measured_speed_m_s=measured_speed,
+    )

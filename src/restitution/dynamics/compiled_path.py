@@ -7,6 +7,7 @@ Units: ``E = rho = R = 1``; times in ``R / c``.
 
 from __future__ import annotations
 
+from restitution.bodies.viscoelastic import mode_damping
 from restitution.dynamics.integrators import INTEGRATORS
 from restitution.dynamics.run import (
     UNSTABLE,
@@ -62,6 +63,7 @@ def run_kernel(body, v, alpha, dts, settings, quad, abort, initial) -> list[Memb
         CONTACT_TOL,
         begin.Q,
         begin.P,
+        mode_damping(body),
     )
     out: list[MemberRun | str] = []
     for i in range(v.size):
@@ -94,6 +96,7 @@ def run_kernel(body, v, alpha, dts, settings, quad, abort, initial) -> list[Memb
                 max_force=float(got["max_force"][i]),
                 energy_mean=contact_mean(summed, contact, e0[i]),
                 energy_closest=got["energy_closest"][i] / e0[i],
+                dissipated=float(got["dissipated"][i] / e0[i]),
             )
         )
     return out

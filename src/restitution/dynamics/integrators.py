@@ -20,6 +20,7 @@ from typing import ClassVar, Protocol
 import numpy as np
 
 from restitution.bodies.base import SurfaceQuadrature
+from restitution.dynamics.damping import damped_flow
 from restitution.dynamics.wall import wall_terms
 
 __all__ = [
@@ -51,12 +52,15 @@ class System:
         Edge quadrature of the wall integral for these modes.
     alpha : numpy.ndarray, shape (B,)
         Wall hardness per batch member, ``1 / R``.
+    damping : numpy.ndarray, shape (N,), or None
+        Damping rate of every mode (``c / R``) of a viscoelastic body; ``None``: elastic.
     """
 
     omega: np.ndarray
     mass: float
     quad: SurfaceQuadrature
     alpha: np.ndarray
+    damping: np.ndarray | None = None
     # Memo of the harmonic rotation (cos, sin, m omega sin, sin/(m omega)) per step size.
     _rotations: dict = field(default_factory=dict, repr=False, compare=False)
 
@@ -88,6 +92,8 @@ class State:
         Wall potential and total wall force at ``(x0, Q)``.
     f : numpy.ndarray, shape (B, N)
         Generalised wall forces ``dV/dQ`` at ``(x0, Q)``.
+    dissipated : numpy.ndarray, shape (B,), or float
+        Energy the modes' damping has taken since the start (``0.0``: none).
     """
 
     t: float
@@ -98,6 +104,7 @@ class State:
     V: np.ndarray
     F: np.ndarray
     f: np.ndarray
+    dissipated: np.ndarray | float = 0.0
 
     def take(self, index: np.ndarray) -> State:
         """Batch members at ``index``."""
@@ -110,12 +117,13 @@ class State:
             V=self.V[index],
             F=self.F[index],
             f=self.f[index],
+            dissipated=np.broadcast_to(self.dissipated, self.x0.shape)[index],
         )
 
 
-def _evaluate(system: System, t: float, x0, p0, Q, P) -> State:
+def _evaluate(system: System, t: float, x0, p0, Q, P, dissipated=0.0) -> State:
     V, F, f = wall_terms(system.quad, system.alpha, x0, Q)
-    return State(t=t, x0=x0, p0=p0, Q=Q, P=P, V=V, F=F, f=f)
+    return State(t=t, x0=x0, p0=p0, Q=Q, P=P, V=V, F=F, f=f, dissipated=dissipated)
 
 
 def initial_state(
@@ -136,9 +144,10 @@ def mode_energies(system: System, state: State) -> np.ndarray:
 
 
 def total_energy(system: System, state: State) -> np.ndarray:
-    """Total energy ``H`` of every batch member; shape (B,)."""
+    """Total energy ``H`` of every batch member, with the energy dissipated so far counted
+    (constant under the exact flow); shape (B,)."""
     kinetic = state.p0**2 / (2.0 * system.mass)
-    return kinetic + mode_energies(system, state).sum(axis=1) + state.V
+    return kinetic + mode_energies(system, state).sum(axis=1) + state.V + state.dissipated
 
 
 class Integrator(Protocol):
@@ -168,11 +177,21 @@ def free_modes(omega, mass: float, Q, P, t):
 
 
 def _free_flow(system: System, x0, p0, Q, P, dt: float):
-    """Exact flow of ``H_free`` over ``dt``: translation and harmonic rotation."""
-    c, s_over, s_times = system.rotation(dt)
-    Qn = Q * c + P * s_over
-    Pn = P * c - Q * s_times
-    return x0 + p0 * (dt / system.mass), Qn, Pn
+    """Exact flow of ``H_free`` over ``dt``: translation and harmonic rotation (damped modes:
+    their exact damped flow). Returns ``(x0, Q, P, lost)``, ``lost`` (shape (B,) or ``0.0``)
+    the energy the damping took."""
+    x0 = x0 + p0 * (dt / system.mass)
+    if system.damping is None:
+        c, s_over, s_times = system.rotation(dt)
+        return x0, Q * c + P * s_over, P * c - Q * s_times, 0.0
+    if dt < 0:
+        raise ValueError("a damped mode cannot be flowed backwards in time")
+    a, b, c, d = damped_flow(system.omega, system.damping, system.mass, dt)
+    Qn = Q * a + P * b
+    Pn = P * d - Q * c
+    m, w2 = system.mass, system.omega**2
+    lost = ((P**2 - Pn**2) / (2.0 * m) + 0.5 * m * w2 * (Q**2 - Qn**2)).sum(axis=-1)
+    return x0, Qn, Pn, lost
 
 
 @dataclass(frozen=True)
@@ -196,8 +215,8 @@ class StrangSplit:
         h = 0.5 * dt
         p0 = state.p0 - h * state.F
         P = state.P - h * state.f
-        x0, Q, P = _free_flow(system, state.x0, p0, state.Q, P, dt)
-        new = _evaluate(system, state.t + dt, x0, p0, Q, P)
+        x0, Q, P, lost = _free_flow(system, state.x0, p0, state.Q, P, dt)
+        new = _evaluate(system, state.t + dt, x0, p0, Q, P, state.dissipated + lost)
         return replace(new, p0=new.p0 - h * new.F, P=new.P - h * new.f)
 
 

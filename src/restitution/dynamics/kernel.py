@@ -13,7 +13,12 @@ reference path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynam
   substeps merged into one, fused with the flow and the order sums in one pass over the
   modes);
 * energy drift, contact time, compression, force, contact-averaged and closest mode energies;
-* the rigorous stop test every ``CHECK_EVERY`` steps.
+* the rigorous stop test every ``CHECK_EVERY`` steps, and there a stop flag that the caller
+  raises on Ctrl-C (:func:`_in_threads`), so an interrupt ends a long collision within a few
+  steps;
+* for a viscoelastic body, each mode's exact damped flow (:mod:`restitution.dynamics.damping`)
+  in a loop of its own (:func:`_kick_flow_damped`), with the dissipated energy counted in the
+  energy balance; an elastic body runs the rotation loop, bit for bit as before.
 
 Only the summation order of reductions and the merged kicks differ from the NumPy path, so the
 two agree to round-off (checked to 1e-12 in ``tests/test_kernel.py``). Members of a batch are
@@ -38,9 +43,17 @@ import numba
 import numpy as np
 from numba import njit
 
+from restitution.dynamics.damping import fill_damped_flow
 from restitution.dynamics.spin import LINE, barrier
 
-__all__ = ["CHECK_EVERY", "STATUS_OK", "STATUS_UNSTABLE", "STATUS_TIMEOUT", "run_batch"]
+__all__ = [
+    "CHECK_EVERY",
+    "STATUS_INTERRUPTED",
+    "STATUS_OK",
+    "STATUS_TIMEOUT",
+    "STATUS_UNSTABLE",
+    "run_batch",
+]
 
 CHECK_EVERY = 8
 """Steps between two evaluations of the stop test (as in the NumPy path)."""
@@ -48,6 +61,7 @@ CHECK_EVERY = 8
 STATUS_OK = 0
 STATUS_UNSTABLE = 1  # drift above the abort level, or overflow
 STATUS_TIMEOUT = 2  # no separation within t_max or max_steps
+STATUS_INTERRUPTED = 3  # the caller raised the stop flag (Ctrl-C)
 
 SPLIT_MIN_MODES = 2000
 """A single collision with at least this many modes runs on two threads when numba has two
@@ -87,6 +101,7 @@ class _Control(NamedTuple):
     abort_drift: float  # stop as unstable above this drift; <= 0: never
     stop_log: float  # stop when alpha * gap > stop_log ...
     contact_tol: float  # ... and V < contact_tol * E0
+    stop: np.ndarray  # (1,) int64: the caller sets it to end every member at its next check
 
 
 class _Members(NamedTuple):
@@ -116,6 +131,7 @@ class _Outputs(NamedTuple):
     steps: np.ndarray  # int64
     t_end: np.ndarray
     x_end: np.ndarray
+    dissipated: np.ndarray  # energy dissipated by the modes' damping (absolute)
 
 
 # Reassociation lets the compiler vectorise the sums over orders and modes; it changes results
@@ -371,6 +387,41 @@ def _kick_flow(kick, Q, P, C, S, starts, cs, rot_c, rot_so, rot_st, ab):
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
+def _kick_flow_damped(kick, Q, P, C, S, starts, cs, flow, omega, m, ab):
+    """:func:`_kick_flow` for damped modes: the exact damped flow ``flow = (a, b, c, d)``
+    (:mod:`restitution.dynamics.damping`) instead of the rotation; returns the energy the flow
+    dissipated (each mode's energy before it minus after it). A loop of its own, so the
+    elastic loop keeps its three coefficients and its speed."""
+    K = starts.size - 1
+    fa = flow[0]
+    fb = flow[1]
+    fc = flow[2]
+    fd = flow[3]
+    lost = 0.0
+    for i in range(K):
+        c_i = cs[i]
+        s_i = cs[K + i]
+        a = 0.0
+        b = 0.0
+        for k in range(starts[i], starts[i + 1]):
+            ck = C[k]
+            sk = S[k]
+            pk = P[k] - kick * (ck * c_i + sk * s_i)
+            qk = Q[k]
+            qn = qk * fa[k] + pk * fb[k]
+            pn = pk * fd[k] - qk * fc[k]
+            Q[k] = qn
+            P[k] = pn
+            mw2 = m * omega[k] * omega[k]
+            lost += (pk * pk - pn * pn) / (2.0 * m) + 0.5 * mw2 * (qk * qk - qn * qn)
+            a += qn * ck
+            b += qn * sk
+        ab[i] = a
+        ab[K + i] = b
+    return lost
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
 def _close(half, Q, P, C, S, starts, cs, omega, m, out_e):
     """Closing half kick of a step fused with the mode energies (into ``out_e``); returns
     their sum."""
@@ -389,10 +440,10 @@ def _close(half, Q, P, C, S, starts, cs, omega, m, out_e):
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, g1, sync):
+def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, g1, sync, damped):
     """Integrate member ``b`` from its modal state ``out.Q[b], out.P[b]`` (advanced in place to
     the final state); returns (status, epsilon, drift, contact, max_comp, max_force, steps, t,
-    x0). Mode energies after, contact-summed and at closest approach go to ``out``.
+    x0, dissipated). Mode energies after, contact-summed and at closest approach go to ``out``.
 
     The order columns form two groups (``cols`` in ``quad``); this call advances the modes of
     groups ``g0 <= g < g1``: both groups on one thread, or one each on two threads that meet
@@ -409,6 +460,10 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
     stop test and a return always see the state after the full step. The contact mean and the
     closest copy stay flat loops over ``out_e`` after the stability tests (fused into the
     closing pass they were slower and would touch them before an unstable return).
+
+    ``damped``: the modes are damped and ``rotations[r]`` holds their exact flows
+    ``(a, b, c, d)`` (:func:`_kick_flow_damped`); each group's dissipated energy is summed and
+    counted in the energy balance, so the drift still measures the splitting error alone.
     """
     cos_phi, weight, trig, C, S, starts, g_max, cols, ucols, dcols = quad
     weights = ctl.weights
@@ -433,6 +488,7 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
     cs = np.zeros(K2)
     ew = np.empty(M)
     parts = np.zeros(2)
+    lost = np.zeros(2)  # energy dissipated so far, per group of orders
     m = mass
     e0 = 0.5 * m * v * v
     x0 = x_start
@@ -460,7 +516,7 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
     n_sub = weights.size
     while True:
         if steps >= max_steps or t > t_max:
-            return STATUS_TIMEOUT, 0.0, drift, contact, max_comp, max_force, steps, t, x0
+            return STATUS_TIMEOUT, 0.0, drift, contact, max_comp, max_force, steps, t, x0, 0.0
         kick = 0.5 * (weights[0] * dt)
         for s in range(n_sub):
             h_dt = weights[s] * dt
@@ -469,6 +525,21 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
             for g in range(g0, g1):
                 lo, hi = cols[g], cols[g + 1]
                 if lo == hi:
+                    continue
+                if damped:
+                    lost[g] += _kick_flow_damped(
+                        kick,
+                        Q,
+                        P,
+                        C,
+                        S,
+                        starts[lo : hi + 1],
+                        cs[2 * lo : 2 * hi],
+                        rotations[r],
+                        omega,
+                        m,
+                        ab[2 * lo : 2 * hi],
+                    )
                     continue
                 _kick_flow(
                     kick,
@@ -507,12 +578,14 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
             parts[g] = _close(
                 half, Q, P, C, S, starts[lo : hi + 1], cs[2 * lo : 2 * hi], omega, m, out_e
             )
+            if damped:
+                parts[g] += lost[g]
         h = p0 * p0 / (2.0 * m) + _meet(parts, 1, g0, g1, sync) + V
         if not math.isfinite(h):
-            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
+            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0, 0.0
         drift = max(drift, abs(h - h0) / h0)
         if abort_drift > 0.0 and drift > abort_drift:
-            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0
+            return STATUS_UNSTABLE, 0.0, drift, contact, max_comp, max_force, steps, t, x0, 0.0
         contact += frac * dt
         if frac > 0.0:
             w = frac * dt
@@ -524,7 +597,15 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
             max_comp = comp
         max_force = max(max_force, F)
         comp_prev = comp
-        if steps % CHECK_EVERY or p0 >= 0.0:
+        if steps % CHECK_EVERY:
+            continue
+        # The stop flag, read by the first thread and passed on through a meeting, so that the
+        # two threads of a shared member leave at the same step.
+        parts[0] = float(ctl.stop[0]) if g0 == 0 else 0.0
+        parts[1] = 0.0
+        if _meet(parts, 0, g0, g1, sync) != 0.0:
+            return STATUS_INTERRUPTED, 0.0, drift, contact, max_comp, max_force, steps, t, x0, 0.0
+        if p0 >= 0.0:
             continue
         for g in range(g0, g1):
             reach = 0.0
@@ -533,17 +614,20 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
             parts[g] = reach
         gap = -(x0 + 1.0 + _meet(parts, 2, g0, g1, sync))
         if gap * alpha > stop_log and V < contact_tol * e0:
-            return STATUS_OK, -p0 / (m * v), drift, contact, max_comp, max_force, steps, t, x0
+            dissipated = _meet(lost, 3, g0, g1, sync) if damped else 0.0
+            eps = -p0 / (m * v)
+            return STATUS_OK, eps, drift, contact, max_comp, max_force, steps, t, x0, dissipated
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _one(b, part, omega, mass, quad, ctl, members, out, shared):
+def _one(b, part, omega, gamma, mass, quad, ctl, members, out, shared):
     """Member ``b`` of a batch: its rotations for its own step, then :func:`_member`.
 
     ``part`` is -1 for a member run by one thread (both groups of orders); 0 or 1 for the two
     threads that share a member, each advancing one group and meeting the other through the
     ``shared`` arrays ``(flags, red, xs, ab)`` (fresh zeros, unused when ``part`` is -1).
     ``out.Q[b]``, ``out.P[b]`` hold the member's initial modal state and receive its final one.
+    ``gamma`` holds the modes' damping rates; all zero: the elastic body, with rotations.
     """
     N = omega.size
     M = quad.height.size
@@ -568,9 +652,20 @@ def _one(b, part, omega, mass, quad, ctl, members, out, shared):
             if weights[r] == weights[s]:
                 rot_of[s] = rot_of[r]
                 break
-    rotations = np.empty((weights.size, 3, N))
+    damped = False
+    for k in range(N):
+        if gamma[k] != 0.0:
+            damped = True
+            break
+    rotations = np.empty((weights.size, 4, N))
     for s in range(weights.size):
         if rot_of[s] != s:
+            continue
+        if damped:
+            h = weights[s] * members.dt[b]
+            fill_damped_flow(
+                omega, gamma, mass, h, rotations[s], starts[cols[g0]], starts[cols[g1]]
+            )
             continue
         for k in range(starts[cols[g0]], starts[cols[g1]]):
             arg = omega[k] * (weights[s] * members.dt[b])
@@ -579,10 +674,12 @@ def _one(b, part, omega, mass, quad, ctl, members, out, shared):
             rotations[s, 0, k] = math.cos(arg)
             rotations[s, 1, k] = sn / mw
             rotations[s, 2, k] = mw * sn
-    res = _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, g1, sync)
+    res = _member(
+        b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, g1, sync, damped
+    )
     if g0 > 0:
         return
-    status, eps, drift, contact, max_comp, max_force, steps, t_end, x_end = res
+    status, eps, drift, contact, max_comp, max_force, steps, t_end, x_end, dissipated = res
     out.status[b] = status
     out.epsilon[b] = eps
     out.drift[b] = drift
@@ -592,6 +689,7 @@ def _one(b, part, omega, mass, quad, ctl, members, out, shared):
     out.steps[b] = steps
     out.t_end[b] = t_end
     out.x_end[b] = x_end
+    out.dissipated[b] = dissipated
 
 
 def _threads() -> int:
@@ -641,6 +739,20 @@ def _group_columns(cols: np.ndarray) -> np.ndarray:
     return np.concatenate(idx).astype(np.intp)
 
 
+def _in_threads(workers: int, work, items, stop: np.ndarray) -> None:
+    """Run ``work`` over ``items`` on ``workers`` threads while this thread waits; an exception
+    here (Ctrl-C) raises ``stop`` first, so the compiled members return at their next check
+    and the threads are joined before it propagates."""
+    pool = ThreadPoolExecutor(max_workers=workers)
+    try:
+        list(pool.map(work, items))
+    except BaseException:
+        stop[0] = 1
+        raise
+    finally:
+        pool.shutdown(wait=True)
+
+
 def run_batch(
     omega: np.ndarray,
     mass: float,
@@ -657,6 +769,8 @@ def run_batch(
     contact_tol: float,
     Q0: np.ndarray | None = None,
     P0: np.ndarray | None = None,
+    damping: np.ndarray | None = None,
+    stop: np.ndarray | None = None,
 ) -> dict[str, np.ndarray]:
     """Integrate ``B`` independent collisions, each with its own step ``dt[b]``.
 
@@ -683,6 +797,14 @@ def run_batch(
     Q0, P0 : numpy.ndarray, shape (B, N), optional
         Modal coordinates (``R``) and momenta (``m c``) at the start; zero (disk at rest in its
         undeformed shape) when omitted.
+    damping : numpy.ndarray, shape (N,), optional
+        Damping rate ``gamma_k`` of every mode (``c / R``, :mod:`restitution.dynamics.damping`);
+        omitted or all zero: the elastic body. Only with positive ``weights`` (Strang).
+    stop : numpy.ndarray, shape (1,), int64, optional
+        A flag the members read every ``CHECK_EVERY`` steps: once it is nonzero each returns
+        with status ``STATUS_INTERRUPTED``. The members always run in worker threads, so
+        Ctrl-C (``KeyboardInterrupt`` in the waiting main thread) raises it and returns within
+        ``CHECK_EVERY`` steps instead of when the collision ends.
 
     Returns
     -------
@@ -692,6 +814,7 @@ def run_batch(
         ``energy_sum`` (B, N) contact-time integral of the mode energies, ``energy_closest``
         (B, N) at the closest approach. Energies are absolute (not divided by ``E0``).
         ``final_Q``, ``final_P`` (B, N) and ``final_x0`` (B,): the state where the run stopped.
+        ``dissipated`` (B,): the energy the damping took (absolute; zero for an elastic body).
     """
     B, N = v.size, omega.size
     # Modes sorted by order (stable, so each order keeps its original sequence); results are
@@ -716,6 +839,7 @@ def run_batch(
         steps=np.zeros(B, dtype=np.int64),
         t_end=scalar.copy(),
         x_end=scalar.copy(),
+        dissipated=scalar.copy(),
     )
     kquad = _Quadrature(
         height=np.ascontiguousarray(quad.height, dtype=np.float64),
@@ -735,12 +859,17 @@ def run_batch(
         abort_drift=-1.0 if abort_drift is None else float(abort_drift),
         stop_log=float(stop_log),
         contact_tol=float(contact_tol),
+        stop=np.zeros(1, dtype=np.int64) if stop is None else stop,
     )
     members = _Members(
         *(np.ascontiguousarray(a, dtype=np.float64) for a in (v, alpha, x_start, dt, t_max))
     )
+    gamma = np.zeros(N) if damping is None else np.asarray(damping, dtype=np.float64)[perm]
+    if np.any(gamma != 0.0) and min(weights) <= 0.0:
+        raise ValueError("damped modes need a splitting with positive substeps (Strang)")
     args = (
         np.ascontiguousarray(omega[perm], dtype=np.float64),
+        np.ascontiguousarray(gamma),
         float(mass),
         kquad,
         ctl,
@@ -756,8 +885,7 @@ def run_batch(
             np.zeros((2, 2, quad.height.size)),
             np.zeros(kquad.basis.shape[1]),
         )
-        with ThreadPoolExecutor(max_workers=2) as pool:
-            list(pool.map(lambda part: _one(0, part, *args, shared), (0, 1)))
+        _in_threads(2, lambda part: _one(0, part, *args, shared), (0, 1), ctl.stop)
     else:
         # Members differ in cost (fast speeds take more steps at a given step), so the
         # threads take them one at a time, in the caller's order; the compiled member
@@ -774,13 +902,7 @@ def run_batch(
         def member(b: int) -> None:
             _one(b, -1, *args, unused)
 
-        workers = min(threads, B)
-        if workers == 1:
-            for b in range(B):
-                member(b)
-        else:
-            with ThreadPoolExecutor(max_workers=workers) as pool:
-                list(pool.map(member, range(B)))
+        _in_threads(min(threads, B), member, range(B), ctl.stop)
     back = np.empty_like(perm)
     back[perm] = np.arange(N)
     return {
@@ -798,4 +920,5 @@ def run_batch(
         "final_Q": out.Q[:, back],
         "final_P": out.P[:, back],
         "final_x0": out.x_end,
+        "dissipated": out.dissipated,
     }

@@ -12,6 +12,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from restitution.bodies.base import ModalBody
+from restitution.bodies.viscoelastic import mode_damping
 from restitution.dynamics.integrators import (
     INTEGRATORS,
     System,
@@ -77,7 +78,7 @@ def _run(
     B = v.size
     e0 = 0.5 * m * v**2
     begin = start_of(body, v, alpha, quad, initial)
-    system = System(omega=body.omega, mass=m, quad=quad, alpha=alpha)
+    system = System(omega=body.omega, mass=m, quad=quad, alpha=alpha, damping=mode_damping(body))
     state = initial_state(system, begin.x0, m * v, begin.Q, begin.P)
     t_max = float(np.max(begin.t_max))
     N = len(body)
@@ -106,7 +107,7 @@ def _run(
         steps += 1
         a = active
         e_all = mode_energies(system, state)
-        h = state.p0**2 / (2.0 * m) + e_all.sum(axis=1) + state.V
+        h = state.p0**2 / (2.0 * m) + e_all.sum(axis=1) + state.V + state.dissipated
         if not np.all(np.isfinite(h)):
             if abort_drift is not None:
                 raise Unstable()
@@ -163,6 +164,8 @@ def _run(
                 "final_Q": state.Q[i].copy(),
                 "final_P": state.P[i].copy(),
                 "final_x0": float(state.x0[i]),
+                "dissipated": float(np.broadcast_to(state.dissipated, state.x0.shape)[i])
+                / e0[orig],
             }  # the rest is known when every member has finished
         keep = ~done
         active = a[keep]

@@ -2,7 +2,9 @@
 
 The same Hamiltonian as :mod:`restitution.dynamics.collision`, written as a plain first-order system
 ``y = (x0, p0, Q, P)`` with no splitting, for tests and benchmarks. Slow: the adaptive steps
-must follow every mode's oscillation.
+must follow every mode's oscillation. A viscoelastic body's damping enters as the force
+``-gamma_k P_k`` and the energy it takes is integrated alongside (``y`` gains one component,
+``int sum gamma_k P_k^2 / m dt``).
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from restitution.bodies.base import ModalBody
+from restitution.bodies.viscoelastic import mode_damping
 from restitution.dynamics.settings import CONTACT_TOL
 from restitution.dynamics.start import start_position_of
 from restitution.dynamics.wall import wall_terms
@@ -59,7 +62,8 @@ def collide_dop853(
     Returns
     -------
     dict
-        ``epsilon``, ``energy_after`` (per mode, fraction of E0), ``energy_drift``, ``nfev``,
+        ``epsilon``, ``energy_after`` (per mode, fraction of E0), ``energy_dissipated``
+        (fraction of E0), ``energy_drift`` (with the dissipated energy counted), ``nfev``,
         ``wall_time_s``, ``t_end``.
     """
     m, w = body.mass, body.omega
@@ -86,17 +90,22 @@ def collide_dop853(
 
     wall = wall_terms_dense if G is not None else wall_terms_orders
 
+    gamma = mode_damping(body)
+    gamma = np.zeros(N) if gamma is None else gamma
+
     def rhs(_t, y):
-        x0, p0, Q, P = y[0], y[1], y[2 : 2 + N], y[2 + N :]
+        x0, p0, Q, P = y[0], y[1], y[2 : 2 + N], y[2 + N : 2 + 2 * N]
         _, F, f = wall(x0, Q)
-        return np.concatenate(([p0 / m, -F], P / m, -m * w**2 * Q - f))
+        lost = np.sum(gamma * P**2) / m
+        return np.concatenate(([p0 / m, -F], P / m, -m * w**2 * Q - f - gamma * P, [lost]))
 
     def energy(y):
-        Q, P = y[2 : 2 + N], y[2 + N :]
+        Q, P = y[2 : 2 + N], y[2 + N : 2 + 2 * N]
         V, _, _ = wall(y[0], Q)
-        return y[1] ** 2 / (2 * m) + np.sum(P**2 / (2 * m) + 0.5 * m * (w * Q) ** 2) + V
+        modes = np.sum(P**2 / (2 * m) + 0.5 * m * (w * Q) ** 2)
+        return y[1] ** 2 / (2 * m) + modes + V + y[-1]
 
-    y0 = np.zeros(2 + 2 * N)
+    y0 = np.zeros(3 + 2 * N)
     y0[0], y0[1] = x_start, m * v
     start = time.perf_counter()
     sol = solve_ivp(
@@ -104,7 +113,7 @@ def collide_dop853(
     )
     elapsed = time.perf_counter() - start
     y = sol.y[:, -1]
-    Q, P = y[2 : 2 + N], y[2 + N :]
+    Q, P = y[2 : 2 + N], y[2 + N : 2 + 2 * N]
     e_modes = (P**2 / (2 * m) + 0.5 * m * (w * Q) ** 2) / e0
     h = np.array(
         [energy(sol.y[:, i]) for i in range(0, sol.y.shape[1], max(1, sol.y.shape[1] // 200))]
@@ -115,6 +124,7 @@ def collide_dop853(
     return {
         "epsilon": float(-y[1] / (m * v)),
         "energy_after": e_modes,
+        "energy_dissipated": float(y[-1] / e0),
         "energy_drift": float(np.max(np.abs(h - h[0])) / h[0]),
         "nfev": int(sol.nfev),
         "wall_time_s": elapsed,

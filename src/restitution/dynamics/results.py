@@ -98,6 +98,20 @@ class CollisionResult:
         Centre position where the run stopped, ``R`` (``nan`` when not recorded).
     t_end : float
         Time from the moment the centre passed the start position to the stop, ``R / c``.
+    relaxation_time : float
+        ``tau`` of a viscoelastic body (:class:`restitution.bodies.viscoelastic.Viscoelastic`),
+        ``R / c``; ``0`` for an elastic one.
+    energy_dissipated : float
+        Energy the material's damping took up to the stop, fraction of the initial kinetic
+        energy (``0`` for an elastic body): ``1 - epsilon^2`` minus the vibration energy after
+        (a damped body starts at rest; :mod:`restitution.dynamics.collision` says why the
+        balance and not the sum of the flows' losses).
+    step_error : float or None
+        A viscoelastic body's step is judged by epsilon, not by the energy drift: the
+        Richardson estimate ``|eps(dt) - eps(dt/2)| / 3`` of the error of the reported epsilon
+        (run with ``dt/2``), held below ``energy_tol / 2``; ``None`` for an elastic body (and
+        a fixed step). Its ``energy_drift`` includes the energy the splitting's kicks give to
+        damped modes and is reported, not checked (docs/damping.md).
     """
 
     method: str
@@ -126,6 +140,9 @@ class CollisionResult:
     final_P: np.ndarray = field(default_factory=lambda: np.zeros(0))
     final_x0: float = float("nan")
     t_end: float = float("nan")
+    relaxation_time: float = 0.0
+    energy_dissipated: float = 0.0
+    step_error: float | None = None
 
     @property
     def status(self) -> Status:
@@ -152,7 +169,8 @@ class CollisionResult:
 
     @property
     def energy_loss(self) -> float:
-        """``1 - epsilon^2``: the fraction of kinetic energy left in vibrations."""
+        """``1 - epsilon^2``: the fraction of kinetic energy lost: left in vibrations and, for a
+        viscoelastic body, dissipated (:attr:`energy_dissipated`)."""
         return 1.0 - self.epsilon**2
 
     def to_dict(self, *, modes: bool = True) -> dict:

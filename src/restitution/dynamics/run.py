@@ -57,6 +57,11 @@ class MemberRun:
         Recorded time histories (NumPy path with ``record=True`` only).
     dt : float or None
         The step, set by the driver.
+    dissipated : float
+        Energy the modes' damping took during the run, fraction of ``E0`` (elastic: 0).
+    step_error : float or None
+        A damped body's estimate of epsilon's error from the step (Richardson, the driver sets
+        it); ``None``: the energy drift judged the step.
     """
 
     epsilon: float
@@ -74,6 +79,8 @@ class MemberRun:
     energy_closest: np.ndarray
     history: History | None = None
     dt: float | None = None
+    dissipated: float = 0.0
+    step_error: float | None = None
 
 
 def contact_mean(summed: np.ndarray, contact: float, e0: float) -> np.ndarray:

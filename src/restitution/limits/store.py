@@ -144,6 +144,9 @@ class PointSpec:
         the first body's, ``v`` the relative speed of the centres, ``n_modes`` the lowest modes
         of both together; the key holds the partner and the pair's code version. Keys of points
         without a partner do not name it (they are those of the stores written before pairs).
+    relaxation_time : float
+        ``tau`` of a viscoelastic body (:class:`restitution.bodies.viscoelastic.Viscoelastic`),
+        ``R / c``; ``0``: elastic, and then the key does not name it (as for ``partner``).
     """
 
     nu: float
@@ -155,8 +158,10 @@ class PointSpec:
     options: tuple[tuple[str, Any], ...] = ()
     geometry: str = "disk"
     partner: Partner | None = None
+    relaxation_time: float = 0.0
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "relaxation_time", float(self.relaxation_time))
         object.__setattr__(self, "nu", float(self.nu))
         object.__setattr__(self, "v", float(self.v))
         object.__setattr__(self, "alpha", float(self.alpha))
@@ -178,6 +183,7 @@ class PointSpec:
             self.integrator,
             self.options,
             self.partner,
+            self.relaxation_time,
         )
 
     @property
@@ -193,6 +199,8 @@ class PointSpec:
             del d["partner"]
         else:
             d["partner"] = self.partner.to_dict()
+        if self.relaxation_time == 0.0:
+            del d["relaxation_time"]
         d["code_version"] = self.code_version
         return _canonical(d)
 
@@ -592,6 +600,7 @@ def _row_to_point(row: tuple) -> StoredPoint:
         options=options,
         geometry=d.get("geometry", "disk"),  # rows of 0.1.0 before the sphere name no body
         partner=_partner(d.get("partner"), num),
+        relaxation_time=num(d.get("relaxation_time", 0.0)),
     )
     values = dict(zip(_SCALARS, scalars, strict=True))
     nan = float("nan")

@@ -34,6 +34,7 @@ import numpy as np
 
 from restitution.bodies.kinds import body_kind
 from restitution.bodies.pair.partner import Partner
+from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.errors import InputError
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
@@ -121,6 +122,11 @@ class SweepSettings:
         (:class:`restitution.bodies.pair.partner.Partner`): ``velocities`` are relative speeds
         of the centres (``c`` of the first body), ``n_modes`` the lowest modes of both together
         (one common frequency cutoff), the walls scaled by the pair's compression.
+    relaxation_time : float
+        ``tau`` (``R / c``) of a viscoelastic body
+        (:class:`restitution.bodies.viscoelastic.Viscoelastic`); ``0``: elastic. A damped sweep
+        runs Strang's splitting (``integrator`` ``None`` becomes ``"split"``; another is
+        refused).
     """
 
     velocities: tuple[float, ...] = PAPER_VELOCITIES
@@ -137,8 +143,19 @@ class SweepSettings:
     batch_size: int = 4
     geometry: str = "disk"
     partner: Partner | None = None
+    relaxation_time: float = 0.0
 
     def __post_init__(self) -> None:
+        tau = self.relaxation_time
+        if isinstance(tau, bool) or not isinstance(tau, (int, float)) or not tau >= 0:
+            raise InputError(f"relaxation_time must be a number >= 0 (R/c), got {tau!r}")
+        object.__setattr__(self, "relaxation_time", float(tau))
+        if tau > 0:
+            if self.integrator not in (None, "split"):
+                raise InputError(
+                    f"a viscoelastic sweep runs integrator='split', got {self.integrator!r}"
+                )
+            object.__setattr__(self, "integrator", "split")
         for name in ("velocities", "alphas", "n_modes"):
             values = getattr(self, name)
             if len(values) == 0:
@@ -170,6 +187,8 @@ class SweepSettings:
                 object.__setattr__(self, "partner", Partner.from_key(self.partner))
             if self.select != "lowest":
                 raise InputError("a pair takes the lowest modes of both bodies (select='lowest')")
+        if self.relaxation_time and self.select != "lowest":
+            raise InputError("a viscoelastic body takes its lowest modes (select='lowest')")
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary."""
@@ -185,6 +204,7 @@ class SweepSettings:
             "batch_size": self.batch_size,
             "geometry": self.geometry,
             **({} if self.partner is None else {"partner": self.partner.to_dict()}),
+            **({"relaxation_time": self.relaxation_time} if self.relaxation_time else {}),
         }
 
     def point(self, nu: float, v: float, alpha: float, n_modes: int) -> PointSpec:
@@ -201,6 +221,7 @@ class SweepSettings:
             self.options,
             self.geometry,
             self.partner,
+            self.relaxation_time,
         )
 
     def alphas_at(
@@ -342,6 +363,8 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
     if any(s.group != first.group for s in specs):
         raise InputError("collide_points needs points that share nu, N, selection and options")
     settings = CollisionSettings(integrator=first.integrator, **dict(first.options))
+    if first.select == "ranked" and first.relaxation_time:
+        raise InputError("a viscoelastic body takes its lowest modes (select='lowest')")
     if first.select == "ranked":
         pool = get_modes(first.nu, count=max(RANKING_POOL, first.n_modes), geometry=first.geometry)
         out = []
@@ -358,6 +381,8 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
         modes = first.partner.pair(first.nu, first.n_modes, first.geometry, get_modes)
     else:
         modes = get_modes(first.nu, count=first.n_modes, geometry=first.geometry)
+    if first.relaxation_time:
+        modes = Viscoelastic(modes, first.relaxation_time)
     if len(specs) > 1:
         try:
             results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)

@@ -1,0 +1,382 @@
+"""epsilon(w) of a real, damping grain: the loss to vibrations and the material's viscous loss.
+
+Units: SI at the edge (speeds in m/s, the relaxation time in s, the radius in m); inside, the
+law's reduced units (``v`` in ``c``, ``tau`` in ``R / c``, ``R`` the grain's radius; for two
+grains of different sizes the smaller one's).
+
+A grain of a Kelvin-Voigt material with one relaxation time ``tau`` (viscosities ``tau`` times
+the moduli, :mod:`restitution.bodies.viscoelastic`) loses kinetic energy in two ways: to its
+vibrations (the elastic law, :class:`restitution.laws.si_law.SILaw`) and to the viscous force
+of the quasistatic contact, ``tau dF_el/dt`` (:mod:`restitution.quasistatic.viscoelastic`; for
+a sphere the law of Brilliantov et al. 1996 and Ramirez et al. 1999). The two fractions of the
+kinetic energy add::
+
+    1 - epsilon^2 = (1 - epsilon_elastic^2) + (1 - epsilon_viscous^2),
+
+the first order of both small losses; the product of the two is the size of what this leaves
+out. The modal model with the damping in every mode (:class:`~restitution.bodies.viscoelastic.
+Viscoelastic`) computes the two together; docs/damping.md compares it with this sum.
+
+The relaxation time comes from the user (``relaxation_time_s`` with the grain's ``radius_m``:
+``tau c / R`` is what enters), or from one measured coefficient of restitution at one speed:
+``tau`` is then the one for which the sum gives the measured value there. Only ``tau c / R``
+is inferred, so no radius is needed: grains of the measured size (and material) follow the same
+law at every speed.
+
+Errors: the elastic law's error, and, for an inferred ``tau``, how far ``tau`` moves when the
+elastic law at the measured speed moves by its error; added in quadrature (they are counted
+as independent, which overstates the error near the measured speed).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy.optimize import brentq
+
+from restitution.errors import InputError
+from restitution.laws.si_law import SILaw
+from restitution.status import Status
+
+__all__ = [
+    "SPHERE_SIZE_COEFFICIENT",
+    "DampedLaw",
+    "DampedPoint",
+    "damped_law",
+    "viscous_epsilon",
+    "viscous_max_speed",
+]
+
+SPHERE_SIZE_COEFFICIENT = 0.44
+"""The finite sphere's viscous loss exceeds the one on Hertz's law by up to this times
+``sqrt(delta_max / R)`` (relative): its quasistatic contact is stiffer than Hertz's half-space
+(docs/spheres.md), and the damped modal sphere dissipates accordingly more. The damped modal
+points (:mod:`restitution.laws.damped_check`, ``nu = 0.3``) measured 0.31, 0.32 and 0.44 at
+``v = 0.003, 0.00627, 0.0131``; the largest is used. Counted in the error of a sphere's
+damped law, not corrected (one Poisson number, three speeds)."""
+
+
+def _contact(si: SILaw):
+    """The quasistatic contact law and mass of ``si``'s body (reduced units)."""
+    from restitution.quasistatic.hertz import contact_law
+    from restitution.quasistatic.hertz_pair import pair_contact_law, pair_mass
+    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
+
+    nu = float(si.law.nu)
+    pair = si.law.partner
+    if pair is not None:
+        r = pair.radius_ratio
+        return pair_contact_law(nu, radius_ratio=r), pair_mass(r)
+    if si.grain.body == "sphere":
+        return sphere_contact_law(nu), SPHERE_MASS
+    return contact_law(nu), math.pi
+
+
+def viscous_max_speed(si: SILaw) -> float:
+    """The largest reduced speed (``c``) the quasistatic contact law of ``si``'s body takes."""
+    law, mass = _contact(si)
+    return float(law.max_speed(mass))
+
+
+def _viscous(si: SILaw, v, tau: float):
+    """The quasistatic viscous collision of the law's body at reduced speeds ``v``."""
+    from restitution.quasistatic.viscoelastic import viscous_collision
+
+    law, mass = _contact(si)
+    return viscous_collision(law, np.atleast_1d(np.asarray(v, dtype=float)), tau, mass=mass)
+
+
+def viscous_epsilon(si: SILaw, v, tau: float) -> np.ndarray:
+    """epsilon of the viscous force alone at the law's reduced speeds ``v`` (``c``) for the
+    reduced relaxation time ``tau`` (``R / c``): the quasistatic collision of the law's body
+    (disk or sphere on a wall, identical grains as the wall at ``v``, two sizes as the pair)."""
+    return _viscous(si, v, tau).epsilon
+
+
+@dataclass(frozen=True)
+class DampedPoint:
+    """epsilon of a damping grain at one SI speed.
+
+    Attributes
+    ----------
+    speed_m_s, v_over_c : float
+        Impact speed ``w`` (m/s) and the law's reduced speed (``c``).
+    epsilon, epsilon_err : float or None
+        Both losses together (module docstring) and its error; ``None`` where the elastic law
+        has no value (``status`` says why).
+    epsilon_elastic, epsilon_elastic_err : float or None
+        The loss to vibrations alone: the elastic law.
+    epsilon_viscous : float or None
+        The viscous loss alone (quasistatic); ``None`` beyond the quasistatic law's range.
+    status : str
+        The elastic law's status at this speed (:class:`restitution.status.Status`).
+    note : str
+    """
+
+    speed_m_s: float
+    v_over_c: float
+    epsilon: float | None
+    epsilon_err: float | None
+    epsilon_elastic: float | None
+    epsilon_elastic_err: float | None
+    epsilon_viscous: float | None
+    status: str
+    note: str = ""
+
+    def to_dict(self) -> dict:
+        return dict(self.__dict__)
+
+
+def _combine(eps_el, eps_v):
+    """``sqrt(eps_el^2 + eps_v^2 - 1)``: the two losses of kinetic energy added; ``0`` when
+    they add up to all of it."""
+    sq = np.asarray(eps_el, dtype=float) ** 2 + np.asarray(eps_v, dtype=float) ** 2 - 1.0
+    return np.sqrt(np.maximum(sq, 0.0))
+
+
+@dataclass(frozen=True, eq=False)
+class DampedLaw:
+    """epsilon(w) of a grain whose material damps (module docstring).
+
+    Attributes
+    ----------
+    si : SILaw
+        The elastic law of the grain against its partner.
+    tau : float
+        Relaxation time in the law's units, ``tau c / R``.
+    tau_err : float
+        Its error (inferred ``tau``: from the elastic law's error at the measured speed; given
+        ``tau``: 0).
+    radius_m : float or None
+        The grain's radius, m, when known (then :attr:`relaxation_time_s` is known).
+    measured : tuple of (float, float) or None
+        ``(epsilon, speed_m_s)`` the relaxation time was inferred from.
+    """
+
+    si: SILaw
+    tau: float
+    tau_err: float = 0.0
+    radius_m: float | None = None
+    measured: tuple[float, float] | None = None
+
+    @property
+    def relaxation_time_s(self) -> float | None:
+        """``tau`` in seconds (``tau R / c``), when the radius is known."""
+        if self.radius_m is None:
+            return None
+        return self.tau * self.radius_m / self.si.grain.c_m_s
+
+    def points(self, speeds_m_s) -> tuple[DampedPoint, ...]:
+        """epsilon, its parts and errors at every speed (m/s); never raises for range."""
+        out = []
+        for p in self.si.points(speeds_m_s):
+            head = {"speed_m_s": p.speed_m_s, "v_over_c": p.v_over_c}
+            elastic = {"epsilon_elastic": p.epsilon, "epsilon_elastic_err": p.epsilon_err}
+            try:
+                eps_v, eps, err = (float(x[0]) for x in self._parts(p.v_over_c, p.epsilon,
+                                                                     p.epsilon_err))  # fmt: skip
+            except InputError as exc:
+                out.append(DampedPoint(**head, epsilon=None, epsilon_err=None, **elastic,
+                                       epsilon_viscous=None, status=Status.OUTSIDE,
+                                       note=f"viscous part: {exc}"))  # fmt: skip
+                continue
+            both = {"epsilon": None, "epsilon_err": None}
+            if p.epsilon is not None:
+                both = {"epsilon": eps, "epsilon_err": err}
+            out.append(DampedPoint(**head, **both, **elastic, epsilon_viscous=eps_v,
+                                   status=p.status, note=p.note))  # fmt: skip
+        return tuple(out)
+
+    def _parts(self, v, eps_el, err_el) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(epsilon_viscous, epsilon, error)`` at reduced speeds ``v`` with the elastic law's
+        ``eps_el +- err_el`` there (``eps_el`` may be ``None``: then only the first is
+        finite). The error adds in quadrature the elastic law's error carried through the sum,
+        the spread of an inferred ``tau``, the product of the two losses (what the sum leaves
+        out), and for a sphere the size of its contact beyond Hertz's half-space
+        (:data:`SPHERE_SIZE_COEFFICIENT`)."""
+        col = _viscous(self.si, v, self.tau)
+        eps_v = col.epsilon
+        if eps_el is None:
+            nan = np.full(eps_v.shape, np.nan)
+            return eps_v, nan, nan
+        eps_el = np.asarray(eps_el, dtype=float)
+        err_el = np.asarray(err_el, dtype=float)
+        eps = _combine(eps_el, eps_v)
+        err = eps_el * err_el / np.maximum(eps, 1e-300)
+        if self.tau_err > 0.0:
+            lo = viscous_epsilon(self.si, v, max(self.tau - self.tau_err, 0.0))
+            hi = viscous_epsilon(self.si, v, self.tau + self.tau_err)
+            err = np.hypot(err, 0.5 * np.abs(_combine(eps_el, lo) - _combine(eps_el, hi)))
+        # What the sum leaves out: the product of the two losses (docs/damping.md).
+        left_out = (1.0 - eps_el**2) * (1.0 - eps_v**2) / (2.0 * np.maximum(eps, 1e-300))
+        err = np.hypot(err, left_out)
+        if self.si.grain.body == "sphere":
+            grow = 1.0 + SPHERE_SIZE_COEFFICIENT * np.sqrt(col.elastic_max_compression)
+            bigger = np.sqrt(np.maximum(1.0 - (1.0 - eps_v**2) * grow, 0.0))
+            err = np.hypot(err, np.abs(_combine(eps_el, bigger) - eps))
+        return eps_v, eps, err
+
+    def as_si_law(self) -> SILaw:
+        """The damped law as an :class:`SILaw` of its own: the sum at every computed speed of
+        the elastic law (errors as in :meth:`points`), so that tables, closed forms, constants
+        and snippets (:mod:`restitution.laws.exports`) serve it as they serve an elastic law.
+        Points of the low-speed theory keep their route."""
+        from restitution.laws.law import QUASISTATIC_ROUTE, EpsilonLaw
+
+        law = self.si.law
+        v = np.asarray(law.v, dtype=float)
+        served = v <= viscous_max_speed(self.si)
+        if served.sum() < 2:
+            raise InputError(
+                "the quasistatic viscous law serves fewer than two of the elastic law's speeds; "
+                "no damped law can be tabulated"
+            )
+        v = v[served]
+        _, eps, err = self._parts(v, law.epsilon(v), law.epsilon_err(v))
+        quasi = np.asarray(getattr(law, "quasistatic", np.zeros(served.size, bool)), bool)[served]
+        records = [
+            {"v": float(x), **({"route": QUASISTATIC_ROUTE} if q else {})}
+            for x, q in zip(v, quasi, strict=True)
+        ]
+        source = f"{self.si.law_source}, damped: tau c/R = {self.tau:.6g} +- {self.tau_err:.2g}"
+        damped = EpsilonLaw.from_points(
+            float(law.nu),
+            v,
+            eps,
+            err,
+            asymptotic_ok=np.asarray(law.asymptotic_ok, bool)[served],
+            parameters={"relaxation_time_c_over_R": self.tau},
+            geometry=law.geometry,
+            partner=law.partner,
+        )
+        metadata = {**damped.metadata, "source": source, "points": records}
+        return SILaw(self.si.grain, self.si.against, replace(damped, metadata=metadata))
+
+    def to_dict(self, speeds_m_s) -> dict:
+        """JSON of ``restitution law`` with damping: the elastic law's, with the relaxation
+        time and, per point, ``epsilon_elastic`` and ``epsilon_viscous`` beside ``epsilon``."""
+        d = self.si.to_dict(speeds_m_s)
+        d["damping"] = {
+            "model": "Kelvin-Voigt, one relaxation time (viscosities = tau x moduli); viscous "
+            "loss of the quasistatic contact, F = F_el + tau dF_el/dt; losses of kinetic "
+            "energy added: 1 - eps^2 = (1 - eps_elastic^2) + (1 - eps_viscous^2)",
+            "tau_c_over_R": self.tau,
+            "tau_c_over_R_err": self.tau_err,
+            "relaxation_time_s": self.relaxation_time_s,
+            "radius_m": self.radius_m,
+            "measured": None
+            if self.measured is None
+            else {"epsilon": self.measured[0], "speed_m_s": self.measured[1]},
+        }
+        d["points"] = [p.to_dict() for p in self.points(speeds_m_s)]
+        return d
+
+
+def _positive(name: str, value, unit: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+        raise InputError(f"{name} must be a number ({unit}), got {type(value).__name__}")
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"{name} must be a finite number > 0 ({unit}), got {value!r}")
+    return value
+
+
+def _infer_tau(si: SILaw, eps_m: float, speed: float) -> tuple[float, float]:
+    """``tau c / R`` for which the sum gives ``eps_m`` at ``speed`` (m/s), and its error."""
+    (p,) = si.points([speed])
+    if p.epsilon is None:
+        raise InputError(
+            f"the elastic law has no value at the measured speed {speed:g} m/s ({p.note}); "
+            "measure at a speed the law serves, or give --relaxation-time"
+        )
+    v = p.v_over_c
+
+    def solve(eps_el: float) -> float:
+        if eps_m >= eps_el:
+            return 0.0
+        # The viscous epsilon the sum needs, then the tau that gives it.
+        need = math.sqrt(max(eps_m**2 + 1.0 - eps_el**2, 0.0))
+
+        def gap(log_tau: float) -> float:
+            return float(viscous_epsilon(si, v, math.exp(log_tau))[0]) - need
+
+        lo, hi = math.log(1e-9), math.log(1e3)
+        if gap(hi) > 0:
+            raise InputError(
+                f"the measured epsilon {eps_m:.10g} at {speed:g} m/s needs more damping than a "
+                "relaxation time of 1000 R/c gives; check the measurement"
+            )
+        if gap(lo) < 0:
+            return math.exp(lo)
+        return math.exp(brentq(gap, lo, hi, xtol=1e-12, rtol=1e-10))
+
+    if eps_m > p.epsilon + p.epsilon_err:
+        raise InputError(
+            f"the measured epsilon {eps_m:.10g} at {speed:g} m/s is above the elastic law's "
+            f"{p.epsilon:.6f} +- {p.epsilon_err:.2g} there: the grain would lose less than to its "
+            "vibrations alone, which no damping explains; check the measurement and the "
+            "material constants"
+        )
+    tau = solve(p.epsilon)
+    spread = [solve(min(p.epsilon + s * p.epsilon_err, 1.0)) for s in (-1.0, 1.0)]
+    return tau, 0.5 * abs(spread[1] - spread[0])
+
+
+def damped_law(
+    si: SILaw,
+    *,
+    relaxation_time_s: float | None = None,
+    radius_m: float | None = None,
+    measured_epsilon: float | None = None,
+    measured_speed_m_s: float | None = None,
+) -> DampedLaw:
+    """The law of ``si``'s grain made of a material that damps.
+
+    Parameters
+    ----------
+    si : SILaw
+        The elastic law (:func:`restitution.laws.si_law.si_law`).
+    relaxation_time_s, radius_m : float, optional
+        The material's relaxation time (s) and the grain's radius (m; for two sizes the smaller
+        grain's): ``tau c / R`` follows.
+    measured_epsilon, measured_speed_m_s : float, optional
+        Instead: one measured coefficient of restitution and the impact speed (m/s, the same
+        meaning as the law's speeds) it was measured at.
+
+    Examples
+    --------
+    >>> from restitution.laws.si_law import si_law
+    >>> steel = si_law(210e9, 0.3, 7850, "sphere", "wall")
+    >>> d = damped_law(steel, measured_epsilon=0.9, measured_speed_m_s=1.0)
+    >>> round(d.points([1.0])[0].epsilon, 6)
+    0.9
+    """
+    if not isinstance(si, SILaw):
+        raise InputError(f"si must be an SILaw (see si_law), got {type(si).__name__}")
+    given = relaxation_time_s is not None
+    measured = measured_epsilon is not None or measured_speed_m_s is not None
+    if given == measured:
+        raise InputError(
+            "give the relaxation time (relaxation_time_s with radius_m) or one measurement "
+            "(measured_epsilon with measured_speed_m_s), one of the two"
+        )
+    if given:
+        tau_s = _positive("relaxation_time_s", relaxation_time_s, "s")
+        if radius_m is None:
+            raise InputError(
+                "a relaxation time in seconds needs the grain's radius (radius_m, m): tau c / R "
+                "is what sets the viscous loss"
+            )
+        radius = _positive("radius_m", radius_m, "m")
+        return DampedLaw(si, tau_s * si.grain.c_m_s / radius, 0.0, radius)
+    if measured_epsilon is None or measured_speed_m_s is None:
+        raise InputError("a measurement needs both measured_epsilon and measured_speed_m_s")
+    eps_m = _positive("measured_epsilon", measured_epsilon, "dimensionless")
+    if eps_m >= 1.0:
+        raise InputError(f"measured_epsilon must lie in (0, 1), got {eps_m!r}")
+    speed = _positive("measured_speed_m_s", measured_speed_m_s, "m/s")
+    radius = None if radius_m is None else _positive("radius_m", radius_m, "m")
+    tau, tau_err = _infer_tau(si, eps_m, speed)
+    return DampedLaw(si, tau, tau_err, radius, (eps_m, speed))

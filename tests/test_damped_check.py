@@ -1,0 +1,82 @@
+"""The damped modal model against the quasistatic viscous law (issue 29, docs/damping.md).
+
+The stored points (``laws/data/damped_reference.json``, written by
+``python -m restitution.laws.damped_check``) are the modal model with every mode damped,
+extrapolated alpha, N -> infinity through the production sweeps; the comparison is recomputed
+here from the quasistatic route and the shipped elastic laws."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from restitution.laws.damped_check import CHECK_POINTS, compare, load_reference, modal_point
+
+
+@pytest.fixture(scope="module")
+def reference():
+    return load_reference()
+
+
+def test_reference_holds_every_check_point(reference):
+    got = {(p["geometry"], p["nu"], p["v"], p["tau"]) for p in reference}
+    assert got == set(CHECK_POINTS)
+
+
+def _comparisons(reference):
+    return [
+        (p, compare(p["geometry"], p["nu"], p["v"], p["tau"], p["epsilon"], p["epsilon_err"],
+                    p["asymptotic_ok"], p["elastic_compression"], p["elastic_compression_err"]))
+        for p in reference
+    ]  # fmt: skip
+
+
+def test_slow_damped_sphere_is_the_viscous_law_on_its_own_stiffness(reference):
+    """At low speed the damped modal sphere is the elastic law plus the quasistatic viscous law
+    on the sphere's own quasistatic stiffness (its elastic modal compression), well within the
+    combined error (measured: +0.24 and +0.14 sigma at v = 0.003 and 0.00627)."""
+    slow = [(p, c) for p, c in _comparisons(reference) if p["geometry"] == "sphere"
+            and p["v"] <= 0.007]  # fmt: skip
+    assert len(slow) == 2
+    for _, c in slow:
+        assert abs(c.sigma_own) < 1.0, c
+
+
+def test_faster_points_miss_by_at_most_a_few_percent_of_the_loss(reference):
+    """Faster (sphere v = 0.0131, disk v = 0.02) the sum misses the damped modal body by more
+    than its error (-2.4 sigma at both, docs/damping.md): the documented claim that the
+    difference stays under 3 % of the loss (measured: 1.9 % and 2.8 %)."""
+    for _, c in _comparisons(reference):
+        loss = 1.0 - c.modal**2
+        assert abs(loss - (1.0 - c.predicted_own**2)) < 0.03 * loss, c
+
+
+def test_sphere_beyond_hertz_by_its_finite_size(reference):
+    """On Hertz's law (the published viscoelastic law) the sphere's viscous loss falls short of
+    the modal body's by about the factor by which Hertz's compression exceeds the finite
+    sphere's, a deviation that grows like sqrt(delta_max) and vanishes as v -> 0."""
+    from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT
+
+    ratios = []
+    for p, c in _comparisons(reference):
+        if p["geometry"] != "sphere":
+            continue
+        assert c.sigma < -3.0  # the half-space law misses the finite sphere
+        modal_viscous = 1.0 - c.modal**2 - (1.0 - c.elastic**2)
+        hertz_viscous = 1.0 - c.viscous**2
+        excess = modal_viscous / hertz_viscous - 1.0
+        stiffer = c.hertz_compression / p["elastic_compression"] - 1.0
+        assert excess == pytest.approx(stiffer, rel=0.35)
+        ratios.append(excess / math.sqrt(c.hertz_compression))
+    # The law's error term covers every measured excess.
+    assert 0.25 < min(ratios) and max(ratios) <= SPHERE_SIZE_COEFFICIENT
+
+
+@pytest.mark.slow
+def test_reference_point_is_reproduced(reference, tmp_path):
+    """Regression: the fastest stored point, recomputed through a fresh store (the stored value
+    is this package's own earlier output)."""
+    p = max((p for p in reference if p["geometry"] == "sphere"), key=lambda p: p["v"])
+    limit, _ = modal_point(p["geometry"], p["nu"], p["v"], p["tau"], store=tmp_path / "s.db")
+    assert limit.epsilon == pytest.approx(p["epsilon"], abs=0.1 * p["epsilon_err"])
