@@ -83,6 +83,12 @@ def test_bad_input_is_one_clear_line(args, words):
 
 
 def test_fast_speed_warns():
-    r = run("collide", "--v", "0.35", "--alpha", "100", "--modes", "10", "--json",
-            "--energy-tol", "1e-4")  # fmt: skip
+    """Beyond 0.3 c the text warns on stderr and the JSON says it in its status (issue 30: the
+    warning once went to stderr only, where -q hid it)."""
+    args = ("collide", "--v", "0.35", "--alpha", "100", "--modes", "10", "--energy-tol", "1e-4")
+    r = run(*args)
     assert r.returncode == 0 and "linear elasticity" in r.stderr
+    r = run(*args, "--json")
+    d = json.loads(r.stdout)
+    assert r.returncode == 0 and d["status"] == "large-deformation"
+    assert "linear elasticity" in d["advice"]

@@ -16,7 +16,8 @@ Where each status occurs:
   ``COMPUTED_NOT_ASYMPTOTIC``, ``INTERPOLATED``, ``INTERPOLATED_NOT_ASYMPTOTIC``,
   ``QUASISTATIC``, ``OUTSIDE``;
 * the envelope of a command's JSON (:func:`restitution.cli._common.envelope`): ``OK``,
-  ``NOT_ASYMPTOTIC``, ``POINTS_FAILED``, ``FAILED_SAMPLES``, or a collision's status.
+  ``NOT_ASYMPTOTIC``, ``POINTS_FAILED``, ``FAILED_SAMPLES``, ``LARGE_DEFORMATION`` (``collide``
+  beyond ``v = 0.3 c``), or a collision's status.
 """
 
 from __future__ import annotations
@@ -68,5 +69,9 @@ class Status(enum.StrEnum):
     pulse with its error band (:mod:`restitution.quasistatic.low_speed`; the sphere's slow
     impacts), a law point of that route or an answer next to one."""
 
+    LARGE_DEFORMATION = "large-deformation"
+    """A collision faster than the model's range (``v > 0.3 c`` against a wall): it met its
+    tolerance, but linear elasticity is stretched (the body's largest compression is a sizeable
+    fraction of its radius); the number is the linear model's, not a real body's."""
     OUTSIDE = "outside"
     """Outside the computed range of a law: no value (a law never extrapolates)."""

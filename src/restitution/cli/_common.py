@@ -15,7 +15,7 @@ from pathlib import Path
 
 import click
 
-from restitution import atomic
+from restitution import atomic, budget
 from restitution._version import __version__
 from restitution.bodies.kinds import GEOMETRIES, body_kind
 from restitution.bodies.material import Material
@@ -78,6 +78,19 @@ strict_option = click.option(
 )
 
 
+def force_option(scope: str = ""):
+    """``--force``: run beyond the time bound of one run (:data:`restitution.budget.TIME_BOUND_S`),
+    never beyond the memory bound; ``scope`` opens the help (``"--method fem: "``)."""
+    bound = budget.format_duration(budget.TIME_BOUND_S)
+    text = (
+        f"run even when the estimated time exceeds the bound of one run ({bound}); the memory "
+        "bound is never lifted."
+    )
+    return click.option(
+        "--force", is_flag=True, help=f"{scope}{text}" if scope else text[:1].upper() + text[1:]
+    )
+
+
 def quiet() -> bool:
     """Whether ``--quiet`` was given."""
     return _state["quiet"]
@@ -110,6 +123,17 @@ def body_nu(nu: float, plane: str | None, geometry: str) -> float:
             "three-dimensional Poisson number: leave out --plane"
         )
     return body_kind(geometry).check_nu(nu)
+
+
+def nu_inputs(nu: float, plane: str | None, geometry: str) -> dict:
+    """The ``inputs`` entries of ``--nu``/``--plane`` for a command's JSON: ``nu`` and
+    ``plane`` as the user gave them, so that the inputs fed back give the same answer (a
+    converted number recorded as ``nu`` beside ``plane`` would be converted twice), and, for a
+    disk, ``nu_2d``: the two-dimensional Poisson number the computation used."""
+    d = {"nu": nu, "plane": plane}
+    if geometry == "disk":
+        d["nu_2d"] = body_nu(nu, plane, geometry)
+    return d
 
 
 PARTNER_OPTIONS = {

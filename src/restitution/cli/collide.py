@@ -13,13 +13,16 @@ import click
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.cli._common import (
+    EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
     body_nu,
     dumps,
     envelope,
+    force_option,
     geometry_option,
     material_from,
     note,
+    nu_inputs,
     nu_option,
     partner_from,
     partner_options,
@@ -138,6 +141,7 @@ def _print_summary(result, top: int = 10) -> None:
     help="Mesh refinement level for --method fem (1: epsilon within ~1e-5 of level 2 "
     "at nu = 0.33, v = 0.1, in seconds; each level halves the element size).",
 )
+@force_option("--method fem: ")
 @click.option(
     "--energy-tol",
     type=float,
@@ -222,6 +226,7 @@ def collide(
     integrator,
     method,
     mesh_refine,
+    force,
     energy_tol,
     excite,
     mode_index,
@@ -246,9 +251,13 @@ def collide(
     fractions of the initial kinetic energy. With --excite the disk vibrates before the impact
     (docs/vibrating.md). With --radius-ratio (or another partner option) the body meets a second
     body instead of the wall: units of the first body, v the relative speed, energies fractions
-    of the kinetic energy in the centre-of-mass frame (docs/two-disks.md).
+    of the kinetic energy in the centre-of-mass frame (docs/two-disks.md). With --method fem a
+    run that would not fit in memory, or take more than the bound of one run (unless --force),
+    is refused before its mesh is made.
     """
     body = body_nu(nu, plane, geometry)
+    if method != "fem":  # the modal route bounds its steps itself (no time bound to lift)
+        refuse_ignored(ctx, {"force": "--force"}, "without --method fem")
     partner = partner_from(ctx, nu, plane, geometry)
     integrator = _damped_integrator(ctx, relaxation_time, integrator, excite, method, select)
     if partner is not None:
@@ -275,11 +284,11 @@ def collide(
             },
             "with --method fem (finite elements use --mesh-refine)",
         )
+        _check_fem(material if geometry == "disk" else body, v, alpha, mesh_refine, geometry,
+                   force)  # fmt: skip
     else:
         refuse_ignored(ctx, {"mesh_refine": "--mesh-refine"}, "with --method modal")
         check_mode_request(body, 2 * n_modes if select == "ranked" else n_modes, None, geometry)
-    if v > 0.3:
-        note("warning: v > 0.3 c stretches linear elasticity")
     start = time.perf_counter()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -310,9 +319,10 @@ def collide(
             with _elapsed(long_run):
                 result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
     wall = time.perf_counter() - start
+    status, advice = _stretched(result.status, result.advice, v, LINEAR_SPEED, result)
     if as_json:
-        inputs = {"geometry": geometry, "nu": body, "plane": plane, "v": v, "alpha": alpha,
-                  "method": method}  # fmt: skip
+        inputs = {"geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v,
+                  "alpha": alpha, "method": method}  # fmt: skip
         if method == "fem":
             inputs["mesh_refine"] = mesh_refine
         else:
@@ -323,19 +333,47 @@ def collide(
                 energy_tol=energy_tol,
                 relaxation_time=relaxation_time,
             )
-        d = envelope(
-            "collide", inputs, result.to_dict(), status=result.status, advice=result.advice
-        )
+        d = envelope("collide", inputs, result.to_dict(), status=status, advice=advice)
         d["wall_time_s"] = wall
         d["select"] = select if method == "modal" else None
         click.echo(dumps(d))
     else:
         _print_summary(result)
-    if result.status != Status.OK:
+    if status != Status.OK:
         if not as_json:  # the JSON says it in "status"
-            note(f"warning: status {result.status}: {result.advice}")
+            note(f"warning: status {status}: {advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
+
+
+LINEAR_SPEED = 0.3
+"""Fastest impact on a wall (``c``) within the model's range: beyond it a collision's status is
+``large-deformation`` (linear elasticity stretched; the laws stop there too)."""
+
+
+def _stretched(status, advice, v: float, fastest: float, result):
+    """``(status, advice)`` of a collision, ``large-deformation`` when ``v`` exceeds
+    ``fastest`` and the collision is otherwise ``ok`` (a worse status is kept)."""
+    if v <= fastest or status != Status.OK:
+        return status, advice
+    compression = getattr(result, "max_compression", None)
+    shown = "" if compression is None else f" (largest compression {compression:.2g} R)"
+    return Status.LARGE_DEFORMATION, (
+        f"v = {v:g} c is beyond {fastest:g} c, where the model's linear elasticity is "
+        f"stretched{shown}: the number is the linear model's, not a real body's; use v <= "
+        f"{fastest:g}"
+    )
+
+
+def _check_fem(material, v: float, alpha: float, refine: int, geometry: str, force: bool):
+    """Refuse an FEM run that would not fit in memory, or (unless ``--force``) take longer than
+    the bound of one run, before its mesh is made (:func:`restitution.fem.cost.check_collide`)."""
+    from restitution.fem.cost import check_collide
+
+    if refine < 0:
+        raise InputError(f"--mesh-refine must be a level >= 0, got {refine}")
+    check_collide(material, v, alpha, refine, geometry=geometry, force=force,
+                  name="--mesh-refine", override="--force")  # fmt: skip
 
 
 def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol, as_json,
@@ -367,6 +405,8 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
         warnings.simplefilter("ignore")
         result = run(pair, v, alpha, integrator=integrator, energy_tol=energy_tol)
     first, second = pair.member_energies(result.mode_energy_after)
+    # Two identical bodies at relative speed 2v are the wall problem at v.
+    status, advice = _stretched(result.status, result.advice, v, 2 * LINEAR_SPEED, result)
     counts = [int(c) for c in np.bincount(pair.member, minlength=2)]
     detail = {
         "geometry": pair.geometry,
@@ -383,8 +423,7 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
                   "modulus_ratio": partner.modulus_ratio,
                   "density_ratio": partner.density_ratio,
                   "relaxation_time": relaxation_time}  # fmt: skip
-        d = envelope("collide", inputs, result.to_dict(), status=result.status,
-                     advice=result.advice)  # fmt: skip
+        d = envelope("collide", inputs, result.to_dict(), status=status, advice=advice)
         d["pair"] = detail
         d["units"] = {
             **d["units"],
@@ -404,8 +443,11 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
             f"energy left in the first body {first:.6g}, in the second {second:.6g} (fractions "
             "of the kinetic energy in the centre-of-mass frame)"
         )
-    if result.status != Status.OK and strict:
-        sys.exit(EXIT_NOT_CONVERGED)
+    if status != Status.OK:
+        if not as_json:
+            note(f"warning: status {status}: {advice}")
+        if strict:
+            sys.exit(EXIT_NOT_CONVERGED)
 
 
 def _damped_integrator(ctx, tau: float, integrator: str, excite, method, select) -> str:
@@ -577,6 +619,8 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
     if status != Status.OK:
         if not as_json:
             note(f"warning: status {status}")
+        if status == Status.FAILED_SAMPLES:  # as epsilon and curve when collisions failed
+            sys.exit(EXIT_FAILED_POINTS)
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
 

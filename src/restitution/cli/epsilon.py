@@ -20,6 +20,7 @@ from restitution.cli._common import (
     check_output_dir,
     dumps,
     envelope,
+    force_option,
     geometry_option,
     note,
     partner_from,
@@ -188,6 +189,7 @@ def _executor_options(f):
     show_default=True,
     help="modal: N modes, N -> infinity; fem: finite elements on contact-graded meshes, h -> 0.",
 )
+@force_option("--method fem: ")
 @_executor_options
 def epsilon(
     nu,
@@ -196,6 +198,7 @@ def epsilon(
     alpha,
     as_json,
     method,
+    force,
     alphas,
     alpha_scale,
     modes,
@@ -210,7 +213,9 @@ def epsilon(
 
     v is the body's speed towards the wall in units of c = sqrt(E/rho). The collisions of the
     grid are computed (or read from the store) first. Exit status 1 when grid points failed;
-    with --strict, 3 when the extrapolation is not asymptotic.
+    with --strict, 3 when the extrapolation is not asymptotic. With --method fem the runs that
+    would not fit in memory, or take more than the bound of one run (unless --force), are
+    refused before any mesh is made.
     """
     from restitution.limits.curves import epsilon_at
     from restitution.limits.sweep import grid
@@ -225,8 +230,10 @@ def epsilon(
         modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
         modal_only.update({"--store": store, "--retry-failed": retry_failed or None})
         _fem_epsilon(nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress,
-                     strict)  # fmt: skip
+                     strict, force)  # fmt: skip
         return
+    if force:  # the modal sweep has no time bound to lift
+        raise InputError("--force has no effect with --method modal")
     settings = _settings([v], alphas, modes, alpha_scale, geometry)
     swept = replace(settings, velocities=(float(v),))
     if alpha is not None:  # SweepSettings refuses a wall hardness that is not positive
@@ -244,9 +251,8 @@ def epsilon(
             "settings": swept.to_dict(),
             "store": None if store is None else str(store),
         }
-        click.echo(
-            dumps(envelope("epsilon", inputs, result.to_dict(), status=status, advice=advice))
-        )
+        body = _unknown_errors(result.to_dict(), swept)
+        click.echo(dumps(envelope("epsilon", inputs, body, status=status, advice=advice)))
     else:
         limits = "N -> inf" if alpha is not None else "alpha -> inf and N -> inf"
         where = f" at alpha = {alpha:g}" if alpha is not None else ""
@@ -267,13 +273,31 @@ def epsilon(
     _finish(status, advice, list(result.failures), report, strict, as_json)
 
 
+def _two_point(settings: SweepSettings) -> bool:
+    """Whether the fit cannot estimate an error: a line through two points (two N, or two alpha
+    with both limits) has no residual, so its error is zero; one point has no fit at all."""
+    return len(settings.n_modes) < 3 or 1 < len(settings.alphas) < 3
+
+
 def _err(value: float, settings: SweepSettings) -> str:
-    """An error bar, or ``unknown`` when the fit cannot estimate one: a line through two
-    points (two N, or two alpha with both limits) has no residual, so its error is zero."""
-    two_point = len(settings.n_modes) < 3 or 1 < len(settings.alphas) < 3
-    if two_point or not (math.isfinite(value) and value > 0):
+    """An error bar, or ``unknown`` when the fit cannot estimate one (:func:`_two_point`)."""
+    if _two_point(settings) or not (math.isfinite(value) and value > 0):
         return "unknown"
     return f"{value:.6f}"
+
+
+def _unknown_errors(d: dict, settings: SweepSettings) -> dict:
+    """The JSON of a result whose errors the fit cannot estimate (:func:`_two_point`): the
+    error bars are ``null``, as the text says ``unknown``, and ``errors_unknown`` says why."""
+    if not _two_point(settings):
+        return d
+    return {
+        **d,
+        "epsilon_err": None,
+        "energy_loss_err": None,
+        "errors_unknown": "fewer than 3 mode counts (or 2 walls) leave no residual to estimate "
+        "an error from; give at least 3 --modes and 3 --alphas",
+    }
 
 
 def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
@@ -291,7 +315,7 @@ def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
 
 
 def _fem_epsilon(
-    nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict
+    nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict, force
 ):
     """``epsilon --method fem``: both limits (or h -> 0 at one alpha) on the FEM route, printed
     like the modal route (JSON: the same envelope and keys, with levels in place of N)."""
@@ -303,6 +327,11 @@ def _fem_epsilon(
         raise InputError(
             f"{', '.join(given)} {verb} to the modal route; leave {it} out with --method fem"
         )
+    from restitution.fem.cost import check_epsilon
+
+    options = {"alpha": alpha, "alphas": tuple(alphas) or None, "alpha_scale": alpha_scale}
+    check_epsilon(nu, v, geometry=geometry, force=force, name="--v", override="--force",
+                  **options)  # fmt: skip
 
     def report(run) -> None:
         note(
@@ -310,15 +339,7 @@ def _fem_epsilon(
             f"epsilon = {run.epsilon:.7f} ({run.wall_time_s:.1f} s)"
         )
 
-    result = fem_epsilon(
-        nu,
-        v,
-        alpha=alpha,
-        alphas=tuple(alphas) or None,
-        alpha_scale=alpha_scale,
-        on_run=report if progress else None,
-        geometry=geometry,
-    )
+    result = fem_epsilon(nu, v, on_run=report if progress else None, geometry=geometry, **options)
     status, advice = _status(result.asymptotic_ok, result.message, 0)
     if status != Status.OK:
         advice = f"{result.message}; refine the meshes or add harder walls (--alphas)"

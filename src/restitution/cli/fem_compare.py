@@ -12,6 +12,7 @@ from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
     dumps,
     envelope,
+    force_option,
     material_from,
     note,
     nu_option,
@@ -119,15 +120,18 @@ def _print(comparison, nu, v, alpha) -> None:
     help="Comma-separated numbers of lowest modes for the modal runs.",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print the comparison as JSON.")
+@force_option()
 @strict_option
 @quiet_option
-def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, strict):
+def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, force, strict):
     """Compare the FEM impact solver with the modal solver extrapolated to N -> infinity.
 
     The FEM runs at mesh levels refine-min..refine (error: last Cauchy difference); the modal
     solver runs with the N lowest modes and 1 - eps^2 is extrapolated linearly in 1/sqrt(N)
     at the same alpha. Units: E = rho = R = 1, v in c, alpha in 1/R. The finest level costs
-    about 8 times the one below it (refine 2: a few minutes).
+    about 8 times the one below it (refine 2: tens of seconds; refine 3: estimated 8 min); FEM
+    levels that would not fit in memory, or take more than the bound of one run (unless
+    --force), are refused before any mesh is made.
     """
     from restitution.fem.compare import compare_fem_modal
 
@@ -140,6 +144,10 @@ def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, strict)
     if len(set(counts)) != len(counts):
         raise InputError(f"--modes has repeated values ({modes}); give distinct counts")
     check_mode_request(material.nu, max(counts))
+    from restitution.fem.cost import check_compare
+
+    check_compare(material, v, alpha, refine, refine_min, force=force, name="--refine",
+                  override="--force")  # fmt: skip
     comparison = compare_fem_modal(
         material, v, alpha, levels=range(refine_min, refine + 1), counts=counts
     )

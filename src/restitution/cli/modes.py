@@ -17,6 +17,7 @@ from restitution.cli._common import (
     envelope,
     geometry_option,
     note,
+    nu_inputs,
     nu_option,
     plane_option,
     quiet_option,
@@ -104,7 +105,7 @@ def modes(nu, plane, geometry, count, omega_max, fmt, output, plot_spectrum, plo
         raise InputError("give either --count or --omega-max, not both")
     if count is None and omega_max is None:
         count = 1600
-    nu = body_nu(nu, plane, geometry)
+    given, nu = nu, body_nu(nu, plane, geometry)
     check_mode_request(nu, count, omega_max, geometry)
     if geometry != "disk":
         refuse_ignored(
@@ -122,8 +123,7 @@ def modes(nu, plane, geometry, count, omega_max, fmt, output, plot_spectrum, plo
     if fmt == "json":
         inputs = {
             "geometry": geometry,
-            "nu": nu,
-            "plane": plane,
+            **nu_inputs(given, plane, geometry),
             "count": count,
             "omega_max": omega_max,
         }

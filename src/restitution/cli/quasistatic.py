@@ -16,6 +16,7 @@ from restitution.cli._common import (
     geometry_option,
     given,
     note,
+    nu_inputs,
     nu_option,
     partner_from,
     partner_options,
@@ -192,7 +193,8 @@ def quasistatic(
         raise InputError("contact time is not finite; use a smaller --v")
     if as_json:
         inputs = {
-            "geometry": geometry, "nu": body, "plane": plane, "v": v, "law": law, "modes": n_modes,
+            "geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v, "law": law,
+            "modes": n_modes,
         }  # fmt: skip
         click.echo(dumps(envelope("quasistatic", inputs, out)))
         return

@@ -69,7 +69,9 @@ def run_kernel(body, v, alpha, dts, settings, quad, abort, initial) -> list[Memb
     for i in range(v.size):
         status = got["status"][i]
         if status == STATUS_TIMEOUT:
-            raise CollisionError(timeout_message(got["t_end"][i], got["steps"][i], dts[i]))
+            raise CollisionError(
+                timeout_message(got["t_end"][i], got["steps"][i], dts[i], settings)
+            )
         if status != STATUS_OK:
             if abort is None:
                 raise CollisionError(

@@ -102,7 +102,7 @@ def _run(
     check_every = 8
     while active.size:
         if steps >= settings.max_steps or state.t > t_max:
-            raise CollisionError(timeout_message(state.t, steps, dt))
+            raise CollisionError(timeout_message(state.t, steps, dt, settings))
         state = integrator.step(system, state, dt)
         steps += 1
         a = active

@@ -89,7 +89,28 @@ def contact_mean(summed: np.ndarray, contact: float, e0: float) -> np.ndarray:
     return summed / (contact * e0) if contact > 0 else summed
 
 
-def timeout_message(t: float, steps: int, dt: float) -> str:
+def timeout_message(t: float, steps: int, dt: float, settings=None) -> str:
+    """Why a collision did not end: the step bound ``max_steps`` of ``settings`` (a
+    :class:`~restitution.dynamics.settings.CollisionSettings`) was reached, or the time bound.
+
+    The step bound is met when the step is small: ``dt`` given, or refined until the energy
+    drift stays below ``energy_tol``. Then the advice is to raise ``energy_tol`` (or ``dt``) or
+    ``max_steps``, never to tighten the tolerance further.
+    """
+    if settings is not None and steps >= settings.max_steps:
+        if settings.dt is None:
+            cause = (
+                f"the step dt = {dt:.3g} that energy_tol = {settings.energy_tol:.3g} asks for "
+                f"needs more than max_steps = {settings.max_steps} steps (t = {t:.3g} R/c "
+                "reached without separation): raise energy_tol (default 1e-6) or max_steps"
+            )
+        else:
+            cause = (
+                f"the fixed step dt = {dt:.3g} needs more than max_steps = "
+                f"{settings.max_steps} steps (t = {t:.3g} R/c reached without separation): "
+                "raise dt or max_steps"
+            )
+        return f"the collision did not end: {cause}"
     return (
         f"the disk did not separate from the wall within t = {t:.3g} R/c ({steps} steps of "
         f"dt = {dt:.3g}); this indicates an unstable step or an unphysical input: reduce dt or "

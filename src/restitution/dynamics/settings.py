@@ -13,7 +13,7 @@ import numpy as np
 from restitution.dynamics.integrators import INTEGRATORS
 from restitution.errors import InputError
 
-__all__ = ["BACKENDS", "CONTACT_TOL", "STOP_LOG", "CollisionSettings"]
+__all__ = ["BACKENDS", "CONTACT_TOL", "DEFAULT_ENERGY_TOL", "STOP_LOG", "CollisionSettings"]
 
 CONTACT_TOL = 1e-12
 """Wall potential energy at the start, and the wall force scale at the end, relative to E0."""
@@ -21,6 +21,10 @@ CONTACT_TOL = 1e-12
 STOP_LOG = math.log(1.0 / CONTACT_TOL)
 
 BACKENDS = ("auto", "compiled", "numpy")
+
+
+DEFAULT_ENERGY_TOL = 1e-6
+"""The default relative energy drift a collision's step is refined to."""
 
 
 @dataclass(frozen=True)
@@ -58,7 +62,7 @@ class CollisionSettings:
 
     integrator: str = "split4"
     n_phi: int | None = None
-    energy_tol: float = 1e-6
+    energy_tol: float = DEFAULT_ENERGY_TOL
     dt: float | None = None
     max_refinements: int = 6
     step_safety: float = 1.0

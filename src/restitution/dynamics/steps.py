@@ -11,7 +11,7 @@ import numpy as np
 
 from restitution.bodies.base import ModalBody
 from restitution.dynamics.integrators import INTEGRATORS
-from restitution.dynamics.settings import CONTACT_TOL, CollisionSettings
+from restitution.dynamics.settings import CONTACT_TOL, DEFAULT_ENERGY_TOL, CollisionSettings
 from restitution.errors import InputError
 
 __all__ = ["MAX_MEMORY_BYTES", "WorkEstimate", "check_work", "estimate_work", "initial_step"]
@@ -62,9 +62,11 @@ class WorkEstimate:
     memory_bytes : float
         Working memory of the quadrature and the batch arrays, bytes.
     limit : str
-        What makes it large: ``"approach"`` (the start is far from the wall for this ``v`` and
-        ``alpha``), ``"wall"`` (``alpha v`` forces a tiny step) or ``"body"`` (the fastest
-        mode forces a tiny step).
+        What makes it large: ``"fixed"`` (the given ``dt``), ``"tolerance"`` (an
+        ``energy_tol`` below the default whose step alone breaks ``max_steps``),
+        ``"approach"`` (the start is far from the wall for this ``v`` and ``alpha``),
+        ``"wall"`` (``alpha v`` forces a tiny step) or ``"body"`` (the fastest mode forces a
+        tiny step).
     """
 
     steps: float
@@ -100,7 +102,17 @@ def estimate_work(
         )
     steps = t_end / dt
     worst = int(np.argmax(steps))
-    if flight[worst] > 0.5 * t_end[worst]:
+    if settings.dt is not None:
+        limit = "fixed"
+    elif (
+        settings.energy_tol < DEFAULT_ENERGY_TOL
+        and steps[worst]
+        * (settings.energy_tol / DEFAULT_ENERGY_TOL)
+        ** (1.0 / INTEGRATORS[settings.integrator].order)
+        <= settings.max_steps
+    ):
+        limit = "tolerance"  # the default tolerance's step would fit
+    elif flight[worst] > 0.5 * t_end[worst]:
         limit = "approach"
     elif alpha[worst] * v[worst] > float(body.omega.max()):
         limit = "wall"
@@ -143,6 +155,9 @@ def check_work(
             "long to arrive: raise v or alpha (alpha * v of order 1-100 is typical)",
             "wall": "the step must resolve 1/(alpha v): lower alpha",
             "body": "the step must resolve the fastest mode: use fewer modes",
+            "fixed": "the step is the given dt: raise dt or max_steps",
+            "tolerance": f"energy_tol = {settings.energy_tol:.3g} asks for that step: raise "
+            f"energy_tol (default {DEFAULT_ENERGY_TOL:g}) or max_steps",
         }[est.limit]
         raise InputError(
             f"this collision would need about {est.steps:.2g} time steps (simulated time "

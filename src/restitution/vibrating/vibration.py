@@ -206,6 +206,26 @@ class Handoff:
     x_to: float
 
 
+FASTEST_RETURN = 0.3
+"""Fastest impact speed (``c``) a flight under gravity may bring (the model's linear elasticity
+is stretched beyond it, as ``collide`` warns)."""
+
+
+def _too_fast(modes, u, x_from, alpha, g, w, settings) -> str:
+    """The refusal of a gravity that brings the disk back faster than :data:`FASTEST_RETURN`:
+    the speed it would reach and the largest gravity that keeps the next impact below it."""
+    fall = start_position(modes, FASTEST_RETURN, alpha, settings) - x_from
+    most = (FASTEST_RETURN**2 - u * u) / (2.0 * fall) if fall > 0 else math.nan
+    fits = (
+        f"; gravity <= {most:.2g} c^2/R keeps this return below it" if math.isfinite(most) else ""
+    )
+    return (
+        f"gravity = {g:g} c^2/R brings the disk, which left the wall at {u:.3g} c, back at "
+        f"{w:.3g} c, above the {FASTEST_RETURN} c up to which the model holds{fits}: lower "
+        "--gravity"
+    )
+
+
 def _solve_gravity_speed(modes, u, x_from, alpha, g, settings) -> float:
     """Speed ``w`` at the next start position under gravity: ``w^2 = u^2 + 2 g (x(w) - x_from)``.
 
@@ -216,6 +236,8 @@ def _solve_gravity_speed(modes, u, x_from, alpha, g, settings) -> float:
     for _ in range(60):
         x_to = start_position(modes, w, alpha, settings)
         w_new = math.sqrt(u * u + 2.0 * g * (x_to - x_from))
+        if w_new >= FASTEST_RETURN:
+            raise InputError(_too_fast(modes, u, x_from, alpha, g, w_new, settings))
         if abs(w_new - w) <= 1e-15 * w:
             return w_new
         w = w_new
