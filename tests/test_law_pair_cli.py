@@ -134,11 +134,14 @@ def _argv(inputs: dict) -> list[str]:
              "reference_speed": "--reference-speed",
              "maxwell_temperature": "--maxwell-temperature", "export": "--export",
              "measured_epsilon": "--measured-epsilon", "measured_speed_m_s": "--measured-speed",
-             "relaxation_time_s": "--relaxation-time", "radius_m": "--radius"}  # fmt: skip
+             "relaxation_time_s": "--relaxation-time", "radius_m": "--radius",
+             "compute": "--compute"}  # fmt: skip
     argv = ["law", "--json", "--speed", *map(repr, inputs["speeds_m_s"])]
     assert set(inputs) == {*flags, "speeds_m_s"}
     for key, flag in flags.items():
-        if inputs[key] is not None:
+        if isinstance(inputs[key], bool):  # a flag
+            argv += [flag] if inputs[key] else []
+        elif inputs[key] is not None:
             argv += [flag, repr(inputs[key]) if isinstance(inputs[key], float) else inputs[key]]
     return argv
 

@@ -126,6 +126,25 @@ class _LawCommand(_ListCommand):
     help="Radius of the grain, m (with --relaxation-time; for two sizes the smaller grain's). "
     "The elastic law needs no radius; the viscous loss depends on tau c / R.",
 )
+@click.option(
+    "--compute",
+    is_flag=True,
+    help="Compute the law of this material's exact Poisson number with the production settings "
+    "when none is shipped for it (instead of interpolating in nu): minutes to hours, stated "
+    "before it starts, with a progress bar; every collision goes to the result store (--store; "
+    "an interrupted run resumes) and the law file to the cache, where the next call finds it.",
+)
+@click.option(
+    "--store",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    help="With --compute: the result store [results.sqlite in the user cache].",
+)
+@click.option(
+    "--force",
+    is_flag=True,
+    help="With --compute: compute even when the estimate exceeds the bound of one run (1 h).",
+)
 @quiet_option
 def law(
     E,
@@ -145,6 +164,9 @@ def law(
     measured_speed,
     relaxation_time,
     radius,
+    compute,
+    store,
+    force,
 ):
     """Coefficient of restitution of a real material at impact speeds in m/s.
 
@@ -179,10 +201,19 @@ def law(
 
     if reference_speed is not None and maxwell_temperature is not None:
         raise InputError("give --reference-speed or --maxwell-temperature, not both")
+    if export_dir is not None:
+        from restitution.cli._common import check_output_dir
+
+        check_output_dir(Path(export_dir), "--export")  # before anything is computed
     ratio = _check_ratio(partner_radius_ratio, against, geometry)
     if identical_law_file is not None:
         _check_identical_law_file(ratio, reference_speed, maxwell_temperature)
-    s = si_law(E, nu, rho, geometry, against, path=law_file, radius_ratio=ratio)
+    served = law_file
+    if compute:
+        served = _computed(E, nu, rho, geometry, against, ratio, law_file, store, force)
+    elif store is not None or force:
+        raise InputError("--store and --force belong to --compute; add --compute or leave them out")
+    s = si_law(E, nu, rho, geometry, against, path=served, radius_ratio=ratio)
     speeds = list(speeds) or [0.1, 0.5, 1.0, 5.0, 10.0]
     damped = _damped(s, measured_epsilon, measured_speed, relaxation_time, radius)
     if (
@@ -231,7 +262,8 @@ def law(
                   "maxwell_temperature": maxwell_temperature,
                   "export": None if export_dir is None else str(export_dir),
                   "measured_epsilon": measured_epsilon, "measured_speed_m_s": measured_speed,
-                  "relaxation_time_s": relaxation_time, "radius_m": radius}  # fmt: skip
+                  "relaxation_time_s": relaxation_time, "radius_m": radius,
+                  "compute": compute}  # fmt: skip
         d = envelope("law", inputs, result, status=status, advice=advice, units=SI_UNITS)
         click.echo(json.dumps(d, indent=1, default=json_default))
         return
@@ -326,6 +358,29 @@ def _identical(E, nu, rho, geometry, path):
             f"the 1-1 and 2-2 constants need the law of identical grains: {exc}; give that file "
             "with --identical-law-file"
         ) from None
+
+
+def _computed(E, nu, rho, geometry, against, ratio, law_file, store, force):
+    """``law --compute``: the law file of the material's exact Poisson number (computed with the
+    production settings, or found in the cache), or ``None`` when a shipped law serves it."""
+    from restitution.cli._common import check_output_file, quiet
+    from restitution.errors import InputError
+    from restitution.laws.compute import check_plan, computed_law, plan
+    from restitution.laws.law_nu import NU_MATCH, shipped_nus
+    from restitution.laws.si_law import law_target
+
+    if law_file is not None:
+        raise InputError("give --law-file or --compute, not both")
+    law_nu, body, partner = law_target(E, nu, rho, geometry, against, ratio)
+    if any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus(body, partner)):
+        note(f"note: a shipped law serves nu = {law_nu:.6g}; nothing to compute")
+        return None
+    if store is not None:
+        check_output_file(store, "--store")
+    p = plan(law_nu, body, partner)
+    check_plan(p, force)
+    note(f"note: {p.words()}")
+    return computed_law(law_nu, body, partner, store=store, progress=not quiet(), force=force)
 
 
 def _export(s, constant, out: Path) -> list[Path]:

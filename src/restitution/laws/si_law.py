@@ -379,6 +379,16 @@ def si_law(
     )
 
 
+def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None):
+    """``(law_nu, body, partner)``: the law :func:`si_law` serves for these arguments (the
+    Poisson number of the law, 2D for cylinders and thin disks; the body, ``"disk"`` or
+    ``"sphere"``; the :class:`~restitution.bodies.pair.partner.Partner` or ``None``), e.g. for
+    :func:`restitution.laws.compute.computed_law`."""
+    grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
+    partner_factor(against)
+    return grain.law_nu, grain.body, _partner(radius_ratio, against, grain)
+
+
 def _partner(radius_ratio, against: str, grain: Grain):
     """The :class:`Partner` of a grain of the same material ``radius_ratio`` times as large (the
     larger of the ratio and its inverse: the pair is the same either way round, its speeds in

@@ -1,0 +1,107 @@
+"""``restitution law --compute``: the law of the user's exact Poisson number (issue 28).
+
+The production settings take minutes (disk) to a quarter of an hour (a pair) per law; here the
+sweeps are replaced by one tiny group (few modes, soft walls) so that the whole path runs in
+seconds: the estimate stated before the work, the law file written into the cache and served, the
+next call served from that file without computing, and the refusals.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from _cli_checks import one_line_error
+
+from restitution.laws import compute
+from restitution.limits.sweep import SweepSettings
+
+STEEL = ("--E", "210e9", "--nu", "0.3", "--rho", "7850", "--geometry", "cylinder", "--against",
+         "wall")  # fmt: skip
+"""Steel cylinders: nu_2d = 0.3 / 0.7 = 0.428571, between the shipped 0.33 and 0.5."""
+
+TINY = SweepSettings(velocities=(0.1, 0.2, 0.3), alphas=(40.0, 80.0, 160.0), n_modes=(40, 60, 80),
+                     batch_size=3)  # fmt: skip
+
+
+@pytest.fixture
+def tiny(monkeypatch, tmp_path):
+    """One tiny sweep instead of the production groups, the cache in ``tmp_path``."""
+    monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setattr(compute, "SETTINGS_GROUPS", (TINY,))
+    return tmp_path
+
+
+def test_computes_the_exact_nu_once_then_serves_the_file(cli, tiny, monkeypatch):
+    args = ("law", *STEEL, "--speed", "1000", "--compute", "--store", str(tiny / "s.sqlite"))
+    code, out, err = cli(*args, "--json")
+    assert code == 0, err
+    assert "27 collisions" in err and "into" in err  # the estimate, before the work
+    d = json.loads(out)
+    path = tiny / "cache" / "laws" / "law_nu0.428571.json"
+    assert path.is_file()
+    assert d["inputs"]["compute"] is True and d["inputs"]["law_file"] is None
+    assert d["law"]["nu"] == pytest.approx(0.3 / 0.7, abs=1e-6)
+    (point,) = d["points"]
+    assert point["status"] in ("computed", "computed-not-asymptotic", "interpolated",
+                               "interpolated-not-asymptotic")  # fmt: skip
+    # Served from the law file: the same numbers as the file gives through --law-file.
+    code, out2, err = cli("law", *STEEL, "--speed", "1000", "--law-file", str(path), "--json")
+    assert json.loads(out2)["points"] == d["points"]
+
+    # The next call finds the file and computes nothing.
+    def refuse(*a, **k):
+        raise AssertionError("computed again")
+
+    monkeypatch.setattr("restitution.laws.production.build", refuse)
+    code, out3, err = cli(*args, "--json")
+    assert code == 0 and "using the law computed before" in err
+    assert json.loads(out3)["points"] == d["points"]
+
+
+def test_a_shipped_nu_is_not_computed(cli, tiny, monkeypatch):
+    monkeypatch.setattr("restitution.laws.production.build", pytest.fail)
+    code, out, err = cli("law", "--E", "1e9", "--nu", "0.33", "--rho", "1000", "--geometry",
+                         "thin-disk", "--against", "wall", "--speed", "1", "--compute")  # fmt: skip
+    assert code == 0 and "a shipped law serves nu = 0.33; nothing to compute" in err
+
+
+def test_a_computation_beyond_the_time_bound_is_refused_unless_forced(cli, tiny, monkeypatch):
+    monkeypatch.setitem(compute.SECONDS_PER_COLLISION, "disk", 1e4)
+    args = ("law", *STEEL, "--speed", "1000", "--compute")
+    code, out, err = cli(*args)
+    one_line_error(code, err, "27 collisions", "3.12 days", "1 h bound", "--force")
+    assert not (tiny / "cache" / "laws").exists()
+    code, out, err = cli(*args, "--force", "--store", str(tiny / "s.sqlite"))
+    assert code == 0, err
+
+
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (("--store", "x.sqlite"), "--store and --force belong to --compute"),
+        (("--force",), "--store and --force belong to --compute"),
+    ],
+)
+def test_compute_options_without_compute_are_refused(cli, extra, words):
+    code, out, err = cli("law", *STEEL, "--speed", "1", *extra)
+    one_line_error(code, err, words)
+
+
+def test_compute_with_a_law_file_is_refused(cli, tiny):
+    path = tiny / "law.json"
+    path.write_text("{}")
+    code, out, err = cli("law", *STEEL, "--speed", "1", "--compute", "--law-file", str(path))
+    one_line_error(code, err, "give --law-file or --compute, not both")
+
+
+def test_plan_counts_the_production_collisions():
+    """Without the tiny group: the production sweeps' collisions (disk 264, sphere 312, a pair
+    of radius ratio 1.4 228), as counted from the shipped laws' groups."""
+    from restitution.bodies.pair.partner import Partner
+
+    assert compute.plan(0.4, "disk").collisions == 264
+    assert compute.plan(0.27, "sphere").collisions == 312
+    assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4)).collisions == 228
+    with pytest.raises(Exception, match="one material"):
+        compute.plan(0.4, "disk", Partner(radius_ratio=1.4, modulus_ratio=2.0))
