@@ -138,6 +138,35 @@ def test_force_lifts_the_time_bound(cli, machine, monkeypatch):
     assert '"collisions"' in out
 
 
+def test_thermal_samples_beyond_the_time_bound_are_refused_unless_forced(
+    cli, machine, no_integration
+):
+    """A time bound for thermal ensembles (issue 30): each sample costs what one collision from
+    rest does (the estimate of its steps times the measured cost of a step)."""
+    ms = get_modes(0.33, count=400)
+    steps = estimate_work(ms, np.array([0.1]), np.array([500.0]), CollisionSettings()).steps
+    per = budget.collision_seconds(steps, 400)
+    args = ("collide", "--v", "0.1", "--alpha", "500", "--modes", "400", "--excite", "thermal",
+            "--temperature", "0.1", "--samples", "300000")  # fmt: skip
+    code, _, err = cli(*args)
+    line = one_line_error(code, err, "--samples 300000", "steps of 400 modes", "1 h bound",
+                          f"at most {math.floor(3600 / per)} samples", "--force")  # fmt: skip
+    assert f"about {budget.format_duration(3e5 * per)}" in line
+    with pytest.raises(InputError, match=r"samples = 300000 would take .* force=True"):
+        thermal_ensemble(ms, 0.1, 500.0, 0.1, 300_000)
+
+
+def test_force_lifts_the_time_bound_of_thermal_samples(cli, machine, monkeypatch):
+    monkeypatch.setattr(budget, "TIME_BOUND_S", 1e-4)
+    args = ("collide", "--v", "0.1", "--modes", "10", "--excite", "thermal", "--temperature",
+            "0.1", "--samples", "2", "--json")  # fmt: skip
+    code, _, err = cli(*args)
+    one_line_error(code, err, "--samples 2", "bound of one run", "not even one sample fits")
+    code, out, err = cli(*args, "--force")
+    assert code == 0, err
+    assert json.loads(out)["samples"] == 2
+
+
 def test_the_library_bounce_refuses_and_takes_force(machine, no_integration):
     ms = get_modes(0.33, count=10)
     with pytest.raises(InputError, match=r"collisions = 1000000 would take .* force=True"):

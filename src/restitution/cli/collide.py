@@ -141,7 +141,7 @@ def _print_summary(result, top: int = 10) -> None:
     help="Mesh refinement level for --method fem (1: epsilon within ~1e-5 of level 2 "
     "at nu = 0.33, v = 0.1, in seconds; each level halves the element size).",
 )
-@force_option("--method fem: ")
+@force_option("--method fem and --excite thermal: ")
 @click.option(
     "--energy-tol",
     type=float,
@@ -256,8 +256,8 @@ def collide(
     is refused before its mesh is made.
     """
     body = body_nu(nu, plane, geometry)
-    if method != "fem":  # the modal route bounds its steps itself (no time bound to lift)
-        refuse_ignored(ctx, {"force": "--force"}, "without --method fem")
+    if method != "fem" and excite != "thermal":  # one collision bounds its steps itself
+        refuse_ignored(ctx, {"force": "--force"}, "without --method fem or --excite thermal")
     partner = partner_from(ctx, nu, plane, geometry)
     integrator = _damped_integrator(ctx, relaxation_time, integrator, excite, method, select)
     if partner is not None:
@@ -268,7 +268,7 @@ def collide(
         raise InputError(f"--excite is available for disks only; leave it out for a {geometry}")
     if excite != "none":
         return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
-                        energy_tol, excite, as_json, strict)  # fmt: skip
+                        energy_tol, excite, as_json, strict, force)  # fmt: skip
     refuse_ignored(ctx, _EXCITE_OPTIONS, "without --excite mode or --excite thermal")
     _check_up_front(v, alpha, integrator, energy_tol)
     if n_modes < 1:
@@ -519,7 +519,7 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
 
 
 def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method, energy_tol,
-             excite, as_json, strict):  # fmt: skip
+             excite, as_json, strict, force=False):  # fmt: skip
     """``collide --excite mode|thermal``: a vibrating disk (thin layer over
     :mod:`restitution.vibrating.vibration` and :mod:`restitution.vibrating.ensemble`)."""
     import math
@@ -591,15 +591,19 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
         status = result.status
     else:
         from restitution.vibrating.ensemble import thermal_ensemble
+        from restitution.vibrating.sequences import check_collisions_time
 
         samples = 1 if p["samples"] is None else p["samples"]
         seed = 0 if p["seed"] is None else p["seed"]
+        check_collisions_time(ms, v, alpha, samples, force=force, name="--samples",
+                              override="--force", item="sample", integrator=integrator,
+                              energy_tol=energy_tol)  # fmt: skip
         _announce(ms, v, alpha, integrator, energy_tol)
         with warnings.catch_warnings(), _progress_bar(samples) as advance:
             warnings.simplefilter("ignore")
             ens = thermal_ensemble(ms, v, alpha, p["temperature"] * e0, samples, seed,
                                    integrator=integrator, energy_tol=energy_tol,
-                                   progress=advance)  # fmt: skip
+                                   progress=advance, force=force)  # fmt: skip
         inputs.update(temperature=p["temperature"], samples=samples, seed=seed)
         status = Status.OK if not ens.failures else Status.FAILED_SAMPLES
         advice = None if not ens.failures else (

@@ -20,6 +20,7 @@ from restitution.bodies.disk.modes import ModeSet
 from restitution.budget import check_memory
 from restitution.dynamics.collision import CollisionError, CollisionSettings, collide_batch
 from restitution.errors import InputError
+from restitution.vibrating.sequences import check_collisions_time
 from restitution.vibrating.vibration import (
     kinetic_energy,
     single_mode_state,
@@ -251,6 +252,7 @@ def thermal_ensemble(
     *,
     batch_size: int = 64,
     progress: Callable[[int], None] | None = None,
+    force: bool = False,
     **overrides,
 ) -> Ensemble:
     """``samples`` collisions at speed ``v``, each from its own thermal state at ``temperature``
@@ -259,7 +261,9 @@ def thermal_ensemble(
     The states are drawn all at once, so a sample does not depend on ``batch_size``;
     ``progress`` is called with the number of collisions finished after every batch. An
     ensemble whose states would not fit in memory is refused before anything is drawn
-    (:func:`check_ensemble_memory`).
+    (:func:`check_ensemble_memory`), one that would take longer than
+    :data:`restitution.budget.TIME_BOUND_S` too unless ``force``
+    (:func:`restitution.vibrating.sequences.check_collisions_time`).
     """
     if not isinstance(samples, int | np.integer) or isinstance(samples, bool) or samples < 1:
         raise InputError(f"samples must be a positive integer, got {samples!r}")
@@ -270,6 +274,8 @@ def thermal_ensemble(
     ):
         raise InputError(f"the seed must be an integer >= 0 (or None), got {seed!r}")
     check_ensemble_memory(samples, len(modes))
+    check_collisions_time(modes, v, alpha, int(samples), settings, force=force, name="samples",
+                          item="sample", **overrides)  # fmt: skip
     Q, P = thermal_state(modes, temperature, np.random.default_rng(seed), size=int(samples))
     out = {k: [] for k in ("eps", "before", "after", "drift", "contact")}
     failures: list[str] = []

@@ -220,6 +220,27 @@ def check_bounce_time(
         One line with the estimated time, the bound and the most collisions that fit in it.
     """
     collisions = _check_collisions(collisions)
+    return check_collisions_time(modes, v, alpha, collisions, settings, force=force, name=name,
+                                 override=override, item="collision", **overrides)  # fmt: skip
+
+
+def check_collisions_time(
+    modes: ModeSet,
+    v: float,
+    alpha: float,
+    count: int,
+    settings: CollisionSettings | None = None,
+    *,
+    force: bool = False,
+    name: str = "collisions",
+    override: str = "force=True",
+    item: str = "collision",
+    **overrides,
+) -> float:
+    """Refuse ``count`` collisions of ``modes`` at speed ``v`` and wall ``alpha`` (a sequence,
+    an ensemble) estimated to take longer than :data:`restitution.budget.TIME_BOUND_S` unless
+    ``force``; returns the estimate, seconds. Each costs what one collision from rest does
+    (:func:`check_bounce_time`)."""
     _check_speed(v, alpha)
     settings = settings or CollisionSettings()
     if overrides:
@@ -227,7 +248,7 @@ def check_bounce_time(
     est = estimate_work(modes, np.array([float(v)]), np.array([float(alpha)]), settings)
     per = collision_seconds(est.steps, len(modes))
     what = f"about {float(f'{est.steps:.2g}'):.0f} steps of {len(modes)} modes"
-    return check_time(name, collisions, per, "collision", what, force=force, override=override)
+    return check_time(name, count, per, item, what, force=force, override=override)
 
 
 def _is_real(value) -> bool:
