@@ -43,13 +43,34 @@ def test_slow_damped_sphere_is_the_viscous_law_on_its_own_stiffness(reference):
         assert abs(c.sigma_own) < 1.0, c
 
 
-def test_faster_points_miss_by_at_most_a_few_percent_of_the_loss(reference):
-    """Faster (sphere v = 0.0131, disk v = 0.02) the sum misses the damped modal body by more
-    than its error (-2.4 sigma at both, docs/damping.md): the documented claim that the
-    difference stays under 3 % of the loss (measured: 1.9 % and 2.8 %)."""
-    for _, c in _comparisons(reference):
+def test_sum_misses_the_sphere_by_at_most_a_few_percent_of_the_loss(reference):
+    """The sphere's sum on its own stiffness misses its damped modal body by less than 3 % of
+    the loss (measured: 0.1 %, 0.1 %, 1.9 % at v = 0.003, 0.00627, 0.0131)."""
+    spheres = [c for p, c in _comparisons(reference) if p["geometry"] == "sphere"]
+    assert len(spheres) == 3
+    for c in spheres:
         loss = 1.0 - c.modal**2
         assert abs(loss - (1.0 - c.predicted_own**2)) < 0.03 * loss, c
+
+
+def test_disk_viscous_loss_differs_from_the_quasistatic_law_by_a_first_order_factor(reference):
+    """The damped modal disk does not reproduce the quasistatic viscous law on the paper's 2D
+    law: its viscous loss is 0.88-0.89 of it at v = 0.001 and 0.005, 1.05-1.09 at v = 0.02
+    (docs/damping.md). The ratio does not depend on tau (0.01-0.05) within a few per cent at
+    the slow speed, so the difference is in the first-order viscous loss, not a higher order
+    in tau; the damped disk law counts it in its error (DISK_VISCOUS_SPREAD)."""
+    from restitution.laws.damped import DISK_VISCOUS_SPREAD
+
+    disks = {(p["v"], p["tau"]): c for p, c in _comparisons(reference) if p["geometry"] == "disk"}
+    ratios = {key: c.viscous_ratio for key, c in disks.items()}
+    assert set(ratios) >= {(0.001, 0.05), (0.005, 0.01), (0.005, 0.025), (0.005, 0.05)}
+    slow = [ratios[(0.005, tau)] for tau in (0.01, 0.025, 0.05)]
+    assert max(slow) - min(slow) < 0.01  # linear in tau: one factor at all three
+    assert max(slow) < 0.9 and ratios[(0.001, 0.05)] < 0.9  # short of the law, beyond errors
+    assert all(abs(c.sigma) > 5 for (v, _), c in disks.items() if v <= 0.005)
+    assert min(ratios[(0.02, tau)] for tau in (0.01, 0.025, 0.05)) > 1.0
+    # The law's error term covers every measured ratio.
+    assert max(abs(r - 1.0) for r in ratios.values()) <= DISK_VISCOUS_SPREAD
 
 
 def test_sphere_beyond_hertz_by_its_finite_size(reference):

@@ -34,6 +34,14 @@ CHECK_POINTS = (
     ("sphere", 0.3, 0.00627, 0.05),
     ("sphere", 0.3, 0.0131, 0.05),
     ("disk", 0.33, 0.02, 0.05),
+    ("disk", 0.33, 0.005, 0.05),
+    ("disk", 0.33, 0.001, 0.05),
+    # The disk's viscous loss at three relaxation times: is a difference from the sum linear
+    # in tau (the first-order viscous loss itself), or of higher order (docs/damping.md)?
+    ("disk", 0.33, 0.005, 0.01),
+    ("disk", 0.33, 0.005, 0.025),
+    ("disk", 0.33, 0.02, 0.01),
+    ("disk", 0.33, 0.02, 0.025),
 )
 """``(geometry, nu, v, tau)`` of the stored modal points."""
 
@@ -133,6 +141,13 @@ class Comparison:
     predicted_own: float | None
     sigma_own: float | None
 
+    @property
+    def viscous_ratio(self) -> float:
+        """The modal body's viscous loss (its loss of kinetic energy less the elastic law's)
+        over the quasistatic viscous collision's: 1 when the sum holds."""
+        elastic_loss = 1.0 - self.elastic**2
+        return ((1.0 - self.modal**2) - elastic_loss) / (1.0 - self.viscous**2)
+
 
 def _hertz(geometry: str, nu: float, E: float = 1.0):
     from restitution.quasistatic.hertz import contact_law
@@ -230,12 +245,13 @@ def main(argv=None) -> None:
                 "seconds": seconds,
                 "elastic_compression": d0,
                 "elastic_compression_err": d0_err,
-                "comparison_at_writing": c.__dict__,
+                "comparison_at_writing": {**c.__dict__, "viscous_ratio": c.viscous_ratio},
             }
         )
         print(f"{geometry} nu={nu:g} v={v:g} tau={tau:g}: modal {limit.epsilon:.6f} +- "
               f"{limit.epsilon_err:.2g}, sum {c.predicted:.6f} ({c.sigma:+.2f} sigma), on the "
-              f"body's stiffness {c.predicted_own:.6f} ({c.sigma_own:+.2f} sigma)")  # fmt: skip
+              f"body's stiffness {c.predicted_own:.6f} ({c.sigma_own:+.2f} sigma); viscous "
+              f"loss modal / quasistatic {c.viscous_ratio:.4f}", flush=True)  # fmt: skip
     doc = {
         "what": "epsilon of the modal model with every mode damped (Kelvin-Voigt, one "
         "relaxation time tau in R/c), extrapolated alpha, N -> infinity through the production "
