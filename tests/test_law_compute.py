@@ -16,9 +16,9 @@ from _cli_checks import one_line_error
 from restitution.laws import compute
 from restitution.limits.sweep import SweepSettings
 
-STEEL = ("--E", "210e9", "--nu", "0.3", "--rho", "7850", "--geometry", "cylinder", "--against",
+STEEL = ("--E", "200e9", "--nu", "0.27", "--rho", "7800", "--geometry", "cylinder", "--against",
          "wall")  # fmt: skip
-"""Steel cylinders: nu_2d = 0.3 / 0.7 = 0.428571, between the shipped 0.33 and 0.5."""
+"""A steel-like cylinder: nu_2d = 0.27 / 0.73 = 0.369863, between the shipped 0.33 and 3/7."""
 
 TINY = SweepSettings(velocities=(0.1, 0.2, 0.3), alphas=(40.0, 80.0, 160.0), n_modes=(40, 60, 80),
                      batch_size=3)  # fmt: skip
@@ -38,10 +38,10 @@ def test_computes_the_exact_nu_once_then_serves_the_file(cli, tiny, monkeypatch)
     assert code == 0, err
     assert "27 collisions" in err and "into" in err  # the estimate, before the work
     d = json.loads(out)
-    path = tiny / "cache" / "laws" / "law_nu0.428571.json"
+    path = tiny / "cache" / "laws" / "law_nu0.369863.json"
     assert path.is_file()
     assert d["inputs"]["compute"] is True and d["inputs"]["law_file"] is None
-    assert d["law"]["nu"] == pytest.approx(0.3 / 0.7, abs=1e-6)
+    assert d["law"]["nu"] == pytest.approx(0.27 / 0.73, abs=1e-6)
     (point,) = d["points"]
     assert point["status"] in ("computed", "computed-not-asymptotic", "interpolated",
                                "interpolated-not-asymptotic")  # fmt: skip
@@ -105,3 +105,45 @@ def test_plan_counts_the_production_collisions():
     assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4)).collisions == 228
     with pytest.raises(Exception, match="one material"):
         compute.plan(0.4, "disk", Partner(radius_ratio=1.4, modulus_ratio=2.0))
+
+
+def test_curve_production_writes_the_law_with_the_production_groups(cli, tiny, monkeypatch):
+    """``curve --production`` (the command a refusal names) runs the production groups (here the
+    tiny stand-in) through the store and writes the law as JSON, CSV and table; a second run
+    computes the file again from the store (no collision twice)."""
+    from restitution.laws.law import EpsilonLaw
+
+    out = tiny / "out"
+    args = ("curve", "--nu", "0.41", "--production", "--out", str(out), "--store",
+            str(tiny / "s.sqlite"), "--no-progress")  # fmt: skip
+    code, stdout, err = cli(*args)
+    assert code == 0, err
+    assert "27 collisions" in err
+    law = EpsilonLaw.from_json(out / "law_nu0.41.json")
+    assert list(law.v) == [0.1, 0.2, 0.3]
+    assert (out / "law_nu0.41.csv").is_file() and (out / "law_nu0.41.txt").is_file()
+    import restitution.dynamics.collision as collision
+
+    monkeypatch.setattr(collision, "_attempt", pytest.fail)  # everything from the store now
+    code, stdout, err = cli(*args)
+    assert code == 0, err
+    assert EpsilonLaw.from_json(out / "law_nu0.41.json").epsilon_points.tolist() == (
+        law.epsilon_points.tolist()
+    )
+
+
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (("--v", "0.1"), "--v has no effect with --production"),
+        (("--modes", "40", "60", "80"), "--modes has no effect with --production"),
+    ],
+)
+def test_curve_production_refuses_grid_options(cli, tiny, extra, words):
+    code, out, err = cli("curve", "--nu", "0.41", "--production", *extra)
+    one_line_error(code, err, words)
+
+
+def test_curve_force_needs_production(cli):
+    code, out, err = cli("curve", "--nu", "0.41", "--force")
+    one_line_error(code, err, "--force has no effect without --production")

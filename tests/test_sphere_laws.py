@@ -293,12 +293,12 @@ def test_no_shipped_sphere_law_names_the_command(capsys):
         si_law(E, -0.5, RHO, "sphere", "wall")
     message = str(info.value)
     assert "\n" not in message and message.startswith("no law for sphere nu = -0.5")
-    assert "`restitution curve --geometry sphere --nu -0.5 --out DIR`" in message
+    assert "`restitution curve --geometry sphere --nu -0.5 --production --out DIR`" in message
     assert "DIR/law_sphere_nu-0.5.json" in message
     args = ["--E", "210e9", "--nu", "-0.5", "--rho", "7850", "--geometry", "sphere"]
     code, out, err = run_cli(capsys, "law", *args, "--against", "wall", "--speed", "1")
     assert code == 2 and out == "" and err.count("\n") == 1
-    assert "restitution curve --geometry sphere --nu -0.5 --out DIR" in err
+    assert "restitution curve --geometry sphere --nu -0.5 --production --out DIR" in err
     with pytest.raises(InputError, match="give the sphere's Poisson number"):
         law(geometry="sphere")
     with pytest.raises(InputError, match=r"restitution curve --geometry sphere --nu -0\.5"):

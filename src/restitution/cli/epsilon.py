@@ -27,6 +27,7 @@ from restitution.cli._common import (
     partner_options,
     quiet,
     quiet_option,
+    refuse_ignored,
     strict_option,
     writing,
 )
@@ -420,6 +421,18 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
     show_default=True,
     help="Figure format.",
 )
+@click.option(
+    "--production",
+    is_flag=True,
+    help="Compute each law with the shipped laws' production settings (their speeds 1e-4-0.3, "
+    "walls and mode windows; a sphere's low-speed points too) instead of a grid: writes "
+    "law_*.json / .csv / .txt only, no figures; the estimate is printed before it starts.",
+)
+@click.option(
+    "--force",
+    is_flag=True,
+    help="With --production: compute even when the estimate exceeds the bound of one run (1 h).",
+)
 @partner_options
 @_executor_options
 @click.pass_context
@@ -430,6 +443,8 @@ def curve(
     velocities,
     out,
     fmt,
+    production,
+    force,
     alphas,
     alpha_scale,
     modes,
@@ -474,6 +489,9 @@ def curve(
             "--partner-nu names the second body's material for one --nu; give one --nu with it"
         )
     partner = partner_from(ctx, nus[0], None, geometry)
+    if production:
+        return _production(ctx, nus, geometry, partner, out, store, workers, progress, force)
+    refuse_ignored(ctx, {"force": "--force"}, "without --production")
     settings = _settings(velocities, alphas, modes, alpha_scale, geometry, partner)
     # The figures draw the curves' numbers whatever the body; a sphere's say so and are named
     # apart from the disk's, so one --out can hold both.
@@ -546,3 +564,38 @@ def curve(
     message = "" if asymptotic else "some speeds are not asymptotic (see the table)"
     status, advice = _status(asymptotic, message, failed)
     _finish(status, advice, failures, report, strict)
+
+
+def _production(ctx, nus, geometry, partner, out, store, workers, progress, force) -> None:
+    """``curve --production``: each law with the production settings
+    (:mod:`restitution.laws.compute`), written as JSON, CSV and table into ``out``."""
+    from restitution.laws.compute import check_plan, plan, production_groups
+    from restitution.laws.law import EpsilonLaw
+    from restitution.laws.production import SPHERE_LOW_SPEEDS, build
+
+    refuse_ignored(
+        ctx,
+        {"velocities": "--v", "alphas": "--alphas", "alpha_scale": "--alpha-scale",
+         "modes": "--modes", "fmt": "--format", "scheduler": "--scheduler",
+         "retry_failed": "--retry-failed"},
+        "with --production (its speeds, walls and mode windows are the shipped laws'; it "
+        "draws no figures)",
+    )  # fmt: skip
+    groups, kind = production_groups(geometry, partner)
+    plans = [plan(nu, geometry, partner, out, reuse=False) for nu in nus]
+    for p in plans:
+        check_plan(p, force)
+    check_output_dir(out, "--out")  # before the sweep, not after it
+    low = SPHERE_LOW_SPEEDS if kind == "sphere" else ()
+    written = []
+    for nu, p in zip(nus, plans, strict=True):
+        note(f"note: nu = {nu:g}: {p.words()}")
+        with writing(out, "--out"):
+            (path,) = build(out, [nu], groups, store=store, workers=workers,
+                            progress=False if quiet() else progress, low_speeds=low)  # fmt: skip
+            law = EpsilonLaw.from_json(path)
+            written += [path, law.to_csv(path.with_suffix(".csv")),
+                        law.to_table(path.with_suffix(".txt"))]  # fmt: skip
+        ok = [bool(x) for x in law.asymptotic_ok]
+        click.echo(f"nu = {nu:g}: {sum(ok)} of {len(ok)} speeds pass every check; {path.name}")
+    click.echo("wrote " + ", ".join(str(p) for p in written))

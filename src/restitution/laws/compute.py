@@ -35,6 +35,7 @@ __all__ = [
     "computed_law",
     "law_dir",
     "plan",
+    "production_groups",
 ]
 
 SECONDS_PER_COLLISION = {"disk": 1.1, "sphere": 1.0, "pair": 4.3}
@@ -52,7 +53,9 @@ def law_dir() -> Path:
     return cache_root() / "laws"
 
 
-def _groups(geometry: str, partner):
+def production_groups(geometry: str, partner=None):
+    """``(groups, kind)``: the production sweeps of the body (``kind`` ``"disk"``,
+    ``"sphere"`` or ``"pair"``), as the shipped laws were computed."""
     if partner is not None:
         if geometry != "disk" or not partner.same_material:
             raise InputError(
@@ -107,15 +110,18 @@ def _usable(path: Path) -> bool:
     return True
 
 
-def plan(nu: float, geometry: str = "disk", partner=None, out_dir=None) -> ComputePlan:
-    """The plan of :func:`computed_law` with the same arguments (nothing is computed)."""
-    groups, kind = _groups(geometry, partner)
+def plan(
+    nu: float, geometry: str = "disk", partner=None, out_dir=None, *, reuse: bool = True
+) -> ComputePlan:
+    """The plan of :func:`computed_law` with the same arguments (nothing is computed);
+    ``reuse=False``: a law file already in ``out_dir`` is computed again (through the store)."""
+    groups, kind = production_groups(geometry, partner)
     path = Path(out_dir or law_dir()) / law_filename(nu, geometry, partner)
     count = sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups)
     seconds = count * SECONDS_PER_COLLISION[kind]
     if kind == "sphere":
         seconds += LOW_SPEED_SECONDS
-    return ComputePlan(path, _usable(path), count, seconds)
+    return ComputePlan(path, reuse and _usable(path), count, seconds)
 
 
 def check_plan(p: ComputePlan, force: bool = False) -> None:
@@ -177,7 +183,7 @@ def computed_law(
     if p.exists:
         return p.path
     check_plan(p, force)
-    groups, kind = _groups(geometry, partner)
+    groups, kind = production_groups(geometry, partner)
     low = SPHERE_LOW_SPEEDS if kind == "sphere" else ()
     (written,) = build(p.path.parent, [nu], groups, store=store, workers=workers,
                        progress=progress, low_speeds=low)  # fmt: skip

@@ -221,7 +221,10 @@ def _curve_command(geometry: str, nu: float | None = None, partner=None) -> str:
     pair = ""
     if partner is not None:
         pair = "".join(f" {option} {value:g}" for _, _, option, value in _partner_fields(partner))
-    return f"restitution curve{flag} --nu {value}{pair} --out DIR"
+    # The shipped laws' settings where they exist (a body on the wall, two disks of one material).
+    same = partner is None or (geometry == "disk" and partner.same_material)
+    production = " --production" if same else ""
+    return f"restitution curve{flag} --nu {value}{pair}{production} --out DIR"
 
 
 # -- the law -------------------------------------------------------------------------------
