@@ -36,6 +36,7 @@ from restitution.bodies.kinds import body_kind
 from restitution.bodies.pair.partner import Partner
 from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.errors import InputError
+from restitution.limits.claims import POLL_S, Claims
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
     ALPHA_SCALE,
@@ -430,6 +431,9 @@ class SweepReport:
     lost : tuple of (PointSpec, str)
         Points whose worker died (infrastructure failure) on every one of
         :data:`INFRASTRUCTURE_RETRIES` + 1 attempts; not stored, so a rerun computes them.
+    waited : int
+        Points another sweep on the same store was computing (it had claimed them,
+        :mod:`restitution.limits.claims`), which this one waited for instead of computing.
     """
 
     total: int
@@ -439,6 +443,7 @@ class SweepReport:
     wall_time_s: float = 0.0
     executor: str = ""
     lost: tuple[tuple[PointSpec, str], ...] = field(default_factory=tuple)
+    waited: int = 0
 
     @property
     def complete(self) -> bool:
@@ -561,12 +566,16 @@ def run_sweep(
             )
         ]
         skipped = len(unique) - len(todo)
-        computed, failed, lost, name = 0, [], [], "none"
+        computed, failed, lost, name, waited = 0, [], [], "none", 0
         if todo:
             db.check_writable()  # fail now, not after computing
-            computed, failed, lost, name = _execute(
-                db, todo, batch_size, batch_function, workers, scheduler, client, progress
-            )
+            with Claims(db.path) as claims:
+
+                def run(specs):
+                    return _execute(db, specs, batch_size, batch_function, workers, scheduler,
+                                    client, progress, on_batch=claims.beat)  # fmt: skip
+
+                computed, failed, lost, name, waited = _claimed(db, claims, todo, run)
         return SweepReport(
             total=len(unique),
             skipped=skipped,
@@ -575,13 +584,40 @@ def run_sweep(
             lost=tuple(lost),
             wall_time_s=time.perf_counter() - t0,
             executor=name,
+            waited=waited,
         )
     finally:
         if own_store:
             db.close()
 
 
-def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, progress):
+def _claimed(db, claims, todo, run):
+    """Compute the points of ``todo`` this sweep can claim (``run``), wait for those another
+    live sweep is computing (:mod:`restitution.limits.claims`) and take over those whose sweep
+    is gone; returns ``(computed, failed, lost, executor, waited)``, ``waited`` the points the
+    other sweeps stored."""
+    computed, failed, lost, name, waited = 0, [], [], "none", 0
+    pending = list(todo)
+    while pending:
+        mine, _ = claims.claim(s.key() for s in pending)
+        ours = [s for s in pending if s.key() in mine]
+        if ours:
+            c, f, lost_now, name = run(ours)
+            computed, failed, lost = computed + c, failed + f, lost + lost_now
+        rest = [s for s in pending if s.key() not in mine]
+        while rest:  # until the others stored them, or a sweep holding some is gone
+            time.sleep(POLL_S)
+            stored = db.status(rest)
+            waited += sum(s.key() in stored for s in rest)
+            rest = [s for s in rest if s.key() not in stored]
+            if rest and claims.claim(s.key() for s in rest)[0]:
+                break  # taken over: the outer loop computes them
+        pending = rest
+    return computed, failed, lost, name, waited
+
+
+def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, progress,
+             on_batch=None):  # fmt: skip
     pending = _batches(todo, batch_size)
     computed, failed, lost, name = 0, [], [], "none"
     with _progress(progress, len(todo)) as bar:
@@ -609,6 +645,8 @@ def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, p
                                 db.put_failure(spec, str(payload))
                                 failed.append((spec, str(payload)))
                         bar.advance(task, len(batch))
+                        if on_batch is not None:
+                            on_batch()
                 except BaseException:
                     # Ctrl-C (or any error in the parent): drop the queued work; what is
                     # stored stays.
