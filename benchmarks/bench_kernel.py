@@ -285,7 +285,12 @@ def _kernel_inputs(modes, v, alpha):
 
 
 def _old_args(args: tuple) -> tuple:
-    """``run_batch`` arguments for a baseline kernel: the quadrature (third) with old names."""
+    """``run_batch`` arguments for a baseline kernel: the quadrature (third) with old names, and
+    without the arguments kernels before material damping lack (the 16th, ``damping``, must be
+    ``None``: an elastic body)."""
+    if len(args) > 15:
+        assert all(a is None for a in args[15:]), "a damped body has no baseline kernel"
+        args = args[:15]
     return (*args[:2], _old_quadrature(args[2]), *args[3:])
 
 
