@@ -27,13 +27,16 @@ is one more module of this layer (docs/architecture.md).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
 
 import numpy as np
 import scipy.sparse as sp
 
-__all__ = ["ModalBody", "SurfaceQuadrature", "surface_quadrature"]
+from restitution.errors import InputError, describe, is_integer, is_real
+
+__all__ = ["ModalBody", "SurfaceQuadrature", "check_mode_selection", "surface_quadrature"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -192,3 +195,25 @@ class ModalBody(Protocol):
         pressure at the tip into its potential, ``R`` for the disk's edge, ``R^2`` for a
         surface."""
         ...
+
+
+def check_mode_selection(count, omega_max) -> None:
+    """One-line :class:`~restitution.errors.InputError` unless exactly one of ``count`` (an
+    integer >= 1: the lowest modes) and ``omega_max`` (a finite number > 0, ``c / R``: every
+    mode below it) is given, as every body's mode builder takes them."""
+    if (count is None) == (omega_max is None):
+        raise InputError(
+            f"give exactly one of count and omega_max, got count={count!r} and "
+            f"omega_max={omega_max!r}; pass e.g. count=100"
+        )
+    if omega_max is not None:
+        if not (is_real(omega_max) and math.isfinite(omega_max) and omega_max > 0):
+            raise InputError(
+                f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
+                "finite float > 0, e.g. omega_max=40.0"
+            )
+    elif not (is_integer(count) and count >= 1):
+        raise InputError(
+            f"count must be a positive integer (the number of modes), got {describe(count)}; "
+            "pass an int >= 1, e.g. count=100"
+        )

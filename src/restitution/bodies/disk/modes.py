@@ -33,7 +33,7 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import jv
 
-from restitution.bodies.base import SurfaceQuadrature
+from restitution.bodies.base import SurfaceQuadrature, check_mode_selection
 from restitution.bodies.disk import contact, surface
 from restitution.bodies.disk.bessel_ratio import scaled_pairs
 from restitution.bodies.disk.frequency_equation import (
@@ -49,8 +49,6 @@ from restitution.bodies.roots import bracket_and_polish, null_vector
 from restitution.errors import (
     InputError,
     RestitutionError,
-    describe,
-    is_integer,
     is_real,
     non_negative,
     real,
@@ -438,27 +436,6 @@ def _as_nu(material: Material | float) -> float:
     return require_reduced(material, "the modal path")
 
 
-def _check_request(count, omega_max) -> None:
-    """One-line :class:`InputError` unless exactly one of ``count`` (an integer >= 1) and
-    ``omega_max`` (a finite number > 0) is given."""
-    if (count is None) == (omega_max is None):
-        raise InputError(
-            f"give exactly one of count and omega_max, got count={count!r} and "
-            f"omega_max={omega_max!r}; pass e.g. count=100"
-        )
-    if omega_max is not None:
-        if not (is_real(omega_max) and math.isfinite(omega_max) and omega_max > 0):
-            raise InputError(
-                f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
-                "finite float > 0, e.g. omega_max=40.0"
-            )
-    elif not (is_integer(count) and count >= 1):
-        raise InputError(
-            f"count must be a positive integer (the number of modes), got {describe(count)}; "
-            "pass an int >= 1, e.g. count=100"
-        )
-
-
 def compute_modes(
     material: Material | float,
     count: int | None = None,
@@ -483,7 +460,7 @@ def compute_modes(
         Sorted by frequency; the rigid translation and the torsional ``n = 0`` family excluded.
     """
     nu = _as_nu(material)
-    _check_request(count, omega_max)
+    check_mode_selection(count, omega_max)
     if omega_max is not None:
         n, w = _all_roots(nu, float(omega_max))
         return _build(n, w, nu)

@@ -52,14 +52,12 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import roots_legendre, spherical_jn
 
-from restitution.bodies.base import SurfaceQuadrature
+from restitution.bodies.base import SurfaceQuadrature, check_mode_selection
 from restitution.bodies.roots import bracket_and_polish, null_vector
 from restitution.bodies.sphere import surface
 from restitution.errors import (
     InputError,
     RestitutionError,
-    describe,
-    is_integer,
     is_real,
     non_negative,
     real,
@@ -417,23 +415,9 @@ def compute_sphere_modes(
     Exactly one of ``count`` and ``omega_max`` must be given.
     """
     nu = _check_nu(nu)
-    if (count is None) == (omega_max is None):
-        raise InputError(
-            f"give exactly one of count and omega_max, got count={count!r} and "
-            f"omega_max={omega_max!r}; pass e.g. count=100"
-        )
+    check_mode_selection(count, omega_max)
     if omega_max is not None:
-        if not (is_real(omega_max) and math.isfinite(omega_max) and omega_max > 0):
-            raise InputError(
-                f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
-                "finite float > 0, e.g. omega_max=40.0"
-            )
         return _build(*_roots(nu, float(omega_max)), nu)
-    if not (is_integer(count) and count >= 1):
-        raise InputError(
-            f"count must be a positive integer (the number of modes), got {describe(count)}; "
-            "pass an int >= 1, e.g. count=100"
-        )
     c_L, c_T = speeds(nu)
     w_max = math.sqrt(8.0 * count / (1.0 / c_L**2 + 1.0 / c_T**2)) + 2.0
     for _ in range(30):
