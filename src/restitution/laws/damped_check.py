@@ -27,7 +27,15 @@ import numpy as np
 
 from restitution.errors import InputError
 
-__all__ = ["CHECK_POINTS", "Comparison", "compare", "load_reference", "modal_point"]
+__all__ = [
+    "CHECK_POINTS",
+    "Comparison",
+    "TrajectoryCheck",
+    "compare",
+    "load_reference",
+    "modal_point",
+    "trajectory_check",
+]
 
 CHECK_POINTS = (
     ("sphere", 0.3, 0.003, 0.05),
@@ -199,6 +207,55 @@ def compare(geometry: str, nu: float, v: float, tau: float, modal: float, modal_
                       vis, pred, (modal - pred) / err, compression, compression_err,
                       float(plain.elastic_max_compression[0]), own, pred_own,
                       sigma_own)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class TrajectoryCheck:
+    """One modal collision (``N`` modes, wall ``alpha``) elastic and damped, against the
+    quasistatic Kelvin-Voigt dissipation on the elastic body's own path (:func:`trajectory_check`).
+
+    Attributes
+    ----------
+    modal : float
+        The damped body's loss of kinetic energy less the elastic body's (fraction of ``E0``).
+    on_path : float
+        ``tau * integral xi' dF/dt dt / E0`` on the elastic modal collision's recorded path
+        (centre approach ``xi``, wall force ``F``): the quasistatic viscous loss of a body whose
+        force-compression relation is the modal body's.
+    law : float
+        The quasistatic viscous collision's loss on the body's 2D (or Hertz) law.
+    """
+
+    modal: float
+    on_path: float
+    law: float
+
+
+def trajectory_check(geometry: str, nu: float, v: float, tau: float, n_modes: int,
+                     alpha: float, record_interval: float = 0.005) -> TrajectoryCheck:  # fmt: skip
+    """Where the damped modal body departs from the quasistatic viscous law: ``on_path`` close
+    to ``law`` means the law's force-compression relation is the body's; ``modal`` away from
+    ``on_path`` means the body does not dissipate as a body in quasistatic deformation would
+    (docs/damping.md). One elastic run on the NumPy path with its history, one damped run."""
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.viscoelastic import Viscoelastic
+    from restitution.dynamics.collision import collide
+    from restitution.quasistatic.viscoelastic import viscous_collision
+
+    modes = get_modes(nu, count=n_modes, geometry=geometry)
+    elastic = collide(modes, v, alpha, integrator="split", record=True,
+                      record_interval=record_interval, backend="numpy")  # fmt: skip
+    damped = collide(Viscoelastic(modes, tau), v, alpha, integrator="split")
+    h = elastic.history
+    xi = h.x0 + 1.0  # the centre past its touching position
+    work = np.trapezoid(np.gradient(xi, h.t) * np.gradient(h.force, h.t), h.t)
+    e0 = 0.5 * modes.mass * v**2
+    law = viscous_collision(_hertz(geometry, nu), np.array([v]), tau)
+    return TrajectoryCheck(
+        modal=float(elastic.epsilon**2 - damped.epsilon**2),
+        on_path=float(tau * work / e0),
+        law=float(1.0 - law.epsilon[0] ** 2),
+    )
 
 
 def load_reference(path=None) -> list[dict]:
