@@ -101,3 +101,16 @@ def test_reference_point_is_reproduced(reference, tmp_path):
     p = max((p for p in reference if p["geometry"] == "sphere"), key=lambda p: p["v"])
     limit, _ = modal_point(p["geometry"], p["nu"], p["v"], p["tau"], store=tmp_path / "s.db")
     assert limit.epsilon == pytest.approx(p["epsilon"], abs=0.1 * p["epsilon_err"])
+
+
+def test_trajectory_diagnostic_at_a_small_disk():
+    """``trajectory_check`` (docs/damping.md) on a small disk, v = 0.02, N = 400, alpha = 869.
+    Regression values of this package (measured once, not from an independent route): the damped
+    run's extra loss 1.018 times the quasistatic loss on the elastic body's own path, that path's
+    loss 0.937 of the 2D law's; at N = 1880 the same wall gave 1.013 and 0.933."""
+    from restitution.laws.damped_check import trajectory_check
+
+    c = trajectory_check("disk", 0.33, 0.02, 0.05, 400, 869.0)
+    assert 0 < c.modal < 1 and 0 < c.on_path < 1 and 0 < c.law < 1
+    assert c.modal / c.on_path == pytest.approx(1.018, abs=0.005)
+    assert c.on_path / c.law == pytest.approx(0.937, abs=0.005)
