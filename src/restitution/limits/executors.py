@@ -20,9 +20,12 @@ from __future__ import annotations
 import asyncio
 import concurrent.futures as cf
 import contextlib
+import logging
 import multiprocessing
 import numbers
 import os
+import signal
+import sys
 import threading
 import time
 from collections.abc import Iterator
@@ -62,6 +65,28 @@ def _single_threaded_children() -> Iterator[None]:
                 os.environ.pop(k, None)
             else:
                 os.environ[k] = v
+
+
+@contextlib.contextmanager
+def _children_without_sigint() -> Iterator[None]:
+    """Worker processes started inside this block ignore Ctrl-C (SIGINT).
+
+    The sweep stops its workers when it is interrupted. Interrupted themselves while they
+    started, the workers printed tracebacks and left the cluster in a state its exit handler
+    asserted on (issue 30: tracebacks after Ctrl-C of ``curve --workers 2``). An ignored signal
+    stays ignored across fork and exec, and Python keeps it ignored at start-up; Dask spawns
+    the workers from its own thread, so the disposition (process-wide) is set, not a thread's
+    mask. A Ctrl-C while the workers start (a few seconds, said on stderr) is ignored by this
+    process too; one after it interrupts the sweep.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
 
 
 def _exit_with_parent(parent: int) -> None:
@@ -198,16 +223,19 @@ def executor(
         workers = check_workers(workers)
         from distributed import Client, LocalCluster
 
-        with (
-            _single_threaded_children(),
-            LocalCluster(
+        if sys.stderr.isatty():
+            print(f"starting {workers} workers (Ctrl-C is taken once they run)", file=sys.stderr)
+        with _single_threaded_children(), _children_without_sigint():
+            cluster = LocalCluster(
                 n_workers=workers,
                 threads_per_worker=1,
                 processes=True,
                 dashboard_address=":0",  # any free port; never collide with 8787
-            ) as cluster,
-            Client(cluster) as c,
-        ):
+                # Only errors from the workers' logs: a Ctrl-C cancels their tasks, which Dask
+                # logs as warnings ("ended with CancelledError") that are no news to the user.
+                silence_logs=logging.ERROR,
+            )
+        with cluster, Client(cluster) as c:
             yield c.get_executor(pure=False), f"dask LocalCluster, {workers} workers"
         return
     n = budget.cpu_count()
