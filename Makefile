@@ -21,11 +21,13 @@ paper: $(STAMP)
 paper-quick: $(STAMP)
 	$(BIN)/restitution paper --quick --out $(OUT)
 
-# Recompute the shipped epsilon(v) laws (src/restitution/laws/data) with the current code,
+# Recompute the shipped epsilon(v) laws (src/restitution/laws/data) with the current code
+# (collisions, then the low-speed points of the slow-impact model: about 4 minutes a law),
 # then draw their slow-point figures into docs/figures.
 law: $(STAMP)
 	$(BIN)/python -m restitution.laws.production
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
+	$(BIN)/python -m restitution.reproduction.figures.disk_low_speed --figures docs/figures
 
 # The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline (about 40 minutes from
 # a cold store, then 10 minutes of low-speed points), then their figures in docs/figures (beside

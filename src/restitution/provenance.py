@@ -19,6 +19,7 @@ from restitution._version import __version__
 __all__ = [
     "FEM_MODULES",
     "PAIR",
+    "DISK_QUASISTATIC_MODULES",
     "QUASISTATIC_MODULES",
     "SOLVER_PACKAGES",
     "code_version",
@@ -131,16 +132,26 @@ QUASISTATIC_MODULES: tuple[str, ...] = (
     "restitution.quasistatic.pulse",
     "restitution.quasistatic.rayleigh",
 )
-"""Modules of the quasistatic layer whose source determines a low-speed law point (the estimate
-and what it imports)."""
+"""Modules of the quasistatic layer whose source determines a sphere's low-speed law point (the
+estimate and what it imports)."""
+
+DISK_QUASISTATIC_MODULES: tuple[str, ...] = (
+    "restitution.quasistatic.hertz",
+    "restitution.quasistatic.hertz_pair",
+    "restitution.quasistatic.slow_disk",
+)
+"""The same for the disk's low-speed points (:mod:`restitution.quasistatic.slow_disk`)."""
+
+_QUASISTATIC_OF = {"sphere": QUASISTATIC_MODULES, "disk": DISK_QUASISTATIC_MODULES}
 
 
 @functools.cache
-def quasistatic_code_version(geometry: str = "sphere") -> str:
-    """``__version__`` plus a digest of the low-speed theory (:data:`QUASISTATIC_MODULES`) and
-    the body's modes (the body layer but other bodies' folders), e.g.
-    ``0.1.0+quasistatic.3fa2...``: the version of a law's low-speed points."""
-    modules = _body_modules(("restitution.bodies",), geometry) + QUASISTATIC_MODULES
+def quasistatic_code_version(geometry: str = "sphere", *, pair: bool = False) -> str:
+    """``__version__`` plus a digest of the body's low-speed route (:data:`QUASISTATIC_MODULES`
+    for the sphere, :data:`DISK_QUASISTATIC_MODULES` for the disk and two disks) and the body's
+    modes (the body layer but other bodies' folders; with ``pair`` the folder :data:`PAIR`
+    too), e.g. ``0.1.0+quasistatic.3fa2...``: the version of a law's low-speed points."""
+    modules = _body_modules(("restitution.bodies",), geometry, pair) + _QUASISTATIC_OF[geometry]
     return source_digest(tuple(sorted(modules)), "quasistatic.")
 
 

@@ -425,7 +425,8 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
     "--production",
     is_flag=True,
     help="Compute each law with the shipped laws' production settings (their speeds 1e-4-0.3, "
-    "walls and mode windows; a sphere's low-speed points too) instead of a grid: writes "
+    "walls and mode windows; the low-speed points of a disk, a sphere or two disks too) "
+    "instead of a grid: writes "
     "law_*.json / .csv / .txt only, no figures; the estimate is printed before it starts.",
 )
 @click.option(
@@ -571,7 +572,7 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
     (:mod:`restitution.laws.compute`), written as JSON, CSV and table into ``out``."""
     from restitution.laws.compute import check_plan, plan, production_groups
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.production import SPHERE_LOW_SPEEDS, build
+    from restitution.laws.production import build, low_speeds_of
 
     refuse_ignored(
         ctx,
@@ -586,7 +587,7 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
     for p in plans:
         check_plan(p, force)
     check_output_dir(out, "--out")  # before the sweep, not after it
-    low = SPHERE_LOW_SPEEDS if kind == "sphere" else ()
+    low = low_speeds_of(geometry, partner)
     written = []
     for nu, p in zip(nus, plans, strict=True):
         note(f"note: nu = {nu:g}: {p.words()}")

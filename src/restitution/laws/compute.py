@@ -24,7 +24,7 @@ from restitution.laws.law import law_filename
 from restitution.laws.production import (
     SETTINGS_GROUPS,
     SPHERE_GROUPS,
-    SPHERE_LOW_SPEEDS,
+    low_speeds_of,
     pair_groups,
 )
 
@@ -43,9 +43,10 @@ SECONDS_PER_COLLISION = {"disk": 1.1, "sphere": 1.0, "pair": 4.3}
 the shipped runs): the disk's 1320 collisions took 656-1442 s, the sphere's 1872 took 32 min,
 the pairs' 2052 took 146 min (README, ``make law``, ``make law-sphere``, ``make law-pair``)."""
 
-LOW_SPEED_SECONDS = 100.0
-"""Wall time of a sphere law's low-speed points (404 points for six laws took about 10 minutes,
-docs/spheres.md), seconds per law."""
+LOW_SPEED_SECONDS = {"sphere": 100.0, "disk": 200.0}
+"""Wall time of a law's low-speed points, seconds per law: the sphere's (404 points for six laws
+took about 10 minutes, docs/spheres.md) and the disk's (100 points for nine laws took
+TODO)."""
 
 
 def law_dir() -> Path:
@@ -119,8 +120,7 @@ def plan(
     path = Path(out_dir or law_dir()) / law_filename(nu, geometry, partner)
     count = sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups)
     seconds = count * SECONDS_PER_COLLISION[kind]
-    if kind == "sphere":
-        seconds += LOW_SPEED_SECONDS
+    seconds += LOW_SPEED_SECONDS.get(kind, 0.0)
     return ComputePlan(path, reuse and _usable(path), count, seconds)
 
 
@@ -184,7 +184,6 @@ def computed_law(
         return p.path
     check_plan(p, force)
     groups, kind = production_groups(geometry, partner)
-    low = SPHERE_LOW_SPEEDS if kind == "sphere" else ()
     (written,) = build(p.path.parent, [nu], groups, store=store, workers=workers,
-                       progress=progress, low_speeds=low)  # fmt: skip
+                       progress=progress, low_speeds=low_speeds_of(geometry, partner))  # fmt: skip
     return written

@@ -681,6 +681,23 @@ class EpsilonLaw:
             metadata=metadata,
         )
 
+    def modal_part(self) -> EpsilonLaw:
+        """This law without its low-speed points (``route == "quasistatic"``) and their
+        metadata (``low_speed``): what :meth:`joined` joins new low-speed points to."""
+        keep = ~self.quasistatic
+        if keep.all():
+            return self
+        metadata = {k: v for k, v in self.metadata.items() if k != "low_speed"}
+        metadata["points"] = [r for r, k in zip(self._records(), keep, strict=True) if k]
+        return EpsilonLaw(
+            nu=self.nu,
+            v=self.v[keep],
+            epsilon_points=self.epsilon_points[keep],
+            epsilon_err_points=self.epsilon_err_points[keep],
+            asymptotic_ok=self.asymptotic_ok[keep],
+            metadata=metadata,
+        )
+
     @classmethod
     def from_json(cls, path: str | os.PathLike) -> EpsilonLaw:
         """Read a law written by :meth:`to_json` (or shipped with the package).

@@ -47,6 +47,11 @@ __all__ = [
     "SPHERE_SPEEDS",
     "build",
     "low_speed_points",
+    "rejoin_low_speeds",
+    "low_speeds_of",
+    "leave_one_out",
+    "DISK_LOW_SPEEDS",
+    "PAIR_LOW_SPEEDS",
     "pair_groups",
     "production",
 ]
@@ -150,21 +155,123 @@ def pair_groups(radius_ratio: float, groups=PAIR_WALL_GROUPS) -> tuple[SweepSett
 
 _PRODUCTION = {"disk": (SHIPPED_NUS, SETTINGS_GROUPS), "sphere": (SPHERE_NUS, SPHERE_GROUPS)}
 
-_LOW_SPEEDS = {"sphere": SPHERE_LOW_SPEEDS}
-"""Bodies whose laws continue below the modal speeds with the low-speed theory."""
+DISK_LOW_SPEEDS = tuple(float(f"{v:.4g}") for v in np.geomspace(1e-7, 1e-4, 101)[:-1])
+"""Speeds of the disk's low-speed points (:func:`low_speed_points`,
+:mod:`restitution.quasistatic.slow_disk`), ``c``: from ``1e-7`` (0.5 mm/s for a steel cylinder)
+up to the modal laws' slowest speed ``1e-4``, a factor 1.07 apart. The loss varies slowly in
+``ln v`` there; each point's error includes what PCHIP through its neighbours strays from it
+(:func:`low_speed_points`)."""
+
+PAIR_LOW_SPEEDS = tuple(float(f"{w:.4g}") for w in np.geomspace(2e-7, 1e-3, 91))
+"""Relative speeds ``w`` of the low-speed points of two disks' laws (``c1``), a factor 1.1
+apart: the disk's speeds doubled, up to ``1e-3``, where three cuts of the model still fit at
+``nu = 0.9`` (the pairs' modal points start at ``w = 2e-3``)."""
+
+_LOW_SPEEDS = {"sphere": SPHERE_LOW_SPEEDS, "disk": DISK_LOW_SPEEDS}
+"""Bodies on a wall whose laws continue below the modal speeds with a low-speed route."""
+
+
+def low_speeds_of(geometry: str, partner=None) -> tuple[float, ...]:
+    """The speeds of the low-speed points joined to the production law of a body on a wall
+    (:data:`SPHERE_LOW_SPEEDS`, :data:`DISK_LOW_SPEEDS`) or of two disks
+    (:data:`PAIR_LOW_SPEEDS`); none for two spheres."""
+    if partner is not None:
+        return PAIR_LOW_SPEEDS if geometry == "disk" else ()
+    return _LOW_SPEEDS.get(geometry, ())
+
+
+def _sphere_points(nu: float, speeds: list[float], progress: bool, partner=None):
+    from rich.progress import track
+
+    from restitution.bodies.cache import get_modes
+    from restitution.quasistatic.low_speed import (
+        CONTACT_TIME_SPREAD,
+        LOW_SPEED_MODES,
+        interpolation_error,
+        low_speed_loss,
+    )
+
+    modes = get_modes(nu, LOW_SPEED_MODES, geometry="sphere")
+    # What PCHIP between neighbouring points may miss joins each point's error.
+    between = interpolation_error(modes, speeds) if len(speeds) > 1 else [0.0]
+    out = []
+    steps = track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress)
+    for v, gap in zip(steps, between, strict=True):
+        r = low_speed_loss(modes, v)
+        out.append((r, float(gap), {"band": list(r.band)}))
+    parameters = {
+        "route": "Rayleigh's estimate on Hertz's force pulse (restitution.quasistatic.low_speed)",
+        "n_modes": LOW_SPEED_MODES,
+        "contact_time_spread": CONTACT_TIME_SPREAD,
+    }
+    return out, parameters
+
+
+def leave_one_out(v, loss) -> np.ndarray:
+    """How far PCHIP through the other points (in ``v``, as a law interpolates) strays from each
+    interior point, shape (K,); the end points take their neighbour's. It is the error of twice
+    the spacing, an upper estimate of the interpolation's between the points."""
+    from scipy.interpolate import PchipInterpolator
+
+    v, loss = np.asarray(v, dtype=float), np.asarray(loss, dtype=float)
+    if v.size < 4:
+        return np.zeros(v.size)
+    out = np.empty(v.size)
+    for j in range(1, v.size - 1):
+        rest = np.delete(np.arange(v.size), j)
+        out[j] = abs(float(PchipInterpolator(v[rest], loss[rest])(v[j])) - loss[j])
+    out[0], out[-1] = out[1], out[-2]
+    return out
+
+
+def _disk_points(nu: float, speeds: list[float], progress: bool, partner=None):
+    from rich.progress import track
+
+    from restitution.quasistatic.slow_disk import MODEL_SPREAD, SLOW_CUTS, slow_loss, slow_modes
+
+    modes = slow_modes(nu, partner)
+    steps = track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress)
+    runs = [slow_loss(modes, v) for v in steps]
+    between = leave_one_out(speeds, [r.energy_loss for r in runs])
+    out = [
+        (r, float(gap), {"cuts": list(r.cuts), "losses": list(r.losses),
+                         "convergence_err": r.convergence_err, "model_err": r.model_err})
+        for r, gap in zip(runs, between, strict=True)
+    ]  # fmt: skip
+    parameters = {
+        "route": "the disk's low modes in motion, its high modes static, closed by the 2D Hertz "
+        "law (restitution.quasistatic.slow_disk)",
+        "n_modes": len(modes),
+        "cuts": list(SLOW_CUTS),
+        "model_spread": MODEL_SPREAD,
+    }
+    return out, parameters
+
+
+_LOW_SPEED_ROUTES = {"sphere": _sphere_points, "disk": _disk_points}
 
 
 def low_speed_points(
-    nu: float, speeds=SPHERE_LOW_SPEEDS, *, progress: bool = False
+    nu: float,
+    speeds=SPHERE_LOW_SPEEDS,
+    *,
+    geometry: str = "sphere",
+    partner=None,
+    progress: bool = False,
 ) -> tuple[list[dict], dict]:
-    """The sphere's low-speed law points (:mod:`restitution.quasistatic.low_speed`).
+    """A body's low-speed law points: the sphere's from Rayleigh's estimate
+    (:mod:`restitution.quasistatic.low_speed`), the disk's and two disks' from the slow-impact
+    model (:mod:`restitution.quasistatic.slow_disk`).
 
     Parameters
     ----------
     nu : float
-        The sphere's 3D Poisson number.
+        The body's Poisson number (the sphere's 3D one, the disk's 2D one).
     speeds : iterable of float
         Speeds towards the wall, ``c``.
+    geometry : {"sphere", "disk"}
+    partner : Partner, optional
+        The second disk of a pair (then ``speeds`` are relative speeds ``w``).
     progress : bool
         Show a progress bar on stderr.
 
@@ -173,35 +280,28 @@ def low_speed_points(
     records : list of dict
         One per speed, as a law's ``metadata["points"]`` holds them (``route``
         ``"quasistatic"``, ``status`` ``"quasistatic"``, ``asymptotic_ok`` false: there is no
-        extrapolation to check), with the loss and its band. The error is the estimate's
+        extrapolation to check), with the route's own details. The error is the estimate's
         (``estimate_err``) plus what PCHIP between this point and its neighbours may miss
-        (``interpolation_err``, :func:`restitution.quasistatic.low_speed.interpolation_error`).
+        (``interpolation_err``).
     parameters : dict
-        What they were computed with (modes, ``kappa``, the code version), for
+        What they were computed with (the route, its settings, the code version), for
         :meth:`restitution.laws.law.EpsilonLaw.joined`.
     """
-    from rich.progress import track
-
-    from restitution.bodies.cache import get_modes
     from restitution.laws.law import QUASISTATIC_ROUTE
     from restitution.provenance import quasistatic_code_version
-    from restitution.quasistatic.low_speed import (
-        CONTACT_TIME_SPREAD,
-        LOW_SPEED_MODES,
-        interpolation_error,
-        low_speed_loss,
-    )
     from restitution.status import Status
 
-    modes = get_modes(nu, LOW_SPEED_MODES, geometry="sphere")
+    route = _LOW_SPEED_ROUTES.get(geometry)
+    if route is None or (partner is not None and geometry != "disk"):
+        raise InputError(
+            f"no low-speed route for the {geometry}{' pair' if partner else ''}; the sphere, "
+            "the disk and two disks have one"
+        )
     speeds = [float(v) for v in speeds]
-    # What PCHIP between neighbouring points may miss joins each point's error.
-    between = interpolation_error(modes, speeds) if len(speeds) > 1 else [0.0]
+    results, parameters = route(float(nu), speeds, progress, partner)
     records = []
-    steps = track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress)
-    for v, gap in zip(steps, between, strict=True):
-        r = low_speed_loss(modes, v)
-        err = r.energy_loss_err + float(gap)
+    for v, (r, gap, details) in zip(speeds, results, strict=True):
+        err = r.energy_loss_err + gap
         records.append(
             {
                 "v": v,
@@ -210,8 +310,8 @@ def low_speed_points(
                 "energy_loss": r.energy_loss,
                 "energy_loss_err": err,
                 "estimate_err": r.energy_loss_err,
-                "interpolation_err": float(gap),
-                "band": list(r.band),
+                "interpolation_err": gap,
+                **details,
                 "asymptotic_ok": False,
                 "status": Status.QUASISTATIC,
                 "route": QUASISTATIC_ROUTE,
@@ -219,12 +319,10 @@ def low_speed_points(
             }
         )
     parameters = {
-        "route": "Rayleigh's estimate on Hertz's force pulse (restitution.quasistatic.low_speed)",
-        "n_modes": LOW_SPEED_MODES,
-        "contact_time_spread": CONTACT_TIME_SPREAD,
+        **parameters,
         "v_min": speeds[0],
         "v_max": speeds[-1],
-        "code_version": quasistatic_code_version("sphere"),
+        "code_version": quasistatic_code_version(geometry, pair=partner is not None),
     }
     return records, parameters
 
@@ -269,8 +367,8 @@ def build(
         Passed to :func:`restitution.limits.curves.compute_curves`.
     low_speeds : iterable of float, optional
         Speeds of the low-speed points joined to each law (:func:`low_speed_points`); default
-        the body's production speeds (:data:`SPHERE_LOW_SPEEDS` for the sphere, none for the
-        disk), ``()`` for none.
+        the body's production speeds (:func:`low_speeds_of`: :data:`SPHERE_LOW_SPEEDS` for the
+        sphere, :data:`DISK_LOW_SPEEDS` for the disk, none for a pair), ``()`` for none.
 
     Returns
     -------
@@ -292,9 +390,13 @@ def build(
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     nus = [float(nu) for nu in nus]
-    low = tuple(_LOW_SPEEDS.get(geometry, ()) if low_speeds is None else low_speeds)
-    if low and geometry != "sphere":
-        raise InputError(f"low-speed points are derived for the sphere, not for the {geometry}")
+    low = tuple(low_speeds_of(geometry, partner) if low_speeds is None else low_speeds)
+    allowed = geometry in _LOW_SPEEDS and (partner is None or geometry == "disk")
+    if low and not allowed:
+        raise InputError(
+            "low-speed points are derived for a sphere or a disk on a wall and for two disks, "
+            f"not for the {geometry}{' pair' if partner is not None else ''}"
+        )
     per_group = [
         compute_curves(nus, g, store=store, workers=workers, progress=progress) for g in groups
     ]
@@ -302,10 +404,36 @@ def build(
     for nu in nus:
         law = EpsilonLaw.from_curves([curves[nu] for curves in per_group])
         if low:
-            records, parameters = low_speed_points(nu, low, progress=bool(progress))
+            records, parameters = low_speed_points(
+                nu, low, geometry=geometry, partner=partner, progress=bool(progress)
+            )
             law = law.joined(records, key="low_speed", parameters=parameters)
         written.append(law.to_json(out / law_filename(nu, geometry, partner)))
     return written
+
+
+def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: bool = False) -> Path:
+    """Compute the low-speed points of the law file ``path`` again and join them to its modal
+    points (which stay as they are), writing the file in place.
+
+    Parameters
+    ----------
+    path : path
+        A law of a disk or a sphere on a wall.
+    speeds : iterable of float, optional
+        The low speeds; default the body's production speeds (:func:`low_speeds_of`).
+    progress : bool
+        Show a progress bar.
+    """
+    from restitution.laws.law import EpsilonLaw
+
+    law = EpsilonLaw.from_json(path).modal_part()
+    geometry, partner = law.geometry, law.partner
+    low = low_speeds_of(geometry, partner) if speeds is None else tuple(map(float, speeds))
+    records, parameters = low_speed_points(
+        law.nu, low, geometry=geometry, partner=partner, progress=progress
+    )
+    return law.joined(records, key="low_speed", parameters=parameters).to_json(path)
 
 
 def _count(groups, nus) -> int:
@@ -324,7 +452,27 @@ def main(argv=None) -> None:
     )
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
+    parser.add_argument(
+        "--low-speeds-only",
+        action="store_true",
+        help="recompute only the low-speed points of the laws in --out and join them to their "
+        "modal points",
+    )
     args = parser.parse_args(argv)
+    if args.low_speeds_only:
+        from restitution.bodies.pair.partner import Partner
+        from restitution.laws.law import law_filename
+
+        start = time.perf_counter()
+        if args.geometry == "pair":
+            names = [law_filename(nu, "disk", Partner(radius_ratio=r))
+                     for r in PAIR_RADIUS_RATIOS for nu in PAIR_NUS]  # fmt: skip
+        else:
+            names = [law_filename(nu, args.geometry, None) for nu in production(args.geometry)[0]]
+        for name in names:
+            print(f"wrote {rejoin_low_speeds(Path(args.out) / name, progress=True)}", flush=True)
+        print(f"low-speed points of {len(names)} laws in {time.perf_counter() - start:.0f} s")
+        return
     if args.geometry == "pair":
         runs = [(PAIR_NUS, pair_groups(r)) for r in PAIR_RADIUS_RATIOS]
     else:

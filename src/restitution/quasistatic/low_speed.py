@@ -166,7 +166,7 @@ def low_speed_loss(
     if modes.geometry != "sphere":
         raise InputError(
             f"the low-speed estimate is derived for the sphere, not for the {modes.geometry} "
-            "(a disk's slow collisions come from the modal laws down to v = 1e-4)"
+            "(a disk's slow impacts: restitution.quasistatic.slow_disk)"
         )
     if len(modes) < 16:
         raise InputError(f"{len(modes)} modes are too few for the tail estimate; use >= 16")

@@ -57,10 +57,13 @@ class SlowPoint:
 
 
 def compute(law, v_max: float = 2e-3) -> tuple[SlowPoint, ...]:
-    """The slow points of ``law`` (an :class:`restitution.laws.law.EpsilonLaw`), ``v <= v_max``."""
+    """The slow modal points of ``law`` (an :class:`restitution.laws.law.EpsilonLaw`),
+    ``v <= v_max`` (its low-speed points have no extrapolation to show)."""
+    from restitution.laws.law import QUASISTATIC_ROUTE
+
     out = []
     for p in law.metadata.get("points", []):
-        if p["v"] > v_max * (1 + 1e-9):
+        if p["v"] > v_max * (1 + 1e-9) or p.get("route") == QUASISTATIC_ROUTE:
             continue
         ex = p["extrapolation"]
         fits = ex["fits"]

@@ -55,8 +55,15 @@ class RoutesData:
 
 
 def compute(law, *, n_modes: int = 1800, v_max: float = 0.02, n_v: int = 25) -> RoutesData:
-    """Rayleigh's estimate on ``[v_min of the law / 2, v_max]`` and the law's points there."""
-    pts = [p for p in law.metadata["points"] if p["v"] <= v_max * (1 + 1e-9)]
+    """Rayleigh's estimate on ``[v_min of the law's modal points / 2, v_max]`` and those points
+    (the low-speed points: :mod:`restitution.reproduction.figures.disk_low_speed`)."""
+    from restitution.laws.law import QUASISTATIC_ROUTE
+
+    pts = [
+        p
+        for p in law.metadata["points"]
+        if p["v"] <= v_max * (1 + 1e-9) and p.get("route") != QUASISTATIC_ROUTE
+    ]
     v_lo = 0.5 * min(p["v"] for p in pts)
     curves = {
         name: fig12_rayleigh.compute(

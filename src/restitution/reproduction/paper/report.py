@@ -258,9 +258,9 @@ def _shipped_law_blocks() -> list[Block]:
     return [
         Heading(2, "The shipped epsilon(v) laws against finite elements"),
         Paragraph(
-            "The package's shipped laws (`restitution.laws.law`, computed for "
-            "1e-4 <= v/c <= 0.3 by "
-            "`make law`, independent of this run) against the finite-element route on "
+            "The package's shipped laws (`restitution.laws.law`, collisions for "
+            "1e-4 <= v/c <= 0.3 by `make law` and the slow-impact model below, independent "
+            "of this run) against the finite-element route on "
             "contact-graded meshes with both limits h -> 0 and alpha -> infinity "
             "(`src/restitution/laws/data/fem_reference.json`, docs/fem.md). The last column is the "
             f"difference in combined errors. Coverage: {judged.coverage(1.0):.0%} within one, "
