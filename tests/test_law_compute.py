@@ -13,12 +13,14 @@ import json
 import pytest
 from _cli_checks import one_line_error
 
-from restitution.laws import compute
+from restitution.laws import compute, production
 from restitution.limits.sweep import SweepSettings
 
 STEEL = ("--E", "200e9", "--nu", "0.27", "--rho", "7800", "--geometry", "cylinder", "--against",
          "wall")  # fmt: skip
 """A steel-like cylinder: nu_2d = 0.27 / 0.73 = 0.369863, between the shipped 0.33 and 3/7."""
+
+TINY_LOW = (2e-6, 2e-5)
 
 TINY = SweepSettings(velocities=(0.1, 0.2, 0.3), alphas=(40.0, 80.0, 160.0), n_modes=(40, 60, 80),
                      batch_size=3)  # fmt: skip
@@ -26,9 +28,12 @@ TINY = SweepSettings(velocities=(0.1, 0.2, 0.3), alphas=(40.0, 80.0, 160.0), n_m
 
 @pytest.fixture
 def tiny(monkeypatch, tmp_path):
-    """One tiny sweep instead of the production groups, the cache in ``tmp_path``."""
+    """One tiny sweep and two low-speed points instead of the production groups and speeds, the
+    cache in ``tmp_path``."""
     monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.setattr(compute, "SETTINGS_GROUPS", (TINY,))
+    monkeypatch.setattr(production, "DISK_LOW_SPEEDS", TINY_LOW)
+    monkeypatch.setitem(production._LOW_SPEEDS, "disk", TINY_LOW)
     return tmp_path
 
 
@@ -70,7 +75,8 @@ def test_a_computation_beyond_the_time_bound_is_refused_unless_forced(cli, tiny,
     monkeypatch.setitem(compute.SECONDS_PER_COLLISION, "disk", 1e4)
     args = ("law", *STEEL, "--speed", "1000", "--compute")
     code, out, err = cli(*args)
-    one_line_error(code, err, "27 collisions", "3.12 days", "1 h bound", "--force")
+    # 27 collisions of 1e4 s and two low-speed points of 2.05 s: 270004 s
+    one_line_error(code, err, "27 collisions", "3.13 days", "1 h bound", "--force")
     assert not (tiny / "cache" / "laws").exists()
     code, out, err = cli(*args, "--force", "--store", str(tiny / "s.sqlite"))
     assert code == 0, err
@@ -120,7 +126,8 @@ def test_curve_production_writes_the_law_with_the_production_groups(cli, tiny, m
     assert code == 0, err
     assert "27 collisions" in err
     law = EpsilonLaw.from_json(out / "law_nu0.41.json")
-    assert list(law.v) == [0.1, 0.2, 0.3]
+    assert list(law.v) == [*TINY_LOW, 0.1, 0.2, 0.3]
+    assert law.quasistatic.tolist() == [True, True, False, False, False]
     assert (out / "law_nu0.41.csv").is_file() and (out / "law_nu0.41.txt").is_file()
     import restitution.dynamics.collision as collision
 

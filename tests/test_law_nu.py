@@ -144,7 +144,7 @@ def test_interpolation_covers_direct_laws_between_the_first_grid(nu):
     direct = law(nu)
     served = law_for(nu, laws=[law(x) for x in FIRST_GRID])
     assert isinstance(served, NuInterpolatedLaw)
-    v = direct.v[direct.v <= served.valid_range[1]]
+    v = direct.v[(direct.v <= served.valid_range[1]) & ~direct.quasistatic]  # the collisions
     diff = np.abs(served.epsilon(v) - direct.epsilon(v))
     sigma = diff / np.hypot(served.epsilon_err(v), direct.epsilon_err(v))
     assert np.mean(sigma <= 1.0) >= 0.68, sigma
@@ -162,9 +162,28 @@ def test_first_grid_interpolation_coverage_over_all_direct_laws():
     for nu in (0.25, 0.4285714285714286, 0.6, 0.8):
         direct = law(nu)
         served = law_for(nu, laws=[law(x) for x in FIRST_GRID])
-        v = direct.v[direct.v <= served.valid_range[1]]
+        v = direct.v[(direct.v <= served.valid_range[1]) & ~direct.quasistatic]
         diff = np.abs(served.epsilon(v) - direct.epsilon(v))
         sigmas += list(diff / np.hypot(served.epsilon_err(v), direct.epsilon_err(v)))
     sigmas = np.array(sigmas)
     assert sigmas.size == 88
     assert np.mean(sigmas <= 1.0) >= 0.9 and np.all(sigmas <= 2.0)
+
+
+def test_first_grid_interpolation_coverage_of_the_low_speed_points():
+    """The same check at the 400 low-speed points of the four direct laws (the slow-impact
+    model, v = 1e-7 - 0.93e-4), pooled: within one combined error at least at 68 %, within two
+    at 95 % (measured: 85 % and 96.8 %). Not at every nu: at 0.8 only 90 % lie within two and
+    the worst is 6.5 combined errors (v = 2.75e-6; docs/materials.md)."""
+    from restitution.laws.law import law
+
+    sigmas = []
+    for nu in (0.25, 0.4285714285714286, 0.6, 0.8):
+        direct = law(nu)
+        served = law_for(nu, laws=[law(x) for x in FIRST_GRID])
+        v = direct.v[direct.quasistatic]
+        diff = np.abs(served.epsilon(v) - direct.epsilon(v))
+        sigmas += list(diff / np.hypot(served.epsilon_err(v), direct.epsilon_err(v)))
+    sigmas = np.array(sigmas)
+    assert sigmas.size == 400
+    assert np.mean(sigmas <= 1.0) >= 0.68 and np.mean(sigmas <= 2.0) >= 0.95

@@ -65,9 +65,10 @@ class Status(enum.StrEnum):
     """Between two computed speeds of a law, at least one of which did not pass every check."""
 
     QUASISTATIC = "quasistatic"
-    """From the low-speed theory, not from a collision: Rayleigh's estimate on Hertz's force
-    pulse with its error band (:mod:`restitution.quasistatic.low_speed`; the sphere's slow
-    impacts), a law point of that route or an answer next to one."""
+    """From the low-speed theory, not from a collision: the sphere's Rayleigh estimate on Hertz's
+    force pulse with its error band (:mod:`restitution.quasistatic.low_speed`), or the disk's
+    slow-impact model (:mod:`restitution.quasistatic.slow_disk`); a law point of that route or
+    an answer next to one."""
 
     LARGE_DEFORMATION = "large-deformation"
     """A collision faster than the model's range (``v > 0.3 c`` against a wall): it met its

@@ -30,6 +30,7 @@ from restitution.laws.production import (
 
 __all__ = [
     "SECONDS_PER_COLLISION",
+    "SECONDS_PER_LOW_POINT",
     "ComputePlan",
     "check_plan",
     "computed_law",
@@ -43,10 +44,11 @@ SECONDS_PER_COLLISION = {"disk": 1.1, "sphere": 1.0, "pair": 4.3}
 the shipped runs): the disk's 1320 collisions took 656-1442 s, the sphere's 1872 took 32 min,
 the pairs' 2052 took 146 min (README, ``make law``, ``make law-sphere``, ``make law-pair``)."""
 
-LOW_SPEED_SECONDS = {"sphere": 100.0, "disk": 200.0}
-"""Wall time of a law's low-speed points, seconds per law: the sphere's (404 points for six laws
-took about 10 minutes, docs/spheres.md) and the disk's (100 points for nine laws took
-TODO)."""
+SECONDS_PER_LOW_POINT = {"sphere": 0.25, "disk": 2.05, "pair": 2.35}
+"""Wall time of one low-speed point of each body's law, seconds: the sphere's 404 points for six
+laws took about 10 minutes (docs/spheres.md); the disk's 100 points for each of nine laws took
+1838 s, two disks' 91 points for each of nine laws 1925 s (both runs side by side on the two
+cores, 26 Nov 2026)."""
 
 
 def law_dir() -> Path:
@@ -120,7 +122,7 @@ def plan(
     path = Path(out_dir or law_dir()) / law_filename(nu, geometry, partner)
     count = sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups)
     seconds = count * SECONDS_PER_COLLISION[kind]
-    seconds += LOW_SPEED_SECONDS.get(kind, 0.0)
+    seconds += len(low_speeds_of(geometry, partner)) * SECONDS_PER_LOW_POINT.get(kind, 0.0)
     return ComputePlan(path, reuse and _usable(path), count, seconds)
 
 

@@ -180,9 +180,16 @@ def low_speeds_of(geometry: str, partner=None) -> tuple[float, ...]:
     return _LOW_SPEEDS.get(geometry, ())
 
 
-def _sphere_points(nu: float, speeds: list[float], progress: bool, partner=None):
+def _track(speeds, nu: float, progress: bool):
+    """The speeds with a progress bar on stderr (stdout may carry a command's JSON)."""
+    from rich.console import Console
     from rich.progress import track
 
+    return track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress,
+                 console=Console(stderr=True))  # fmt: skip
+
+
+def _sphere_points(nu: float, speeds: list[float], progress: bool, partner=None):
     from restitution.bodies.cache import get_modes
     from restitution.quasistatic.low_speed import (
         CONTACT_TIME_SPREAD,
@@ -195,7 +202,7 @@ def _sphere_points(nu: float, speeds: list[float], progress: bool, partner=None)
     # What PCHIP between neighbouring points may miss joins each point's error.
     between = interpolation_error(modes, speeds) if len(speeds) > 1 else [0.0]
     out = []
-    steps = track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress)
+    steps = _track(speeds, nu, progress)
     for v, gap in zip(steps, between, strict=True):
         r = low_speed_loss(modes, v)
         out.append((r, float(gap), {"band": list(r.band)}))
@@ -225,13 +232,10 @@ def leave_one_out(v, loss) -> np.ndarray:
 
 
 def _disk_points(nu: float, speeds: list[float], progress: bool, partner=None):
-    from rich.progress import track
-
     from restitution.quasistatic.slow_disk import MODEL_SPREAD, SLOW_CUTS, slow_loss, slow_modes
 
     modes = slow_modes(nu, partner)
-    steps = track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress)
-    runs = [slow_loss(modes, v) for v in steps]
+    runs = [slow_loss(modes, v) for v in _track(speeds, nu, progress)]
     between = leave_one_out(speeds, [r.energy_loss for r in runs])
     out = [
         (r, float(gap), {"cuts": list(r.cuts), "losses": list(r.losses),

@@ -49,6 +49,14 @@ STATUSES: dict[Status, str] = {
 }
 """Status of a point -> what it means, in the words of the JSON output."""
 
+DISK_QUASISTATIC_NOTE = (
+    "from the slow-impact model, not from collisions: the modes below a cut frequency in "
+    "motion, the others static, the contact closed by the 2D Hertz law; error: its convergence "
+    "in the cut plus 1.2 % of the loss (disks below the modal laws' slowest speed; "
+    "docs/quasistatic.md, section 7)"
+)
+"""What ``quasistatic`` means for a disk's law (:data:`STATUSES` says it for the sphere's)."""
+
 SI_UNITS: dict[str, str] = {
     "system": "SI at the edge: the material's 3D constants and the speeds; reduced speeds v/c",
     "speed": "m/s (speed_m_s: the impact speed w against the partner)",
@@ -106,6 +114,11 @@ class SIPoint:
         }
 
 
+def _quasistatic_note(law) -> str:
+    """What a low-speed point of ``law`` is: the sphere's or the disk's route."""
+    return DISK_QUASISTATIC_NOTE if law.geometry == "disk" else STATUSES[Status.QUASISTATIC]
+
+
 def _status(law, v: float) -> tuple[str, str]:
     pts = np.asarray(law.v, dtype=float)
     ok = np.asarray(law.asymptotic_ok, dtype=bool)
@@ -113,7 +126,7 @@ def _status(law, v: float) -> tuple[str, str]:
     at = np.flatnonzero(np.abs(pts - v) <= _SAME * pts)
     if at.size:
         if quasi[at[0]]:
-            return Status.QUASISTATIC, STATUSES[Status.QUASISTATIC]
+            return Status.QUASISTATIC, _quasistatic_note(law)
         if ok[at[0]]:
             return Status.COMPUTED, ""
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
@@ -123,7 +136,7 @@ def _status(law, v: float) -> tuple[str, str]:
     if j >= pts.size:
         return Status.OUTSIDE, f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
     if quasi[j - 1] or quasi[j]:
-        return Status.QUASISTATIC, STATUSES[Status.QUASISTATIC]
+        return Status.QUASISTATIC, _quasistatic_note(law)
     good = bool(ok[j - 1] and ok[j])
     if good:
         return Status.INTERPOLATED, ""
@@ -137,8 +150,9 @@ def overall_status(points) -> tuple[str, str | None]:
     present = {p.status for p in points}
     for status in _WORST_FIRST:
         if status in present:
-            speeds = [p.speed_m_s for p in points if p.status == status]
-            return status, f"{len(speeds)} of {len(points)} speeds: {STATUSES[status]}"
+            these = [p for p in points if p.status == status]
+            meaning = STATUSES[status] if status != Status.QUASISTATIC else these[0].note
+            return status, f"{len(these)} of {len(points)} speeds: {meaning}"
     return Status.OK, None
 
 
@@ -322,7 +336,7 @@ class SILaw:
                     f"{partner_factor(self.against):g} ({self.against}); {g.c_formula}"
                 ),
             },
-            "statuses": STATUSES,
+            "statuses": {**STATUSES, Status.QUASISTATIC: _quasistatic_note(self.law)},
             "points": [p.to_dict() for p in self.points(speeds_m_s)],
         }
 

@@ -34,12 +34,21 @@ def shipped_fig01(nus: Sequence[float] = (0.33, 0.9)):
     from restitution.reproduction.figures.fig01_epsilon import Fig01Data
 
     laws = [law(nu) for nu in nus]
+    # The collisions only: the low-speed points below them are another route
+    # (docs/quasistatic.md, section 7), not Fig. 1's.
+    keep = [~np.asarray(x.quasistatic, bool) for x in laws]
     return Fig01Data(
         nus=tuple(float(x.nu) for x in laws),
-        v=tuple(np.asarray(x.v, float) for x in laws),
-        epsilon=tuple(np.asarray(x.epsilon_points, float) for x in laws),
-        epsilon_err=tuple(np.asarray(x.epsilon_err_points, float) for x in laws),
-        asymptotic_ok=tuple(np.asarray(x.asymptotic_ok, bool) for x in laws),
+        v=tuple(np.asarray(x.v, float)[k] for x, k in zip(laws, keep, strict=True)),
+        epsilon=tuple(
+            np.asarray(x.epsilon_points, float)[k] for x, k in zip(laws, keep, strict=True)
+        ),
+        epsilon_err=tuple(
+            np.asarray(x.epsilon_err_points, float)[k] for x, k in zip(laws, keep, strict=True)
+        ),
+        asymptotic_ok=tuple(
+            np.asarray(x.asymptotic_ok, bool)[k] for x, k in zip(laws, keep, strict=True)
+        ),
     )
 
 
