@@ -37,13 +37,14 @@ way (the paper's section 5).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 
 from restitution.bodies.base import ModalBody
 from restitution.errors import InputError
+from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz_sphere import (
     SphereHertzLaw,
     drive_asymptote,
@@ -113,20 +114,7 @@ class LowSpeedLoss:
     spread: float
 
     def to_dict(self) -> dict:
-        return {
-            "v": self.v,
-            "nu": self.nu,
-            "energy_loss": self.energy_loss,
-            "energy_loss_err": self.energy_loss_err,
-            "epsilon": self.epsilon,
-            "epsilon_err": self.epsilon_err,
-            "band": list(self.band),
-            "tail": self.tail,
-            "n_modes": self.n_modes,
-            "contact_time": self.contact_time,
-            "max_compression": self.max_compression,
-            "spread": self.spread,
-        }
+        return finite_tree(asdict(self))
 
 
 def _asymptotic_sum(law: SphereHertzLaw, modes: ModalBody, v: float, stretch: np.ndarray):

@@ -32,24 +32,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-from scipy.integrate import solve_ivp
-
 from restitution.bodies.base import ModalBody
 from restitution.errors import InputError
 from restitution.quasistatic.hertz import quasistatic_collision
 from restitution.quasistatic.slow_disk import (
     SLOW_CUTS,
-    SlowCollisionError,
     closure_law,
     cut_fits,
+    equations,
+    run_contact,
     shifted_law,
     slow_collision,
 )
 
 __all__ = ["DampedSlowLoss", "damped_slow_loss", "damped_slow_epsilon"]
-
-_RTOL = 1e-10
 
 
 def damped_slow_epsilon(modes: ModalBody, v: float, omega_cut: float, tau: float) -> float:
@@ -73,42 +69,11 @@ def damped_slow_epsilon(modes: ModalBody, v: float, omega_cut: float, tau: float
     slow_collision(modes, v, 0.0)  # the same checks of the body and the speed
     law, keep = shifted_law(modes, omega_cut)
     om, C, m = modes.omega[keep], modes.C[keep], modes.mass
-    K = om.size
-    E, R, c = law.E, law.R, law.constant
     tau_qs = float(quasistatic_collision(closure_law(modes), v, mass=m).contact_time[0])
-
-    def force(y):
-        s = y[0] + C @ y[2 : 2 + K]
-        if s <= 0:
-            return 0.0
-        elastic = float(law.force(s))
-        stiffness = math.pi * E / (math.log(4.0 * math.pi * E * R / elastic) + c - 1.0)
-        return elastic + tau * stiffness * (y[1] + C @ y[2 + K :])
-
-    def rhs(t, y):
-        Q, Qv = y[2 : 2 + K], y[2 + K :]
-        P = force(y)
-        out = np.empty_like(y)
-        out[0] = y[1]
-        out[1] = -P / m
-        out[2 : 2 + K] = Qv
-        out[2 + K :] = -(om**2) * (Q + tau * Qv) - C * (P / m)
-        return out
-
-    def apart(t, y):
-        return force(y) if t > 0.05 * tau_qs else 1.0
-
-    apart.terminal = True
-    apart.direction = -1
-    y0 = np.zeros(2 + 2 * K)
-    y0[1] = v
-    sol = solve_ivp(rhs, (0.0, 3.0 * tau_qs), y0, method="DOP853", rtol=_RTOL,
-                    atol=1e-14 * v, events=apart)  # fmt: skip
-    if sol.status != 1 or not sol.t_events[0].size:
-        raise SlowCollisionError(
-            f"the damped slow collision at v = {v:g}, tau = {tau:g} did not end within "
-            f"{3.0 * tau_qs:.3g} R/c ({sol.message})"
-        )
+    force, rhs = equations(law, om, C, m, tau)
+    # The contact opens when the force first returns to zero (the wall cannot pull).
+    sol = run_contact(rhs, force, v, tau_qs, om.size,
+                      f"damped slow collision at v = {v:g}, tau = {tau:g}")  # fmt: skip
     return -float(sol.y_events[0][0][1]) / v
 
 

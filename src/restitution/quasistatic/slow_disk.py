@@ -64,13 +64,14 @@ So ``1 - epsilon^2`` falls only like ``1 / ln^2(1/v)``, with oscillations throug
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
 from restitution.bodies.base import ModalBody
 from restitution.errors import InputError, RestitutionError
+from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz import HertzLaw, contact_law, quasistatic_collision
 from restitution.quasistatic.hertz_pair import pair_contact_law
 
@@ -79,6 +80,7 @@ __all__ = [
     "closure_law",
     "slow_modes",
     "equations",
+    "run_contact",
     "shifted_law",
     "cut_fits",
     "SLOW_CUTS",
@@ -178,12 +180,15 @@ def _checked(modes: ModalBody, v: float) -> None:
 def slow_modes(nu: float, partner=None) -> ModalBody:
     """The modes :func:`slow_loss` needs: the disk's :data:`SLOW_MODES` lowest, or for two
     disks (``partner``, a :class:`~restitution.bodies.pair.partner.Partner`) the
-    ``SLOW_MODES (1 + r^2)`` lowest of the pair (both disks' modes up to one frequency)."""
+    ``SLOW_MODES (1 + r^2 rho2 / E2)`` lowest of the pair (both disks' modes up to one
+    frequency: a disk of radius ``r`` and wave speed ``c2`` has ``(r / c2)^2`` times as many
+    modes below it, as in :func:`restitution.limits.sweep.pair_settings`)."""
     if partner is None:
         from restitution.bodies.cache import get_modes
 
         return get_modes(nu, SLOW_MODES, geometry="disk")
-    count = int(round(SLOW_MODES * (1.0 + partner.radius_ratio**2)))
+    share = partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
+    count = int(round(SLOW_MODES * (1.0 + share)))
     return partner.pair(nu, count, geometry="disk")
 
 
@@ -225,27 +230,71 @@ def cut_fits(modes: ModalBody, v: float, omega_cut: float) -> bool:
     return law.max_force >= _MARGIN * float(_quasistatic(modes, v).max_force[0])
 
 
-def equations(law: HertzLaw, omega: np.ndarray, C: np.ndarray, mass: float):
-    """``(force, rhs)`` of the model: the closure ``P(s)`` of the gap closure
-    ``s = delta + sum C_k Q_k`` and the right-hand side of ``y = (delta, delta', Q, Q')`` for
-    :func:`scipy.integrate.solve_ivp`."""
-    K = omega.size
+def equations(law: HertzLaw, omega: np.ndarray, C: np.ndarray, mass: float, tau: float = 0.0):
+    """``(force, rhs)`` of the model for the state ``y = (delta, delta', Q, Q')``: the contact
+    force ``force(y)`` and the right-hand side ``rhs(t, y)`` for
+    :func:`scipy.integrate.solve_ivp`.
 
-    def force(s):
-        s = np.asarray(s, dtype=float)
-        return np.where(s > 0, law.force(np.clip(s, 1e-300, None)), 0.0)
+    The force is the closure ``P(s)`` of the gap closure ``s = delta + sum C_k Q_k``; with a
+    relaxation time ``tau > 0`` (``R / c``; :mod:`restitution.quasistatic.slow_damped`) the
+    Kelvin-Voigt force ``P(s) + tau P'(s) s'`` (zero where ``s <= 0``) and the kept modes damped,
+    ``Q_k'' = -omega_k^2 (Q_k + tau Q_k') - C_k P / m``."""
+    K = omega.size
+    E, R, c = law.E, law.R, law.constant
+
+    def closure(y) -> float:
+        return y[0] + C @ y[2 : 2 + K]
+
+    def force(y) -> float:
+        s = closure(y)
+        if s <= 0:
+            return 0.0
+        elastic = float(law.force(s))
+        if tau == 0:
+            return elastic
+        stiffness = math.pi * E / (math.log(4.0 * math.pi * E * R / elastic) + c - 1.0)
+        return elastic + tau * stiffness * (y[1] + C @ y[2 + K :])
 
     def rhs(t, y):
-        Q = y[2 : 2 + K]
-        P = float(force(y[0] + C @ Q))
+        Q, Qv = y[2 : 2 + K], y[2 + K :]
+        P = force(y)
         out = np.empty_like(y)
         out[0] = y[1]
         out[1] = -P / mass
-        out[2 : 2 + K] = y[2 + K :]
-        out[2 + K :] = -(omega**2) * Q - C * (P / mass)
+        out[2 : 2 + K] = Qv
+        if tau == 0:
+            out[2 + K :] = -(omega**2) * Q - C * (P / mass)
+        else:
+            out[2 + K :] = -(omega**2) * (Q + tau * Qv) - C * (P / mass)
         return out
 
+    force.closure = closure
     return force, rhs
+
+
+def run_contact(rhs, opened, v: float, tau_qs: float, K: int, what: str, *, dense: bool = False):
+    """Integrate one slow collision from first touch (``delta = 0``, ``delta' = v``, the modes
+    at rest) with DOP853 until ``opened(y)`` falls through zero after the first 5 % of the
+    quasistatic contact time ``tau_qs``; at most ``3 tau_qs``. Returns the
+    :func:`scipy.integrate.solve_ivp` solution; :class:`SlowCollisionError` naming ``what`` if
+    the contact does not open."""
+
+    def apart(t, y):
+        return opened(y) if t > 0.05 * tau_qs else 1.0
+
+    apart.terminal = True
+    apart.direction = -1
+    y0 = np.zeros(2 + 2 * K)
+    y0[1] = v
+    sol = solve_ivp(
+        rhs, (0.0, 3.0 * tau_qs), y0, method="DOP853", rtol=_RTOL, atol=1e-14 * v,
+        events=apart, dense_output=dense,
+    )  # fmt: skip
+    if sol.status != 1 or not sol.t_events[0].size:
+        raise SlowCollisionError(
+            f"the {what} did not end within {3.0 * tau_qs:.3g} R/c ({sol.message})"
+        )
+    return sol
 
 
 def slow_collision(modes: ModalBody, v: float, omega_cut: float) -> SlowCollision:
@@ -284,24 +333,9 @@ def slow_collision(modes: ModalBody, v: float, omega_cut: float) -> SlowCollisio
     om, C, m = modes.omega[keep], modes.C[keep], modes.mass
     K = om.size
     force, rhs = equations(law, om, C, m)
-
-    def apart(t, y):
-        # The contact opens when the gap closure s falls back through 0 (after the start).
-        return y[0] + C @ y[2 : 2 + K] if t > 0.05 * tau_qs else 1.0
-
-    apart.terminal = True
-    apart.direction = -1
-    y0 = np.zeros(2 + 2 * K)
-    y0[1] = v
-    sol = solve_ivp(
-        rhs, (0.0, 3.0 * tau_qs), y0, method="DOP853", rtol=_RTOL, atol=1e-14 * v,
-        events=apart, dense_output=True,
-    )  # fmt: skip
-    if sol.status != 1 or not sol.t_events[0].size:
-        raise SlowCollisionError(
-            f"the slow collision at v = {v:g}, Omega = {omega_cut:g} did not end within "
-            f"{3.0 * tau_qs:.3g} R/c ({sol.message})"
-        )
+    # The contact opens when the gap closure s falls back through 0.
+    what = f"slow collision at v = {v:g}, Omega = {omega_cut:g}"
+    sol = run_contact(rhs, force.closure, v, tau_qs, K, what, dense=True)
     t_end = float(sol.t_events[0][0])
     y = sol.y_events[0][0]
     Q, Qv = y[2 : 2 + K], y[2 + K :]
@@ -310,7 +344,6 @@ def slow_collision(modes: ModalBody, v: float, omega_cut: float) -> SlowCollisio
     loss = 1.0 - eps**2
     grid = np.linspace(0.0, t_end, 401)
     states = sol.sol(grid)
-    closure = states[0] + C @ states[2 : 2 + K]
     return SlowCollision(
         v=float(v),
         nu=float(modes.nu),
@@ -323,7 +356,7 @@ def slow_collision(modes: ModalBody, v: float, omega_cut: float) -> SlowCollisio
         contact_time=t_end,
         quasistatic_contact_time=tau_qs,
         max_compression=float(states[0].max()),
-        max_force=float(force(closure).max()),
+        max_force=max(force(states[:, j]) for j in range(grid.size)),
         steps=int(sol.nfev),
     )
 
@@ -365,20 +398,7 @@ class SlowLoss:
     max_compression: float
 
     def to_dict(self) -> dict:
-        return {
-            "v": self.v,
-            "nu": self.nu,
-            "energy_loss": self.energy_loss,
-            "energy_loss_err": self.energy_loss_err,
-            "epsilon": self.epsilon,
-            "epsilon_err": self.epsilon_err,
-            "cuts": list(self.cuts),
-            "losses": list(self.losses),
-            "convergence_err": self.convergence_err,
-            "model_err": self.model_err,
-            "contact_time": self.contact_time,
-            "max_compression": self.max_compression,
-        }
+        return finite_tree(asdict(self))
 
 
 def slow_loss(modes: ModalBody, v: float, *, cuts=SLOW_CUTS) -> SlowLoss:
