@@ -103,14 +103,16 @@ def test_compute_with_a_law_file_is_refused(cli, tiny):
 
 def test_plan_counts_the_production_collisions():
     """Without the tiny group: the production sweeps' collisions (disk 264, sphere 312, a pair
-    of radius ratio 1.4 228), as counted from the shipped laws' groups."""
+    228), as counted from the shipped laws' groups."""
     from restitution.bodies.pair.partner import Partner
 
     assert compute.plan(0.4, "disk").collisions == 264
     assert compute.plan(0.27, "sphere").collisions == 312
     assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4)).collisions == 228
-    with pytest.raises(Exception, match="one material"):
-        compute.plan(0.4, "disk", Partner(radius_ratio=1.4, modulus_ratio=2.0))
+    # Two materials take the same sweeps (issue 27), their windows scaled with the partner's.
+    assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4, modulus_ratio=2.0)).collisions == 228
+    with pytest.raises(Exception, match="two spheres are not computed on demand"):
+        compute.plan(0.27, "sphere", Partner(radius_ratio=1.4))
 
 
 def test_curve_production_writes_the_law_with_the_production_groups(cli, tiny, monkeypatch):

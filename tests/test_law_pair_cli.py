@@ -130,6 +130,9 @@ def _argv(inputs: dict) -> list[str]:
     """The command line that the JSON envelope's inputs record."""
     flags = {"E": "--E", "nu": "--nu", "rho": "--rho", "geometry": "--geometry",
              "against": "--against", "partner_radius_ratio": "--partner-radius-ratio",
+             "partner_E": "--partner-E", "partner_nu": "--partner-nu",
+             "partner_rho": "--partner-rho",
+             "partner_identical_law_file": "--partner-identical-law-file",
              "law_file": "--law-file", "identical_law_file": "--identical-law-file",
              "reference_speed": "--reference-speed",
              "maxwell_temperature": "--maxwell-temperature", "export": "--export",
@@ -269,9 +272,9 @@ def test_exports_give_the_constants_per_type_pair(laws, capsys, tmp_path):
 def test_type_pair_constants_refuse_mixed_up_laws(laws):
     pair = si_law(E, NU, RHO, "cylinder", "grain", path=laws[0], radius_ratio=RATIO)
     same = si_law(E, NU, RHO, "cylinder", "grain", path=laws[1])
-    with pytest.raises(InputError, match="1-2 constant needs the law of a small and a large"):
+    with pytest.raises(InputError, match="1-2 constant needs the law of two different grains"):
         exports.type_pair_constants(same, same, speed_m_s=W_REF)
-    with pytest.raises(InputError, match="1-1 and 2-2 constants need the law of two identical"):
+    with pytest.raises(InputError, match="the 1-1 constant needs the law of two identical"):
         exports.type_pair_constants(pair, pair, speed_m_s=W_REF)
     with pytest.raises(InputError, match="not both and not neither"):
         exports.type_pair_constants(pair, same)
@@ -293,7 +296,7 @@ def test_type_pair_constants_refuse_mixed_up_laws(laws):
          "--identical-law-file serves the 1-1 and 2-2 constants of two grain sizes"),
         (["--against", "grain", "--partner-radius-ratio", "1.4", "--law-file", "{pair}",
           "--identical-law-file", "{same}"],
-         "give it with --reference-speed or --maxwell-temperature"),
+         "give them with --reference-speed or --maxwell-temperature"),
         (["--against", "grain", "--partner-radius-ratio", "1.4", "--law-file", "{same}"],
          "(or two identical disks), not of the pair R2/R1 = 1.4"),
     ],
@@ -320,13 +323,24 @@ def test_a_sphere_pair_is_refused_in_one_line_without_traceback():
     assert "laws of two spheres of different sizes are not computed yet" in run_.stderr
 
 
-def test_help_points_to_collide_for_another_material(capsys):
+def test_help_shows_a_partner_of_another_material(capsys):
     main(["law", "--help"])
     lines = [ln.strip() for ln in capsys.readouterr().out.splitlines()]
-    assert "A partner of another material is not served in SI units" in " ".join(lines)
-    i = lines.index("restitution collide --radius-ratio R --modulus-ratio E2/E1 \\")
-    assert lines[i + 1] == "--density-ratio RHO2/RHO1 --partner-nu NU2"
-    assert "--partner-radius-ratio FLOAT" in " ".join(lines)
+    assert "A partner of another material: add --partner-E, --partner-nu and" in " ".join(lines)
+    i = lines.index("--against grain --partner-radius-ratio 1.4 --partner-E 63e9 \\")
+    assert lines[i + 1] == "--partner-nu 0.2481 --partner-rho 2500 --speed 0.1 1 10"
+    for option in ("--partner-radius-ratio FLOAT", "--partner-E FLOAT", "--partner-rho FLOAT"):
+        assert option in " ".join(lines)
+    # The example runs as printed: its law is shipped.
+    example = " ".join(lines[i - 1 : i + 2]).replace("\\", " ").split()
+    assert example[:2] == ["restitution", "law"]
+    main([*example[1:], "--json"])
+    d = json.loads(capsys.readouterr().out)
+    assert [p["speed_m_s"] for p in d["points"]] == [0.1, 1.0, 10.0]
+    assert d["partner_material"]["E_Pa"] == 63e9
+    assert d["law"]["source"] == (
+        "restitution/laws/data/law_pair_r1.4_E0.290906_rho0.318471_nu20.329964_nu0.428571.json"
+    )
 
 
 @pytest.mark.slow

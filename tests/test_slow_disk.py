@@ -301,13 +301,13 @@ def test_the_pair_model_meets_the_pair_law():
 
 def _pair_files():
     from restitution.bodies.pair.partner import Partner
-    from restitution.laws.production import PAIR_NUS, PAIR_RADIUS_RATIOS
+    from restitution.laws.production import PAIR_NUS, PAIR_RADIUS_RATIOS, PAIR_TWO_MATERIALS
 
     return [
         law_filename(nu, "disk", Partner(radius_ratio=r))
         for r in PAIR_RADIUS_RATIOS
         for nu in PAIR_NUS
-    ]
+    ] + [law_filename(nu, "disk", partner) for nu, partner in PAIR_TWO_MATERIALS]
 
 
 @pytest.mark.parametrize("name", _pair_files())

@@ -53,6 +53,30 @@ class _LawCommand(_ListCommand):
     "type pairs 1-1 and 2-2 (identical grains) and 1-2 (the pair). Cylinders and thin disks only.",
 )
 @click.option(
+    "--partner-E",
+    "partner_E",
+    type=float,
+    default=None,
+    help="With --against grain: Young modulus of the partner grain's 3D material, Pa [this "
+    "grain's]. A partner of another material (--partner-E, --partner-nu, --partner-rho): one "
+    "pair is shipped (steel E = 210e9, nu = 0.3, rho = 7850 with glass 63e9, 0.2481, 2500, "
+    "1.4 times as large, cylinders); any other is computed with --compute (the estimate is "
+    "stated first) or read from --law-file. Cylinders and thin disks only; the partner has "
+    "this grain's geometry.",
+)
+@click.option(
+    "--partner-nu",
+    type=float,
+    default=None,
+    help="With --against grain: Poisson number of the partner grain's 3D material [this grain's].",
+)
+@click.option(
+    "--partner-rho",
+    type=float,
+    default=None,
+    help="With --against grain: density of the partner grain's 3D material, kg/m^3 [this grain's].",
+)
+@click.option(
     "--speed",
     "speeds",
     type=float,
@@ -74,7 +98,16 @@ class _LawCommand(_ListCommand):
     default=None,
     help="With --partner-radius-ratio and --reference-speed or --maxwell-temperature: the law "
     "JSON of two identical grains of this material (`restitution curve --nu NU_2D`), for the "
-    "1-1 and 2-2 constants [default: the shipped laws].",
+    "1-1 and 2-2 constants [default: the shipped laws]; with a partner material the 1-1 "
+    "constant only.",
+)
+@click.option(
+    "--partner-identical-law-file",
+    type=click.Path(dir_okay=False, exists=True, path_type=Path),
+    default=None,
+    help="With a partner material and --reference-speed or --maxwell-temperature: the law JSON "
+    "of two identical grains of the partner's material, for the 2-2 constant [default: the "
+    "shipped laws].",
 )
 @click.option(
     "--export",
@@ -153,10 +186,14 @@ def law(
     geometry,
     against,
     partner_radius_ratio,
+    partner_E,
+    partner_nu,
+    partner_rho,
     speeds,
     as_json,
     law_file,
     identical_law_file,
+    partner_identical_law_file,
     export_dir,
     reference_speed,
     maxwell_temperature,
@@ -180,12 +217,16 @@ def law(
         --against wall --speed 0.5 1 5
 
     Two grains of one material and different sizes: --against grain --partner-radius-ratio R
-    (docs/materials.md). A partner of another material is not served in SI units; collide the
-    two in reduced units (E = rho = R = 1 of the first grain, v in its c) with:
+    (docs/materials.md). A partner of another material: add --partner-E, --partner-nu and
+    --partner-rho. The law of a steel cylinder with a glass one 1.4 times as large is shipped:
 
     \b
-    restitution collide --radius-ratio R --modulus-ratio E2/E1 \\
-        --density-ratio RHO2/RHO1 --partner-nu NU2
+    restitution law --E 210e9 --nu 0.3 --rho 7850 --geometry cylinder \\
+        --against grain --partner-radius-ratio 1.4 --partner-E 63e9 \\
+        --partner-nu 0.2481 --partner-rho 2500 --speed 0.1 1 10
+
+    Any other pair of materials is computed on demand with --compute (10-30 minutes on two
+    cores, estimated before it starts).
 
     Material damping (a Kelvin-Voigt relaxation time) adds the viscous loss to the loss to
     vibrations, from one measured coefficient of restitution or from the relaxation time:
@@ -206,14 +247,27 @@ def law(
 
         check_output_dir(Path(export_dir), "--export")  # before anything is computed
     ratio = _check_ratio(partner_radius_ratio, against, geometry)
-    if identical_law_file is not None:
-        _check_identical_law_file(ratio, reference_speed, maxwell_temperature)
+    other = _partner_grain(E, nu, rho, geometry, against, partner_E, partner_nu, partner_rho)
+    if other is not None and ratio is None:
+        ratio = partner_radius_ratio  # None or 1: two materials of one size
+    if other is not None and (measured_epsilon, measured_speed, relaxation_time) != (None,) * 3:
+        raise InputError(
+            "material damping of grains of two materials is not modelled (each material has "
+            "its own relaxation time); leave out the damping options or the partner material"
+        )
+    if identical_law_file is not None or partner_identical_law_file is not None:
+        _check_identical_law_file(
+            ratio, other, reference_speed, maxwell_temperature, partner_identical_law_file
+        )
     served = law_file
     if compute:
-        served = _computed(E, nu, rho, geometry, against, ratio, law_file, store, force)
+        served = _computed(E, nu, rho, geometry, against, ratio, law_file, store, force, other)
     elif store is not None or force:
         raise InputError("--store and --force belong to --compute; add --compute or leave them out")
-    s = si_law(E, nu, rho, geometry, against, path=served, radius_ratio=ratio)
+    elif other is not None and law_file is None:
+        _refuse_uncomputed(E, nu, rho, geometry, against, ratio, other)
+    s = si_law(E, nu, rho, geometry, against, path=served, radius_ratio=ratio,
+               partner_grain=other)  # fmt: skip
     speeds = list(speeds) or [0.1, 0.5, 1.0, 5.0, 10.0]
     damped = _damped(s, measured_epsilon, measured_speed, relaxation_time, radius)
     if (
@@ -237,9 +291,18 @@ def law(
     constant = pairs = None
     if s.law.partner is not None and (reference_speed, maxwell_temperature) != (None, None):
         # Two sizes: a constant per pair of particle types; the pair's own is 1-2.
-        identical = _identical(E, nu, rho, geometry, identical_law_file)
+        identical = _identical(E, nu, rho, geometry, identical_law_file, "--identical-law-file")
+        identical2 = None
+        if other is not None:
+            identical2 = _identical(other.E, other.nu, other.rho, geometry,
+                                    partner_identical_law_file,
+                                    "--partner-identical-law-file")  # fmt: skip
         pairs = exports.type_pair_constants(
-            s, identical, speed_m_s=reference_speed, temperature_m2_s2=maxwell_temperature
+            s,
+            identical,
+            speed_m_s=reference_speed,
+            temperature_m2_s2=maxwell_temperature,
+            identical2=identical2,
         )
         constant = pairs.mixed
     elif reference_speed is not None:
@@ -255,9 +318,12 @@ def law(
     if as_json:
         inputs = {"E": E, "nu": nu, "rho": rho, "geometry": geometry, "against": against,
                   "partner_radius_ratio": partner_radius_ratio,
+                  "partner_E": partner_E, "partner_nu": partner_nu, "partner_rho": partner_rho,
                   "speeds_m_s": speeds, "law_file": None if law_file is None else str(law_file),
                   "identical_law_file": (None if identical_law_file is None
                                          else str(identical_law_file)),
+                  "partner_identical_law_file": (None if partner_identical_law_file is None
+                                                 else str(partner_identical_law_file)),
                   "reference_speed": reference_speed,
                   "maxwell_temperature": maxwell_temperature,
                   "export": None if export_dir is None else str(export_dir),
@@ -269,13 +335,15 @@ def law(
         return
     g = s.grain
     click.echo(g.describe())
+    if other is not None:
+        click.echo(f"partner: {other.describe()}")
     pair = s.law.partner
     body = g.body if pair is None else f"{g.body} pair (R2/R1 = {pair.radius_ratio:g})"
     click.echo(
         f"against {against}: {result['against_meaning']}; {body} law "
         f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']})"
     )
-    if pair is not None and partner_radius_ratio < 1.0:
+    if pair is not None and pair.same_material and partner_radius_ratio < 1.0:
         click.echo(
             f"the radius ratio {partner_radius_ratio:g} is the pair R2/R1 = "
             f"{pair.radius_ratio:g} seen from the large grain: the same collision"
@@ -284,7 +352,14 @@ def law(
         _damped_table(damped, speeds, result)
     else:
         _table(s, speeds, result)
-    if pairs is not None:
+    if pairs is not None and pairs.two_materials:
+        click.echo(
+            f"type 1 = this grain, type 2 = the partner (R2 = {pairs.radius_ratio:g} R1); "
+            "constants per type pair:"
+        )
+        for name, c in (("1-2", pairs.mixed), ("1-1", pairs.same), ("2-2", pairs.same2)):
+            click.echo(f"  {name:>8}: {_constant_text(c)}")
+    elif pairs is not None:
         click.echo(
             f"type 1 = the small grain, type 2 = the large one (R2 = {pairs.radius_ratio:g} R1); "
             f"constants per type pair:"
@@ -330,24 +405,61 @@ def _check_ratio(ratio: float | None, against: str, geometry: str) -> float | No
     return ratio
 
 
-def _check_identical_law_file(ratio, reference_speed, maxwell_temperature) -> None:
-    """Refuse --identical-law-file where nothing would read it."""
+def _partner_grain(E, nu, rho, geometry, against, partner_E, partner_nu, partner_rho):
+    """The partner grain's material (a ``Grain``) from --partner-E/--partner-nu/--partner-rho
+    (each defaulting to this grain's), or ``None`` without them or for the same material."""
+    from restitution.errors import InputError
+    from restitution.laws.units import Grain
+
+    if (partner_E, partner_nu, partner_rho) == (None, None, None):
+        return None
+    if against != "grain":
+        raise InputError(
+            "--partner-E, --partner-nu and --partner-rho describe a second grain: give them "
+            "with --against grain"
+        )
+    if geometry == "sphere":
+        raise InputError(
+            "laws of two spheres of different materials are not computed yet; use --geometry "
+            "cylinder or thin-disk, or leave out --partner-E/--partner-nu/--partner-rho"
+        )
+    values = (
+        E if partner_E is None else partner_E,
+        nu if partner_nu is None else partner_nu,
+        rho if partner_rho is None else partner_rho,
+    )
+    if values == (E, nu, rho):
+        return None
+    try:
+        return Grain(E=values[0], nu=values[1], rho=values[2], geometry=geometry)
+    except InputError as exc:
+        raise InputError(f"the partner's material: {exc}") from None
+
+
+def _check_identical_law_file(ratio, other, reference_speed, maxwell_temperature, second):
+    """Refuse --identical-law-file / --partner-identical-law-file where nothing would read
+    them."""
     from restitution.errors import InputError
 
-    if ratio is None:
+    if second is not None and other is None:
+        raise InputError(
+            "--partner-identical-law-file serves the 2-2 constant of a partner of another "
+            "material: give it with --partner-E/--partner-nu/--partner-rho"
+        )
+    if ratio is None and other is None:
         raise InputError(
             "--identical-law-file serves the 1-1 and 2-2 constants of two grain sizes: give it "
             "with --partner-radius-ratio other than 1 (identical grains take --law-file)"
         )
     if reference_speed is None and maxwell_temperature is None:
         raise InputError(
-            "--identical-law-file serves the 1-1 and 2-2 constants: give it with "
-            "--reference-speed or --maxwell-temperature"
+            "--identical-law-file and --partner-identical-law-file serve the constants per type "
+            "pair: give them with --reference-speed or --maxwell-temperature"
         )
 
 
-def _identical(E, nu, rho, geometry, path):
-    """The law of two identical grains of the material, for the type pairs 1-1 and 2-2."""
+def _identical(E, nu, rho, geometry, path, option):
+    """The law of two identical grains of a material, for a type pair i-i."""
     from restitution.errors import InputError
     from restitution.laws.si_law import si_law
 
@@ -355,12 +467,37 @@ def _identical(E, nu, rho, geometry, path):
         return si_law(E, nu, rho, geometry, "grain", path=path)
     except InputError as exc:
         raise InputError(
-            f"the 1-1 and 2-2 constants need the law of identical grains: {exc}; give that file "
-            "with --identical-law-file"
+            f"the constants per type pair need the law of identical grains of each material: "
+            f"{exc}; give that file with {option}"
         ) from None
 
 
-def _computed(E, nu, rho, geometry, against, ratio, law_file, store, force):
+def _refuse_uncomputed(E, nu, rho, geometry, against, ratio, other):
+    """Two materials without --compute or --law-file: refuse, with the estimate of
+    --compute, unless a shipped law serves them."""
+    from restitution import budget
+    from restitution.errors import InputError
+    from restitution.laws.compute import plan
+    from restitution.laws.law_nu import NU_MATCH, shipped_nus
+    from restitution.laws.si_law import law_target
+
+    law_nu, body, partner = law_target(E, nu, rho, geometry, against, ratio, other)
+    if any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus(body, partner)):
+        return  # a shipped law of these two materials serves it
+    p = plan(law_nu, body, partner)
+    if p.exists:
+        how = f"--compute finds the law computed before ({p.path})"
+    else:
+        how = (
+            f"add --compute ({p.collisions} collisions, about "
+            f"{budget.format_duration(p.seconds)} on one core)"
+        )
+    raise InputError(
+        f"no law of these two materials is shipped: {how}, or give its file with --law-file"
+    )
+
+
+def _computed(E, nu, rho, geometry, against, ratio, law_file, store, force, other=None):
     """``law --compute``: the law file of the material's exact Poisson number (computed with the
     production settings, or found in the cache), or ``None`` when a shipped law serves it."""
     from restitution.cli._common import check_output_file, quiet
@@ -371,7 +508,7 @@ def _computed(E, nu, rho, geometry, against, ratio, law_file, store, force):
 
     if law_file is not None:
         raise InputError("give --law-file or --compute, not both")
-    law_nu, body, partner = law_target(E, nu, rho, geometry, against, ratio)
+    law_nu, body, partner = law_target(E, nu, rho, geometry, against, ratio, other)
     if any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus(body, partner)):
         note(f"note: a shipped law serves nu = {law_nu:.6g}; nothing to compute")
         return None

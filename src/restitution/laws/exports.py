@@ -26,7 +26,9 @@ speed means (wall or two grains), ``c``, the law's source and the package versio
 * :func:`type_pair_constants`: the constants of a bidisperse packing of one material (type 1 the
   small grain, type 2 the large): 1-1 and 2-2 from the law of identical grains, 1-2 from the
   pair's law, each at the same reference speed or temperature (:class:`TypePairs`); the same
-  snippet functions write them per pair of particle types.
+  snippet functions write them per pair of particle types. Of two materials (type 1 this grain,
+  type 2 the partner grain of its own material and size), 1-1 and 2-2 come from each
+  material's law of identical grains, and the snippets give each type its own constants.
 
 The speed ``w`` of a law of two grains of different sizes (``SILaw.law.partner``) is their
 relative normal speed; every header says so (:attr:`SILaw.against_meaning`).
@@ -54,6 +56,7 @@ from restitution.status import Status
 
 __all__ = [
     "SAME_SIZE_NOTE",
+    "TWO_MATERIALS_NOTE",
     "OUTSIDE",
     "ClosedForm",
     "Constant",
@@ -89,10 +92,14 @@ def _law_line(s: SILaw) -> str:
     g = s.grain
     pair = s.law.partner
     if pair is not None:
+        which = (
+            f"this {g.body} and one of the partner's material"
+            if s.partner_grain is not None
+            else f"a small and a large {g.body} of one material"
+        )
         return (
-            f"law: the pair's (a small and a large {g.body} of one material, R2/R1 = "
-            f"{pair.radius_ratio:g}; w their relative normal speed), {g.law_nu_name} = "
-            f"{float(s.law.nu):g}, {s.law_source}"
+            f"law: the pair's ({which}, R2/R1 = {pair.radius_ratio:g}; w their relative normal "
+            f"speed), {g.law_nu_name} = {float(s.law.nu):g}, {s.law_source}"
         )
     if g.body == "disk":
         return f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}"
@@ -108,6 +115,7 @@ def _header(s: SILaw) -> list[str]:
         "(Gerl & Zippelius model)",
         f"grain: {g.geometry}: {_BODY_WORDS[g.geometry]}",
         f"material: {g.describe()}",
+        *([f"partner material: {s.partner_grain.describe()}"] if s.partner_grain else []),
         f"partner: {s.against}: {s.against_meaning}; speed unit k c = {s.speed_scale_m_s:.6g} m/s",
         _law_line(s),
         f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; the law serves nothing outside them",
@@ -728,93 +736,151 @@ SAME_SIZE_NOTE = (
 )
 """Why the type pairs 1-1 and 2-2 of one material take the same constant."""
 
+TWO_MATERIALS_NOTE = (
+    "two materials: 1-1 and 2-2 are each material's law of identical grains (whatever their "
+    "size), 1-2 the law of the two grains; the speeds of all three are relative normal speeds "
+    "in m/s"
+)
+"""How the type pairs of two materials are served."""
 
-def _check_type_pair_laws(pair: SILaw, identical: SILaw) -> None:
+
+def _check_type_pair_laws(pair: SILaw, identical: SILaw, identical2: SILaw | None = None) -> None:
     """One-line refusal unless ``pair`` is a pair's law and ``identical`` the law of two
-    identical grains of the same material and geometry."""
+    identical grains of its first material and geometry (and, for two materials,
+    ``identical2`` that of the partner's)."""
     if pair.law.partner is None:
         raise InputError(
-            "the 1-2 constant needs the law of a small and a large grain (an SILaw with "
-            "law.partner, si_law(..., against='grain', radius_ratio=R) with R != 1); give that "
-            "as the pair's law"
+            "the 1-2 constant needs the law of two different grains (an SILaw with "
+            "law.partner, si_law(..., against='grain', radius_ratio=R) with R != 1, or with "
+            "partner_grain); give that as the pair's law"
         )
-    if identical.law.partner is not None or identical.against != "grain":
-        raise InputError(
-            "the 1-1 and 2-2 constants need the law of two identical grains (si_law(..., "
-            f"against='grain') without a radius ratio), got {identical.against_meaning!r}"
-        )
+    for law, which in ((identical, "1-1"), (identical2, "2-2")):
+        if law is not None and (law.law.partner is not None or law.against != "grain"):
+            raise InputError(
+                f"the {which} constant needs the law of two identical grains (si_law(..., "
+                f"against='grain') without a radius ratio), got {law.against_meaning!r}"
+            )
     if pair.grain != identical.grain:
         raise InputError(
             f"the pair's law is for {pair.grain.describe()}, the identical grains' for "
             f"{identical.grain.describe()}; give both laws for one material and geometry"
         )
+    other = pair.partner_grain
+    if other is None and identical2 is not None:
+        raise InputError(
+            "the pair is of one material: 1-1 and 2-2 share the law of identical grains; leave "
+            "out the second one"
+        )
+    if other is not None and (identical2 is None or identical2.grain != other):
+        raise InputError(
+            f"the pair's second grain is {other.describe()}: give the law of two identical "
+            "grains of that material for the 2-2 constant (identical2)"
+        )
 
 
 @dataclass(frozen=True, eq=False)
 class TypePairs:
-    """The constants of a bidisperse packing of one material, per pair of particle types.
+    """The constants of a bidisperse packing, per pair of particle types.
 
-    Type 1 is the small grain (radius ``R1``), type 2 the large one (``R2 = radius_ratio R1``).
-    Two identical grains of one material have the same ``epsilon(w)`` whatever their size (the
-    law depends on ``w / c`` only), so 1-1 and 2-2 share :attr:`same`, from the law of identical
-    grains; 1-2 (:attr:`mixed`) comes from the pair's law. Built by
-    :func:`type_pair_constants`; every snippet function takes it in place of a
+    One material: type 1 is the small grain (radius ``R1``), type 2 the large one (``R2 =
+    radius_ratio R1``). Two identical grains of one material have the same ``epsilon(w)``
+    whatever their size (the law depends on ``w / c`` only), so 1-1 and 2-2 share :attr:`same`,
+    from the law of identical grains; 1-2 (:attr:`mixed`) comes from the pair's law.
+
+    Two materials (``pair.partner_grain``): type 1 is this grain (material of ``pair.grain``,
+    radius ``R1``), type 2 the partner (``pair.partner_grain``, ``R2 = radius_ratio R1``); 1-1
+    comes from :attr:`identical`, 2-2 from :attr:`identical2` (:attr:`same2`).
+
+    Built by :func:`type_pair_constants`; every snippet function takes it in place of a
     :class:`Constant` (with ``s`` its :attr:`pair`).
 
     Attributes
     ----------
     pair : SILaw
-        The pair's law: ``w`` the relative normal speed of a small and a large grain, m/s.
+        The pair's law: ``w`` the relative normal speed of the two grains, m/s.
     identical : SILaw
-        The law of two identical grains of the same material and geometry (``w`` their relative
+        The law of two identical grains of type 1's material and geometry (``w`` their relative
         normal speed, m/s).
     mixed : Constant
-        Type pair 1-2: a small grain with a large one.
+        Type pair 1-2.
     same : Constant
-        Type pairs 1-1 and 2-2: two grains of one size.
+        Type pair 1-1 (and 2-2 for one material).
+    identical2 : SILaw or None
+        Two materials: the law of two identical grains of type 2's material.
+    same2 : Constant or None
+        Two materials: type pair 2-2.
     """
 
     pair: SILaw
     identical: SILaw
     mixed: Constant
     same: Constant
+    identical2: SILaw | None = None
+    same2: Constant | None = None
 
     def __post_init__(self) -> None:
-        _check_type_pair_laws(self.pair, self.identical)
+        _check_type_pair_laws(self.pair, self.identical, self.identical2)
+        if (self.identical2 is None) != (self.same2 is None):
+            raise InputError("give identical2 and same2 together (two materials) or neither")
 
     @property
     def radius_ratio(self) -> float:
-        """``R2 / R1 > 1``: the large grain's radius over the small one's."""
+        """``R2 / R1``: type 2's radius over type 1's (``> 1`` for one material)."""
         return self.pair.law.partner.radius_ratio
+
+    @property
+    def two_materials(self) -> bool:
+        """Whether the types are of two materials."""
+        return self.pair.partner_grain is not None
+
+    @property
+    def grains(self) -> dict[int, object]:
+        """Type -> its :class:`~restitution.laws.units.Grain` (material and geometry)."""
+        return {1: self.pair.grain, 2: self.pair.partner_grain or self.pair.grain}
 
     @property
     def constants(self) -> dict[tuple[int, int], Constant]:
         """``(i, j) -> Constant`` for the type pairs ``(1, 1)``, ``(2, 2)`` and ``(1, 2)``."""
-        return {(1, 1): self.same, (2, 2): self.same, (1, 2): self.mixed}
+        return {(1, 1): self.same, (2, 2): self.same2 or self.same, (1, 2): self.mixed}
 
     def matrix(self) -> np.ndarray:
         """epsilon per type pair, a symmetric 2 x 2 array (row, column: type - 1)."""
         c = self.constants
         return np.array([[c[1, 1].epsilon, c[1, 2].epsilon], [c[1, 2].epsilon, c[2, 2].epsilon]])
 
-    def to_dict(self) -> dict:
-        """JSON-ready: the types, the three constants and the two laws they come from."""
-        g = self.pair.grain
+    def type_words(self) -> dict[str, str]:
+        """What types 1 and 2 are, for comments and JSON."""
+        r = self.radius_ratio
+        if self.two_materials:
+            g1, g2 = self.grains[1], self.grains[2]
+            return {
+                "1": f"this grain (radius R1): {g1.describe()}",
+                "2": f"the partner grain (R2 = {r:g} R1): {g2.describe()}",
+            }
         return {
-            "types": {
-                "1": "the small grain (radius R1)",
-                "2": f"the large grain (R2 = {self.radius_ratio:g} R1), same material",
-            },
+            "1": "the small grain (radius R1)",
+            "2": f"the large grain (R2 = {r:g} R1), same material",
+        }
+
+    def to_dict(self) -> dict:
+        """JSON-ready: the types, the three constants and the laws they come from."""
+        name = self.pair.grain.law_nu_name
+
+        def source(s: SILaw) -> dict:
+            return {name: float(s.law.nu), "source": s.law_source}
+
+        if self.two_materials:
+            laws = {"1-1": source(self.identical), "2-2": source(self.identical2)}
+            note = TWO_MATERIALS_NOTE
+        else:
+            laws = {"1-1, 2-2": source(self.identical)}
+            note = SAME_SIZE_NOTE
+        return {
+            "types": self.type_words(),
             "radius_ratio": self.radius_ratio,
             **{f"{i}-{j}": c.to_dict() for (i, j), c in self.constants.items()},
-            "laws": {
-                "1-1, 2-2": {
-                    g.law_nu_name: float(self.identical.law.nu),
-                    "source": self.identical.law_source,
-                },
-                "1-2": {g.law_nu_name: float(self.pair.law.nu), "source": self.pair.law_source},
-            },  # fmt: skip
-            "note": SAME_SIZE_NOTE,
+            "laws": {**laws, "1-2": source(self.pair)},
+            "note": note,
         }
 
 
@@ -824,23 +890,26 @@ def type_pair_constants(
     *,
     speed_m_s: float | None = None,
     temperature_m2_s2: float | None = None,
+    identical2: SILaw | None = None,
 ) -> TypePairs:
     """The constants of a bidisperse packing per pair of particle types, at one reference.
 
     Parameters
     ----------
     pair : SILaw
-        The law of a small and a large grain of one material (``pair.law.partner`` set; from
-        ``si_law(..., against="grain", radius_ratio=R)``); gives type pair 1-2.
+        The law of two different grains (``pair.law.partner`` set; from ``si_law(...,
+        against="grain", radius_ratio=R[, partner_grain=...])``); gives type pair 1-2.
     identical : SILaw
-        The law of two identical grains of the same material and geometry (``si_law(...,
-        against="grain")``); gives type pairs 1-1 and 2-2.
+        The law of two identical grains of the pair's first material and geometry
+        (``si_law(..., against="grain")``); gives type pair 1-1 (and 2-2 for one material).
     speed_m_s : float, optional
         Reference relative normal speed ``w``, m/s: each constant is its law at ``w``
         (:func:`constant_at`).
     temperature_m2_s2 : float, optional
         Granular temperature ``<v_x^2>`` of both sizes, m^2/s^2: each constant is its law
         averaged over a Maxwell gas (:func:`maxwell_constant`). Give this or ``speed_m_s``.
+    identical2 : SILaw, optional
+        Two materials: the law of two identical grains of the partner's material; gives 2-2.
 
     Returns
     -------
@@ -849,15 +918,15 @@ def type_pair_constants(
     Raises
     ------
     InputError
-        For laws that are not a pair's and identical grains' of one material, neither or both
-        references, or a reference outside either law (the message names the type pair).
+        For laws that do not fit together, neither or both references, or a reference outside
+        a law (the message names the type pair).
     """
     if (speed_m_s is None) == (temperature_m2_s2 is None):
         raise InputError(
             "the type-pair constants need one reference: a speed (m/s) or a Maxwell "
             "temperature (m^2/s^2), not both and not neither"
         )
-    _check_type_pair_laws(pair, identical)
+    _check_type_pair_laws(pair, identical, identical2)
 
     def one(s: SILaw, name: str) -> Constant:
         try:
@@ -867,11 +936,20 @@ def type_pair_constants(
         except InputError as exc:
             raise InputError(f"type pair {name}: {exc}") from None
 
+    if identical2 is None:
+        return TypePairs(
+            pair,
+            identical,
+            mixed=one(pair, "1-2 (small with large)"),
+            same=one(identical, "1-1 and 2-2 (identical grains)"),
+        )
     return TypePairs(
         pair,
         identical,
-        mixed=one(pair, "1-2 (small with large)"),
-        same=one(identical, "1-1 and 2-2 (identical grains)"),
+        mixed=one(pair, "1-2 (this grain with the partner)"),
+        same=one(identical, "1-1 (two grains of this material)"),
+        identical2=identical2,
+        same2=one(identical2, "2-2 (two grains of the partner's material)"),
     )
 
 
@@ -895,7 +973,19 @@ def _constant_line(c: Constant) -> str:
 
 def _comment(s: SILaw, c: Constant | TypePairs, mark: str) -> str:
     lines = _header(s)
-    if isinstance(c, TypePairs):
+    if isinstance(c, TypePairs) and c.two_materials:
+        words = c.type_words()
+        lines += [
+            f"type 1 = {words['1']}",
+            f"type 2 = {words['2']}",
+            f"1-2: {_constant_line(c.mixed)}; status: {c.mixed.status}",
+            f"1-1: {_constant_line(c.same)}; status: {c.same.status}",
+            f"2-2: {_constant_line(c.same2)}; status: {c.same2.status}",
+            f"1-1 {_law_line(c.identical)}",
+            f"2-2 {_law_line(c.identical2)}",
+            TWO_MATERIALS_NOTE,
+        ]
+    elif isinstance(c, TypePairs):
         lines += [
             f"types: 1 = the small grain (radius R1), 2 = the large one (R2 = "
             f"{c.radius_ratio:g} R1), one material",
@@ -933,6 +1023,20 @@ def _lammps_model(g, eps: float) -> str:
     )
 
 
+def _grain_of(s: SILaw, c: Constant | TypePairs, i: int):
+    """The grain of particle type ``i``: the partner's material for type 2 of two materials."""
+    return c.grains[i] if isinstance(c, TypePairs) else s.grain
+
+
+def _lammps_mixed(g1, g2) -> str:
+    """``hertz/material`` arguments ``E`` and ``nu`` for an explicit 1-2 ``pair_coeff`` of two
+    materials. LAMMPS reads an explicit ``pair_coeff i j`` as one material on both sides
+    (stiffness ``4/3 E / (2 (1 - nu^2))``); ``nu = 0`` and ``E = 2 E*`` with
+    ``1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2`` give the two materials' Hertz stiffness."""
+    e_star = 1.0 / ((1.0 - g1.nu**2) / g1.E + (1.0 - g2.nu**2) / g2.E)
+    return f"{2.0 * e_star:.12g}", "0.0"
+
+
 def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     """Input lines for LAMMPS (GRANULAR package), SI units.
 
@@ -965,14 +1069,31 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
         )
     if len(consts) == 1:
         pairs, needs = {("*", "*"): consts[1, 1]}, ""
+    elif c.two_materials:
+        pairs, needs = consts, ", create_box 2 (type 1 this grain, type 2 the partner grain)"
     else:
         pairs, needs = consts, ", create_box 2 (type 1 the small grains, type 2 the large)"
+    lines = []
+    for (i, j), k in pairs.items():
+        if i == j or i == "*" or not c.two_materials:
+            model = _lammps_model(_grain_of(s, c, 1 if i == "*" else i), k.epsilon)
+        else:
+            e12, nu12 = _lammps_mixed(c.grains[1], c.grains[2])
+            lines.append(
+                "# 1-2: E = 2 E* and nu = 0, 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2: an explicit "
+                "pair_coeff is read as one material on both sides"
+            )
+            model = (
+                f"hertz/material {e12} {k.epsilon:.8f} {nu12} "
+                "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+            )
+        lines.append(f"pair_coeff {i} {j} {model}")
     return "\n".join(
         [
             *head,
             f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
             "pair_style granular",
-            *(f"pair_coeff {i} {j} {_lammps_model(g, k.epsilon)}" for (i, j), k in pairs.items()),
+            *lines,
             "",
         ]
     )
@@ -982,18 +1103,20 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     """Input lines for LIGGGHTS (``coefficientRestitution peratomtypepair``): one atom type for
     one constant, two for a :class:`TypePairs` (type 1 the small grains; the matrix row by
     row)."""
-    g = s.grain
     consts = _constants(s, c)
     n = 2 if len(consts) > 1 else 1
     matrix = [
         consts[min(i, j), max(i, j)].epsilon for i in range(1, n + 1) for j in range(1, n + 1)
     ]
+    grains = [_grain_of(s, c, i) for i in range(1, n + 1)]
+    moduli = " ".join(f"{g.E:.8g}" for g in grains)
+    poisson = " ".join(f"{g.nu:.8g}" for g in grains)
     return "\n".join(
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
-            f"fix m1 all property/global youngsModulus peratomtype {' '.join([f'{g.E:.8g}'] * n)}",
-            f"fix m2 all property/global poissonsRatio peratomtype {' '.join([f'{g.nu:.8g}'] * n)}",
+            f"fix m1 all property/global youngsModulus peratomtype {moduli}",
+            f"fix m2 all property/global poissonsRatio peratomtype {poisson}",
             f"fix m3 all property/global coefficientRestitution peratomtypepair {n} "
             + " ".join(f"{e:.8f}" for e in matrix),
             f"fix m4 all property/global coefficientFriction peratomtypepair {n} "
@@ -1006,7 +1129,14 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs) -> str:
 
 
 def _mass_ratio(s: SILaw, r: float) -> str:
-    """``m2 = ... m1`` of two grains of one material with radius ratio ``r``."""
+    """``m2 = ... m1`` of two grains with radius ratio ``r`` (and, of two materials, density
+    ratio ``rho2 / rho1``)."""
+    if s.partner_grain is not None:
+        q = s.partner_grain.rho / s.grain.rho
+        return (
+            f"m2 = r^2 (rho2/rho1) m1 = {r**2 * q:.6g} m1 for disks of one thickness (cylinders "
+            "of one length)"
+        )
     if s.grain.body == "sphere":
         return f"m2 = r^3 m1 = {r**3:.6g} m1 for spheres"
     return f"m2 = r^2 m1 = {r**2:.6g} m1 for disks of one thickness (cylinders of one length)"
@@ -1024,7 +1154,8 @@ def _mercury_mass(s: SILaw, c: Constant | TypePairs) -> str:
     pair = s.law.partner
     if pair is not None:
         ratio = _mass_ratio(s, pair.radius_ratio)
-        both = f"m1, m2 the masses of a small and a large particle ({ratio})"
+        which = "type 1 and type 2" if s.partner_grain is not None else "a small and a large"
+        both = f"m1, m2 the masses of {which} particle ({ratio})"
         if isinstance(c, TypePairs):
             each = "m1 for 1-1, m2 for 2-2, 2 m1 m2 / (m1 + m2) for 1-2"
             return f"{head} of each type pair: {each}; {both}"
@@ -1051,12 +1182,13 @@ def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     if len(consts) == 1:
         body = _mercury_species("species", g.rho, consts[1, 1].epsilon, "mass")
     else:
+        two = c.two_materials
         body = [
-            "// type 1: the small grains",
-            *_mercury_species("species1", g.rho, consts[1, 1].epsilon, "m1"),
-            "// type 2: the large grains",
-            *_mercury_species("species2", g.rho, consts[2, 2].epsilon, "m2"),
-            "// 1-2: a small grain with a large one",
+            "// type 1: this grain's material" if two else "// type 1: the small grains",
+            *_mercury_species("species1", c.grains[1].rho, consts[1, 1].epsilon, "m1"),
+            "// type 2: the partner's material" if two else "// type 2: the large grains",
+            *_mercury_species("species2", c.grains[2].rho, consts[2, 2].epsilon, "m2"),
+            "// 1-2: type 1 with type 2" if two else "// 1-2: a small grain with a large one",
             "auto species12 = speciesHandler.getMixedObject(species1, species2);",
             "species12->setCollisionTimeAndRestitutionCoefficient(tc, "
             f"{consts[1, 2].epsilon:.8f}, 2 * m1 * m2 / (m1 + m2));",
@@ -1076,21 +1208,31 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     """Python lines for YADE (Hertz-Mindlin with ``en``). A :class:`TypePairs` gives two
     materials of the same constants (``mat1`` for the small grains, ``mat2`` for the large) and
     ``en`` as a ``MatchMaker`` over their ids."""
-    g = s.grain
     consts = _constants(s, c)
-    mat = (
-        f"O.materials.append(FrictMat(young={g.E:.8g}, poisson={g.nu:.8g}, "
-        f"density={g.rho:.8g}, frictionAngle=0.0))"
-    )
+
+    def mat(g) -> str:
+        return (
+            f"O.materials.append(FrictMat(young={g.E:.8g}, poisson={g.nu:.8g}, "
+            f"density={g.rho:.8g}, frictionAngle=0.0))"
+        )
+
     if len(consts) == 1:
-        body = [mat, f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})"]
+        body = [
+            mat(s.grain),
+            f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})",
+        ]
     else:
         matches = ", ".join(f"(mat{i}, mat{j}, {k.epsilon:.8f})" for (i, j), k in consts.items())
+        two = c.two_materials
         body = [
-            f"mat1 = {mat}  # type 1: the small grains",
-            f"mat2 = {mat}  # type 2: the large grains (same constants, own id)",
+            f"mat1 = {mat(c.grains[1])}  # type 1: "
+            + ("this grain's material" if two else "the small grains"),
+            f"mat2 = {mat(c.grains[2])}  # type 2: "
+            + ("the partner's material" if two else "the large grains (same constants, own id)"),
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=({matches})))",
-            "# give the small particles material=mat1, the large ones material=mat2",
+            "# give type 1 particles material=mat1, type 2 material=mat2"
+            if two
+            else "# give the small particles material=mat1, the large ones material=mat2",
         ]
     return "\n".join(
         [

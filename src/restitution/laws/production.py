@@ -53,6 +53,7 @@ __all__ = [
     "DISK_LOW_SPEEDS",
     "PAIR_LOW_SPEEDS",
     "pair_groups",
+    "PAIR_TWO_MATERIALS",
     "production",
 ]
 
@@ -142,14 +143,34 @@ the disk's own windows of ``1e-2`` and ``2e-3``: at ``R2/R1 = 2`` they would nee
 to ``102400 (1 + r^2)`` modes)."""
 
 
-def pair_groups(radius_ratio: float, groups=PAIR_WALL_GROUPS) -> tuple[SweepSettings, ...]:
-    """The sweeps of the law of two disks of one material with radii ``1`` and ``radius_ratio``:
-    each disk group (:data:`PAIR_WALL_GROUPS`) carried over by
-    :func:`restitution.limits.sweep.pair_settings` (relative speeds ``w = 2 v``, walls on the
-    pair's compression scale, mode windows ``N (1 + r^2)``)."""
+def _steel_glass():
+    from restitution.laws.si_law import pair_partner
+    from restitution.laws.units import Grain
+
+    steel = Grain(E=210e9, nu=0.3, rho=7850.0, geometry="cylinder")
+    glass = Grain(E=63e9, nu=0.2481, rho=2500.0, geometry="cylinder")
+    return steel.law_nu, pair_partner(steel, glass, 1.4)
+
+
+PAIR_TWO_MATERIALS = (_steel_glass(),)
+"""``(nu_2d, Partner)`` of the shipped laws of two disks of two materials: a steel cylinder
+(``E = 210 GPa``, ``nu = 0.3``, ``rho = 7850 kg/m^3``) with a glass cylinder (``63 GPa``,
+``0.2481``, ``2500 kg/m^3``) 1.4 times as large, in the steel's plane-strain units
+(:func:`restitution.laws.si_law.pair_partner`). Other pairs of materials are computed on
+demand (:func:`restitution.laws.compute.computed_law`, ``restitution law ... --compute``)."""
+
+
+def pair_groups(partner, groups=PAIR_WALL_GROUPS) -> tuple[SweepSettings, ...]:
+    """The sweeps of the law of two disks: each disk group (:data:`PAIR_WALL_GROUPS`) carried
+    over by :func:`restitution.limits.sweep.pair_settings` (relative speeds ``w = 2 v``, walls
+    on the pair's compression scale, mode windows ``N (1 + r^2 rho2 / E2)``).
+
+    ``partner`` is the second disk, a :class:`~restitution.bodies.pair.partner.Partner` (any
+    material), or a radius ratio ``R2 / R1`` for a disk of the same material."""
     from restitution.bodies.pair.partner import Partner
 
-    partner = Partner(radius_ratio=float(radius_ratio))
+    if not isinstance(partner, Partner):
+        partner = Partner(radius_ratio=float(partner))
     return tuple(pair_settings(g, partner) for g in groups)
 
 
@@ -452,7 +473,8 @@ def main(argv=None) -> None:
         choices=(*_PRODUCTION, "pair"),
         default="disk",
         help="the body: disk (law_nu<nu>.json), sphere (law_sphere_nu<nu>.json) or pair (two "
-        "disks of one material, law_pair_r<R2/R1>_nu<nu>.json for PAIR_RADIUS_RATIOS)",
+        "disks of one material, law_pair_r<R2/R1>_nu<nu>.json for PAIR_RADIUS_RATIOS, and the "
+        "steel-glass pair of PAIR_TWO_MATERIALS)",
     )
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
@@ -471,6 +493,7 @@ def main(argv=None) -> None:
         if args.geometry == "pair":
             names = [law_filename(nu, "disk", Partner(radius_ratio=r))
                      for r in PAIR_RADIUS_RATIOS for nu in PAIR_NUS]  # fmt: skip
+            names += [law_filename(nu, "disk", p) for nu, p in PAIR_TWO_MATERIALS]
         else:
             names = [law_filename(nu, args.geometry, None) for nu in production(args.geometry)[0]]
         for name in names:
@@ -479,6 +502,7 @@ def main(argv=None) -> None:
         return
     if args.geometry == "pair":
         runs = [(PAIR_NUS, pair_groups(r)) for r in PAIR_RADIUS_RATIOS]
+        runs += [((nu,), pair_groups(p)) for nu, p in PAIR_TWO_MATERIALS]
     else:
         runs = [production(args.geometry)]
     start = time.perf_counter()

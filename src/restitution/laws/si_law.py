@@ -24,11 +24,20 @@ import numpy as np
 
 from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for
+from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_nus
 from restitution.laws.units import PARTNERS, Grain, partner_factor
 from restitution.status import Status
 
-__all__ = ["SI_UNITS", "STATUSES", "SILaw", "SIPoint", "overall_status", "si_law"]
+__all__ = [
+    "SI_UNITS",
+    "STATUSES",
+    "SILaw",
+    "SIPoint",
+    "law_target",
+    "overall_status",
+    "pair_partner",
+    "si_law",
+]
 
 STATUSES: dict[Status, str] = {
     Status.COMPUTED: "at a computed speed; its extrapolation passed the asymptotic checks",
@@ -176,6 +185,7 @@ class SILaw:
     grain: Grain
     against: str
     law: EpsilonLaw | NuInterpolatedLaw
+    partner_grain: Grain | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.grain, Grain):
@@ -197,10 +207,13 @@ class SILaw:
                     f"not against a {self.against}"
                 )
             if not pair.same_material:
-                raise InputError(
-                    "the SI edge takes one material for both grains; a pair of two materials is "
-                    "served in reduced units (restitution.law(..., partner=...))"
-                )
+                _check_partner_grain(self.grain, self.partner_grain, pair)
+        if self.partner_grain is not None and (pair is None or pair.same_material):
+            raise InputError(
+                "partner_grain names the second grain's material, and the law is of one "
+                "material; pass the law of the two materials (si_law(..., partner_grain=...)) or "
+                "leave partner_grain out"
+            )
         body = getattr(self.law, "geometry", "disk")
         if body != self.grain.body:
             raise InputError(
@@ -221,6 +234,13 @@ class SILaw:
         pair = self.law.partner
         if pair is None:
             return PARTNERS[self.against]
+        if self.partner_grain is not None:
+            g = self.partner_grain
+            return (
+                f"a grain of another material (E = {g.E:.4g} Pa, nu = {g.nu:g}, rho = "
+                f"{g.rho:.4g} kg/m^3) {pair.radius_ratio:g} times as large, relative normal "
+                "speed w (v = w / c, c of this grain; the pair's law)"
+            )
         return (
             f"a grain of the same material {pair.radius_ratio:g} times as large, relative "
             "normal speed w (v = w / c, the pair's law)"
@@ -316,6 +336,9 @@ class SILaw:
         pair = self.law.partner
         if pair is not None:
             law["partner"] = pair.to_dict()
+        extra = {}
+        if self.partner_grain is not None:
+            extra["partner_material"] = self.partner_grain.to_dict()
         return {
             **head,
             "law_nu": g.law_nu,
@@ -324,13 +347,15 @@ class SILaw:
             "against": self.against,
             "against_meaning": self.against_meaning,
             "material": g.to_dict(),
+            **extra,
             "law": {
                 **law,
                 "source": self.law_source,
                 "computed_speeds_m_s": [lo, hi],
                 "v_units": (
-                    "v = w / c, the relative speed of the two grains in units of c of both "
-                    f"(the pair's law); {g.c_formula}"
+                    "v = w / c, the relative speed of the two grains in units of c of "
+                    f"{'this grain' if self.partner_grain is not None else 'both'} (the pair's "
+                    f"law); {g.c_formula}"
                     if pair is not None
                     else "v = w / (k c), speed towards the wall in units of c; k = "
                     f"{partner_factor(self.against):g} ({self.against}); {g.c_formula}"
@@ -350,6 +375,7 @@ def si_law(
     *,
     path: str | os.PathLike | None = None,
     radius_ratio: float | None = None,
+    partner_grain: Grain | None = None,
 ) -> SILaw:
     """epsilon at SI speeds for a material given by its 3D constants.
 
@@ -368,12 +394,21 @@ def si_law(
         Rigid wall at speed ``w``, or two identical grains at relative normal speed ``w``.
     path : path, optional
         A law file of the grain's body for its ``law_nu`` (from ``restitution curve
-        [--geometry sphere]``; for a pair ``restitution curve --radius-ratio R``).
+        [--geometry sphere]``; for a pair ``restitution curve --radius-ratio R``, or
+        :func:`restitution.laws.compute.computed_law`).
     radius_ratio : float, optional
-        Against a grain of the same material but another size: the ratio of the two radii
-        (either way round; ``1`` is the identical grain). Served by the laws of two disks
-        (``law_pair_r<R>_nu<nu_2d>.json``, :func:`restitution.laws.law_nu.law_for` with a
+        Against a grain of another size: the ratio of the two radii ``R2 / R1``, this grain's
+        ``R1``. For one material either way round (``1`` is the identical grain), served by the
+        laws of two disks (``law_pair_r<R>_nu<nu_2d>.json``,
+        :func:`restitution.laws.law_nu.law_for` with a
         :class:`~restitution.bodies.pair.partner.Partner`); ``w`` is the relative speed.
+    partner_grain : Grain, optional
+        Against a grain of another material (its 3D constants, the same geometry; ``None``: this
+        grain's material). No such law is shipped: give ``path``, computed by
+        :func:`restitution.laws.compute.computed_law` for the partner of :func:`law_target`
+        (``restitution law ... --compute`` does both). Its constants enter the law in this
+        grain's 2D units, rounded to six significant digits (:func:`pair_partner`); ``v = w / c``
+        with this grain's ``c``.
 
     Returns
     -------
@@ -387,51 +422,129 @@ def si_law(
     """
     grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
     partner_factor(against)
-    partner = _partner(radius_ratio, against, grain)
+    partner = _partner(radius_ratio, against, grain, partner_grain)
+    other = _other_material(grain, partner_grain)
+    if other is not None and path is None and not _shipped(grain.law_nu, partner):
+        raise InputError(
+            "no law of these two materials is shipped: compute it with `restitution law ... "
+            "--compute` (or restitution.laws.compute.computed_law), or give its law file (path)"
+        )
     return SILaw(
-        grain, against, law_for(grain.law_nu, geometry=grain.body, path=path, partner=partner)
+        grain,
+        against,
+        law_for(grain.law_nu, geometry=grain.body, path=path, partner=partner),
+        partner_grain=other,
     )
 
 
-def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None):
+def _shipped(law_nu: float, partner) -> bool:
+    """Whether a shipped law of two disks serves ``law_nu`` with ``partner`` exactly (laws of
+    two materials are not interpolated in ``nu``)."""
+    return any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus("disk", partner))
+
+
+def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None, partner_grain=None):
     """``(law_nu, body, partner)``: the law :func:`si_law` serves for these arguments (the
     Poisson number of the law, 2D for cylinders and thin disks; the body, ``"disk"`` or
     ``"sphere"``; the :class:`~restitution.bodies.pair.partner.Partner` or ``None``), e.g. for
     :func:`restitution.laws.compute.computed_law`."""
     grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
     partner_factor(against)
-    return grain.law_nu, grain.body, _partner(radius_ratio, against, grain)
+    return grain.law_nu, grain.body, _partner(radius_ratio, against, grain, partner_grain)
 
 
-def _partner(radius_ratio, against: str, grain: Grain):
-    """The :class:`Partner` of a grain of the same material ``radius_ratio`` times as large (the
-    larger of the ratio and its inverse: the pair is the same either way round, its speeds in
-    ``c`` of both); ``None`` for the identical grain or no ratio."""
+def _six(x: float) -> float:
+    """``x`` rounded to six significant digits: a partner's ratios as law files name them."""
+    return float(f"{x:.6g}")
+
+
+def pair_partner(grain: Grain, other: Grain, radius_ratio: float = 1.0):
+    """The :class:`~restitution.bodies.pair.partner.Partner` of a disk-shaped grain of the
+    material ``other`` (same geometry), ``radius_ratio`` times as large as ``grain``, in the
+    units of ``grain`` (2D constants): ``E2_2d / E1_2d``, ``rho2 / rho1`` and the partner's
+    ``nu_2d`` (``None`` when it is this grain's), each rounded to six significant digits, so
+    that law files computed for the same two materials carry the same name and key."""
     from restitution.bodies.pair.partner import Partner
 
-    if radius_ratio is None:
+    nu2 = _six(other.nu_2d)
+    return Partner(
+        radius_ratio=_six(radius_ratio),
+        modulus_ratio=_six(other.E_2d / grain.E_2d),
+        density_ratio=_six(other.rho / grain.rho),
+        nu=None if nu2 == _six(grain.nu_2d) else nu2,
+    )
+
+
+def _check_partner_grain(grain: Grain, other: Grain | None, pair) -> None:
+    """One-line refusal unless ``other`` is the material of the pair law ``pair``."""
+    if other is None:
+        raise InputError(
+            "the law is of grains of two materials: give the second grain's material "
+            "(partner_grain=Grain(...), si_law(..., partner_grain=...))"
+        )
+    want = pair_partner(grain, other, pair.radius_ratio)
+    if want.key() != pair.key():
+        raise InputError(
+            f"the law is of the pair {pair.to_dict()}, the two materials make "
+            f"{want.to_dict()}; give the law of these two materials"
+        )
+
+
+def _other_material(grain: Grain, partner_grain) -> Grain | None:
+    """The partner grain when it is of another material than ``grain``; ``None`` for none or
+    the same material (checked: a Grain of the same geometry)."""
+    if partner_grain is None:
         return None
-    if not is_real(radius_ratio):
+    if not isinstance(partner_grain, Grain):
+        raise InputError(
+            f"partner_grain must be a Grain, got {describe(partner_grain)}; pass e.g. "
+            "Grain(E=63e9, nu=0.25, rho=2500, geometry='cylinder')"
+        )
+    if partner_grain.geometry != grain.geometry:
+        raise InputError(
+            f"the two grains must share one geometry: this is a {grain.geometry}, the partner a "
+            f"{partner_grain.geometry}"
+        )
+    if (partner_grain.E, partner_grain.nu, partner_grain.rho) == (grain.E, grain.nu, grain.rho):
+        return None
+    return partner_grain
+
+
+def _partner(radius_ratio, against: str, grain: Grain, partner_grain=None):
+    """The :class:`Partner` of a second grain ``radius_ratio`` times as large: of the same
+    material the larger of the ratio and its inverse (the pair is the same either way round,
+    its speeds in ``c`` of both; ``None`` for the identical grain or no ratio), of another
+    material (``partner_grain``) this grain's ``R2 / R1`` as given (:func:`pair_partner`)."""
+    other = _other_material(grain, partner_grain)
+    if radius_ratio is None and other is None:
+        return None
+    r = 1.0 if radius_ratio is None else radius_ratio
+    if not is_real(r):
         raise InputError(
             f"the radius ratio must be a positive number, got {describe(radius_ratio)}; pass "
             "radius_ratio as a float > 0"
         )
-    r = float(radius_ratio)
+    r = float(r)
     if not (np.isfinite(r) and r > 0):
         raise InputError(
             f"the radius ratio must be a positive number, got {radius_ratio!r}; pass "
             "radius_ratio as a finite float > 0"
         )
     if against != "grain":
+        what = "a radius ratio" if other is None else "a partner material"
         raise InputError(
-            f"a radius ratio describes a second grain; it needs against='grain', not {against!r}"
+            f"{what} describes a second grain; it needs against='grain', not {against!r}"
         )
+    if grain.body != "disk" and (r != 1.0 or other is not None):
+        raise InputError(
+            f"laws of two {grain.body}s of different sizes or materials are not computed yet; "
+            "give radius_ratio=None and no partner material (identical grains)"
+        )
+    if other is not None:
+        return pair_partner(grain, other, r)
     r = max(r, 1.0 / r)
     if r == 1.0:
         return None
-    if grain.body != "disk":
-        raise InputError(
-            f"laws of two {grain.body}s of different sizes are not computed yet; give "
-            "radius_ratio=None (identical grains)"
-        )
+    from restitution.bodies.pair.partner import Partner
+
     return Partner(radius_ratio=r)

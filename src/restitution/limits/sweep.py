@@ -68,6 +68,7 @@ __all__ = [
     "load_grid",
     "pair_settings",
     "run_sweep",
+    "window_scale",
 ]
 
 PAPER_VELOCITIES: tuple[float, ...] = (0.005, 0.01, 0.02) + tuple(
@@ -290,6 +291,14 @@ def defaults_for(geometry: str) -> SweepSettings:
     return _DEFAULTS_BY_GEOMETRY[body_kind(geometry).geometry]
 
 
+def window_scale(partner: Partner) -> float:
+    """``1 + r^2 rho2 / E2``: how many times the modes of the first disk alone a pair has below
+    one frequency (``r = R2 / R1``, constants in the first disk's units; a disk of radius ``R``
+    and wave speed ``c`` has ``~ (R / c)^2`` times as many modes below a frequency). A pair's
+    mode windows are the wall's times this (:func:`pair_settings`)."""
+    return 1.0 + partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
+
+
 def pair_settings(settings: SweepSettings, partner: Partner) -> SweepSettings:
     """The sweep of a body on the wall carried over to a pair with ``partner``.
 
@@ -300,7 +309,7 @@ def pair_settings(settings: SweepSettings, partner: Partner) -> SweepSettings:
     of both bodies below the frequency of the wall's ``N`` lowest: in two dimensions a body
     has ``~ R^2 / c^2`` times as many modes below one frequency. At ``r = 1`` every point is
     the wall's point at half the speed with twice the modes (the same frequency cutoff)."""
-    scale = 1.0 + partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
+    scale = window_scale(partner)
     return replace(
         settings,
         velocities=tuple(2.0 * v for v in settings.velocities),
