@@ -404,11 +404,13 @@ def si_law(
         :class:`~restitution.bodies.pair.partner.Partner`); ``w`` is the relative speed.
     partner_grain : Grain, optional
         Against a grain of another material (its 3D constants, the same geometry; ``None``: this
-        grain's material). No such law is shipped: give ``path``, computed by
-        :func:`restitution.laws.compute.computed_law` for the partner of :func:`law_target`
-        (``restitution law ... --compute`` does both). Its constants enter the law in this
-        grain's 2D units, rounded to six significant digits (:func:`pair_partner`); ``v = w / c``
-        with this grain's ``c``.
+        grain's material). One such law is shipped (steel cylinders, ``E = 210e9``, ``nu =
+        0.3``, ``rho = 7850``, with glass ones 1.4 times as large, ``63e9``, ``0.2481``,
+        ``2500``; :data:`restitution.laws.production.PAIR_TWO_MATERIALS`); for any other give
+        ``path``, computed by :func:`restitution.laws.compute.computed_law` for the partner of
+        :func:`law_target` (``restitution law ... --compute`` does both). Its constants enter
+        the law in this grain's 2D units, rounded to six significant digits
+        (:func:`pair_partner`); ``v = w / c`` with this grain's ``c``.
 
     Returns
     -------
