@@ -17,6 +17,8 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from _cli_checks import one_line_error
+from _synthetic_laws import eps_pair, eps_same
 from numpy.testing import assert_allclose
 from scipy.special import gamma
 
@@ -35,14 +37,6 @@ V = np.geomspace(1e-4, 0.3, 21)  # reduced speeds of the synthetic laws
 ERR = 3e-4
 K = 14  # the reference speed w = V[K] c is a computed speed of the pair's law (v = w / c)
 W_REF = V[K] * C
-
-
-def eps_pair(v):
-    return 1.0 - 0.6 * v**0.9 / (1.0 + 1.3 * v**0.9)
-
-
-def eps_same(v):
-    return 1.0 - 0.4 * v**0.8 / (1.0 + 1.1 * v**0.8)
 
 
 @pytest.fixture
@@ -306,10 +300,7 @@ def test_refusals_are_one_line(laws, capsys, extra, message):
     extra = [x.format(pair=pair_path, same=same_path) for x in extra]
     with pytest.raises(SystemExit) as exc:
         main([*BASE, *extra])
-    assert exc.value.code == 2
-    err = capsys.readouterr().err
-    assert err.startswith("error: ") and err.count("\n") == 1, err
-    assert message in err
+    one_line_error(exc.value.code, capsys.readouterr().err, message)
 
 
 def test_a_sphere_pair_is_refused_in_one_line_without_traceback():

@@ -19,6 +19,9 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from _cli_checks import one_line_error
+from _synthetic_laws import eps_glass, eps_pair
+from _synthetic_laws import eps_same as eps_steel
 from numpy.testing import assert_allclose
 
 from restitution.bodies.pair.partner import Partner
@@ -54,18 +57,6 @@ ERR = 3e-4
 K = 14
 W_REF = V[K] * C1  # a computed speed of the pair's law
 GLASS_AT_REF = W_REF / (2 * C2)  # where two glass grains see W_REF
-
-
-def eps_pair(v):
-    return 1.0 - 0.6 * v**0.9 / (1.0 + 1.3 * v**0.9)
-
-
-def eps_steel(v):
-    return 1.0 - 0.4 * v**0.8 / (1.0 + 1.1 * v**0.8)
-
-
-def eps_glass(v):
-    return 1.0 - 0.3 * v**0.85 / (1.0 + 0.9 * v**0.85)
 
 
 @pytest.fixture
@@ -203,10 +194,7 @@ def test_refusals_are_one_line(laws, capsys, extra, message):
     extra = [x.format(pair=pair, glass=glass) for x in extra]
     with pytest.raises(SystemExit) as exc:
         main([*BASE, *extra])
-    assert exc.value.code == 2
-    err = capsys.readouterr().err
-    assert err.startswith("error: ") and err.count("\n") == 1, err
-    assert message in err
+    one_line_error(exc.value.code, capsys.readouterr().err, message)
 
 
 def test_a_sphere_of_another_material_is_refused():
