@@ -202,9 +202,25 @@ def test_a_short_bounce_is_unchanged():
         "x_end": ["-0x1.20d6773db7414p+0", "-0x1.2d56e581d8a72p+0", "-0x1.2a2c7e847b712p+0"],
         "t_end": ["0x1.b34d6a161e23ap+2", "0x1.da86b09020acap+2", "0x1.acd14cd597a2dp+2"],
     }  # fmt: skip
-    for key, values in earlier.items():  # to round-off of the modes (see the ensemble's test)
-        expected = [float.fromhex(x) for x in values]
-        np.testing.assert_allclose(getattr(seq, key), expected, rtol=1e-12, err_msg=key)
+    # To round-off: modes computed afresh and modes read from the cache differ in the last bits
+    # (see the ensemble's test), numba compiles the kernel for the host's CPU, and a chain of
+    # collisions carries such differences on. Measured on a machine where this test failed at
+    # 1e-12 in every run, fresh caches or not (issue 45): the third collision, which starts
+    # vibrating, moved epsilon by 9e-13 of itself, the vibration energies moved by up to
+    # 2.5e-12 of the collision's E0, and the drift (a difference of energies of order E0) by
+    # 1e-9 of itself. Energies are compared on the scale of E0 = (pi/2) v^2, where the round-off
+    # enters, everything to 1e-10: a hundred times the round-off seen, far below any change of
+    # the physics.
+    e0 = 0.5 * np.pi * np.array([float.fromhex(x) for x in earlier["v"]]) ** 2
+    scale = {"vibration_before": e0, "vibration_after": e0, "energy_drift": 1.0}
+    for key, values in earlier.items():
+        expected = np.array([float.fromhex(x) for x in values])
+        if key in scale:
+            np.testing.assert_array_less(
+                np.abs(getattr(seq, key) - expected), 1e-10 * scale[key], err_msg=key
+            )
+        else:
+            np.testing.assert_allclose(getattr(seq, key), expected, rtol=1e-10, err_msg=key)
 
 
 # -- workers ---------------------------------------------------------------------------------
