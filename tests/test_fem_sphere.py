@@ -277,9 +277,9 @@ def test_fem_epsilon_takes_the_sphere_walls_and_reports_the_sphere():
     assert result.geometry == "sphere"
     assert default_grading("sphere").h_far < default_grading("disk").h_far
     # The modal sweeps' walls of the sphere, so that both routes extrapolate from the same.
-    from restitution.limits.sweep import SPHERE_DEFAULTS
+    from restitution.limits.sweep import defaults_for
 
-    walls = walls_at(V, SPHERE_DEFAULTS.alphas, "compression", geometry="sphere", nu=NU)
+    walls = walls_at(V, defaults_for("sphere").alphas, "compression", geometry="sphere", nu=NU)
     assert_allclose(result.alphas, sorted(walls), rtol=1e-12)
     assert math.isfinite(result.epsilon) and result.epsilon_err > 0
     assert 0.98 < result.epsilon < 1.0

@@ -9,10 +9,12 @@ next call served from that file without computing, and the refusals.
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import pytest
 from _cli_checks import one_line_error
 
+from restitution.bodies.kinds import KINDS, SweepPlan
 from restitution.laws import compute, production
 from restitution.limits.sweep import SweepSettings
 
@@ -31,9 +33,11 @@ def tiny(monkeypatch, tmp_path):
     """One tiny sweep and two low-speed points instead of the production groups and speeds, the
     cache in ``tmp_path``."""
     monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(tmp_path / "cache"))
-    monkeypatch.setattr(compute, "SETTINGS_GROUPS", (TINY,))
-    monkeypatch.setattr(production, "DISK_LOW_SPEEDS", TINY_LOW)
-    monkeypatch.setitem(production._LOW_SPEEDS, "disk", TINY_LOW)
+    disk = KINDS["disk"]
+    tiny_plan = SweepPlan(TINY.velocities, TINY.n_modes, TINY.batch_size)
+    plan = replace(disk.production, groups=(tiny_plan,), low_speeds=TINY_LOW)
+    monkeypatch.setitem(KINDS, "disk", replace(disk, production=plan))
+    assert production.production_groups("disk") == (TINY,)
     return tmp_path
 
 
@@ -72,7 +76,9 @@ def test_a_shipped_nu_is_not_computed(cli, tiny, monkeypatch):
 
 
 def test_a_computation_beyond_the_time_bound_is_refused_unless_forced(cli, tiny, monkeypatch):
-    monkeypatch.setitem(compute.SECONDS_PER_COLLISION, "disk", 1e4)
+    disk = KINDS["disk"]
+    slow = replace(disk.production, seconds_per_collision=1e4)
+    monkeypatch.setitem(KINDS, "disk", replace(disk, production=slow))
     args = ("law", *STEEL, "--speed", "1000", "--compute")
     code, out, err = cli(*args)
     # 27 collisions of 1e4 s and two low-speed points of 2.05 s: 270004 s

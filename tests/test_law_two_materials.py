@@ -151,7 +151,7 @@ def test_a_pair_of_materials_without_a_law_is_refused_with_the_computation(capsy
     assert exc.value.code == 2
     err = capsys.readouterr().err
     assert err.startswith("error: ") and err.count("\n") == 1
-    groups = compute.production_groups("disk", PARTNER)[0]
+    groups = compute.production_groups("disk", PARTNER)
     count = sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups)
     assert f"add --compute ({count} collisions, about " in err
     with pytest.raises(InputError, match="no law of these two materials is shipped"):
@@ -296,8 +296,7 @@ def test_json_inputs_round_trip(laws, capsys, tmp_path):
 
 
 def test_the_computation_on_demand_scales_the_windows_and_the_estimate():
-    groups, kind = compute.production_groups("disk", PARTNER)
-    assert kind == "pair"
+    groups = compute.production_groups("disk", PARTNER)
     scale = 1 + RATIO**2 * PARTNER.density_ratio / PARTNER.modulus_ratio
     for pair_group, wall_group in zip(groups, PAIR_WALL_GROUPS, strict=True):
         assert pair_group.n_modes == tuple(round(n * scale) for n in wall_group.n_modes)
@@ -305,9 +304,9 @@ def test_the_computation_on_demand_scales_the_windows_and_the_estimate():
         assert pair_group.partner == PARTNER
     # The estimate: the shipped pairs' time per collision at their windows (R2/R1 = 2: five
     # times the wall's, 8.5 s), scaled with the windows to the power 2.25.
-    assert_allclose(compute.seconds_per_collision("pair", Partner(radius_ratio=2.0)), 8.5)
+    assert_allclose(compute.seconds_per_collision("disk", Partner(radius_ratio=2.0)), 8.5)
     assert_allclose(
-        compute.seconds_per_collision("pair", PARTNER), 8.5 * (scale / 5) ** 2.25, rtol=1e-12
+        compute.seconds_per_collision("disk", PARTNER), 8.5 * (scale / 5) ** 2.25, rtol=1e-12
     )
     p = compute.plan(NU1_2D, "disk", PARTNER, out_dir="unused")
     assert p.path.name == "law_pair_r1.4_E0.290906_rho0.318471_nu20.329964_nu0.428571.json"

@@ -255,7 +255,7 @@ def _recompute_sample(name):
             "restitution.laws.production --low-speeds-only` (--geometry pair for two disks)"
         )
         assert q["estimate_err"] == pytest.approx(p["estimate_err"], rel=1e-9)
-    now = quasistatic_code_version("disk", pair=served.partner is not None)
+    now = quasistatic_code_version("disk", "slow-modal", pair=served.partner is not None)
     if meta["low_speed"]["code_version"] != now:
         warnings.warn(
             f"{name}'s low-speed points were computed with code "

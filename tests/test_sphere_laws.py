@@ -21,6 +21,7 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.interpolate import PchipInterpolator
 
+from restitution.bodies.kinds import body_kind
 from restitution.cli import main
 from restitution.errors import InputError
 from restitution.laws import exports, production
@@ -461,12 +462,15 @@ def test_cli_law_exports_a_sphere_law_file(tmp_path, capsys):
 
 def test_production_builds_sphere_files(computed, tmp_path, monkeypatch, capsys):
     nus, groups = production.production("sphere")
-    assert nus == production.SPHERE_NUS and groups == production.SPHERE_GROUPS
+    plan = body_kind("sphere").production
+    assert nus == plan.nus == (0.2, 0.25, 0.3, 0.35, 0.4, 0.45)
+    assert [g.n_modes for g in groups] == [(2400, 4800, 9600, 19200)]
+    assert [len(g.velocities) for g in groups] == [26]
     assert all(g.geometry == "sphere" for g in groups)
     assert all(-1 < nu < 0.5 for nu in nus)
     assert production.production("disk") == (production.SHIPPED_NUS, production.SETTINGS_GROUPS)
     # build() with the small grid, every point already stored: it writes the sphere's file.
-    # Two low-speed points join the collisions' (production: SPHERE_LOW_SPEEDS).
+    # Two low-speed points join the collisions' (production: the kind's low speeds).
     (path,) = production.build(
         tmp_path, (NU,), (SETTINGS,), store=computed.store, progress=False, low_speeds=(1e-4, 1e-3)
     )
@@ -487,7 +491,7 @@ def test_production_builds_sphere_files(computed, tmp_path, monkeypatch, capsys)
 
     monkeypatch.setattr(production, "build", fake_build)
     production.main(["--geometry", "sphere", "--out", str(tmp_path / "data")])
-    assert seen["nus"] == production.SPHERE_NUS and seen["groups"] == production.SPHERE_GROUPS
+    assert seen["nus"] == plan.nus and seen["groups"] == groups
     capsys.readouterr()
 
 
@@ -555,10 +559,10 @@ def test_shipped_sphere_laws_cheap_collisions_have_not_moved(name):
 @pytest.mark.parametrize("name", SPHERE_FILES)
 def test_shipped_sphere_low_speed_points_have_not_moved(name):
     """The stale-data test of the laws' low-speed points: every point below the modal speeds is
-    one of production.SPHERE_LOW_SPEEDS, flagged 'quasistatic'; three of them (both ends and
-    the middle) recomputed by the current code give the stored loss and estimate error, and the
-    interpolation errors of the whole grid are the current code's; each point's error is their
-    sum."""
+    one of the sphere kind's production low speeds, flagged 'quasistatic'; three of them (both
+    ends and the middle) recomputed by the current code give the stored loss and estimate error,
+    and the interpolation errors of the whole grid are the current code's; each point's error is
+    their sum."""
     import warnings
 
     from restitution import get_modes
@@ -568,13 +572,14 @@ def test_shipped_sphere_low_speed_points_have_not_moved(name):
 
     meta = json.loads(_DATA.joinpath(name).read_text())["metadata"]
     low = [p for p in meta["points"] if p.get("route") == "quasistatic"]
-    assert [p["v"] for p in low] == list(production.SPHERE_LOW_SPEEDS)
+    speeds = body_kind("sphere").production.low_speeds
+    assert [p["v"] for p in low] == list(speeds)
     assert all(p["status"] == "quasistatic" and not p["asymptotic_ok"] for p in low)
     assert max(p["v"] for p in low) < min(
         p["v"] for p in meta["points"] if p.get("route") != "quasistatic"
     )
     sample = [low[0], low[len(low) // 2], low[-1]]
-    redo, parameters = low_speed_points(meta["nu"], [p["v"] for p in sample])
+    redo, parameters = low_speed_points(meta["nu"], [p["v"] for p in sample], geometry="sphere")
     assert parameters["n_modes"] == meta["low_speed"]["n_modes"]
     for p, q in zip(sample, redo, strict=True):
         assert q["energy_loss"] == pytest.approx(p["energy_loss"], rel=1e-9), (
@@ -582,17 +587,18 @@ def test_shipped_sphere_low_speed_points_have_not_moved(name):
         )
         assert q["estimate_err"] == pytest.approx(p["estimate_err"], rel=1e-9)
     modes = get_modes(meta["nu"], LOW_SPEED_MODES, geometry="sphere")
-    between = interpolation_error(modes, production.SPHERE_LOW_SPEEDS)
+    between = interpolation_error(modes, speeds)
     assert_allclose([p["interpolation_err"] for p in low], between, rtol=1e-9)
     assert_allclose(
         [p["energy_loss_err"] for p in low],
         [p["estimate_err"] + p["interpolation_err"] for p in low],
         rtol=1e-12,
     )
-    if meta["low_speed"]["code_version"] != quasistatic_code_version("sphere"):
+    now = quasistatic_code_version("sphere", "rayleigh")
+    if meta["low_speed"]["code_version"] != now:
         warnings.warn(
             f"{name}'s low-speed points were computed with code "
-            f"{meta['low_speed']['code_version']}, this is {quasistatic_code_version('sphere')}; "
+            f"{meta['low_speed']['code_version']}, this is {now}; "
             "the sampled points have not moved",
             stacklevel=1,
         )

@@ -19,9 +19,9 @@ from restitution.cli import main
 from restitution.dynamics.collision import CollisionSettings, estimate_work
 from restitution.errors import InputError
 from restitution.limits.curves import epsilon_at
-from restitution.limits.defaults import SPHERE_ALPHA_PRODUCTS, walls_at
+from restitution.limits.defaults import walls_at
 from restitution.limits.store import PointSpec, Store
-from restitution.limits.sweep import SPHERE_DEFAULTS, SweepSettings, defaults_for
+from restitution.limits.sweep import DEFAULTS, SweepSettings, defaults_for
 
 
 @pytest.fixture
@@ -120,11 +120,13 @@ def test_the_work_estimate_of_a_sphere_brackets_the_run():
 
 
 def test_sphere_defaults_differ_in_the_body_the_walls_and_the_mode_counts():
-    assert defaults_for("sphere") is SPHERE_DEFAULTS
-    assert SPHERE_DEFAULTS.geometry == "sphere"
+    sphere = defaults_for("sphere")
+    assert sphere.geometry == "sphere"
     disk = defaults_for("disk")
-    assert SPHERE_DEFAULTS.velocities == disk.velocities
-    assert SPHERE_DEFAULTS.alphas == SPHERE_ALPHA_PRODUCTS == (80.0, 160.0, 320.0)
+    assert disk == DEFAULTS
+    assert sphere.velocities == disk.velocities
+    assert sphere.alphas == body_kind("sphere").alpha_products == (80.0, 160.0, 320.0)
+    assert sphere.n_modes == (1600, 3200, 6400, 12800)
 
 
 def test_epsilon_at_extrapolates_a_sphere(tmp_path):

@@ -147,14 +147,14 @@ def test_between_grid_nus_the_low_speeds_stay_quasistatic():
 def test_the_slow_sphere_figure_shows_the_shipped_numbers(tmp_path):
     """docs/figures/sphere_low_speed_nu0.3.png: the law's points and the FEM reference at that nu,
     as loss per unit speed, nothing recomputed."""
+    from restitution.bodies.kinds import body_kind
     from restitution.fem.reference import load_reference
-    from restitution.laws.production import SPHERE_LOW_SPEEDS
     from restitution.reproduction.figures import sphere_low_speed
 
     s = sphere_low_speed.compute(NU)
     served = law(NU, geometry="sphere")
     np.testing.assert_allclose(s.loss * s.v, 1.0 - served.epsilon_points**2, rtol=1e-12)
-    assert s.quasistatic.sum() == len(SPHERE_LOW_SPEEDS)
+    assert s.quasistatic.sum() == len(body_kind("sphere").production.low_speeds)
     fem = {p.v: p for p in load_reference(geometry="sphere") if p.nu == NU}
     assert sorted(s.fem_v) == sorted(fem)
     k = int(np.argmin(s.fem_v))

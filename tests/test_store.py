@@ -41,7 +41,7 @@ def test_round_trip(tmp_path):
         assert row.result["mode_energies_after"][0]["n"] == 2
         assert db.points(nu=0.33)[0].spec == SPEC
         assert db.points(nu=0.5) == []
-        assert row.code_version == store_module.code_version()
+        assert row.code_version == store_module.code_version("disk")
         assert row.code_version.startswith(store_module.__version__)
     # WAL mode is persistent in the file.
     conn = sqlite3.connect(tmp_path / "r.sqlite")

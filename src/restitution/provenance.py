@@ -17,10 +17,12 @@ from pathlib import Path
 from restitution._version import __version__
 
 __all__ = [
+    "DECLARATIONS",
     "FEM_MODULES",
     "PAIR",
     "DISK_QUASISTATIC_MODULES",
     "QUASISTATIC_MODULES",
+    "ROUTE_MODULES",
     "SOLVER_PACKAGES",
     "code_version",
     "fem_code_version",
@@ -90,19 +92,37 @@ PAIR = "pair"
 version of a pair's collisions besides the folder of its bodies' kind."""
 
 
+DECLARATIONS: tuple[str, ...] = ("restitution.bodies.kinds", "kind")
+"""The registry of body kinds (``restitution.bodies.kinds``) and each kind's declaration
+(``restitution.bodies.<name>.kind``): names, defaults, plans of sweeps and laws, texts. They
+compute no number of a collision (a collision's walls and mode counts are keys of their own),
+so they are not part of a code version: a new shipped Poisson number or a reworded model leaves
+stored collisions valid."""
+
+
+def _declaration(module: str) -> bool:
+    return module == DECLARATIONS[0] or (
+        module.startswith(BODIES + ".") and module.rsplit(".", 1)[-1] == DECLARATIONS[1]
+    )
+
+
 def _body_modules(packages: tuple[str, ...], geometry: str, pair: bool = False) -> tuple[str, ...]:
     """Every module of ``packages`` except the folders of bodies other than ``geometry`` (and
-    :data:`PAIR` when ``pair``)."""
+    :data:`PAIR` when ``pair``) and the kinds' declarations (:data:`DECLARATIONS`)."""
     own = {geometry, PAIR} if pair else {geometry}
     others = tuple(f"{BODIES}.{name}." for name in body_folders() if name not in own)
     modules: tuple[str, ...] = ()
     for package in packages:
-        modules += tuple(m for m in package_modules(package) if not (m + ".").startswith(others))
+        modules += tuple(
+            m
+            for m in package_modules(package)
+            if not (m + ".").startswith(others) and not _declaration(m)
+        )
     return tuple(sorted(modules))
 
 
 @functools.cache
-def code_version(geometry: str = "disk", *, pair: bool = False) -> str:
+def code_version(geometry: str, *, pair: bool = False) -> str:
     """``restitution.__version__`` plus a digest of the solver's source, e.g. ``0.1.0+3fa2...``.
 
     The sources are every module of :data:`SOLVER_PACKAGES` except the folders of other bodies
@@ -142,16 +162,22 @@ DISK_QUASISTATIC_MODULES: tuple[str, ...] = (
 )
 """The same for the disk's low-speed points (:mod:`restitution.quasistatic.slow_disk`)."""
 
-_QUASISTATIC_OF = {"sphere": QUASISTATIC_MODULES, "disk": DISK_QUASISTATIC_MODULES}
+ROUTE_MODULES: dict[str, tuple[str, ...]] = {
+    "rayleigh": QUASISTATIC_MODULES,
+    "slow-modal": DISK_QUASISTATIC_MODULES,
+}
+"""The modules of each low-speed route, by the route's name (a body kind's
+``low_speed_route``)."""
 
 
 @functools.cache
-def quasistatic_code_version(geometry: str = "sphere", *, pair: bool = False) -> str:
-    """``__version__`` plus a digest of the body's low-speed route (:data:`QUASISTATIC_MODULES`
-    for the sphere, :data:`DISK_QUASISTATIC_MODULES` for the disk and two disks) and the body's
-    modes (the body layer but other bodies' folders; with ``pair`` the folder :data:`PAIR`
-    too), e.g. ``0.1.0+quasistatic.3fa2...``: the version of a law's low-speed points."""
-    modules = _body_modules(("restitution.bodies",), geometry, pair) + _QUASISTATIC_OF[geometry]
+def quasistatic_code_version(geometry: str, route: str, *, pair: bool = False) -> str:
+    """``__version__`` plus a digest of the low-speed ``route`` (:data:`ROUTE_MODULES`: the
+    sphere's Rayleigh estimate, :data:`QUASISTATIC_MODULES`; the disk's and two disks' slow
+    modal model, :data:`DISK_QUASISTATIC_MODULES`) and the body's modes (the body layer but
+    other bodies' folders; with ``pair`` the folder :data:`PAIR` too), e.g.
+    ``0.1.0+quasistatic.3fa2...``: the version of a law's low-speed points."""
+    modules = _body_modules(("restitution.bodies",), geometry, pair) + ROUTE_MODULES[route]
     return source_digest(tuple(sorted(modules)), "quasistatic.")
 
 

@@ -22,13 +22,13 @@ import platformdirs
 
 from restitution._version import __version__
 from restitution.bodies.base import ModalBody
-from restitution.bodies.kinds import BodyKind, body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, BodyKind, body_kind
 from restitution.bodies.material import Material, require_reduced
 from restitution.errors import InputError, RestitutionError, describe, is_integer, is_real
 
 __all__ = ["MAX_MODES", "CacheError", "cache_dir", "check_mode_request", "get_modes"]
 
-MAX_MODES = body_kind("disk").max_modes
+MAX_MODES = body_kind(DEFAULT_GEOMETRY).max_modes
 """Most modes :func:`get_modes` accepts for a disk (each kind's limit:
 :attr:`restitution.bodies.kinds.BodyKind.max_modes`). A collision then costs about N
 operations per step and ~1e4-1e5 steps. The paper uses at most 1800 modes."""
@@ -66,7 +66,7 @@ def cache_dir() -> Path:
 
 
 def check_mode_request(
-    nu: float, count: int | None, omega_max: float | None = None, geometry: str = "disk"
+    nu: float, count: int | None, omega_max: float | None = None, geometry: str = DEFAULT_GEOMETRY
 ) -> int | None:
     """Refuse at once a mode request of the wrong type, or beyond the body's ``max_modes``
     (directly or through ``omega_max``).
@@ -162,7 +162,7 @@ def get_modes(
     count: int | None = None,
     omega_max: float | None = None,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     use_cache: bool = True,
 ) -> ModalBody:
     """Eigenmodes of the free body ``geometry`` that couple to a head-on impact, from the disk

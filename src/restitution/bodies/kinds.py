@@ -1,39 +1,141 @@
-"""The kinds of body the package knows, by name: what the layers above need before a body exists.
+"""The kinds of body the package knows, by name: everything the layers above need of a kind.
 
 Units: ``E = rho = R = 1`` of the body's own constants (the disk's two-dimensional plane-stress
 constants, the sphere's three-dimensional ones); speeds in ``c = sqrt(E / rho)``; compressions in
 ``R``; times in ``R / c``; frequencies in ``c / R``.
 
 A :class:`~restitution.bodies.base.ModalBody` answers for itself once its modes are computed.
-Some questions come earlier -- which Poisson numbers are allowed, how many modes lie below a
-frequency, how far a wall compresses the body at a speed (the sweeps size their walls from it) --
-and a name such as ``"sphere"`` on the command line has to become a body. :func:`body_kind`
-answers them; a new body registers one :class:`BodyKind` in :data:`KINDS`.
+Everything else the layers above ask of a kind -- which Poisson numbers it takes and which one
+that is, how many modes lie below a frequency, how far a wall compresses it, its default walls
+and mode windows, how its law files are named, the route of its slow impacts, the settings its
+shipped laws were computed with, the units of its output -- is one :class:`BodyKind`. The
+layers above read these attributes; they never compare a kind's name.
+
+**Adding a kind** is one new package ``restitution/bodies/<name>/`` whose module ``kind.py``
+builds its :class:`BodyKind` and passes it to :func:`register`. The registry finds the packages
+itself (:func:`kinds`, scipy's ``solve_ivp`` ``METHODS`` in spirit): no module outside the new
+package is edited. A kind may also be registered from anywhere (a test's toy kind) and removed
+again with :func:`unregister`.
 """
 
 from __future__ import annotations
 
+import importlib
+import importlib.util
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
+import pkgutil
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 
 from restitution.bodies.base import ModalBody
-from restitution.bodies.disk import contact as disk_contact
-from restitution.bodies.disk.modes import _ALGORITHM_VERSION as _DISK_ALGORITHM
-from restitution.bodies.disk.modes import ModeSet, compute_modes
-from restitution.bodies.disk.modes import weyl_count as disk_weyl_count
-from restitution.bodies.sphere import surface as sphere_surface
-from restitution.bodies.sphere.modes import _ALGORITHM_VERSION as _SPHERE_ALGORITHM
-from restitution.bodies.sphere.modes import SphereModes, compute_sphere_modes
-from restitution.bodies.sphere.modes import weyl_count as sphere_weyl_count
 from restitution.errors import InputError, real
 
-__all__ = ["GEOMETRIES", "KINDS", "BodyKind", "body_kind"]
+__all__ = [
+    "DEFAULT_GEOMETRY",
+    "GEOMETRIES",
+    "KINDS",
+    "BodyKind",
+    "PairPlan",
+    "ProductionPlan",
+    "SweepPlan",
+    "body_kind",
+    "geometries",
+    "kind_of",
+    "register",
+    "unregister",
+]
+
+DEFAULT_GEOMETRY = "disk"
+"""The body of the paper, the default of every function and command that takes a kind."""
+
+
+@dataclass(frozen=True)
+class SweepPlan:
+    """One group of a sweep as plain numbers (the limits layer builds its ``SweepSettings``).
+
+    Attributes
+    ----------
+    velocities : tuple of float or None
+        Speeds, ``c`` (``None``: the package's default speeds).
+    n_modes : tuple of int
+        The mode window of the ``N -> infinity`` extrapolation.
+    batch_size : int or None
+        Collisions per task (``None``: the default).
+    """
+
+    velocities: tuple[float, ...] | None
+    n_modes: tuple[int, ...]
+    batch_size: int | None = None
+
+    def fields(self) -> dict:
+        """The sweep fields this plan sets (the others keep the kind's defaults)."""
+        out: dict = {"n_modes": tuple(self.n_modes)}
+        if self.velocities is not None:
+            out["velocities"] = tuple(self.velocities)
+        if self.batch_size is not None:
+            out["batch_size"] = self.batch_size
+        return out
+
+
+@dataclass(frozen=True)
+class ProductionPlan:
+    """How the shipped laws of a kind on the rigid wall are computed, and what that costs.
+
+    Attributes
+    ----------
+    nus : tuple of float
+        Poisson numbers of the shipped laws (the kind's :attr:`BodyKind.nu_name`).
+    groups : tuple of SweepPlan
+        The sweeps behind every law (walls: the kind's :attr:`BodyKind.alpha_products`).
+    low_speeds : tuple of float
+        Speeds (``c``) of the low-speed points joined below the collisions (may be empty).
+    seconds_per_collision : float
+        Measured wall time of one production collision on one core, s.
+    seconds_per_low_point : float
+        Measured wall time of one low-speed point, s.
+    """
+
+    nus: tuple[float, ...]
+    groups: tuple[SweepPlan, ...]
+    low_speeds: tuple[float, ...] = ()
+    seconds_per_collision: float = 1.0
+    seconds_per_low_point: float = 1.0
+
+
+@dataclass(frozen=True)
+class PairPlan:
+    """How the laws of two bodies of a kind are computed (their walls, windows and costs).
+
+    Attributes
+    ----------
+    radius_ratios : tuple of float
+        ``R2 / R1`` of the shipped laws of one material.
+    nus : tuple of float
+        Poisson numbers of those laws.
+    groups : tuple of SweepPlan
+        The body-on-wall groups a pair's groups are carried over from (speeds doubled, walls
+        on the pair's compression scale, windows scaled by the pair's mode density).
+    low_speeds : tuple of float
+        Relative speeds (``c1``) of the pairs' low-speed points.
+    seconds_at_5, cost_power : float
+        A pair's seconds per collision is ``seconds_at_5 (scale / 5)^cost_power`` with
+        ``scale`` its windows over the wall's (never below the body's own on the wall).
+    seconds_per_low_point : float
+        Wall time of one of the pairs' low-speed points, s.
+    """
+
+    radius_ratios: tuple[float, ...]
+    nus: tuple[float, ...]
+    groups: tuple[SweepPlan, ...]
+    low_speeds: tuple[float, ...] = ()
+    seconds_at_5: float = 1.0
+    cost_power: float = 2.0
+    seconds_per_low_point: float = 1.0
 
 
 @dataclass(frozen=True)
 class BodyKind:
-    """What is known about a kind of body before its modes are computed.
+    """Everything known about a kind of body before its modes are computed (module docs).
 
     Attributes
     ----------
@@ -41,6 +143,10 @@ class BodyKind:
         The name (``"disk"``, ``"sphere"``), equal to the bodies' ``geometry``.
     description : str
         One line for users: the body and which constants its reduced units are made of.
+    dimension : int
+        Space dimension: masses scale like ``R^dimension``, surfaces like ``R^(dimension-1)``.
+        A two-dimensional kind takes two-dimensional constants, made from a material's 3D
+        ones by a plane condition (eq. 2): :attr:`planar`.
     nu_low, nu_high : float
         The open interval of allowed Poisson numbers (of the body's own elasticity).
     mode_class : type
@@ -59,10 +165,48 @@ class BodyKind:
         Most modes the mode cache computes (their cost is measured in the module of the modes).
     units : dict of str to str
         The units of every number reported for this body (every JSON output carries them).
+    order_name : str
+        What the angular order of a mode is called in its records (``"n"``, ``"l"``).
+    modes_title : str
+        One line over a table of its modes.
+    shapes : mapping of str to str or None
+        The real grains this kind stands for in SI units, each with the plane condition
+        (``"strain"``, ``"stress"``) that makes the kind's constants from the grain's 3D ones,
+        or ``None`` where the 3D constants are the kind's own.
+    file_tag : str
+        The kind's part of file names (law files, FEM references); ``""`` for the disk, whose
+        files were named before there was another kind.
+    alpha_products : tuple of float
+        Default walls ``alpha * delta_max(v)`` of its sweeps and its FEM route.
+    sweep_modes : tuple of int
+        Default mode window of its sweeps.
+    scales_need_nu : bool
+        Whether :attr:`max_compression` depends on ``nu`` (then the walls of a sweep need it).
+    law_model : str
+        The model behind its laws, one paragraph (a law's ``model``).
+    law_units : str
+        What ``v`` and ``epsilon`` of its laws on the wall mean.
+    low_speed_route : str or None
+        Name of the route of its slow impacts on the wall (the quasistatic layer's routes,
+        ``restitution.laws.production``); ``None``: none.
+    pair_low_speed_route : str or None
+        The same for two bodies of this kind.
+    basis_at : callable or None
+        ``basis_at(orders, angle)``: the surface basis of the orders at any angles, shape
+        (M, 2K) (what a pair of two radii needs); ``None``: not available.
+    pair_compression : callable or None
+        ``pair_compression(w, radius_ratio, modulus_ratio, density_ratio)``: the quasistatic
+        largest approach of two such bodies' centres at relative speed ``w`` (``c1``), ``R1``;
+        ``None``: pairs of this kind are not sized yet.
+    production : ProductionPlan or None
+        How its shipped laws on the wall are computed.
+    pair_production : PairPlan or None
+        How the laws of two bodies of this kind are computed.
     """
 
     geometry: str
     description: str
+    dimension: int
     nu_low: float
     nu_high: float
     mode_class: type
@@ -73,6 +217,43 @@ class BodyKind:
     contact_time: Callable[[float, float], float]
     max_modes: int
     units: dict[str, str]
+    order_name: str
+    modes_title: str
+    shapes: Mapping[str, str | None]
+    file_tag: str
+    alpha_products: tuple[float, ...]
+    sweep_modes: tuple[int, ...]
+    scales_need_nu: bool
+    law_model: str
+    law_units: str
+    low_speed_route: str | None = None
+    pair_low_speed_route: str | None = None
+    basis_at: Callable | None = None
+    pair_compression: Callable | None = None
+    production: ProductionPlan | None = None
+    pair_production: PairPlan | None = field(default=None)
+
+    @property
+    def name(self) -> str:
+        """The kind's name (:attr:`geometry`)."""
+        return self.geometry
+
+    @property
+    def planar(self) -> bool:
+        """Whether its constants are two-dimensional ones, made from 3D constants by a plane
+        condition (plane stress or plane strain, eq. 2)."""
+        return self.dimension == 2
+
+    @property
+    def nu_name(self) -> str:
+        """Which Poisson number its laws and modes take: ``"nu_2d"`` (a planar kind) or
+        ``"nu"`` (the 3D one as it is)."""
+        return "nu_2d" if self.planar else "nu"
+
+    @property
+    def option(self) -> str:
+        """The command-line option that selects this kind (empty for the default kind)."""
+        return "" if self.geometry == DEFAULT_GEOMETRY else f"--geometry {self.geometry}"
 
     def check_nu(self, nu) -> float:
         """``nu`` as a float if it is a number in ``(nu_low, nu_high)``, else
@@ -90,8 +271,15 @@ class BodyKind:
         """The frequency below which about ``count`` modes lie (inverse of ``weyl_count``)."""
         return math.sqrt(count / self.weyl_count(1.0, nu))
 
+    def file_name(self, head: str) -> str:
+        """``head`` with the kind's :attr:`file_tag`: ``law`` -> ``law`` (disk) or
+        ``law_sphere``."""
+        return f"{head}_{self.file_tag}" if self.file_tag else head
 
-def _units(system: str, body: str, force: str, mass: str) -> dict[str, str]:
+
+def units_table(system: str, body: str, force: str, mass: str) -> dict[str, str]:
+    """The :attr:`BodyKind.units` of a kind: ``system`` (what ``E = rho = R = 1`` are),
+    ``body`` (its name in the speed's definition), the unit of force and the mass."""
     return {
         "system": system,
         "length": "R",
@@ -105,64 +293,76 @@ def _units(system: str, body: str, force: str, mass: str) -> dict[str, str]:
     }
 
 
-KINDS: dict[str, BodyKind] = {
-    "disk": BodyKind(
-        geometry="disk",
-        description=(
-            "elastic disk in plane stress; E, nu, rho are its two-dimensional constants; "
-            "mass pi rho R^2 per unit thickness"
-        ),
-        nu_low=-1.0,
-        nu_high=1.0,
-        mode_class=ModeSet,
-        algorithm=_DISK_ALGORITHM,
-        compute=compute_modes,
-        weyl_count=disk_weyl_count,
-        max_compression=lambda v, nu: disk_contact.max_compression_estimate(v),
-        contact_time=lambda v, nu: disk_contact.contact_time_estimate(v),
-        # The scale-free Bessel scan (docs/numerics.md): 1e4 modes in about 2 s, 1e5 in 23-44 s
-        # with 300-380 MiB peak on the project's 2-core machine; 2e5 take minutes and ~1 GiB.
-        max_modes=200_000,
-        units=_units(
-            "E = rho = R = 1: two-dimensional Young modulus, mass per area and disk radius",
-            "disk",
-            "E R",
-            "m = pi",
-        ),
-    ),
-    "sphere": BodyKind(
-        geometry="sphere",
-        description=(
-            "elastic sphere; E, nu, rho are its three-dimensional constants; mass 4 pi rho R^3 / 3"
-        ),
-        nu_low=-1.0,
-        nu_high=0.5,
-        mode_class=SphereModes,
-        algorithm=_SPHERE_ALGORITHM,
-        compute=compute_sphere_modes,
-        weyl_count=sphere_weyl_count,
-        max_compression=sphere_surface.max_compression_estimate,
-        contact_time=sphere_surface.contact_time_estimate,
-        # The dense scan over (l, omega) grows like N^(3/2): 6400 modes in 18 s at nu = 0.3
-        # (0.8 million grid points); 20000 modes scan about 2.6 million.
-        max_modes=20_000,
-        units=_units(
-            "E = rho = R = 1: the sphere's Young modulus, density and radius",
-            "sphere",
-            "E R^2",
-            "m = 4 pi / 3",
-        ),
-    ),
-}
-"""Every kind of body, by geometry name."""
+KINDS: dict[str, BodyKind] = {}
+"""Every registered kind of body, by name (filled by :func:`register`; read it through
+:func:`kinds`, which first finds the kinds of the package)."""
 
-GEOMETRIES: tuple[str, ...] = tuple(KINDS)
-"""The geometry names, the disk first (the default everywhere)."""
+_found = False
+
+
+def _discover() -> None:
+    """Import ``restitution.bodies.<name>.kind`` of every subpackage that has one (once)."""
+    global _found
+    if _found:
+        return
+    _found = True
+    import restitution.bodies as package
+
+    for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda i: i.name):
+        if info.ispkg:
+            name = f"{package.__name__}.{info.name}.kind"
+            if importlib.util.find_spec(name) is not None:
+                importlib.import_module(name)
+
+
+def register(kind: BodyKind) -> BodyKind:
+    """Add ``kind`` to the registry (a kind's own ``kind.py`` calls it); returns it.
+
+    Raises
+    ------
+    InputError
+        If another kind of the same name is registered.
+    """
+    old = KINDS.get(kind.geometry)
+    if old is not None and old is not kind:
+        raise InputError(
+            f"a body kind named {kind.geometry!r} is registered already; pick another name"
+        )
+    KINDS[kind.geometry] = kind
+    return kind
+
+
+def unregister(name: str) -> None:
+    """Remove the kind ``name`` (a test's toy kind) from the registry."""
+    KINDS.pop(name, None)
+
+
+def kinds() -> dict[str, BodyKind]:
+    """Every kind, by name, the package's own found first (:data:`DEFAULT_GEOMETRY` first)."""
+    _discover()
+    return KINDS
+
+
+def geometries() -> tuple[str, ...]:
+    """The names of every kind, the default first."""
+    names = sorted(kinds())
+    return tuple(sorted(names, key=lambda n: n != DEFAULT_GEOMETRY))
 
 
 def body_kind(geometry: str) -> BodyKind:
     """The :class:`BodyKind` named ``geometry``; :class:`InputError` naming the choices if none."""
-    kind = KINDS.get(geometry) if isinstance(geometry, str) else None
-    if kind is None:
-        raise InputError(f"unknown geometry {geometry!r}; choose one of {', '.join(GEOMETRIES)}")
-    return kind
+    found = kinds().get(geometry) if isinstance(geometry, str) else None
+    if found is None:
+        raise InputError(f"unknown geometry {geometry!r}; choose one of {', '.join(geometries())}")
+    return found
+
+
+def kind_of(body: ModalBody) -> BodyKind:
+    """The kind of a body of one kind (for a pair: of both its bodies, ``body.kind``)."""
+    return body_kind(getattr(body, "kind", body.geometry))
+
+
+_discover()
+GEOMETRIES: tuple[str, ...] = geometries()
+"""The names of the package's own kinds, the disk first (a kind registered later is in
+:func:`geometries`)."""

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import click
 
+from restitution.bodies.kinds import kinds
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
@@ -34,7 +35,6 @@ from restitution.cli._common import (
 from restitution.errors import InputError
 from restitution.limits.sweep import (
     DEFAULTS,
-    SPHERE_DEFAULTS,
     SweepSettings,
     defaults_for,
     pair_settings,
@@ -146,8 +146,9 @@ def _executor_options(f):
         "modes",
         type=click.IntRange(min=1),
         multiple=True,
-        help=f"Mode counts N for the N -> infinity extrapolation (default {DEFAULTS.n_modes} "
-        f"for a disk, {SPHERE_DEFAULTS.n_modes} for a sphere).",
+        help="Mode counts N for the N -> infinity extrapolation (default "
+        + ", ".join(f"{k.sweep_modes} for a {k.geometry}" for k in kinds().values())
+        + ").",
     )(f)
     f = click.option(
         "--alpha-scale",
@@ -582,7 +583,7 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
         "with --production (its speeds, walls and mode windows are the shipped laws'; it "
         "draws no figures)",
     )  # fmt: skip
-    groups, kind = production_groups(geometry, partner)
+    groups = production_groups(geometry, partner)
     plans = [plan(nu, geometry, partner, out, reuse=False) for nu in nus]
     for p in plans:
         check_plan(p, force)

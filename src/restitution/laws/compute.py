@@ -20,21 +20,14 @@ from pathlib import Path
 
 from restitution import budget
 from restitution._paths import cache_root
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError
+from restitution.laws import production
 from restitution.laws.law import law_filename
-from restitution.laws.production import (
-    SETTINGS_GROUPS,
-    SPHERE_GROUPS,
-    low_speeds_of,
-    pair_groups,
-)
+from restitution.laws.production import low_speeds_of, pair_groups
 from restitution.limits.sweep import window_scale
 
 __all__ = [
-    "PAIR_COST_POWER",
-    "PAIR_SECONDS_AT_5",
-    "SECONDS_PER_COLLISION",
-    "SECONDS_PER_LOW_POINT",
     "ComputePlan",
     "check_modes",
     "check_plan",
@@ -43,28 +36,8 @@ __all__ = [
     "plan",
     "production_groups",
     "seconds_per_collision",
+    "seconds_per_low_point",
 ]
-
-SECONDS_PER_COLLISION = {"disk": 1.1, "sphere": 1.0, "pair": 4.3}
-"""Wall time of one collision of each body's production, seconds (one core, the largest of
-the shipped runs): the disk's 1320 collisions took 656-1442 s, the sphere's 1872 took 32 min,
-the pairs' 2052 took 146 min (README, ``make law``, ``make law-sphere``, ``make law-pair``).
-A pair's own estimate scales with its mode windows (:func:`seconds_per_collision`)."""
-
-PAIR_COST_POWER = 2.25
-"""A pair's time per collision grows like its mode windows (:func:`restitution.limits.sweep.
-window_scale` times the wall's) to this power: of the pairs' 146 min, the laws of ``R2/R1 = 2``
-(windows 5 times the wall's) took two thirds, those of ``1.2`` and ``1.4`` (2.44 and 2.96 times)
-the rest: ``(2/3) / (1/3) = 5^p / ((2.44^p + 2.96^p) / 2) / 2`` gives ``p = 2.25``."""
-
-PAIR_SECONDS_AT_5 = 8.5
-"""Seconds per collision of a pair whose windows are 5 times the wall's: two thirds of 146 min
-over the 684 collisions of the three laws of ``R2/R1 = 2``."""
-SECONDS_PER_LOW_POINT = {"sphere": 0.25, "disk": 2.05, "pair": 2.35}
-"""Wall time of one low-speed point of each body's law, seconds: the sphere's 404 points for six
-laws took about 10 minutes (docs/spheres.md); the disk's 100 points for each of nine laws took
-1838 s, two disks' 91 points for each of nine laws 1925 s (both runs side by side on the two
-cores, 26 Nov 2026)."""
 
 
 def law_dir() -> Path:
@@ -72,33 +45,36 @@ def law_dir() -> Path:
     return cache_root() / "laws"
 
 
-def production_groups(geometry: str, partner=None):
-    """``(groups, kind)``: the production sweeps of the body (``kind`` ``"disk"``,
-    ``"sphere"`` or ``"pair"``), as the shipped laws were computed; two disks of any two
-    materials take the groups of two disks of one material
-    (:func:`restitution.laws.production.pair_groups`, windows scaled by the partner's)."""
+def production_groups(geometry: str, partner=None) -> tuple:
+    """The production sweeps of the body ``geometry`` as the shipped laws were computed
+    (:func:`restitution.laws.production.production_groups`); with a ``partner`` those of two
+    such bodies of any two materials (:func:`restitution.laws.production.pair_groups`, windows
+    scaled by the partner's)."""
     if partner is not None:
-        if geometry != "disk":
-            raise InputError(
-                f"laws of two {geometry}s are not computed on demand; a pair of two disks is "
-                "(geometry 'disk')"
-            )
-        return pair_groups(partner), "pair"
-    if geometry == "disk":
-        return SETTINGS_GROUPS, "disk"
-    if geometry == "sphere":
-        return SPHERE_GROUPS, "sphere"
-    raise InputError(f"no production settings for a {geometry}; use a disk or a sphere")
+        return pair_groups(partner, geometry=geometry)
+    return production.production_groups(geometry)
 
 
-def seconds_per_collision(kind: str, partner=None) -> float:
-    """Estimated seconds of one production collision of the body ``kind`` on one core; a pair's
-    from its mode windows, :data:`PAIR_SECONDS_AT_5` ``(scale / 5)^`` :data:`PAIR_COST_POWER`
-    (never below :data:`SECONDS_PER_COLLISION`'s disk value)."""
-    if kind != "pair" or partner is None:
-        return SECONDS_PER_COLLISION[kind]
+def seconds_per_collision(geometry: str, partner=None) -> float:
+    """Estimated seconds of one production collision of the body ``geometry`` on one core, as
+    measured in the shipped production (its kind's
+    :attr:`~restitution.bodies.kinds.ProductionPlan.seconds_per_collision`); a pair's from its
+    mode windows, :attr:`~restitution.bodies.kinds.PairPlan.seconds_at_5` ``(scale / 5)^``
+    :attr:`~restitution.bodies.kinds.PairPlan.cost_power` (never below the body's own)."""
+    kind = body_kind(geometry)
+    own = kind.production.seconds_per_collision
+    if partner is None:
+        return own
+    pairs = kind.pair_production
     scale = window_scale(partner)
-    return max(SECONDS_PER_COLLISION["disk"], PAIR_SECONDS_AT_5 * (scale / 5.0) ** PAIR_COST_POWER)
+    return max(own, pairs.seconds_at_5 * (scale / 5.0) ** pairs.cost_power)
+
+
+def seconds_per_low_point(geometry: str, partner=None) -> float:
+    """Seconds of one low-speed point of the body's (with a ``partner``: the pair's) law."""
+    kind = body_kind(geometry)
+    plan = kind.production if partner is None else kind.pair_production
+    return plan.seconds_per_low_point
 
 
 def check_modes(nu: float, groups, partner=None) -> None:
@@ -161,16 +137,18 @@ def _usable(path: Path) -> bool:
 
 
 def plan(
-    nu: float, geometry: str = "disk", partner=None, out_dir=None, *, reuse: bool = True
+    nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None, out_dir=None, *, reuse: bool = True
 ) -> ComputePlan:
     """The plan of :func:`computed_law` with the same arguments (nothing is computed);
     ``reuse=False``: a law file already in ``out_dir`` is computed again (through the store)."""
-    groups, kind = production_groups(geometry, partner)
+    groups = production_groups(geometry, partner)
     check_modes(nu, groups, partner)
     path = Path(out_dir or law_dir()) / law_filename(nu, geometry, partner)
     count = sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups)
-    seconds = count * seconds_per_collision(kind, partner)
-    seconds += len(low_speeds_of(geometry, partner)) * SECONDS_PER_LOW_POINT.get(kind, 0.0)
+    seconds = count * seconds_per_collision(geometry, partner)
+    low = low_speeds_of(geometry, partner)
+    if low:
+        seconds += len(low) * seconds_per_low_point(geometry, partner)
     return ComputePlan(path, reuse and _usable(path), count, seconds)
 
 
@@ -196,7 +174,7 @@ def check_plan(p: ComputePlan, force: bool = False) -> None:
 
 def computed_law(
     nu: float,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     partner=None,
     *,
     out_dir=None,
@@ -212,7 +190,8 @@ def computed_law(
     ----------
     nu : float
         Poisson number of the body.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        The body's kind (one with production settings: the disk, the sphere).
     partner : Partner, optional
         A second disk (its radius ratio and, in the first disk's units, its material).
     out_dir : path, optional
@@ -233,7 +212,7 @@ def computed_law(
     if p.exists:
         return p.path
     check_plan(p, force)
-    groups, kind = production_groups(geometry, partner)
+    groups = production_groups(geometry, partner)
     (written,) = build(p.path.parent, [nu], groups, store=store, workers=workers,
                        progress=progress, low_speeds=low_speeds_of(geometry, partner))  # fmt: skip
     return written

@@ -3,7 +3,8 @@
 ``make law`` (``python -m restitution.laws.production``) recomputes every disk law file
 ``restitution/laws/data/law_nu<nu>.json`` with the current code; ``python -m
 restitution.laws.production --geometry sphere`` computes the sphere's, ``law_sphere_nu<nu>.json``
-(:data:`SPHERE_NUS`, :data:`SPHERE_GROUPS`); ``make law-pair`` (``--geometry pair``) the laws of two
+(each kind's :attr:`~restitution.bodies.kinds.BodyKind.production`: :func:`production`);
+``make law-pair`` (``--geometry pair``) the laws of two
 disks of one material, ``law_pair_r<R2/R1>_nu<nu>.json`` (:data:`PAIR_RADIUS_RATIOS`,
 :data:`PAIR_NUS`, :func:`pair_groups`). All go through the same sweep, store and
 extrapolation as ``restitution curve`` (:mod:`restitution.limits.curves`), with a progress bar. The
@@ -27,13 +28,13 @@ from __future__ import annotations
 
 import argparse
 import time
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
-from restitution.limits.sweep import DEFAULTS, SPHERE_DEFAULTS, SweepSettings, pair_settings
+from restitution.limits.sweep import SweepSettings, pair_settings, planned
 
 __all__ = [
     "PAIR_NUS",
@@ -41,10 +42,7 @@ __all__ = [
     "PAIR_WALL_GROUPS",
     "SETTINGS_GROUPS",
     "SHIPPED_NUS",
-    "SPHERE_GROUPS",
-    "SPHERE_LOW_SPEEDS",
-    "SPHERE_NUS",
-    "SPHERE_SPEEDS",
+    "PAPER",
     "build",
     "low_speed_points",
     "rejoin_low_speeds",
@@ -54,93 +52,66 @@ __all__ = [
     "PAIR_LOW_SPEEDS",
     "pair_groups",
     "PAIR_TWO_MATERIALS",
+    "low_speed_route",
     "production",
+    "production_groups",
 ]
 
-SHIPPED_NUS = (0.2, 0.25, 0.33, 0.4285714285714286, 0.5, 0.6, 0.7, 0.8, 0.9)
-"""Two-dimensional Poisson numbers of the shipped laws: the paper's 0.33 and 0.9 (Fig. 1) and a
-grid for real materials between them and beyond (thin disks: 2D nu = 3D nu, glass 0.2-0.25,
-steel 0.3; long cylinders: nu / (1 - nu), glass 0.3, steel 3/7 = 0.428571, polymers
-0.5-0.8), served in between by interpolation in nu with an error estimated from leave-one-out
-errors (:mod:`restitution.laws.law_nu`). The first grid was 0.2, 0.33, 0.5, 0.7, 0.9; 0.25,
-0.428571, 0.6 and 0.8 joined after they were computed as direct checks of the interpolation
-between those five (docs/materials.md)."""
+_DISK = body_kind(DEFAULT_GEOMETRY)
 
-# The paper's speeds from 0.02 c with the mode window N = 1880-15040: with the paper's
-# N = 300-940 most points fail the curvature test in 1/sqrt(N) (4 of 34 passed); with this
-# window all 15 pass at both nu and v = 0.1, 0.3 agree with the finite-element route within 0.3
-# of their errors.
-PAPER = replace(DEFAULTS, velocities=DEFAULTS.velocities[2:], n_modes=(1880, 3760, 7520, 15040))
 
-# Slower speeds: the mode windows grow as the contact narrows (about 1 / delta_max(v)). Each
-# window is the one that made the most points pass their checks at both nu; the failures of
-# the windows tried before are in docs/results.md (section "Choosing the mode windows").
-SLOW = (
-    SweepSettings(velocities=(5e-3,), n_modes=(3760, 7520, 15040, 30080), batch_size=3),
-    SweepSettings(velocities=(1e-2,), n_modes=(7520, 15040, 30080, 60160), batch_size=3),
-    SweepSettings(velocities=(1e-3,), n_modes=(3200, 6400, 12800, 25600), batch_size=3),
-    SweepSettings(velocities=(2e-4, 2e-3), n_modes=(6400, 12800, 25600, 51200), batch_size=3),
-    SweepSettings(velocities=(1e-4, 5e-4), n_modes=(12800, 25600, 51200, 102400), batch_size=3),
-)
+def production_groups(geometry: str) -> tuple[SweepSettings, ...]:
+    """The sweeps behind the shipped laws of the body ``geometry`` on the wall (its kind's
+    :attr:`~restitution.bodies.kinds.BodyKind.production`, whose declaration says how each
+    window was chosen); every point of a law records the group it came from."""
+    plan = _plan(geometry)
+    return tuple(planned(geometry, g) for g in plan.groups)
 
-SETTINGS_GROUPS = (PAPER, *SLOW)
-"""The sweeps behind every shipped disk law; each point of a law records the group it came
-from."""
 
-# -- the sphere ------------------------------------------------------------------------------
+def _plan(geometry: str):
+    plan = body_kind(geometry).production
+    if plan is None:
+        raise InputError(
+            f"no production settings for the geometry {geometry!r}; choose one of "
+            f"{', '.join(_produced())}"
+        )
+    return plan
 
-SPHERE_NUS = (0.2, 0.25, 0.3, 0.35, 0.4, 0.45)
-"""Three-dimensional Poisson numbers of the sphere's laws: glass 0.2-0.25, steel and aluminium
-0.3-0.35, brass and lead 0.35-0.45 (interpolated in between, as for disks)."""
 
-# The sphere's epsilon(v) oscillates (the phase omega tau / 2 of its quadrupole mode drifts with
-# tau ~ v^(-1/5); docs/spheres.md): at nu = 0.3 the loss changes tenfold between v = 0.02 and
-# 0.04, so the speeds are spaced by a factor 1.2 (26 from 0.003 to 0.3). The walls are
-# SPHERE_DEFAULTS' (alpha delta_max = 80, 160, 320); the mode window is one doubling above the
-# default because at the hardest wall N = 1600 is not yet asymptotic (at v = 0.3 the slope in
-# 1/sqrt(N) was 0.104 between 1600 and 3200, 0.135-0.145 above). Below v ~ 0.005 even this
-# window is not asymptotic at every wall (docs/spheres.md); those points are flagged.
-SPHERE_SPEEDS = tuple(float(f"{v:.3g}") for v in np.geomspace(0.003, 0.3, 26))
-"""Speeds of the sphere's laws, units of ``c`` (of the sphere's 3D constants)."""
+def _produced() -> list[str]:
+    """The kinds that have production settings."""
+    return [name for name, kind in kinds().items() if kind.production is not None]
 
-SPHERE_LOW_SPEEDS = tuple(float(f"{v:.4g}") for v in np.geomspace(1e-6, SPHERE_SPEEDS[0], 405)[:-1])
-"""Speeds of the sphere's low-speed points (:func:`low_speed_points`), ``c``: from ``1e-6`` (5 mm/s
-for steel) up to the modal laws' slowest speed, a factor 1.02 apart. The loss oscillates with
-``v``; at this spacing PCHIP between the points strays from the estimate by at most ``0.006 v``
-(median ``4e-5 v``; measured at ``nu = 0.3`` against a grid 10 times finer), and each point's
-error includes what its two intervals stray (:func:`low_speed_points`)."""
 
-SPHERE_GROUPS = (
-    replace(
-        SPHERE_DEFAULTS,
-        velocities=SPHERE_SPEEDS,
-        n_modes=(2400, 4800, 9600, 19200),
-        batch_size=3,
-    ),
-)
-"""The sweeps behind the sphere's laws."""
+SHIPPED_NUS = _DISK.production.nus
+"""Two-dimensional Poisson numbers of the shipped disk laws: the paper's 0.33 and 0.9 (Fig. 1)
+and a grid for real materials between them and beyond, served in between by interpolation in
+nu with an error estimated from leave-one-out errors (:mod:`restitution.laws.law_nu`). The first
+grid was 0.2, 0.33, 0.5, 0.7, 0.9; 0.25, 0.428571, 0.6 and 0.8 joined after they were computed
+as direct checks of the interpolation between those five (docs/materials.md)."""
 
-# -- two disks ------------------------------------------------------------------------------
+SETTINGS_GROUPS = production_groups(DEFAULT_GEOMETRY)
+"""The sweeps behind every shipped disk law: the paper's speeds ``0.02 <= v <= 0.3`` and the
+slower ones with their growing mode windows."""
 
-PAIR_RADIUS_RATIOS = (1.2, 1.4, 2.0)
+PAPER = SETTINGS_GROUPS[0]
+"""The disk's group of the paper's speeds (``0.02 <= v <= 0.3``, ``N = 1880 ... 15040``)."""
+
+# -- two bodies -------------------------------------------------------------------------------
+
+PAIR_RADIUS_RATIOS = _DISK.pair_production.radius_ratios
 """Radius ratios ``R2 / R1 >= 1`` of the shipped laws of two disks of one material (ratio 1 is the
 disk on the wall at half the speed, the disk's own law)."""
 
-PAIR_NUS = (0.33, 0.3 / 0.7, 0.9)
+PAIR_NUS = _DISK.pair_production.nus
 """Two-dimensional Poisson numbers of the pairs' laws: the paper's 0.33 and 0.9 (Fig. 1) and
 steel cylinders (plane strain, ``nu = 0.3``: ``nu_2d = 0.3 / 0.7``). Glass cylinders
 (``nu = 0.2481``) have ``nu_2d = 0.33``."""
 
-# A direct point at w = 0.02 (R2/R1 = 1.4, nu = 0.33, the windows of v = 5e-3) gave epsilon =
-# 0.97642 +- 0.00021 where PCHIP between w = 0.01 and 0.04 gave 0.97852 +- 0.00024 (6.6 combined
-# errors): the pairs' slow speeds are spaced like the disk's, v = 2.5e-3 and 1e-2 joining 5e-3
-# with its windows.
-PAIR_WALL_GROUPS = (PAPER, replace(SLOW[0], velocities=(2.5e-3, 5e-3, 1e-2)), SLOW[2])
+PAIR_WALL_GROUPS = tuple(planned(DEFAULT_GEOMETRY, g) for g in _DISK.pair_production.groups)
 """The disk's groups that the pairs' groups are made of (:func:`pair_groups`): its speeds
-``0.02 <= v <= 0.3``, ``1e-3``, and ``2.5e-3, 5e-3, 1e-2`` with the windows of ``5e-3``. Not
-the disk's own windows of ``1e-2`` and ``2e-3``: at ``R2/R1 = 2`` they would need 240640 and
-204800 modes of one disk, above the mode cache's 200000; nor speeds below ``1e-3`` (windows up
-to ``102400 (1 + r^2)`` modes)."""
+``0.02 <= v <= 0.3``, ``1e-3``, and ``2.5e-3, 5e-3, 1e-2`` with the windows of ``5e-3``
+(the disk's kind says why)."""
 
 
 def _steel_glass():
@@ -160,45 +131,67 @@ PAIR_TWO_MATERIALS = (_steel_glass(),)
 demand (:func:`restitution.laws.compute.computed_law`, ``restitution law ... --compute``)."""
 
 
-def pair_groups(partner, groups=PAIR_WALL_GROUPS) -> tuple[SweepSettings, ...]:
-    """The sweeps of the law of two disks: each disk group (:data:`PAIR_WALL_GROUPS`) carried
-    over by :func:`restitution.limits.sweep.pair_settings` (relative speeds ``w = 2 v``, walls
-    on the pair's compression scale, mode windows ``N (1 + r^2 rho2 / E2)``).
+def pair_groups(
+    partner, groups=None, geometry: str = DEFAULT_GEOMETRY
+) -> tuple[SweepSettings, ...]:
+    """The sweeps of the law of two bodies of the kind ``geometry``: each of the kind's wall
+    groups for pairs (:attr:`~restitution.bodies.kinds.PairPlan.groups`; the disk's are
+    :data:`PAIR_WALL_GROUPS`) carried over by :func:`restitution.limits.sweep.pair_settings`
+    (relative speeds ``w = 2 v``, walls on the pair's compression scale, mode windows
+    ``N (1 + r^2 rho2 / E2)``).
 
-    ``partner`` is the second disk, a :class:`~restitution.bodies.pair.partner.Partner` (any
-    material), or a radius ratio ``R2 / R1`` for a disk of the same material."""
+    ``partner`` is the second body, a :class:`~restitution.bodies.pair.partner.Partner` (any
+    material), or a radius ratio ``R2 / R1`` for a body of the same material."""
     from restitution.bodies.pair.partner import Partner
 
     if not isinstance(partner, Partner):
         partner = Partner(radius_ratio=float(partner))
+    if groups is None:
+        plan = body_kind(geometry).pair_production
+        if plan is None:
+            raise InputError(
+                f"laws of two {geometry}s are not computed on demand; pairs of "
+                f"{', '.join(k.geometry + 's' for k in _paired())} are"
+            )
+        groups = tuple(planned(geometry, g) for g in plan.groups)
     return tuple(pair_settings(g, partner) for g in groups)
 
 
-_PRODUCTION = {"disk": (SHIPPED_NUS, SETTINGS_GROUPS), "sphere": (SPHERE_NUS, SPHERE_GROUPS)}
+def _paired():
+    """The kinds whose pairs have production settings."""
+    return [kind for kind in kinds().values() if kind.pair_production is not None]
 
-DISK_LOW_SPEEDS = tuple(float(f"{v:.4g}") for v in np.geomspace(1e-7, 1e-4, 101)[:-1])
+
+DISK_LOW_SPEEDS = _DISK.production.low_speeds
 """Speeds of the disk's low-speed points (:func:`low_speed_points`,
 :mod:`restitution.quasistatic.slow_disk`), ``c``: from ``1e-7`` (0.5 mm/s for a steel cylinder)
 up to the modal laws' slowest speed ``1e-4``, a factor 1.07 apart. The loss varies slowly in
 ``ln v`` there; each point's error includes what PCHIP through its neighbours strays from it
 (:func:`low_speed_points`)."""
 
-PAIR_LOW_SPEEDS = tuple(float(f"{w:.4g}") for w in np.geomspace(2e-7, 1e-3, 91))
+PAIR_LOW_SPEEDS = _DISK.pair_production.low_speeds
 """Relative speeds ``w`` of the low-speed points of two disks' laws (``c1``), a factor 1.1
 apart: the disk's speeds doubled, up to ``1e-3``, where three cuts of the model still fit at
 ``nu = 0.9`` (the pairs' modal points start at ``w = 2e-3``)."""
 
-_LOW_SPEEDS = {"sphere": SPHERE_LOW_SPEEDS, "disk": DISK_LOW_SPEEDS}
-"""Bodies on a wall whose laws continue below the modal speeds with a low-speed route."""
+
+def low_speed_route(geometry: str, partner=None) -> str | None:
+    """The name of the low-speed route of the body ``geometry`` on the wall (with a
+    ``partner``: of two such bodies), ``None`` if it has none."""
+    kind = body_kind(geometry)
+    return kind.low_speed_route if partner is None else kind.pair_low_speed_route
 
 
 def low_speeds_of(geometry: str, partner=None) -> tuple[float, ...]:
     """The speeds of the low-speed points joined to the production law of a body on a wall
-    (:data:`SPHERE_LOW_SPEEDS`, :data:`DISK_LOW_SPEEDS`) or of two disks
-    (:data:`PAIR_LOW_SPEEDS`); none for two spheres."""
-    if partner is not None:
-        return PAIR_LOW_SPEEDS if geometry == "disk" else ()
-    return _LOW_SPEEDS.get(geometry, ())
+    (its kind's :attr:`~restitution.bodies.kinds.ProductionPlan.low_speeds`; the disk's are
+    :data:`DISK_LOW_SPEEDS`) or of two bodies (:data:`PAIR_LOW_SPEEDS` for disks); none where
+    the kind has no route or no plan."""
+    kind = body_kind(geometry)
+    plan = kind.production if partner is None else kind.pair_production
+    if plan is None or low_speed_route(geometry, partner) is None:
+        return ()
+    return plan.low_speeds
 
 
 def _track(speeds, nu: float, progress: bool):
@@ -210,7 +203,7 @@ def _track(speeds, nu: float, progress: bool):
                  console=Console(stderr=True))  # fmt: skip
 
 
-def _sphere_points(nu: float, speeds: list[float], progress: bool, partner=None):
+def _rayleigh_points(geometry: str, nu: float, speeds: list[float], progress: bool, partner=None):
     from restitution.bodies.cache import get_modes
     from restitution.quasistatic.low_speed import (
         CONTACT_TIME_SPREAD,
@@ -219,7 +212,7 @@ def _sphere_points(nu: float, speeds: list[float], progress: bool, partner=None)
         low_speed_loss,
     )
 
-    modes = get_modes(nu, LOW_SPEED_MODES, geometry="sphere")
+    modes = get_modes(nu, LOW_SPEED_MODES, geometry=geometry)
     # What PCHIP between neighbouring points may miss joins each point's error.
     between = interpolation_error(modes, speeds) if len(speeds) > 1 else [0.0]
     out = []
@@ -252,7 +245,7 @@ def leave_one_out(v, loss) -> np.ndarray:
     return out
 
 
-def _disk_points(nu: float, speeds: list[float], progress: bool, partner=None):
+def _slow_modal_points(geometry: str, nu: float, speeds: list[float], progress: bool, partner=None):
     from restitution.quasistatic.slow_disk import MODEL_SPREAD, SLOW_CUTS, slow_loss, slow_modes
 
     modes = slow_modes(nu, partner)
@@ -273,28 +266,31 @@ def _disk_points(nu: float, speeds: list[float], progress: bool, partner=None):
     return out, parameters
 
 
-_LOW_SPEED_ROUTES = {"sphere": _sphere_points, "disk": _disk_points}
+_LOW_SPEED_ROUTES = {"rayleigh": _rayleigh_points, "slow-modal": _slow_modal_points}
+"""Each low-speed route by its name (a kind's ``low_speed_route``)."""
 
 
 def low_speed_points(
     nu: float,
-    speeds=SPHERE_LOW_SPEEDS,
+    speeds=None,
     *,
-    geometry: str = "sphere",
+    geometry: str = DEFAULT_GEOMETRY,
     partner=None,
     progress: bool = False,
 ) -> tuple[list[dict], dict]:
-    """A body's low-speed law points: the sphere's from Rayleigh's estimate
-    (:mod:`restitution.quasistatic.low_speed`), the disk's and two disks' from the slow-impact
-    model (:mod:`restitution.quasistatic.slow_disk`).
+    """A body's low-speed law points, by its kind's route (:func:`low_speed_route`): the
+    sphere's from Rayleigh's estimate (:mod:`restitution.quasistatic.low_speed`), the disk's
+    and two disks' from the slow-impact model (:mod:`restitution.quasistatic.slow_disk`).
 
     Parameters
     ----------
     nu : float
         The body's Poisson number (the sphere's 3D one, the disk's 2D one).
-    speeds : iterable of float
-        Speeds towards the wall, ``c``.
-    geometry : {"sphere", "disk"}
+    speeds : iterable of float, optional
+        Speeds towards the wall, ``c``; default the kind's production speeds
+        (:func:`low_speeds_of`).
+    geometry : str
+        The kind (the disk by default).
     partner : Partner, optional
         The second disk of a pair (then ``speeds`` are relative speeds ``w``).
     progress : bool
@@ -316,14 +312,15 @@ def low_speed_points(
     from restitution.provenance import quasistatic_code_version
     from restitution.status import Status
 
-    route = _LOW_SPEED_ROUTES.get(geometry)
-    if route is None or (partner is not None and geometry != "disk"):
+    name = low_speed_route(geometry, partner)
+    if name is None:
         raise InputError(
-            f"no low-speed route for the {geometry}{' pair' if partner else ''}; the sphere, "
-            "the disk and two disks have one"
+            f"no low-speed route for the {geometry}{' pair' if partner else ''}; "
+            f"{', '.join(_routed())} have one"
         )
-    speeds = [float(v) for v in speeds]
-    results, parameters = route(float(nu), speeds, progress, partner)
+    route = _LOW_SPEED_ROUTES[name]
+    speeds = [float(v) for v in (low_speeds_of(geometry, partner) if speeds is None else speeds)]
+    results, parameters = route(geometry, float(nu), speeds, progress, partner)
     records = []
     for v, (r, gap, details) in zip(speeds, results, strict=True):
         err = r.energy_loss_err + gap
@@ -347,20 +344,27 @@ def low_speed_points(
         **parameters,
         "v_min": speeds[0],
         "v_max": speeds[-1],
-        "code_version": quasistatic_code_version(geometry, pair=partner is not None),
+        "code_version": quasistatic_code_version(geometry, name, pair=partner is not None),
     }
     return records, parameters
 
 
-def production(geometry: str = "disk") -> tuple[tuple[float, ...], tuple[SweepSettings, ...]]:
+def _routed() -> list[str]:
+    """Who has a low-speed route: each kind on the wall, and pairs of it."""
+    out = []
+    for kind in kinds().values():
+        if kind.low_speed_route is not None:
+            out.append(f"the {kind.geometry}")
+        if kind.pair_low_speed_route is not None:
+            out.append(f"two {kind.geometry}s")
+    return out
+
+
+def production(
+    geometry: str = DEFAULT_GEOMETRY,
+) -> tuple[tuple[float, ...], tuple[SweepSettings, ...]]:
     """``(nus, groups)`` of the shipped laws of the body ``geometry``."""
-    try:
-        return _PRODUCTION[geometry]
-    except KeyError:
-        raise InputError(
-            f"no production settings for the geometry {geometry!r}; choose one of "
-            f"{', '.join(_PRODUCTION)}"
-        ) from None
+    return _plan(geometry).nus, production_groups(geometry)
 
 
 def build(
@@ -392,8 +396,7 @@ def build(
         Passed to :func:`restitution.limits.curves.compute_curves`.
     low_speeds : iterable of float, optional
         Speeds of the low-speed points joined to each law (:func:`low_speed_points`); default
-        the body's production speeds (:func:`low_speeds_of`: :data:`SPHERE_LOW_SPEEDS` for the
-        sphere, :data:`DISK_LOW_SPEEDS` for the disk, none for a pair), ``()`` for none.
+        the body's production speeds (:func:`low_speeds_of`), ``()`` for none.
 
     Returns
     -------
@@ -416,11 +419,10 @@ def build(
     out.mkdir(parents=True, exist_ok=True)
     nus = [float(nu) for nu in nus]
     low = tuple(low_speeds_of(geometry, partner) if low_speeds is None else low_speeds)
-    allowed = geometry in _LOW_SPEEDS and (partner is None or geometry == "disk")
-    if low and not allowed:
+    if low and low_speed_route(geometry, partner) is None:
         raise InputError(
-            "low-speed points are derived for a sphere or a disk on a wall and for two disks, "
-            f"not for the {geometry}{' pair' if partner is not None else ''}"
+            f"low-speed points are derived for {', '.join(_routed())}, not for the "
+            f"{geometry}{' pair' if partner is not None else ''}"
         )
     per_group = [
         compute_curves(nus, g, store=store, workers=workers, progress=progress) for g in groups
@@ -470,8 +472,8 @@ def main(argv=None) -> None:
     parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
     parser.add_argument(
         "--geometry",
-        choices=(*_PRODUCTION, "pair"),
-        default="disk",
+        choices=(*_produced(), "pair"),
+        default=DEFAULT_GEOMETRY,
         help="the body: disk (law_nu<nu>.json), sphere (law_sphere_nu<nu>.json) or pair (two "
         "disks of one material, law_pair_r<R2/R1>_nu<nu>.json for PAIR_RADIUS_RATIOS, and the "
         "steel-glass pair of PAIR_TWO_MATERIALS)",
@@ -491,9 +493,10 @@ def main(argv=None) -> None:
 
         start = time.perf_counter()
         if args.geometry == "pair":
-            names = [law_filename(nu, "disk", Partner(radius_ratio=r))
-                     for r in PAIR_RADIUS_RATIOS for nu in PAIR_NUS]  # fmt: skip
-            names += [law_filename(nu, "disk", p) for nu, p in PAIR_TWO_MATERIALS]
+            names = [law_filename(nu, kind.geometry, Partner(radius_ratio=r))
+                     for kind in _paired() for r in kind.pair_production.radius_ratios
+                     for nu in kind.pair_production.nus]  # fmt: skip
+            names += [law_filename(nu, DEFAULT_GEOMETRY, p) for nu, p in PAIR_TWO_MATERIALS]
         else:
             names = [law_filename(nu, args.geometry, None) for nu in production(args.geometry)[0]]
         for name in names:
@@ -501,7 +504,8 @@ def main(argv=None) -> None:
         print(f"low-speed points of {len(names)} laws in {time.perf_counter() - start:.0f} s")
         return
     if args.geometry == "pair":
-        runs = [(PAIR_NUS, pair_groups(r)) for r in PAIR_RADIUS_RATIOS]
+        runs = [(kind.pair_production.nus, pair_groups(r, geometry=kind.geometry))
+                for kind in _paired() for r in kind.pair_production.radius_ratios]  # fmt: skip
         runs += [((nu,), pair_groups(p)) for nu, p in PAIR_TWO_MATERIALS]
     else:
         runs = [production(args.geometry)]

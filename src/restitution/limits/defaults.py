@@ -14,14 +14,13 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError
 
 __all__ = [
     "ALPHA_PRODUCTS",
     "ALPHA_SCALE",
     "ALPHA_SCALES",
-    "SPHERE_ALPHA_PRODUCTS",
     "check_alpha_scale",
     "check_alphas",
     "check_distinct",
@@ -29,19 +28,10 @@ __all__ = [
     "walls_at",
 ]
 
-# alpha * delta_max(v) = 40, 80, 160: at v = 0.1 that is alpha = 210, 420, 840; slow
-# collisions get harder walls (v = 0.005: alpha = 3100-12300) while alpha * v stays below
-# ~65, where epsilon(dt) converges smoothly (at alpha v = 200, N = 100 the hard-wall
-# dynamics are chaotic: epsilon jumps by 1e-3 with dt; docs/numerics.md).
-ALPHA_PRODUCTS: tuple[float, ...] = (40.0, 80.0, 160.0)
-"""Default wall hardness values, as products ``alpha * delta_max(v)`` (``ALPHA_SCALE``)."""
-
-# The sphere's loss is linear in 1/alpha only from alpha * delta_max ~ 80 (Hertz delta_max): at
-# nu = 0.3, N = 12800 its slope in 1/alpha changes by 16-25 % between the products 40-80 and
-# 80-160 at v = 0.01-0.1, by at most 7 % between 80-160, 160-320 and 320-640 (by 12 % at
-# v = 0.003); with 40-160 the curvature test flags v = 0.006 (docs/spheres.md).
-SPHERE_ALPHA_PRODUCTS: tuple[float, ...] = (80.0, 160.0, 320.0)
-"""Default wall hardness of the sphere's sweeps, as products ``alpha * delta_max(v)``."""
+ALPHA_PRODUCTS: tuple[float, ...] = body_kind(DEFAULT_GEOMETRY).alpha_products
+"""Default wall hardness values of the disk, as products ``alpha * delta_max(v)``
+(``ALPHA_SCALE``; every kind's: :attr:`restitution.bodies.kinds.BodyKind.alpha_products`, whose
+declaration says why)."""
 
 ALPHA_SCALES: tuple[str, ...] = ("absolute", "compression")
 """How wall hardness values are read: ``alpha`` in ``1/R``, or products ``alpha * delta_max``."""
@@ -50,10 +40,10 @@ ALPHA_SCALE = "compression"
 """Default reading of the wall hardness values (one of :data:`ALPHA_SCALES`)."""
 
 
-def default_products(geometry: str = "disk") -> tuple[float, ...]:
-    """The default walls ``alpha * delta_max(v)`` of the body ``geometry``:
-    :data:`ALPHA_PRODUCTS` for the disk, :data:`SPHERE_ALPHA_PRODUCTS` for the sphere."""
-    return SPHERE_ALPHA_PRODUCTS if body_kind(geometry).geometry == "sphere" else ALPHA_PRODUCTS
+def default_products(geometry: str = DEFAULT_GEOMETRY) -> tuple[float, ...]:
+    """The default walls ``alpha * delta_max(v)`` of the body ``geometry``
+    (:attr:`restitution.bodies.kinds.BodyKind.alpha_products`)."""
+    return body_kind(geometry).alpha_products
 
 
 def check_distinct(name: str, values: Sequence) -> None:
@@ -82,7 +72,7 @@ def walls_at(
     alphas: Sequence[float],
     alpha_scale: str,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     nu: float | None = None,
     partner=None,
 ) -> tuple[float, ...]:
@@ -103,7 +93,8 @@ def walls_at(
     if partner is not None:
         delta = partner.max_compression(float(v), geometry)
     else:
-        if nu is None and geometry != "disk":
+        kind = body_kind(geometry)
+        if nu is None and kind.scales_need_nu:
             raise InputError(f"the walls of a {geometry} at a compression scale need its nu")
-        delta = body_kind(geometry).max_compression(float(v), 0.0 if nu is None else float(nu))
+        delta = kind.max_compression(float(v), 0.0 if nu is None else float(nu))
     return tuple(a / delta for a in values)

@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, SweepPlan, body_kind
 from restitution.bodies.pair.partner import Partner
 from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.errors import InputError
@@ -40,7 +40,6 @@ from restitution.limits.claims import POLL_S, Claims
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
     ALPHA_SCALE,
-    SPHERE_ALPHA_PRODUCTS,
     check_alpha_scale,
     check_alphas,
     check_distinct,
@@ -57,7 +56,7 @@ from restitution.status import Status
 
 __all__ = [
     "DEFAULTS",
-    "SPHERE_DEFAULTS",
+    "planned",
     "PAPER_VELOCITIES",
     "GridData",
     "SweepReport",
@@ -116,9 +115,9 @@ class SweepSettings:
         Collisions per task; they share one mode set (each keeps its own time step, so a
         stored point does not depend on its batch).
     geometry : str
-        The body (:data:`restitution.bodies.kinds.GEOMETRIES`): ``"disk"`` (the paper's) or
-        ``"sphere"``; it decides the modes, the compression that scales the walls and the
-        variable of the ``N -> infinity`` extrapolation.
+        The body, a kind's name (:func:`restitution.bodies.kinds.geometries`; the disk, the
+        paper's, by default); it decides the modes, the compression that scales the walls and
+        the variable of the ``N -> infinity`` extrapolation.
     partner : Partner or None
         ``None``: the body against the rigid wall. Else the second body of a head-on pair
         (:class:`restitution.bodies.pair.partner.Partner`): ``velocities`` are relative speeds
@@ -143,7 +142,7 @@ class SweepSettings:
     options: tuple[tuple[str, Any], ...] = (("energy_tol", 1e-5),)
     order: str = "modes_first"
     batch_size: int = 4
-    geometry: str = "disk"
+    geometry: str = DEFAULT_GEOMETRY
     partner: Partner | None = None
     relaxation_time: float = 0.0
 
@@ -269,26 +268,21 @@ DEFAULTS = SweepSettings()
 """The package's default sweep of the disk (tuned to the 10-minute budget of the full Fig. 1
 grid)."""
 
-# The sphere's loss settles into its N -> infinity trend later than the disk's: at nu = 0.3,
-# v = 0.003 it still jumps by 50 % between N = 100 and 400 and climbs monotonically only from
-# N ~ 1600 (docs/spheres.md, measured for N = 100-12800); a sphere collision with 12800 modes
-# takes 1-5 s, so the window is moved up by a factor 16. Its walls are harder
-# (SPHERE_ALPHA_PRODUCTS says why).
-SPHERE_DEFAULTS = replace(
-    DEFAULTS,
-    geometry="sphere",
-    n_modes=(1600, 3200, 6400, 12800),
-    alphas=SPHERE_ALPHA_PRODUCTS,
-)
-"""The default sweep of the sphere: the disk's speeds, harder walls, larger mode counts."""
-
-
-_DEFAULTS_BY_GEOMETRY = {"disk": DEFAULTS, "sphere": SPHERE_DEFAULTS}
-
 
 def defaults_for(geometry: str) -> SweepSettings:
-    """The default sweep of the body ``geometry`` (:data:`DEFAULTS` for the disk)."""
-    return _DEFAULTS_BY_GEOMETRY[body_kind(geometry).geometry]
+    """The default sweep of the body ``geometry``: :data:`DEFAULTS` with the kind's walls and
+    mode window (:attr:`~restitution.bodies.kinds.BodyKind.alpha_products`,
+    :attr:`~restitution.bodies.kinds.BodyKind.sweep_modes`); the disk's is :data:`DEFAULTS`."""
+    kind = body_kind(geometry)
+    return replace(
+        DEFAULTS, geometry=kind.geometry, n_modes=kind.sweep_modes, alphas=kind.alpha_products
+    )
+
+
+def planned(geometry: str, plan: SweepPlan) -> SweepSettings:
+    """The sweep of one group of a kind's plan (:class:`~restitution.bodies.kinds.SweepPlan`):
+    the kind's defaults (:func:`defaults_for`) with the plan's speeds, window and batch."""
+    return replace(defaults_for(geometry), **plan.fields())
 
 
 def window_scale(partner: Partner) -> float:

@@ -49,17 +49,20 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from restitution.bodies.base import ModalBody, SurfaceQuadrature, surface_quadrature
-from restitution.bodies.disk.surface import edge_basis
+from restitution.bodies.kinds import BodyKind, kinds
 from restitution.errors import InputError
 
 __all__ = ["BodyPair", "pair_of"]
 
-_DIMENSION = {"disk": 2, "sphere": 3}
-"""Space dimension of each kind of body: masses scale like ``R^dimension``, surfaces like
-``R^(dimension - 1)``."""
 
-_BASIS_AT = {"disk": edge_basis}
-"""Each kind's surface basis at arbitrary angles (needed when the radii differ)."""
+def _kind(name: str) -> BodyKind:
+    """The kind of both bodies (:class:`~restitution.bodies.kinds.BodyKind`: its dimension
+    scales masses like ``R^dimension`` and surfaces like ``R^(dimension - 1)``; its
+    ``basis_at`` gives the surface basis at arbitrary angles, needed when the radii differ)."""
+    found = kinds().get(name)
+    if found is None:
+        raise InputError(f"no pair of {name}s is defined")
+    return found
 
 
 @dataclass(frozen=True, eq=False)
@@ -93,8 +96,7 @@ class BodyPair:
                 f"a pair needs two bodies of one kind, got a {self.first.geometry} and a "
                 f"{self.second.geometry}"
             )
-        if self.first.geometry not in _DIMENSION:
-            raise InputError(f"no pair of {self.first.geometry}s is defined")
+        _kind(self.first.geometry)
         for name in ("radius_ratio", "modulus_ratio", "density_ratio"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
@@ -145,7 +147,7 @@ class BodyPair:
     @property
     def member_masses(self) -> tuple[float, float]:
         """``(m1, m2)`` in the first body's units (``rho1 R1^d``)."""
-        d = _DIMENSION[self.first.geometry]
+        d = _kind(self.first.geometry).dimension
         return (
             float(self.first.mass),
             float(self.second.mass) * self.density_ratio * self.radius_ratio**d,
@@ -254,7 +256,7 @@ class BodyPair:
         ]  # fmt: skip
         rq = own_quads[ref] or bodies[ref].surface_quadrature(int(n_nodes))
         psi = rq.nodes
-        weight = rq.weight * radii[ref] ** (_DIMENSION[self.kind] - 1)
+        weight = rq.weight * radii[ref] ** (_kind(self.kind).dimension - 1)
         y = radii[ref] * np.sin(psi)
         height = -radii[1] * np.ones_like(psi)
         normal, tangential = [], []
@@ -275,13 +277,12 @@ class BodyPair:
                     raise InputError("bodies of one kind must share their quadrature nodes")
                 basis, own_column, own_C, own_S = own.basis, own.column, own.C, own.S
             else:
-                try:
-                    basis_at = _BASIS_AT[self.kind]
-                except KeyError:
+                basis_at = _kind(self.kind).basis_at
+                if basis_at is None:
                     raise InputError(
                         f"pairs of {self.kind}s of different radii are not implemented yet; "
                         "give equal radii"
-                    ) from None
+                    )
                 orders, own_column = np.unique(member.order, return_inverse=True)
                 basis, own_C, own_S = basis_at(orders, angle), member.C, member.S
             k = basis.shape[1] // 2
@@ -335,7 +336,7 @@ class BodyPair:
         alpha = np.asarray(alpha, dtype=float)
         r_eff = self.effective_radius
         ref_radius = self.radii[self._reference()]
-        if _DIMENSION[self.first.geometry] == 2:
+        if _kind(self.first.geometry).dimension == 2:
             return np.minimum(0.5 * math.pi * ref_radius, np.sqrt(0.5 * math.pi * r_eff / alpha))
         return 2.0 * math.pi * r_eff * (1.0 - np.exp(-alpha * ref_radius / r_eff)) / alpha
 

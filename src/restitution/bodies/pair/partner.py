@@ -18,11 +18,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.bodies.pair.body import BodyPair, pair_of
 from restitution.errors import InputError
 
 __all__ = ["Partner"]
+
+
+def _sized() -> list[str]:
+    """The kinds whose pairs have a compression scale."""
+    return [k.geometry + "s" for k in kinds().values() if k.pair_compression is not None]
+
 
 _MARGIN = 1.1
 """Each body's own modes asked for: this factor above its Weyl share of the common cutoff (then
@@ -99,36 +105,23 @@ class Partner:
 
     # -- quasistatic scales (disks) -----------------------------------------------------------
 
-    def max_compression(self, w, geometry: str = "disk"):
+    def max_compression(self, w, geometry: str = DEFAULT_GEOMETRY):
         """The pair's quasistatic largest approach of the centres at relative speed ``w``
-        (``c1``), ``R1``: eq. (61) of the disk on a wall written for the pair,
-        ``delta = s w sqrt(ln(4 R_K / (s w)))`` with ``s = sqrt(mu / (pi E_eff))``,
-        ``1/E_eff = 1 + 1/E2`` and ``ln R_K = sum_i (E_eff/E_i) ln(R_i^2 / R_eff)`` (the pair's
-        2D Hertz law, :mod:`restitution.quasistatic.hertz_pair`).
-
-        Two identical disks give ``w sqrt(ln(8/w)) = 2 delta_wall(w/2)``, the disk on a wall at
-        half the speed; a rigid, infinitely heavy and large partner gives the wall's
-        ``w sqrt(ln(4/w))``. The sweeps scale the pair's walls with it, as the disk's with
-        eq. (61)."""
-        if geometry != "disk":
+        (``c1``), ``R1``: the kind's :attr:`~restitution.bodies.kinds.BodyKind.pair_compression`
+        (for disks eq. (61) of the disk on a wall written for the pair, the pair's 2D Hertz law:
+        :func:`restitution.bodies.disk.contact.pair_max_compression`). The sweeps scale the
+        pair's walls with it, as a body's on the wall with its own compression."""
+        compression = body_kind(geometry).pair_compression
+        if compression is None:
             raise InputError(
                 f"the compression of a pair of {geometry}s is not implemented; pairs of "
-                "different bodies are computed for disks"
+                f"different bodies are computed for {', '.join(_sized())}"
             )
-        r2, e2 = self.radius_ratio, self.modulus_ratio
-        m1, m2 = math.pi, math.pi * self.density_ratio * r2 * r2
-        mu = m1 * m2 / (m1 + m2)
-        e_eff = 1.0 / (1.0 + 1.0 / e2)
-        r_eff = r2 / (1.0 + r2)
-        ln_rk = e_eff * math.log(1.0 / r_eff) + (e_eff / e2) * math.log(r2 * r2 / r_eff)
-        s = math.sqrt(mu / (math.pi * e_eff))
-        x = s * np.asarray(w, dtype=float)
-        out = x * np.sqrt(np.log(4.0 * math.exp(ln_rk) / x))
-        return float(out) if out.ndim == 0 else out
+        return compression(w, self.radius_ratio, self.modulus_ratio, self.density_ratio)
 
     # -- modes ----------------------------------------------------------------------------------
 
-    def counts(self, n_modes: int, nu1: float, geometry: str = "disk") -> tuple[int, int]:
+    def counts(self, n_modes: int, nu1: float, geometry: str = DEFAULT_GEOMETRY) -> tuple[int, int]:
         """How many of each body's own lowest modes to compute so that the pair's ``n_modes``
         lowest lie among them: each body's Weyl share of the common cutoff (frequencies in
         ``c1 / R1``: the second body's own ``omega`` times ``c2 R1 / (c1 R2)``), times
@@ -149,7 +142,9 @@ class Partner:
         shares = (kind.weyl_count(hi, nu1), kind.weyl_count(hi / scale2, nu2))
         return tuple(min(int(n_modes), int(math.ceil(_MARGIN * s)) + 20) for s in shares)
 
-    def pair(self, nu1: float, n_modes: int, geometry: str = "disk", get_modes=None) -> BodyPair:
+    def pair(
+        self, nu1: float, n_modes: int, geometry: str = DEFAULT_GEOMETRY, get_modes=None
+    ) -> BodyPair:
         """The :class:`BodyPair` of the ``n_modes`` lowest modes of both bodies together.
 
         ``get_modes(nu, count, geometry=...)`` supplies each body's own modes (default

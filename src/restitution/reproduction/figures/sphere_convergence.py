@@ -22,9 +22,10 @@ from pathlib import Path
 import numpy as np
 
 from restitution.atomic import replacing
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.limits.order import PowerLawFit, local_exponents, power_law_fit
 from restitution.limits.store import Store
-from restitution.limits.sweep import SPHERE_DEFAULTS, grid, load_grid, run_sweep
+from restitution.limits.sweep import defaults_for, grid, load_grid, run_sweep
 from restitution.reproduction.figures._style import add_notes
 
 __all__ = ["LADDER", "SPEEDS", "SeriesN", "compute", "main", "plot"]
@@ -68,7 +69,7 @@ class SeriesN:
 def compute(
     nu: float = 0.3,
     speeds=SPEEDS,
-    products=SPHERE_DEFAULTS.alphas,
+    products=SPHERE.alpha_products,
     n_modes=LADDER,
     *,
     store=None,
@@ -79,7 +80,10 @@ def compute(
     from dataclasses import replace
 
     settings = replace(
-        SPHERE_DEFAULTS, velocities=tuple(speeds), alphas=tuple(products), n_modes=tuple(n_modes)
+        defaults_for(SPHERE.geometry),
+        velocities=tuple(speeds),
+        alphas=tuple(products),
+        n_modes=tuple(n_modes),
     )
     own = not isinstance(store, Store)
     db = Store(store) if own else store
