@@ -25,7 +25,7 @@ import importlib.util
 import math
 import pkgutil
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from restitution.bodies.base import ModalBody
 from restitution.errors import InputError, real
@@ -202,6 +202,11 @@ class BodyKind:
         How its shipped laws on the wall are computed.
     pair_production : PairPlan or None
         How the laws of two bodies of this kind are computed.
+    default_nus : tuple of float
+        Poisson numbers of its curves when none are given (empty: they must be given).
+    vibrating : bool
+        Whether the vibrating-body layer (a ringing start, chains of collisions:
+        ``collide --excite``, ``bounce``) takes this kind (docs/vibrating.md).
     """
 
     geometry: str
@@ -231,7 +236,9 @@ class BodyKind:
     basis_at: Callable | None = None
     pair_compression: Callable | None = None
     production: ProductionPlan | None = None
-    pair_production: PairPlan | None = field(default=None)
+    pair_production: PairPlan | None = None
+    default_nus: tuple[float, ...] = ()
+    vibrating: bool = False
 
     @property
     def name(self) -> str:

@@ -17,7 +17,7 @@ import click
 
 from restitution import atomic, budget
 from restitution._version import __version__
-from restitution.bodies.kinds import GEOMETRIES, body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, geometries, kinds
 from restitution.bodies.material import Material
 from restitution.errors import InputError, OutputError
 from restitution.jsonable import finite_tree, json_default
@@ -42,14 +42,28 @@ nu_option = click.option(
 plane_option = click.option(
     "--plane", type=click.Choice(["stress", "strain"]), default=None, help=PLANE_HELP
 )
+
+
+def _geometry_help() -> str:
+    """Each kind in one clause: what --nu is for it."""
+    clauses = []
+    for kind in kinds().values():
+        nu = (
+            "--nu is two-dimensional unless --plane is given"
+            if kind.planar
+            else f"--nu is its three-dimensional Poisson number, in ({kind.nu_low:g}, "
+            f"{kind.nu_high:g}); units E = rho = R = 1 of the {kind.geometry}"
+        )
+        clauses.append(f"'{kind.geometry}' ({kind.description.split(';')[0]}; {nu})")
+    return "The body: " + ", ".join(clauses) + "."
+
+
 geometry_option = click.option(
     "--geometry",
-    type=click.Choice(GEOMETRIES),
-    default="disk",
+    type=click.Choice(geometries()),
+    default=DEFAULT_GEOMETRY,
     show_default=True,
-    help="The body: 'disk' (the paper's elastic disk; --nu is two-dimensional unless --plane "
-    "is given) or 'sphere' (an elastic sphere; --nu is its three-dimensional Poisson number, "
-    "in (-1, 0.5); units E = rho = R = 1 of the sphere).",
+    help=_geometry_help(),
 )
 
 _state = {"quiet": False}
@@ -115,7 +129,7 @@ def body_nu(nu: float, plane: str | None, geometry: str) -> float:
     For a disk, :func:`material_from`'s two-dimensional number; a sphere takes ``--nu`` as its
     three-dimensional number and refuses ``--plane`` (it would be accepted and ignored).
     """
-    if geometry == "disk":
+    if body_kind(geometry).planar:
         return material_from(nu, plane).nu
     if plane is not None:
         raise InputError(
@@ -131,7 +145,7 @@ def nu_inputs(nu: float, plane: str | None, geometry: str) -> dict:
     converted number recorded as ``nu`` beside ``plane`` would be converted twice), and, for a
     disk, ``nu_2d``: the two-dimensional Poisson number the computation used."""
     d = {"nu": nu, "plane": plane}
-    if geometry == "disk":
+    if body_kind(geometry).planar:
         d["nu_2d"] = body_nu(nu, plane, geometry)
     return d
 
@@ -316,7 +330,7 @@ def envelope(
     head = {
         "version": __version__,
         "command": command,
-        "units": dict(units or body_kind(inputs.get("geometry", "disk")).units),
+        "units": dict(units or body_kind(inputs.get("geometry", DEFAULT_GEOMETRY)).units),
         "inputs": inputs,
         "status": status,
         "advice": advice,

@@ -11,6 +11,7 @@ from pathlib import Path
 import click
 
 from restitution.bodies.cache import check_mode_request, get_modes
+from restitution.bodies.kinds import body_kind, kinds
 from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
@@ -88,6 +89,11 @@ def _print_summary(result, top: int = 10) -> None:
         console.print(table)
     if result.status != Status.OK:
         console.print(f"[yellow]status {result.status}: {result.advice}[/yellow]")
+
+
+def _vibrating() -> str:
+    """The kinds whose collisions may start ringing (``collide --excite``), in words."""
+    return ", ".join(f"{k.geometry}s" for k in kinds().values() if k.vibrating)
 
 
 @click.command()
@@ -263,9 +269,12 @@ def collide(
     if partner is not None:
         return _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol,
                      as_json, strict, relaxation_time)  # fmt: skip
-    material = material_from(nu, plane) if geometry == "disk" else None
-    if geometry != "disk" and excite != "none":
-        raise InputError(f"--excite is available for disks only; leave it out for a {geometry}")
+    kind = body_kind(geometry)
+    material = material_from(nu, plane) if kind.planar else None
+    if not kind.vibrating and excite != "none":
+        raise InputError(
+            f"--excite is available for {_vibrating()} only; leave it out for a {geometry}"
+        )
     if excite != "none":
         return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
                         energy_tol, excite, as_json, strict, force)  # fmt: skip
@@ -284,7 +293,7 @@ def collide(
             },
             "with --method fem (finite elements use --mesh-refine)",
         )
-        _check_fem(material if geometry == "disk" else body, v, alpha, mesh_refine, geometry,
+        _check_fem(material if kind.planar else body, v, alpha, mesh_refine, geometry,
                    force)  # fmt: skip
     else:
         refuse_ignored(ctx, {"mesh_refine": "--mesh-refine"}, "with --method modal")
@@ -296,7 +305,7 @@ def collide(
             from restitution.fem import fem_collide
 
             result = fem_collide(
-                material if geometry == "disk" else body,
+                material if kind.planar else body,
                 v,
                 alpha,
                 refine=mesh_refine,

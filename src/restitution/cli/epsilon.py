@@ -13,7 +13,7 @@ from pathlib import Path
 
 import click
 
-from restitution.bodies.kinds import kinds
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
@@ -93,7 +93,12 @@ class _CurveCommand(_ListCommand):
 
 
 def _settings(
-    velocities=None, alphas=None, modes=None, alpha_scale=None, geometry="disk", partner=None
+    velocities=None,
+    alphas=None,
+    modes=None,
+    alpha_scale=None,
+    geometry=DEFAULT_GEOMETRY,
+    partner=None,
 ) -> SweepSettings:
     """The body's default sweep (for a ``partner``: carried over to the pair by
     :func:`restitution.limits.sweep.pair_settings`) with the given sets in place of its own."""
@@ -480,12 +485,19 @@ def curve(
     from restitution.limits.sweep import grid
     from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes
 
-    if not nus and geometry != "disk":
-        raise InputError(
-            f"give the {geometry}'s Poisson number(s) with --nu (three-dimensional, in "
-            "(-1, 0.5)); the default 0.33 0.9 is the disk's"
+    kind = body_kind(geometry)
+    if not nus and not kind.default_nus:
+        defaults = "; ".join(
+            f"the default {' '.join(f'{nu:g}' for nu in k.default_nus)} is the {k.geometry}'s"
+            for k in kinds().values()
+            if k.default_nus
         )
-    nus = tuple(body_nu(nu, None, geometry) for nu in (nus or (0.33, 0.9)))
+        raise InputError(
+            f"give the {geometry}'s Poisson number(s) with --nu "
+            f"({'two' if kind.dimension == 2 else 'three'}-dimensional, in "
+            f"({kind.nu_low:g}, {kind.nu_high:g})); {defaults}"
+        )
+    nus = tuple(body_nu(nu, None, geometry) for nu in (nus or kind.default_nus))
     if partner_nu is not None and len(nus) > 1:
         raise InputError(
             "--partner-nu names the second body's material for one --nu; give one --nu with it"
@@ -498,9 +510,11 @@ def curve(
     # The figures draw the curves' numbers whatever the body; a sphere's say so and are named
     # apart from the disk's, so one --out can hold both.
     tag, body_note = "", ""
-    if geometry != "disk":
-        tag = f"_{geometry}"
-        body_note = f"{geometry}: nu is its 3D Poisson number, v in c = sqrt(E/rho) of it"
+    if kind.file_tag:
+        tag = f"_{kind.file_tag}"
+        body_note = (
+            f"{geometry}: nu is its {kind.dimension}D Poisson number, v in c = sqrt(E/rho) of it"
+        )
     if partner is not None:
         tag += "_pair"
         body_note = (
@@ -540,7 +554,7 @@ def curve(
                     note=body_note,
                 )
             )
-        body = "" if geometry == "disk" else f"{geometry}, "
+        body = "" if geometry == DEFAULT_GEOMETRY else f"{geometry}, "
         click.echo(f"{body}nu = {nu:g}:   v/c    epsilon     error   asymptotic")
         for v, lim in zip(c.velocities, c.limits, strict=True):
             asymptotic &= bool(lim.asymptotic_ok)

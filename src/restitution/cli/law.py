@@ -12,14 +12,22 @@ from pathlib import Path
 import click
 
 from restitution import atomic
+from restitution.bodies.kinds import body_kind
 from restitution.cli._common import note, quiet_option
 from restitution.cli.epsilon import _ListCommand
 from restitution.jsonable import json_default
+from restitution.laws.units import BODIES, GEOMETRIES
 from restitution.status import Status
 
 
 class _LawCommand(_ListCommand):
     list_options = ("--speed",)
+
+
+def _paired_shapes() -> str:
+    """The shapes whose laws of two grains of different sizes or materials are computed."""
+    names = [shape for shape, body in BODIES.items() if body_kind(body).pair_compression]
+    return " or ".join(names)
 
 
 @click.command(cls=_LawCommand)
@@ -28,7 +36,7 @@ class _LawCommand(_ListCommand):
 @click.option("--rho", type=float, required=True, help="Density of the 3D material, kg/m^3.")
 @click.option(
     "--geometry",
-    type=click.Choice(["cylinder", "thin-disk", "sphere"]),
+    type=click.Choice(list(GEOMETRIES)),
     required=True,
     help="Long cylinder hit along a diameter (the disk in plane strain: nu_2d = nu/(1-nu), "
     "c = sqrt(E/((1-nu^2) rho))), thin disk (plane stress: nu_2d = nu, c = sqrt(E/rho)) or "
@@ -396,11 +404,12 @@ def _check_ratio(ratio: float | None, against: str, geometry: str) -> float | No
         )
     if ratio == 1.0:
         return None
-    if geometry == "sphere":
+    kind = body_kind(BODIES[geometry])
+    if kind.pair_compression is None:
         raise InputError(
-            f"--partner-radius-ratio {ratio:g}: laws of two spheres of different sizes are not "
-            "computed yet; use --geometry cylinder or thin-disk, or leave it out (identical "
-            "spheres)"
+            f"--partner-radius-ratio {ratio:g}: laws of two {kind.geometry}s of different sizes "
+            f"are not computed yet; use --geometry {_paired_shapes()}, or leave it out "
+            f"(identical {kind.geometry}s)"
         )
     return ratio
 
@@ -418,10 +427,11 @@ def _partner_grain(E, nu, rho, geometry, against, partner_E, partner_nu, partner
             "--partner-E, --partner-nu and --partner-rho describe a second grain: give them "
             "with --against grain"
         )
-    if geometry == "sphere":
+    kind = body_kind(BODIES[geometry])
+    if kind.pair_compression is None:
         raise InputError(
-            "laws of two spheres of different materials are not computed yet; use --geometry "
-            "cylinder or thin-disk, or leave out --partner-E/--partner-nu/--partner-rho"
+            f"laws of two {kind.geometry}s of different materials are not computed yet; use "
+            f"--geometry {_paired_shapes()}, or leave out --partner-E/--partner-nu/--partner-rho"
         )
     values = (
         E if partner_E is None else partner_E,

@@ -9,6 +9,7 @@ from pathlib import Path
 import click
 
 from restitution.bodies.cache import check_mode_request, get_modes
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.cli._common import (
     body_nu,
     check_figure_file,
@@ -27,24 +28,17 @@ from restitution.cli._common import (
 )
 from restitution.errors import InputError
 
-_TITLES = {
-    "disk": "Symmetric modes of the free disk (omega in c/R; C, S edge amplitudes)",
-    "sphere": "Axisymmetric spheroidal modes of the free sphere (omega in c/R; C = U(1), "
-    "S = V(1) surface amplitudes)",
-}
-_INTEGER = ("n", "l")
-
 
 def _table(records: list[dict], geometry: str) -> str:
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=_TITLES[geometry])
+    table = Table(title=body_kind(geometry).modes_title)
     columns = list(records[0]) if records else []
     for col in columns:
         table.add_column(col, justify="right")
     for r in records:
-        table.add_row(*(str(r[c]) if c in _INTEGER else f"{r[c]:.8g}" for c in columns))
+        table.add_row(*(str(r[c]) if isinstance(r[c], int) else f"{r[c]:.8g}" for c in columns))
     buf = io.StringIO()
     Console(file=buf, width=140, force_terminal=False).print(table)
     return buf.getvalue()
@@ -56,7 +50,7 @@ def _csv(records: list[dict]) -> str:
     writer = csv.DictWriter(buf, fieldnames=columns, lineterminator="\n")
     writer.writeheader()
     for r in records:
-        writer.writerow({c: (r[c] if c in _INTEGER else repr(r[c])) for c in columns})
+        writer.writerow({c: (r[c] if isinstance(r[c], int) else repr(r[c])) for c in columns})
     return buf.getvalue()
 
 
@@ -107,7 +101,7 @@ def modes(nu, plane, geometry, count, omega_max, fmt, output, plot_spectrum, plo
         count = 1600
     given, nu = nu, body_nu(nu, plane, geometry)
     check_mode_request(nu, count, omega_max, geometry)
-    if geometry != "disk":
+    if geometry != DEFAULT_GEOMETRY:
         refuse_ignored(
             click.get_current_context(),
             {"plot_spectrum": "--plot-spectrum", "plot_shapes": "--plot-shapes"},

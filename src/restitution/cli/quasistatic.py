@@ -8,7 +8,8 @@ import math
 import click
 
 from restitution.bodies.cache import check_mode_request
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.disk.kind import KIND as DISK
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.cli._common import (
     body_nu,
     dumps,
@@ -85,11 +86,11 @@ def sphere_quasistatic_summary(nu: float, v: float, n_modes: int = 400) -> dict:
 
     law = sphere_contact_law(nu)
     q = sphere_quasistatic_collision(law, v)
-    modes = get_modes(nu, count=n_modes, geometry="sphere")
+    modes = get_modes(nu, count=n_modes, geometry=SPHERE.geometry)
     ray = rayleigh_energy(modes, v, law)
     n, l, share = ray.dominant
     return {
-        "geometry": "sphere",
+        "geometry": SPHERE.geometry,
         "nu": nu,
         "v": v,
         "law": law.name,
@@ -105,7 +106,7 @@ def sphere_quasistatic_summary(nu: float, v: float, n_modes: int = 400) -> dict:
         "rayleigh_dominant_mode": [n, l],
         "rayleigh_dominant_share": share,
         "rayleigh_n_modes": len(modes),
-        "units": dict(body_kind("sphere").units),
+        "units": dict(SPHERE.units),
     }
 
 
@@ -168,7 +169,7 @@ def quasistatic(
     partner option) two disks meet at relative speed V: their 2D Hertz law with a common
     contact width (docs/two-disks.md), without Rayleigh's estimate.
     """
-    if geometry != "disk":
+    if geometry != DISK.geometry:
         refuse_ignored(
             ctx,
             _DISK_ONLY,
@@ -183,11 +184,14 @@ def quasistatic(
         _pair(ctx, body, partner, geometry, v, law, as_json)
         return
     check_mode_request(body, n_modes, geometry=geometry)
-    if geometry == "sphere":
+    if geometry == SPHERE.geometry:
         _sphere(body, v, n_modes, as_json)
         return
-    if geometry != "disk":
-        raise InputError(f"no quasistatic theory for a {geometry} yet; use a disk or a sphere")
+    if geometry != DISK.geometry:
+        raise InputError(
+            f"no quasistatic theory for a {geometry} yet; use a {DISK.geometry} or a "
+            f"{SPHERE.geometry}"
+        )
     out = quasistatic_summary(body, v, law, n_modes)
     if not math.isfinite(out["contact_time"]):
         raise InputError("contact time is not finite; use a smaller --v")
@@ -255,7 +259,7 @@ def pair_quasistatic_summary(nu: float, partner, w: float, law: str = "centre") 
 
 def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, as_json: bool) -> None:
     """``quasistatic --radius-ratio ...``: two disks (:mod:`restitution.quasistatic.hertz_pair`)."""
-    if geometry != "disk":
+    if geometry != DISK.geometry:
         raise InputError(
             f"the quasistatic theory of two bodies is derived for disks; leave out the partner "
             f"options for a {geometry}"
@@ -291,7 +295,7 @@ def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, as_json: b
 def _sphere(nu: float, v: float, n_modes: int, as_json: bool) -> None:
     out = sphere_quasistatic_summary(nu, v, n_modes)
     if as_json:
-        inputs = {"geometry": "sphere", "nu": nu, "v": v, "modes": n_modes}
+        inputs = {"geometry": SPHERE.geometry, "nu": nu, "v": v, "modes": n_modes}
         click.echo(dumps(envelope("quasistatic", inputs, out)))
         return
     n, l = out["rayleigh_dominant_mode"]

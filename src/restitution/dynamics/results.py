@@ -12,12 +12,12 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.status import Status
 
 __all__ = ["UNITS", "CollisionResult", "History"]
 
-UNITS: dict[str, str] = body_kind("disk").units
+UNITS: dict[str, str] = body_kind(DEFAULT_GEOMETRY).units
 """The units of every number this package reports of a disk; every JSON output carries the
 table of its body (:attr:`restitution.bodies.kinds.BodyKind.units`)."""
 

@@ -31,7 +31,7 @@ from typing import Any
 import numpy as np
 
 from restitution._version import __version__
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError, RestitutionError
 from restitution.jsonable import finite_or_none, json_default
@@ -156,7 +156,7 @@ class PointSpec:
     select: str = "lowest"
     integrator: str = "split4"
     options: tuple[tuple[str, Any], ...] = ()
-    geometry: str = "disk"
+    geometry: str = DEFAULT_GEOMETRY
     partner: Partner | None = None
     relaxation_time: float = 0.0
 
@@ -534,7 +534,7 @@ class Store:
         return out
 
     def points(
-        self, *, all_versions: bool = False, geometry: str = "disk", **filters: Any
+        self, *, all_versions: bool = False, geometry: str = DEFAULT_GEOMETRY, **filters: Any
     ) -> list[StoredPoint]:
         """Stored rows, optionally filtered by exact ``nu``, ``v``, ``alpha``, ``n_modes``,
         ``selection``, ``integrator`` or ``status``; by default only this code version of the
@@ -598,7 +598,9 @@ def _row_to_point(row: tuple) -> StoredPoint:
         select=d["select"],
         integrator=d["integrator"],
         options=options,
-        geometry=d.get("geometry", "disk"),  # rows of 0.1.0 before the sphere name no body
+        geometry=d.get(
+            "geometry", DEFAULT_GEOMETRY
+        ),  # rows of 0.1.0 before the sphere name no body
         partner=_partner(d.get("partner"), num),
         relaxation_time=num(d.get("relaxation_time", 0.0)),
     )

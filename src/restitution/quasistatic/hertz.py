@@ -45,6 +45,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.special import lambertw
 
+from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.material import Material
 from restitution.errors import InputError, RestitutionError
 
@@ -98,7 +99,7 @@ class HertzLaw:
     E: float = 1.0
     R: float = 1.0
 
-    geometry: ClassVar[str] = "disk"
+    geometry: ClassVar[str] = DISK.geometry
 
     # ---- limits of the monotonic branch ------------------------------------------------
     @property

@@ -47,7 +47,7 @@ from typing import ClassVar
 import numpy as np
 from scipy.special import betaincinv
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.bodies.sphere.surface import CONTACT_TIME_CONSTANT
 from restitution.errors import InputError
 from restitution.quasistatic.hertz import checked_range
@@ -94,7 +94,7 @@ class SphereHertzLaw:
     R: float = 1.0
     name: str = "hertz"
 
-    geometry: ClassVar[str] = "sphere"
+    geometry: ClassVar[str] = SPHERE.geometry
 
     @property
     def E_star(self) -> float:
@@ -161,7 +161,7 @@ def sphere_contact_law(nu: float, *, E: float = 1.0, R: float = 1.0) -> SphereHe
     >>> round(float(sphere_contact_law(0.0).force(1e-2)), 12)
     0.001333333333
     """
-    nu = body_kind("sphere").check_nu(nu)
+    nu = SPHERE.check_nu(nu)
     for name, value in (("E", E), ("R", R)):
         if not (math.isfinite(value) and value > 0.0):
             raise InputError(f"{name} must be a positive number, got {value}")

@@ -43,6 +43,7 @@ import numpy as np
 from scipy.interpolate import PchipInterpolator
 
 from restitution.bodies.base import ModalBody
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz_sphere import (
@@ -151,7 +152,7 @@ def low_speed_loss(
     -------
     LowSpeedLoss
     """
-    if modes.geometry != "sphere":
+    if modes.geometry != SPHERE.geometry:
         raise InputError(
             f"the low-speed estimate is derived for the sphere, not for the {modes.geometry} "
             "(a disk's slow impacts: restitution.quasistatic.slow_disk)"

@@ -94,7 +94,7 @@ class QuasistaticTheory:
 
 
 THEORIES: dict[str, QuasistaticTheory] = {
-    "disk": QuasistaticTheory(
+    HertzLaw.geometry: QuasistaticTheory(
         law_type=HertzLaw,
         laws=LAWS,
         default_law="paper",
@@ -102,7 +102,7 @@ THEORIES: dict[str, QuasistaticTheory] = {
         trajectory=quasistatic_trajectory,
         mass=math.pi,
     ),
-    "sphere": QuasistaticTheory(
+    SphereHertzLaw.geometry: QuasistaticTheory(
         law_type=SphereHertzLaw,
         laws=("hertz",),
         default_law="hertz",
@@ -130,7 +130,7 @@ def contact_law_for(geometry: str, nu: float, law: ContactLaw | str | None = Non
     Parameters
     ----------
     geometry : str
-        ``"disk"`` or ``"sphere"``.
+        A body kind's name with a theory here (:data:`THEORIES`: the disk, the sphere).
     nu : float
         The body's Poisson number (the disk's two-dimensional one, the sphere's 3D one).
     law : law object, str or None

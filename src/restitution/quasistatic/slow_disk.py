@@ -70,6 +70,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from restitution.bodies.base import ModalBody
+from restitution.bodies.disk.kind import KIND as DISK
 from restitution.errors import InputError, RestitutionError
 from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz import HertzLaw, contact_law, quasistatic_collision
@@ -160,7 +161,7 @@ class SlowCollision:
     steps: int
 
 
-_BODIES = ("disk", "disk-pair")
+_BODIES = (DISK.geometry, f"{DISK.geometry}-pair")
 
 
 def _checked(modes: ModalBody, v: float) -> None:
@@ -186,10 +187,10 @@ def slow_modes(nu: float, partner=None) -> ModalBody:
     if partner is None:
         from restitution.bodies.cache import get_modes
 
-        return get_modes(nu, SLOW_MODES, geometry="disk")
+        return get_modes(nu, SLOW_MODES, geometry=DISK.geometry)
     share = partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
     count = int(round(SLOW_MODES * (1.0 + share)))
-    return partner.pair(nu, count, geometry="disk")
+    return partner.pair(nu, count, geometry=DISK.geometry)
 
 
 def closure_law(modes: ModalBody) -> HertzLaw:
@@ -197,7 +198,7 @@ def closure_law(modes: ModalBody) -> HertzLaw:
     (:func:`restitution.quasistatic.hertz.contact_law`), or two disks' law
     (:func:`restitution.quasistatic.hertz_pair.pair_contact_law`) for a
     :class:`~restitution.bodies.pair.body.BodyPair`."""
-    if modes.geometry == "disk":
+    if modes.geometry == DISK.geometry:
         return contact_law(modes.nu, "centre")
     return pair_contact_law(
         modes.nu,
@@ -456,7 +457,7 @@ def asymptotic_loss(modes: ModalBody, v, contact_time=None) -> np.ndarray:
         ``1 - epsilon^2`` to leading order in ``1 / ln(1/v)``.
     """
     v = np.atleast_1d(np.asarray(v, dtype=float))
-    if modes.geometry != "disk" or np.any(~np.isfinite(v)) or np.any(v <= 0):
+    if modes.geometry != DISK.geometry or np.any(~np.isfinite(v)) or np.any(v <= 0):
         raise InputError("asymptotic_loss needs one disk's modes (on a wall) and speeds v > 0")
     law = contact_law(modes.nu, "centre")
     qs = quasistatic_collision(law, v)

@@ -141,6 +141,9 @@ KIND = register(
         pair_compression=contact.pair_max_compression,
         production=PRODUCTION,
         pair_production=PAIR_PRODUCTION,
+        # The paper's two Poisson numbers (Fig. 1).
+        default_nus=(0.33, 0.9),
+        vibrating=True,
     )
 )
 """The disk of the paper."""

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.atomic import replacing
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.reproduction.figures._style import add_notes
 
 __all__ = ["MATERIAL", "MEASURED", "DampedCurve", "compute", "main", "plot"]
@@ -43,7 +44,7 @@ class DampedCurve:
     tau: float
 
 
-def compute(geometries=("sphere", "cylinder"), speeds_m_s=None) -> tuple[DampedCurve, ...]:
+def compute(geometries=(*SPHERE.shapes, "cylinder"), speeds_m_s=None) -> tuple[DampedCurve, ...]:
     """The curves of steel for each body in ``geometries``."""
     from restitution.laws.damped import damped_law
     from restitution.laws.si_law import si_law

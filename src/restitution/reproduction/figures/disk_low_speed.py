@@ -21,6 +21,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.fem.reference import load_reference
 from restitution.laws.law import law
 from restitution.quasistatic.hertz import contact_law
@@ -78,7 +79,7 @@ def compute(nu: float = 0.33, *, v_max: float = 0.02, n_rayleigh: int = 40) -> S
     # The quasistatic curves only where the contact is slow (above, Rayleigh's estimate exceeds
     # the loss many times, docs/quasistatic.md section 4).
     theory_v = np.geomspace(float(served.v[0]), min(v_max, 3e-3), 200)
-    modes = get_modes(nu, _RAYLEIGH_MODES, geometry="disk")
+    modes = get_modes(nu, _RAYLEIGH_MODES, geometry=DEFAULT_GEOMETRY)
     rayleigh = np.full(theory_v.size, np.nan)
     centre = contact_law(nu, "centre")
     if n_rayleigh:

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.atomic import replacing
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.laws.si_law import si_law
 from restitution.reproduction.figures._style import add_notes
 from restitution.status import Status
@@ -66,7 +67,7 @@ def compute(materials=MATERIALS, points: int = 120) -> tuple[SICurve, ...]:
     """Sample every material's sphere and cylinder law at ``points`` speeds in its range."""
     out = []
     for name, (E, nu, rho) in materials.items():
-        for geometry in ("sphere", "cylinder"):
+        for geometry in (*SPHERE.shapes, "cylinder"):
             s = si_law(E=E, nu=nu, rho=rho, geometry=geometry, against="wall")
             lo, hi = s.computed_range_m_s
             speeds = np.geomspace(lo, hi, points)
@@ -96,7 +97,7 @@ def plot(curves: tuple[SICurve, ...], path=None, notes=()):
 
     names = list(dict.fromkeys(c.material for c in curves))
     fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 3.8), squeeze=False)
-    colours = {"sphere": "tab:red", "cylinder": "tab:blue"}
+    colours = {SPHERE.geometry: "tab:red", "cylinder": "tab:blue"}
     for ax, name in zip(axes[0], names, strict=True):
         for c in (c for c in curves if c.material == name):
             col = colours[c.geometry]

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.atomic import replacing
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.fem.reference import load_reference
 from restitution.laws.law import law
 from restitution.reproduction.figures._style import add_notes
@@ -63,9 +64,9 @@ def _per_speed(v, eps, eps_err):
 
 def compute(nu: float = 0.3) -> SlowSphere:
     """Read the shipped sphere law of ``nu`` and the FEM reference points at that ``nu``."""
-    served = law(nu, geometry="sphere")
+    served = law(nu, geometry=SPHERE.geometry)
     loss, err = _per_speed(served.v, served.epsilon_points, served.epsilon_err_points)
-    fem = [p for p in load_reference(geometry="sphere") if abs(p.nu - nu) < 1e-9]
+    fem = [p for p in load_reference(geometry=SPHERE.geometry) if abs(p.nu - nu) < 1e-9]
     fv = np.array([p.v for p in fem])
     floss, ferr = _per_speed(fv, [p.epsilon for p in fem], [p.epsilon_err for p in fem])
     return SlowSphere(

@@ -258,6 +258,7 @@ def _sweep_record(sr) -> dict:
 
 
 def _code_version() -> str:
+    from restitution.bodies.kinds import DEFAULT_GEOMETRY
     from restitution.provenance import code_version
 
-    return code_version()
+    return code_version(DEFAULT_GEOMETRY)

@@ -208,10 +208,11 @@ def write_sphere_figure(out: Path) -> Path | None:
     """``sphere_cylinder.png``: the shipped sphere laws beside the cylinders' of the same
     materials (:mod:`restitution.reproduction.figures.sphere_cylinder`); ``None`` when fewer than
     three sphere laws are shipped (no material could be served)."""
+    from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.laws.law_nu import shipped_nus
     from restitution.reproduction.figures import sphere_cylinder
 
-    if len(shipped_nus("sphere")) < 3:
+    if len(shipped_nus(SPHERE.geometry)) < 3:
         return None
     path = Path(out) / "sphere_cylinder.png"
     sphere_cylinder.plot(sphere_cylinder.compute(), path)
