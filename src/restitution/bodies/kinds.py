@@ -14,8 +14,9 @@ layers above read these attributes; they never compare a kind's name.
 **Adding a kind** is one new package ``restitution/bodies/<name>/`` whose module ``kind.py``
 builds its :class:`BodyKind` and passes it to :func:`register`. The registry finds the packages
 itself (:func:`kinds`, scipy's ``solve_ivp`` ``METHODS`` in spirit): no module outside the new
-package is edited. A kind may also be registered from anywhere (a test's toy kind) and removed
-again with :func:`unregister`.
+package is edited. A kind outside the package (a user's, a test's toy kind) is a module that
+calls :func:`register` on import, named in the environment variable :data:`PLUGINS_ENV` so that
+the spawned workers of a sweep find it too; :func:`unregister` removes a kind again.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import math
+import os
 import pkgutil
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -32,6 +34,7 @@ from restitution.errors import InputError, real
 
 __all__ = [
     "DEFAULT_GEOMETRY",
+    "PLUGINS_ENV",
     "GEOMETRIES",
     "KINDS",
     "BodyKind",
@@ -307,8 +310,14 @@ KINDS: dict[str, BodyKind] = {}
 _found = False
 
 
+PLUGINS_ENV = "RESTITUTION_KINDS"
+"""Environment variable naming modules (comma-separated) that register kinds of their own: a
+kind outside the package, known to every process of a sweep (spawned workers inherit it)."""
+
+
 def _discover() -> None:
-    """Import ``restitution.bodies.<name>.kind`` of every subpackage that has one (once)."""
+    """Import ``restitution.bodies.<name>.kind`` of every subpackage that has one, then the
+    modules named in :data:`PLUGINS_ENV` (once)."""
     global _found
     if _found:
         return
@@ -320,6 +329,14 @@ def _discover() -> None:
             name = f"{package.__name__}.{info.name}.kind"
             if importlib.util.find_spec(name) is not None:
                 importlib.import_module(name)
+    for name in filter(None, (n.strip() for n in os.environ.get(PLUGINS_ENV, "").split(","))):
+        try:
+            importlib.import_module(name)
+        except ImportError as exc:
+            raise InputError(
+                f"{PLUGINS_ENV} names the module {name!r}, which does not import ({exc}); "
+                f"fix the name or unset {PLUGINS_ENV}"
+            ) from None
 
 
 def register(kind: BodyKind) -> BodyKind:
