@@ -202,6 +202,10 @@ class BodyKind:
         How its shipped laws on the wall are computed.
     pair_production : PairPlan or None
         How the laws of two bodies of this kind are computed.
+    ball : bool
+        Whether the body is the ball of radius ``R`` of its dimension (the disk, the sphere),
+        the body the finite-element route meshes: on the half disk, a planar kind's upper half
+        or a three-dimensional kind's meridian section (:mod:`restitution.fem.section`).
     """
 
     geometry: str
@@ -232,6 +236,7 @@ class BodyKind:
     pair_compression: Callable | None = None
     production: ProductionPlan | None = None
     pair_production: PairPlan | None = field(default=None)
+    ball: bool = False
 
     @property
     def name(self) -> str:

@@ -141,6 +141,7 @@ KIND = register(
         pair_compression=contact.pair_max_compression,
         production=PRODUCTION,
         pair_production=PAIR_PRODUCTION,
+        ball=True,
     )
 )
 """The disk of the paper."""
