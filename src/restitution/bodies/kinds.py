@@ -210,6 +210,10 @@ class BodyKind:
     vibrating : bool
         Whether the vibrating-body layer (a ringing start, chains of collisions:
         ``collide --excite``, ``bounce``) takes this kind (docs/vibrating.md).
+    ball : bool
+        Whether the body is the ball of radius ``R`` of its dimension (the disk, the sphere),
+        the body the finite-element route meshes: on the half disk, a planar kind's upper half
+        or a three-dimensional kind's meridian section (:mod:`restitution.fem.section`).
     """
 
     geometry: str
@@ -242,6 +246,7 @@ class BodyKind:
     pair_production: PairPlan | None = None
     default_nus: tuple[float, ...] = ()
     vibrating: bool = False
+    ball: bool = False
 
     @property
     def name(self) -> str:

@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from restitution.bodies.cache import get_modes
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.dynamics.results import CollisionResult
 from restitution.errors import InputError
@@ -96,7 +97,7 @@ def fem_refinement(
     alpha: float,
     levels,
     settings: FemSettings | None = None,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> tuple[list[CollisionResult], list[int], float, float]:
     """FEM runs of the body ``geometry`` at the given refinement levels.
 
@@ -119,7 +120,12 @@ def fem_refinement(
 
 
 def modal_extrapolation(
-    material: Material, v: float, alpha: float, counts, geometry: str = "disk", **collide_options
+    material: Material,
+    v: float,
+    alpha: float,
+    counts,
+    geometry: str = DEFAULT_GEOMETRY,
+    **collide_options,
 ) -> tuple[list[CollisionResult], LinearLimit | None, float, float]:
     """Modal runs with the ``N`` lowest modes of the body ``geometry`` and the ``N -> infinity``
     limit.
@@ -153,7 +159,7 @@ def compare_fem_modal(
     v: float,
     alpha: float,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     levels=(0, 1, 2),
     counts=(200, 400, 800, 1600),
     settings: FemSettings | None = None,
@@ -167,7 +173,8 @@ def compare_fem_modal(
         Speed towards the wall, ``c``.
     alpha : float
         Wall hardness, ``1/R``.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body; both methods use it.
     levels : sequence of int
         FEM refinement levels, ascending.

@@ -37,6 +37,7 @@ import numpy as np
 from scipy.special import i0e
 
 from restitution import budget
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.errors import InputError
 from restitution.fem.elasticity import as_material
@@ -274,7 +275,7 @@ def run_cost(
     v: float,
     alpha: float,
     settings: FemSettings | None = None,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> RunCost:
     """Estimated cost of ``fem_collide(material_or_nu, v, alpha, geometry=geometry,
     settings=settings)``, without making its mesh.
@@ -287,7 +288,8 @@ def run_cost(
     alpha : float
         Wall hardness, ``1/R``.
     settings : FemSettings, optional
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
 
     Returns
     -------
@@ -396,7 +398,7 @@ def collide_plan(
     v: float,
     alpha: float,
     refine: int,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     settings: FemSettings | None = None,
 ) -> FemPlan:
     """The cost of ``fem_collide(..., refine=refine)`` (``settings``: the other fields)."""
@@ -409,7 +411,7 @@ def compare_plan(
     v: float,
     alpha: float,
     levels: Sequence[int],
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     settings: FemSettings | None = None,
 ) -> FemPlan:
     """The cost of the FEM side of :func:`restitution.fem.compare.compare_fem_modal` (the modal
@@ -424,7 +426,7 @@ def epsilon_plan(
     material_or_nu: Material | float,
     v: float,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     alpha: float | None = None,
     alphas: Sequence[float] | None = None,
     alpha_scale: str | None = None,
@@ -508,7 +510,7 @@ def check_collide(
     alpha: float,
     refine: int,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     settings: FemSettings | None = None,
     force: bool = False,
     name: str = "refine",
@@ -538,7 +540,7 @@ def check_compare(
     refine: int,
     refine_min: int = 0,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     settings: FemSettings | None = None,
     force: bool = False,
     name: str = "refine",

@@ -28,6 +28,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as sla
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.errors import InputError, RestitutionError
 from restitution.fem.elasticity import (
@@ -54,7 +55,7 @@ def half_disk_system(
     material_or_nu: Material | float,
     refine: int,
     discretisation: Discretisation = "P2",
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> HalfDisk:
     """Half disk (or the sphere's meridian section, ``geometry="sphere"``) on the uniform mesh
     of level ``refine`` (element size ``~2^-refine R``)."""
@@ -103,7 +104,7 @@ def fem_symmetric_frequencies(
     count: int,
     refine: int,
     discretisation: Discretisation = "P2",
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> np.ndarray:
     """Lowest ``count`` symmetric frequencies of the free disk (or axisymmetric frequencies of
     the free sphere) by finite elements.
@@ -120,7 +121,8 @@ def fem_symmetric_frequencies(
         halves the element size and quadruples the number of unknowns.
     discretisation : {"P2", "P2+lumped"}
         Consistent P2 (default) or the mass-lumped P2 + bubble element of the impact solver.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The disk's symmetric family or the sphere's axisymmetric spheroidal modes.
 
     Returns

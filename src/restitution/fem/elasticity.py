@@ -54,6 +54,7 @@ from skfem import (
 from skfem.helpers import dot
 from skfem.models.elasticity import linear_elasticity
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.errors import InputError
 from restitution.fem.axisymmetric import axisymmetric_elasticity, axisymmetric_mass, lumped_weights
@@ -79,7 +80,7 @@ _P2_AT_CENTROID_VERTEX = -1.0 / 9.0
 _P2_AT_CENTROID_EDGE = 4.0 / 9.0
 
 
-def as_material(material_or_nu: Material | float, geometry: str = "disk") -> Material:
+def as_material(material_or_nu: Material | float, geometry: str = DEFAULT_GEOMETRY) -> Material:
     """A :class:`Material` from itself or from a Poisson number (two-dimensional for the disk,
     three-dimensional for the sphere; :func:`restitution.fem.section.fem_material`)."""
     return fem_material(material_or_nu, geometry)
@@ -93,7 +94,8 @@ class HalfDisk:
     ----------
     material : Material
     discretisation : {"P2", "P2+lumped"}
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body the half disk stands for (:mod:`restitution.fem.section`).
     mesh : skfem.MeshTri2
     basis : skfem.Basis
@@ -206,7 +208,7 @@ def assemble_half_disk(
     mesh: MeshTri2,
     material_or_nu: Material | float,
     discretisation: Discretisation = "P2",
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> HalfDisk:
     """Assemble stiffness and mass matrices of the half disk with ``u_y = 0`` on the diameter.
 
@@ -218,7 +220,8 @@ def assemble_half_disk(
         The body's constants (two-dimensional for the disk, three-dimensional for the sphere).
     discretisation : {"P2", "P2+lumped"}
         Consistent P2, or P2 + bubble with the diagonal (lumped) mass matrix.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The half disk itself (plane stress) or the sphere's meridian section (axisymmetric).
 
     Returns

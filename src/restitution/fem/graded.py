@@ -37,6 +37,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError
 from restitution.fem.impact import FemSettings, contact_angle_estimate
 from restitution.fem.mesh import ARC
@@ -52,7 +53,9 @@ __all__ = [
 ]
 
 
-def contact_half_width(v: float, geometry: str = "disk", nu: float | None = None) -> float:
+def contact_half_width(
+    v: float, geometry: str = DEFAULT_GEOMETRY, nu: float | None = None
+) -> float:
     """Expected contact half-width ``a`` (``R``) at speed ``v`` (``c``).
 
     Disk: two-dimensional Hertz, ``a = sqrt(4 F R / (pi E))`` with the quasistatic peak force
@@ -107,7 +110,7 @@ class ContactGrading:
         }
 
 
-def default_grading(geometry: str = "disk") -> ContactGrading:
+def default_grading(geometry: str = DEFAULT_GEOMETRY) -> ContactGrading:
     """The grading of a convergence study of ``geometry`` when none is given.
 
     The disk: :class:`ContactGrading` as it is. The sphere: bulk elements of at most
@@ -132,7 +135,7 @@ def graded_settings(
     grading: ContactGrading | None = None,
     base: FemSettings | None = None,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     nu: float | None = None,
 ) -> FemSettings:
     """FEM settings of the contact-graded mesh ``level`` for speed ``v`` and hardness ``alpha``.
@@ -149,7 +152,8 @@ def graded_settings(
         Default :func:`default_grading` of the ``geometry``.
     base : FemSettings, optional
         Integrator settings (``energy_tol``, ``step_safety``, ...) to keep.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body whose contact sizes the mesh; the sphere's needs its Poisson number ``nu``.
 
     Returns

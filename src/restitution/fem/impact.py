@@ -50,6 +50,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.dynamics.results import CollisionResult, History
 from restitution.errors import InputError, RestitutionError
@@ -135,7 +136,7 @@ class FemSettings:
 
 
 def contact_angle_estimate(
-    v: float, alpha: float, geometry: str = "disk", nu: float | None = None
+    v: float, alpha: float, geometry: str = DEFAULT_GEOMETRY, nu: float | None = None
 ) -> float:
     """Half-width (radians) of the arc to mesh finely.
 
@@ -153,7 +154,7 @@ def contact_angle_estimate(
     return float(min(1.2 * math.sqrt(a**2 + 14.0 / alpha), 0.5 * math.pi))
 
 
-def pressure_estimate(v: float, geometry: str = "disk", nu: float | None = None) -> float:
+def pressure_estimate(v: float, geometry: str = DEFAULT_GEOMETRY, nu: float | None = None) -> float:
     """Largest wall pressure to plan the step for, ``E``: twice the Hertz peak (the disk's
     ``2 F/(pi a)``, the sphere's ``3 F / (2 pi a^2)``;
     :func:`restitution.fem.section.peak_pressure`).
@@ -172,7 +173,11 @@ def _dot(a: np.ndarray, b: np.ndarray) -> float:
 
 
 def model_for(
-    material: Material, v: float, alpha: float, settings: FemSettings, geometry: str = "disk"
+    material: Material,
+    v: float,
+    alpha: float,
+    settings: FemSettings,
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> FemModel:
     """The (cached) :class:`FemModel` that :func:`fem_collide` uses for these inputs."""
     angle = settings.contact_angle
@@ -343,7 +348,7 @@ def fem_collide(
     v: float,
     alpha: float,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     settings: FemSettings | None = None,
     **overrides,
 ) -> CollisionResult:
@@ -358,7 +363,8 @@ def fem_collide(
         Speed towards the wall, units of ``c``, in (0, 1).
     alpha : float
         Wall hardness, ``1 / R``.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body (:mod:`restitution.fem.section`).
     settings : FemSettings, optional
         Numerical settings; keyword ``overrides`` (e.g. ``refine=2``) replace single fields.

@@ -17,6 +17,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import Protocol
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError
 from restitution.jsonable import finite_or_none
 
@@ -178,7 +179,7 @@ def judge_law(points: Iterable, laws: Mapping[float, LawLike] | LawLike) -> LawJ
     return LawJudgement(points=tuple(rows))
 
 
-def judge_shipped_law(reference_path=None, *, geometry: str = "disk") -> LawJudgement:
+def judge_shipped_law(reference_path=None, *, geometry: str = DEFAULT_GEOMETRY) -> LawJudgement:
     """The shipped FEM reference of the body ``geometry`` against its shipped modal laws
     (``restitution.law(nu, geometry=geometry)``)."""
     from restitution.fem.reference import load_reference

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution._version import __version__
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.errors import InputError
 from restitution.fem.elasticity import as_material
@@ -135,7 +136,8 @@ class FemEpsilon:
     grading : ContactGrading
     levels : tuple of int
     wall_time_s : float
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
     """
 
     nu: float
@@ -156,7 +158,7 @@ class FemEpsilon:
     grading: ContactGrading
     levels: tuple[int, ...]
     wall_time_s: float
-    geometry: str = "disk"
+    geometry: str = DEFAULT_GEOMETRY
 
     @property
     def alphas(self) -> tuple[float, ...]:
@@ -183,7 +185,7 @@ class FemEpsilon:
     @property
     def _body(self) -> str:
         """``"sphere, "`` for a sphere; nothing for the disk (the default body)."""
-        return "" if self.geometry == "disk" else f"{self.geometry}, "
+        return "" if self.geometry == DEFAULT_GEOMETRY else f"{self.geometry}, "
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary with the keys of the modal route's
@@ -247,7 +249,7 @@ def _one_run(
     alpha: float,
     level: int,
     settings: FemSettings,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> FemRun:
     start = time.perf_counter()
     summary = mesh_summary(model_for(material, v, alpha, settings, geometry), v)
@@ -275,7 +277,7 @@ def fem_epsilon(
     material_or_nu: Material | float,
     v: float,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     alpha: float | None = None,
     alphas: Sequence[float] | None = None,
     alpha_scale: str | None = None,
@@ -293,7 +295,8 @@ def fem_epsilon(
         three-dimensional for the sphere).
     v : float
         Speed towards the wall before the collision, ``c``.
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body (:mod:`restitution.fem.section`).
     alpha : float, optional
         Only take ``h -> 0`` at this wall hardness (``1/R``).
@@ -353,7 +356,9 @@ def fem_epsilon(
     return _assemble(material, v, alpha, runs, levels, grading, wall, geometry)
 
 
-def _assemble(material, v, alpha, runs, levels, grading, wall, geometry="disk") -> FemEpsilon:
+def _assemble(
+    material, v, alpha, runs, levels, grading, wall, geometry=DEFAULT_GEOMETRY
+) -> FemEpsilon:
     """Both limits from the grid of runs."""
     alpha_values = sorted({r.alpha for r in runs})
     loss = np.array(

@@ -23,6 +23,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.fem.contact import ArcQuadrature, arc_quadrature
 from restitution.fem.elasticity import HalfDisk, assemble_half_disk
@@ -104,12 +105,12 @@ def fem_model(
     h_far: float = 0.25,
     grading: float = 0.3,
     n_gauss: int = 8,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> FemModel:
     """Mesh, matrices and bounds for one material and mesh (cached).
 
     Parameters are those of :class:`FemSettings` (``contact_angle`` in radians) and the
-    ``geometry`` (``"disk"`` or ``"sphere"``, :mod:`restitution.fem.section`).
+    ``geometry`` (a body kind the FEM route meshes, :func:`restitution.fem.section.fem_geometries`).
     """
     mesh = graded_half_disk(
         refine, contact_angle, h_contact=h_contact, h_far=h_far, grading=grading

@@ -29,6 +29,7 @@ from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.impact import FemCollisionError, FemSettings
 from restitution.fem.limits import LEVELS, FemEpsilon, FemRun, _assemble
 from restitution.fem.pair_impact import fem_collide_pair, pair_model_for
+from restitution.fem.pair_model import PAIR_GEOMETRY
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
     ALPHA_SCALE,
@@ -247,7 +248,7 @@ def fem_pair_epsilon(
         raise InputError(f"levels must be at least two consecutive integers, got {levels}")
     if levels[0] < 0:
         raise InputError(f"mesh levels must be non-negative, got {levels}")
-    grading = grading or default_grading("disk")
+    grading = grading or default_grading(PAIR_GEOMETRY)
     products = None
     if alpha is not None:
         if not (alpha > 0 and math.isfinite(alpha)):
@@ -267,7 +268,7 @@ def fem_pair_epsilon(
             if on_run is not None:
                 on_run(run)
     wall = time.perf_counter() - start
-    limits = _assemble(material, w, alpha, runs, levels, grading, wall, "disk")
+    limits = _assemble(material, w, alpha, runs, levels, grading, wall, PAIR_GEOMETRY)
     return FemPairEpsilon(
         partner=partner,
         nu2=float(partner.nu2(material.nu)),

@@ -67,6 +67,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.sparse as sp
 
+from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.material import Material
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
@@ -77,6 +78,7 @@ from restitution.fem.impact import FemSettings
 from restitution.fem.model import FemModel, _largest_eigenvalue, fem_model
 
 __all__ = [
+    "PAIR_GEOMETRY",
     "PairModel",
     "PairScales",
     "check_pair_inputs",
@@ -84,6 +86,10 @@ __all__ = [
     "pair_model",
     "pair_scales",
 ]
+
+PAIR_GEOMETRY = DISK.geometry
+"""The kind of both bodies of an FEM pair: the route computes two disks meeting head-on (module
+docs), each meshed as the disk on the wall is."""
 
 _TRACE = 3
 """Nodes of a quadratic arc facet: its two vertices and its midpoint."""
@@ -191,7 +197,7 @@ def pair_mesh_settings(
     partner, w = check_pair_inputs(partner, w, alpha)
     if int(level) != level or level < 0:
         raise InputError(f"the mesh level must be a non-negative integer, got {level}")
-    grading = grading or default_grading("disk")
+    grading = grading or default_grading(PAIR_GEOMETRY)
     base = base or FemSettings()
     scales = pair_scales(partner, w)
     b = scales.half_width
@@ -369,7 +375,7 @@ def pair_model(
     models = tuple(
         fem_model(
             material, int(s.refine), float(s.contact_angle), s.h_contact, s.h_far, s.grading,
-            s.n_gauss, "disk",
+            s.n_gauss, PAIR_GEOMETRY,
         )
         for material, s in zip(materials, (first, second), strict=True)
     )  # fmt: skip
@@ -417,7 +423,7 @@ def pair_model(
     disk = HalfDisk(
         material=materials[0],
         discretisation="P2+lumped",
-        geometry="disk",
+        geometry=PAIR_GEOMETRY,
         mesh=None,
         basis=None,
         free=np.arange(n),

@@ -38,6 +38,7 @@ from restitution.errors import InputError
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun
 from restitution.fem.pair_limits import fem_pair_epsilon
+from restitution.fem.pair_model import PAIR_GEOMETRY
 from restitution.fem.reference import _environment
 from restitution.provenance import FEM_MODULES, package_modules, source_digest
 
@@ -183,7 +184,7 @@ def compute_pair_reference(
     dict
         What was written.
     """
-    grading = grading or default_grading("disk")
+    grading = grading or default_grading(PAIR_GEOMETRY)
     path = Path(path)
     if append and path.exists():
         doc = json.loads(path.read_text())

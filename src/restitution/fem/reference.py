@@ -24,13 +24,18 @@ from importlib import resources
 from pathlib import Path
 
 from restitution import atomic
+from restitution.bodies.disk.kind import KIND as DISK
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
+from restitution.fem.section import fem_geometries
 from restitution.provenance import fem_code_version
 
 __all__ = [
     "REFERENCE_POINTS",
+    "SHIPPED_POINTS",
     "SPHERE_REFERENCE_POINTS",
     "ReferencePoint",
     "reference_filename",
@@ -70,9 +75,18 @@ five points below the modal speeds, where the laws serve the low-speed theory
 (:func:`merge_reference`)."""
 
 
-def reference_filename(geometry: str = "disk") -> str:
-    """``fem_reference.json`` for the disk, ``fem_reference_<geometry>.json`` otherwise."""
-    return "fem_reference.json" if geometry == "disk" else f"fem_reference_{geometry}.json"
+SHIPPED_POINTS: dict[str, tuple[tuple[float, float, int], ...]] = {
+    DISK.geometry: REFERENCE_POINTS,
+    SPHERE.geometry: SPHERE_REFERENCE_POINTS,
+}
+"""The points of each body's shipped reference, by the kind's name (the default points of
+``python -m restitution.fem.reference``)."""
+
+
+def reference_filename(geometry: str = DEFAULT_GEOMETRY) -> str:
+    """``fem_reference.json`` for the disk, ``fem_reference_<file tag>.json`` otherwise (the
+    kind's :meth:`~restitution.bodies.kinds.BodyKind.file_name`)."""
+    return body_kind(geometry).file_name("fem_reference") + ".json"
 
 
 def _environment() -> dict:
@@ -118,7 +132,7 @@ def compute_reference(
     grading: ContactGrading | None = None,
     on_run: Callable[[float, float, FemRun], None] | None = None,
     provenance: dict | None = None,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
 ) -> dict:
     """Compute FEM epsilon with errors at ``points`` and write them with provenance to ``path``.
 
@@ -135,7 +149,8 @@ def compute_reference(
         Called with ``(nu, v, run)`` after every collision.
     provenance : dict, optional
         Further provenance to store (e.g. the commit of the sources).
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body (:mod:`restitution.fem.section`); its default grading when ``grading`` is not
         given (:func:`restitution.fem.graded.default_grading`).
 
@@ -192,7 +207,7 @@ def merge_reference(docs: list[dict]) -> dict:
                 chosen[key] = {**point, "run": i}
     runs = [{k: v for k, v in doc.items() if k != "points"} for doc in docs]
     versions = {r["code_version"] for r in runs}
-    bodies = {doc.get("geometry", "disk") for doc in docs}
+    bodies = {doc.get("geometry", DEFAULT_GEOMETRY) for doc in docs}
     if len(bodies) != 1:
         raise InputError(f"cannot merge references of different bodies: {', '.join(bodies)}")
     return {
@@ -207,7 +222,7 @@ def merge_reference(docs: list[dict]) -> dict:
 
 
 def load_reference(
-    path: str | Path | None = None, *, geometry: str = "disk"
+    path: str | Path | None = None, *, geometry: str = DEFAULT_GEOMETRY
 ) -> tuple[ReferencePoint, ...]:
     """The FEM reference points from ``path`` (default: the shipped file of ``geometry``).
 
@@ -220,7 +235,7 @@ def load_reference(
         text = Path(path).read_text()
     try:
         doc = json.loads(text)
-        if doc.get("geometry", "disk") != geometry:
+        if doc.get("geometry", DEFAULT_GEOMETRY) != geometry:
             raise InputError(
                 f"{path} is the FEM reference of the {doc['geometry']}, not of the {geometry}"
             )
@@ -249,10 +264,12 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description="Compute FEM reference values of epsilon.")
     parser.add_argument("out", help="JSON file to write")
     parser.add_argument("points", nargs="*", help="nu:v[:first_level] (default: the shipped set)")
-    parser.add_argument("--geometry", choices=("disk", "sphere"), default="disk")
+    parser.add_argument("--geometry", choices=fem_geometries(), default=DEFAULT_GEOMETRY)
     args = parser.parse_intermixed_args(argv)
-    default = SPHERE_REFERENCE_POINTS if args.geometry == "sphere" else REFERENCE_POINTS
-    points = [tuple(float(x) for x in a.split(":")) for a in args.points] or default
+    points = [tuple(float(x) for x in a.split(":")) for a in args.points]
+    points = points or SHIPPED_POINTS.get(args.geometry, ())
+    if not points:
+        parser.error(f"the {args.geometry} has no shipped reference points; give nu:v points")
     try:
         commit = subprocess.run(
             ["git", "rev-parse", "HEAD"], capture_output=True, text=True, check=True

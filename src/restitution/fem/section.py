@@ -6,7 +6,9 @@ constants, the sphere's three-dimensional ones); speeds in ``c``, lengths in ``R
 
 Both bodies are meshed on the same half disk ``{x^2 + y^2 <= 1, y >= 0}``
 (:mod:`restitution.fem.mesh`) with the same elements; only the measure and the elastic
-constants differ:
+constants differ. The route meshes the kinds that are balls (:attr:`BodyKind.ball
+<restitution.bodies.kinds.BodyKind.ball>`), each by its dimension: a planar kind on its upper
+half, a three-dimensional kind on its meridian section:
 
 * ``"disk"``: plane stress on the upper half of the disk (the symmetric family, roller
   ``u_y = 0`` on the diameter); measure ``dA``; Lame constants of eq. (6),
@@ -28,26 +30,31 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from restitution.bodies.disk.contact import contact_time_estimate as disk_contact_time
 from restitution.bodies.disk.contact import peak_force_estimate
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, BodyKind, geometries, kinds
 from restitution.bodies.material import Material
-from restitution.bodies.sphere.surface import contact_time_estimate as sphere_contact_time
-from restitution.bodies.sphere.surface import max_compression_estimate
 from restitution.errors import InputError
 
 __all__ = [
     "FEM_GEOMETRIES",
     "Section",
     "contact_time",
+    "fem_geometries",
     "fem_material",
     "hertz_scales",
     "peak_pressure",
     "section",
 ]
 
-FEM_GEOMETRIES = ("disk", "sphere")
-"""The bodies the FEM route meshes."""
+
+def fem_geometries() -> tuple[str, ...]:
+    """The names of the kinds the FEM route meshes (:attr:`BodyKind.ball`), the default first."""
+    return tuple(name for name in geometries() if kinds()[name].ball)
+
+
+FEM_GEOMETRIES: tuple[str, ...] = fem_geometries()
+"""The bodies the FEM route meshes: the package's balls, the disk and the sphere (a kind
+registered later is in :func:`fem_geometries`)."""
 
 
 @dataclass(frozen=True)
@@ -56,7 +63,8 @@ class Section:
 
     Attributes
     ----------
-    geometry : {"disk", "sphere"}
+    geometry : str
+        A body kind's name (:func:`fem_geometries`).
     axisymmetric : bool
         Whether every integral carries the weight ``2 pi y`` (the sphere's meridian section).
     copies : float
@@ -77,40 +85,48 @@ class Section:
         return E * nu / (1.0 - nu**2), E / (2.0 * (1.0 + nu))
 
 
-_SECTIONS = {
-    "disk": Section("disk", axisymmetric=False, copies=2.0),
-    "sphere": Section("sphere", axisymmetric=True, copies=1.0),
-}
-
-
-def section(geometry: str) -> Section:
-    """The :class:`Section` of ``geometry``; :class:`InputError` naming the choices if none."""
-    found = _SECTIONS.get(geometry) if isinstance(geometry, str) else None
-    if found is None:
+def _kind(geometry: str) -> BodyKind:
+    """The kind named ``geometry`` if the FEM route meshes it; else :class:`InputError` naming
+    those it meshes."""
+    found = kinds().get(geometry) if isinstance(geometry, str) else None
+    if found is None or not found.ball:
         raise InputError(
-            f"the FEM route meshes {', '.join(FEM_GEOMETRIES)}; got geometry {geometry!r}"
+            f"the FEM route meshes {', '.join(fem_geometries())}; got geometry {geometry!r}"
         )
     return found
 
 
-def fem_material(material_or_nu: Material | float, geometry: str = "disk") -> Material:
+def section(geometry: str) -> Section:
+    """The :class:`Section` of ``geometry``: a planar kind's upper half (two copies make the
+    body) or a three-dimensional kind's meridian section (axisymmetric, the whole body);
+    :class:`InputError` naming the choices if the FEM route does not mesh it."""
+    kind = _kind(geometry)
+    if kind.planar:
+        return Section(kind.geometry, axisymmetric=False, copies=2.0)
+    return Section(kind.geometry, axisymmetric=True, copies=1.0)
+
+
+def fem_material(material_or_nu: Material | float, geometry: str = DEFAULT_GEOMETRY) -> Material:
     """The material of a FEM body, from itself or from its Poisson number (``E = rho = 1``).
 
     The constants are the body's own: two-dimensional (plane stress) for the disk,
-    three-dimensional for the sphere, whose Poisson number must lie in ``(-1, 0.5)``.
+    three-dimensional for the sphere, whose Poisson number must lie in ``(-1, 0.5)``
+    (the kind's :meth:`~restitution.bodies.kinds.BodyKind.check_nu`; the disk's interval is the
+    :class:`Material`'s own).
     """
-    section(geometry)
+    kind = _kind(geometry)
     material = (
         material_or_nu
         if isinstance(material_or_nu, Material)
         else Material(nu=float(material_or_nu))
     )
-    if geometry != "disk":
-        body_kind(geometry).check_nu(material.nu)
+    kind.check_nu(material.nu)
     return material
 
 
-def hertz_scales(v: float, geometry: str = "disk", nu: float | None = None) -> tuple[float, float]:
+def hertz_scales(
+    v: float, geometry: str = DEFAULT_GEOMETRY, nu: float | None = None
+) -> tuple[float, float]:
     """Quasistatic largest wall force and contact half-width at speed ``v`` (``c``).
 
     * disk: ``F = 2 E0 / delta`` with ``E0 = pi v^2 / 2`` and ``delta = v sqrt(ln(4/v))``
@@ -129,16 +145,17 @@ def hertz_scales(v: float, geometry: str = "disk", nu: float | None = None) -> t
     v = float(v)
     if not 0.0 < v < 1.0:
         raise InputError(f"the speed v must lie in (0, 1) in units of c, got {v}")
+    kind = _kind(geometry)
     if section(geometry).axisymmetric:
-        nu = _sphere_nu(nu)
-        delta = max_compression_estimate(v, nu)
+        nu = _scale_nu(kind, nu)
+        delta = kind.max_compression(v, nu)
         force = 4.0 / 3.0 / (1.0 - nu**2) * delta**1.5
         return force, math.sqrt(delta)
     force = peak_force_estimate(v)
     return force, math.sqrt(4.0 * force / math.pi)
 
 
-def peak_pressure(v: float, geometry: str = "disk", nu: float | None = None) -> float:
+def peak_pressure(v: float, geometry: str = DEFAULT_GEOMETRY, nu: float | None = None) -> float:
     """Quasistatic peak wall pressure at speed ``v``, ``E``: the disk's ``2 F / (pi a)``, the
     sphere's ``3 F / (2 pi a^2)`` (:func:`hertz_scales`)."""
     force, a = hertz_scales(v, geometry, nu)
@@ -147,15 +164,20 @@ def peak_pressure(v: float, geometry: str = "disk", nu: float | None = None) -> 
     return 2.0 * force / (math.pi * a)
 
 
-def contact_time(v: float, geometry: str = "disk", nu: float | None = None) -> float:
-    """Quasistatic contact time against a rigid wall at speed ``v``, ``R / c`` (eq. 61 for the
-    disk, Hertz's ``2.943 delta_max / v`` for the sphere)."""
-    if section(geometry).axisymmetric:
-        return float(sphere_contact_time(float(v), _sphere_nu(nu)))
-    return disk_contact_time(float(v))
+def contact_time(v: float, geometry: str = DEFAULT_GEOMETRY, nu: float | None = None) -> float:
+    """Quasistatic contact time against a rigid wall at speed ``v``, ``R / c`` (the kind's
+    :attr:`~restitution.bodies.kinds.BodyKind.contact_time`: eq. 61 for the disk, Hertz's
+    ``2.943 delta_max / v`` for the sphere)."""
+    kind = _kind(geometry)
+    if kind.scales_need_nu:
+        return float(kind.contact_time(float(v), _scale_nu(kind, nu)))
+    return kind.contact_time(float(v), nu)
 
 
-def _sphere_nu(nu: float | None) -> float:
+def _scale_nu(kind: BodyKind, nu: float | None) -> float:
+    """``nu`` checked by ``kind``; :class:`InputError` if it is missing."""
     if nu is None:
-        raise InputError("the sphere's contact scales need its Poisson number nu; pass nu=")
-    return body_kind("sphere").check_nu(nu)
+        raise InputError(
+            f"the {kind.geometry}'s contact scales need its Poisson number nu; pass nu="
+        )
+    return kind.check_nu(nu)

@@ -144,6 +144,7 @@ KIND = register(
         # The paper's two Poisson numbers (Fig. 1).
         default_nus=(0.33, 0.9),
         vibrating=True,
+        ball=True,
     )
 )
 """The disk of the paper."""

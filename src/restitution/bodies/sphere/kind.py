@@ -108,6 +108,7 @@ KIND = register(
         ),
         low_speed_route="rayleigh",
         production=PRODUCTION,
+        ball=True,
     )
 )
 """The elastic sphere (docs/spheres.md)."""
