@@ -43,10 +43,14 @@ FEM_MODULES: tuple[str, ...] = (
     "restitution.fem.mesh",
     "restitution.fem.model",
     "restitution.fem.richardson",
+    "restitution.fem.section",
     "restitution.limits.extrapolation",
     "restitution.bodies.material",
+    "restitution.bodies.disk.contact",
+    "restitution.bodies.sphere.surface",
 )
-"""Modules whose source determines an FEM reference value."""
+"""Modules whose source determines an FEM reference value (:mod:`restitution.fem.section` sets
+the Lame constants, the mesh's copies and, with the bodies' contact scales, the graded mesh)."""
 
 
 def package_modules(package: str) -> tuple[str, ...]:
