@@ -194,6 +194,11 @@ class BodyKind:
         ``restitution.laws.production``); ``None``: none.
     pair_low_speed_route : str or None
         The same for two bodies of this kind.
+    quasistatic_law : str or None
+        Name of its quasistatic contact law on the rigid wall (one of the laws of its theory,
+        :func:`restitution.quasistatic.pulse.contact_law_for`) on which the viscous loss of a
+        damping body is computed (:mod:`restitution.laws.damped`); ``None``: the theory's
+        default.
     basis_at : callable or None
         ``basis_at(orders, angle)``: the surface basis of the orders at any angles, shape
         (M, 2K) (what a pair of two radii needs); ``None``: not available.
@@ -240,6 +245,7 @@ class BodyKind:
     law_units: str
     low_speed_route: str | None = None
     pair_low_speed_route: str | None = None
+    quasistatic_law: str | None = None
     basis_at: Callable | None = None
     pair_compression: Callable | None = None
     production: ProductionPlan | None = None

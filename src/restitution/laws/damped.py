@@ -36,6 +36,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy.optimize import brentq
 
+from restitution.bodies.disk.kind import KIND as DISK
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.laws.si_law import SILaw
 from restitution.status import Status
@@ -69,27 +71,48 @@ points (:mod:`restitution.laws.damped_check`, ``nu = 0.3``) measured 0.31, 0.32 
 ``v = 0.003, 0.00627, 0.0131``; the largest is used. Counted in the error of a sphere's
 damped law, not corrected (one Poisson number, three speeds)."""
 
+# What each body's modal viscous loss exceeds the quasistatic one by, measured for each body
+# (:mod:`restitution.laws.damped_check`): the factor on the quasistatic viscous loss at its
+# largest compression (``R``) for a grain of the kind named.
+_MODAL_VISCOUS_FACTOR = {
+    DISK.name: lambda compression: 1.0 + DISK_VISCOUS_SPREAD,
+    SPHERE.name: lambda compression: 1.0 + SPHERE_SIZE_COEFFICIENT * np.sqrt(compression),
+}
+
+
+def _modal_viscous_factor(si: SILaw, compression: np.ndarray):
+    """The measured factor of ``si``'s body (:data:`_MODAL_VISCOUS_FACTOR`) at the quasistatic
+    largest compressions; :class:`InputError` for a body never measured."""
+    factor = _MODAL_VISCOUS_FACTOR.get(si.grain.body)
+    if factor is None:
+        raise InputError(
+            f"the viscous loss of a damping {si.grain.body} is not compared with its modal "
+            f"model (restitution.laws.damped_check); damped laws are served for "
+            f"{', '.join(name + 's' for name in _MODAL_VISCOUS_FACTOR)}"
+        )
+    return factor(compression)
+
 
 def _contact(si: SILaw):
-    """The quasistatic contact law and mass of ``si``'s body (reduced units)."""
-    from restitution.quasistatic.hertz import contact_law
+    """The quasistatic contact law and mass of ``si``'s body (reduced units): a body on the
+    wall takes its kind's law (:attr:`~restitution.bodies.kinds.BodyKind.quasistatic_law`) and
+    its own mass (``None``: the law's body's), a pair its law and reduced mass."""
     from restitution.quasistatic.hertz_pair import pair_contact_law, pair_mass
-    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
+    from restitution.quasistatic.pulse import contact_law_for
 
     nu = float(si.law.nu)
     pair = si.law.partner
     if pair is not None:
         r = pair.radius_ratio
         return pair_contact_law(nu, radius_ratio=r), pair_mass(r)
-    if si.grain.body == "sphere":
-        return sphere_contact_law(nu), SPHERE_MASS
-    return contact_law(nu), math.pi
+    kind = si.grain.kind
+    return contact_law_for(kind.geometry, nu, kind.quasistatic_law), None
 
 
 def viscous_max_speed(si: SILaw) -> float:
     """The largest reduced speed (``c``) the quasistatic contact law of ``si``'s body takes."""
     law, mass = _contact(si)
-    return float(law.max_speed(mass))
+    return float(law.max_speed() if mass is None else law.max_speed(mass))
 
 
 def _viscous(si: SILaw, v, tau: float):
@@ -225,10 +248,7 @@ class DampedLaw:
         # What the sum leaves out: the product of the two losses (docs/damping.md).
         left_out = (1.0 - eps_el**2) * (1.0 - eps_v**2) / (2.0 * np.maximum(eps, 1e-300))
         err = np.hypot(err, left_out)
-        if self.si.grain.body == "sphere":
-            grow = 1.0 + SPHERE_SIZE_COEFFICIENT * np.sqrt(col.elastic_max_compression)
-        else:
-            grow = 1.0 + DISK_VISCOUS_SPREAD
+        grow = _modal_viscous_factor(self.si, col.elastic_max_compression)
         bigger = np.sqrt(np.maximum(1.0 - (1.0 - eps_v**2) * grow, 0.0))
         err = np.hypot(err, np.abs(_combine(eps_el, bigger) - eps))
         return eps_v, eps, err

@@ -25,6 +25,9 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.bodies.disk.kind import KIND as DISK
+from restitution.bodies.kinds import body_kind
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 
 __all__ = [
@@ -38,20 +41,21 @@ __all__ = [
 ]
 
 CHECK_POINTS = (
-    ("sphere", 0.3, 0.003, 0.05),
-    ("sphere", 0.3, 0.00627, 0.05),
-    ("sphere", 0.3, 0.0131, 0.05),
-    ("disk", 0.33, 0.02, 0.05),
-    ("disk", 0.33, 0.005, 0.05),
-    ("disk", 0.33, 0.001, 0.05),
+    (SPHERE.name, 0.3, 0.003, 0.05),
+    (SPHERE.name, 0.3, 0.00627, 0.05),
+    (SPHERE.name, 0.3, 0.0131, 0.05),
+    (DISK.name, 0.33, 0.02, 0.05),
+    (DISK.name, 0.33, 0.005, 0.05),
+    (DISK.name, 0.33, 0.001, 0.05),
     # The disk's viscous loss at three relaxation times: is a difference from the sum linear
     # in tau (the first-order viscous loss itself), or of higher order (docs/damping.md)?
-    ("disk", 0.33, 0.005, 0.01),
-    ("disk", 0.33, 0.005, 0.025),
-    ("disk", 0.33, 0.02, 0.01),
-    ("disk", 0.33, 0.02, 0.025),
+    (DISK.name, 0.33, 0.005, 0.01),
+    (DISK.name, 0.33, 0.005, 0.025),
+    (DISK.name, 0.33, 0.02, 0.01),
+    (DISK.name, 0.33, 0.02, 0.025),
 )
-"""``(geometry, nu, v, tau)`` of the stored modal points."""
+"""``(geometry, nu, v, tau)`` of the stored modal points: reference points of each body, named
+by its kind (:mod:`restitution.bodies.sphere.kind`, :mod:`restitution.bodies.disk.kind`)."""
 
 REFERENCE_FILE = "damped_reference.json"
 
@@ -158,10 +162,12 @@ class Comparison:
 
 
 def _hertz(geometry: str, nu: float, E: float = 1.0):
-    from restitution.quasistatic.hertz import contact_law
-    from restitution.quasistatic.hertz_sphere import sphere_contact_law
+    """The quasistatic contact law of the damped law of the body ``geometry`` (its kind's
+    :attr:`~restitution.bodies.kinds.BodyKind.quasistatic_law`, as :mod:`restitution.laws.damped`
+    takes it) with the Young modulus ``E`` times the body's own."""
+    from restitution.quasistatic.pulse import contact_law_for
 
-    return sphere_contact_law(nu, E=E) if geometry == "sphere" else contact_law(nu, E=E)
+    return replace(contact_law_for(geometry, nu, body_kind(geometry).quasistatic_law), E=E)
 
 
 def _stiffness_for(geometry: str, nu: float, v: float, compression: float) -> float:

@@ -52,7 +52,7 @@ from scipy.interpolate import PchipInterpolator
 
 from restitution import atomic
 from restitution._version import __version__
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import (
     InputError,
     RestitutionError,
@@ -84,43 +84,21 @@ points without a ``route`` come from collisions (``"modal"``)."""
 _FORMAT = "restitution-law"
 _FORMAT_VERSION = 2  # 2: no anchor at v = 0; per-point settings and status
 
-MODEL = (
-    "Elastic disk (2D linear elasticity, plane stress constants E = rho = R = 1, Poisson number "
-    "nu) expanded in its symmetric free eigenmodes, hitting a wall through the potential "
-    "V = (1/alpha) int_{-pi/2}^{pi/2} exp(alpha x(phi)) dphi (Gerl & Zippelius, eqs. 40-45); "
-    "energy loss 1 - epsilon^2 extrapolated linearly in 1/alpha (alpha -> infinity) and in "
-    "1/sqrt(N) (N modes -> infinity)."
-)
-MODELS: dict[str, str] = {
-    "disk": MODEL,
-    "sphere": (
-        "Elastic sphere (3D linear elasticity, constants E = rho = R = 1, Poisson number nu) "
-        "expanded in its axisymmetric spheroidal free eigenmodes (Lamb), hitting a wall through "
-        "the potential V = (1/alpha) int exp(alpha x(theta)) dS over the near hemisphere (the "
-        "disk's eqs. 40-45 of Gerl & Zippelius on the sphere's surface); energy loss "
-        "1 - epsilon^2 extrapolated linearly in 1/alpha (alpha -> infinity) and in 1/sqrt(N) "
-        "(N modes -> infinity), each point's fits in its record."
-    ),
-}
-"""The model behind the laws of each body (``model`` of a law's metadata and exports)."""
+_DEFAULT = body_kind(DEFAULT_GEOMETRY)
 
-LAW_UNITS = (
-    "v is the disk's speed towards the wall before the collision in units of the 2D sound speed "
-    "c = sqrt(E/rho); two identical disks approaching each other at +-v (relative speed 2v) "
-    "collide identically. epsilon = -v_after / v_before of the centre of mass."
-)
-"""What a disk law's ``v`` and ``epsilon`` mean (the ``units`` of its metadata and exports);
-:func:`law_units` gives those of any body."""
+MODEL = _DEFAULT.law_model
+"""The model behind the laws of the default body, the paper's disk (its kind's
+:attr:`~restitution.bodies.kinds.BodyKind.law_model`)."""
 
-_LAW_UNITS = {
-    "disk": LAW_UNITS,
-    "sphere": (
-        "v is the sphere's speed towards the wall before the collision in units of "
-        "c = sqrt(E/rho) of its three-dimensional constants; two identical spheres approaching "
-        "each other at +-v (relative speed 2v) collide identically. epsilon = -v_after / "
-        "v_before of the centre of mass."
-    ),
-}
+MODELS: dict[str, str] = {name: kind.law_model for name, kind in kinds().items()}
+"""The model behind the laws of each of the package's bodies, by name (``model`` of a law's
+metadata and exports): each kind's :attr:`~restitution.bodies.kinds.BodyKind.law_model`, which
+:func:`law_units` and the laws read (also for a kind registered later)."""
+
+LAW_UNITS = _DEFAULT.law_units
+"""What a disk law's ``v`` and ``epsilon`` mean (the ``units`` of its metadata and exports, the
+default kind's :attr:`~restitution.bodies.kinds.BodyKind.law_units`); :func:`law_units` gives
+those of any body."""
 
 
 PAIR_MODEL = (
@@ -134,12 +112,14 @@ PAIR_MODEL = (
 """The model behind the laws of two bodies (``{kind}``: the bodies' kind)."""
 
 
-def law_units(geometry: str = "disk", partner=None) -> str:
+def law_units(geometry: str = DEFAULT_GEOMETRY, partner=None) -> str:
     """What ``v`` and ``epsilon`` of a law of the body ``geometry`` mean (with a ``partner``:
-    of the pair)."""
-    kind = body_kind(geometry).geometry
+    of the pair); the kind's :attr:`~restitution.bodies.kinds.BodyKind.law_units` on the
+    wall."""
+    found = body_kind(geometry)
     if partner is None:
-        return _LAW_UNITS[kind]
+        return found.law_units
+    kind = found.geometry
     return (
         f"v is the relative normal speed of the two {kind}s' centres before the collision in "
         f"units of c1 = sqrt(E1/rho1) of the first {kind} (radius R1 = 1); the second has "
@@ -151,8 +131,8 @@ def law_units(geometry: str = "disk", partner=None) -> str:
 
 def _model(geometry: str, partner=None) -> str:
     """The ``model`` of a law of the body ``geometry`` (with a ``partner``: of the pair)."""
-    kind = body_kind(geometry).geometry
-    return MODELS[kind] if partner is None else PAIR_MODEL.format(kind=kind)
+    kind = body_kind(geometry)
+    return kind.law_model if partner is None else PAIR_MODEL.format(kind=kind.geometry)
 
 
 NU_MATCH = 1e-4
@@ -173,18 +153,19 @@ def _partner_fields(partner) -> list[tuple[str, str, str, float]]:
 
 
 def _file_prefix(geometry: str, partner=None) -> str:
-    """``law_nu`` for the disk (the names of the first shipped files), ``law_<body>_nu`` else;
-    with a ``partner`` ``law_pair_r<R2/R1>[_E<E2/E1>][_rho<rho2/rho1>][_nu2<nu2>]_nu`` (a
-    sphere's ``law_sphere_pair_...``)."""
-    name = body_kind(geometry).geometry
+    """``<head>_nu`` with ``<head>`` the kind's name of ``law``
+    (:meth:`~restitution.bodies.kinds.BodyKind.file_name`): ``law_nu`` for the disk (the names
+    of the first shipped files), ``law_<tag>_nu`` else; with a ``partner``
+    ``<head>_pair_r<R2/R1>[_E<E2/E1>][_rho<rho2/rho1>][_nu2<nu2>]_nu`` (a sphere's
+    ``law_sphere_pair_...``)."""
+    head = body_kind(geometry).file_name("law")
     if partner is None:
-        return "law_nu" if name == "disk" else f"law_{name}_nu"
-    head = "law_pair" if name == "disk" else f"law_{name}_pair"
+        return f"{head}_nu"
     parts = [f"{tag}{value:g}" for tag, _, _, value in _partner_fields(partner)]
-    return f"{head}_{'_'.join(parts)}_nu"
+    return f"{head}_pair_{'_'.join(parts)}_nu"
 
 
-def law_filename(nu: float, geometry: str = "disk", partner=None) -> str:
+def law_filename(nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None) -> str:
     """File name of the law of the body ``geometry`` for ``nu`` (with a ``partner``, a
     :class:`~restitution.bodies.pair.partner.Partner`: of the pair).
 
@@ -216,13 +197,15 @@ def _file_nu(name: str, geometry: str, partner=None) -> float | None:
 def _curve_command(geometry: str, nu: float | None = None, partner=None) -> str:
     """The command that computes a law file of ``geometry`` (and ``partner``) for ``nu``
     (``NU`` if none)."""
-    flag = "" if geometry == "disk" else f" --geometry {geometry}"
+    kind = body_kind(geometry)
+    flag = f" {kind.option}" if kind.option else ""
     value = "NU" if nu is None else f"{float(nu):.6g}"
     pair = ""
     if partner is not None:
         pair = "".join(f" {option} {value:g}" for _, _, option, value in _partner_fields(partner))
-    # The shipped laws' settings where they exist (a body on the wall, two disks of one material).
-    same = partner is None or (geometry == "disk" and partner.same_material)
+    # The shipped laws' settings where they exist (a body on the wall, two bodies of one
+    # material of a kind with a pair production: two disks).
+    same = partner is None or (kind.pair_production is not None and partner.same_material)
     production = " --production" if same else ""
     return f"restitution curve{flag} --nu {value}{pair}{production} --out DIR"
 
@@ -389,7 +372,7 @@ class EpsilonLaw:
     def geometry(self) -> str:
         """The body of the law: ``"disk"`` (also for files written before there was another) or
         ``"sphere"``; for a pair the kind of both bodies."""
-        return str(self.metadata.get("geometry", "disk"))
+        return str(self.metadata.get("geometry", DEFAULT_GEOMETRY))
 
     @property
     def partner(self):
@@ -477,7 +460,8 @@ class EpsilonLaw:
                 f"{lo:g} <= v <= {hi:g} (units of c, {meaning}) of the "
                 f"{self.body_name} law for nu = {self.nu:g}"
             )
-            flag = "" if self.geometry == "disk" else f" --geometry {self.geometry}"
+            option = body_kind(self.geometry).option
+            flag = f" {option}" if option else ""
             if outside == "raise":
                 raise InputError(
                     text + "; the law does not extrapolate (compute further speeds with "
@@ -547,7 +531,7 @@ class EpsilonLaw:
         if len(nus) != 1:
             raise InputError(f"curves of one Poisson number are needed, got nu = {sorted(nus)}")
         nu = nus.pop()
-        bodies = {getattr(c.settings, "geometry", "disk") for c in curves}
+        bodies = {getattr(c.settings, "geometry", DEFAULT_GEOMETRY) for c in curves}
         if len(bodies) != 1:
             raise InputError(f"curves of one body are needed, got {', '.join(sorted(bodies))}")
         geometry = bodies.pop()
@@ -614,7 +598,7 @@ class EpsilonLaw:
         *,
         asymptotic_ok=None,
         parameters=None,
-        geometry: str = "disk",
+        geometry: str = DEFAULT_GEOMETRY,
         partner=None,
     ) -> EpsilonLaw:
         """Law from given points (e.g. another program's data); ``parameters`` go to metadata,
@@ -738,7 +722,8 @@ class EpsilonLaw:
             points = d["metadata"]["points"]
             metadata = dict(d["metadata"])
             metadata["source"] = source
-            geometry = metadata.get("geometry", "disk")  # files from before the sphere: disks
+            # Files from before the sphere: disks, the default kind.
+            geometry = metadata.get("geometry", DEFAULT_GEOMETRY)
             body_kind(geometry)
             _check_file_values(metadata["nu"], points)
             _check_file_partner(metadata.get("partner"))
@@ -887,7 +872,9 @@ class EpsilonLaw:
         return Path(path)
 
 
-def _metadata(nu: float, parameters: Mapping, geometry: str = "disk", partner=None) -> dict:
+def _metadata(
+    nu: float, parameters: Mapping, geometry: str = DEFAULT_GEOMETRY, partner=None
+) -> dict:
     geometry = body_kind(geometry).geometry
     out = {
         "geometry": geometry,
@@ -938,7 +925,7 @@ def _refuse_other_body(loaded: EpsilonLaw, geometry: str, path, partner=None) ->
 def law(
     nu: float | None = None,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     path: str | os.PathLike | None = None,
     nu_2d: float | None = None,
     partner=None,
@@ -956,8 +943,9 @@ def law(
         one), default 0.33 for the package's precomputed laws; for a sphere its
         three-dimensional one, required without ``path``. With ``path``, the file's ``nu`` must
         match it within :data:`NU_MATCH` when given.
-    geometry : {"disk", "sphere"}
-        The body. A law file of another body is refused.
+    geometry : str
+        The body's kind (:func:`restitution.bodies.kinds.geometries`: ``"disk"``, the default,
+        or ``"sphere"``). A law file of another body is refused.
     path : path, optional
         A law JSON file (:meth:`EpsilonLaw.to_json`, ``restitution curve --out``). Without it the
         package's precomputed file :func:`law_filename` ``(nu, geometry)`` is loaded.
@@ -992,7 +980,7 @@ def law(
     if nu_2d is not None:
         if nu is not None:
             raise InputError("give the Poisson number once: nu or nu_2d (its former name)")
-        if geometry != "disk":
+        if kind.nu_name != "nu_2d":
             raise InputError(
                 f"nu_2d is the disk's two-dimensional Poisson number; the {geometry}'s law takes "
                 f"its own nu: law(nu, geometry={geometry!r})"
@@ -1009,8 +997,9 @@ def law(
                 f"(`{_curve_command(geometry, float(nu), partner)}`)"
             )
         return loaded
+    named = geometry != DEFAULT_GEOMETRY  # the default body needs no naming
     if nu is None:
-        if geometry != "disk":
+        if named:  # the paper's nu_2d = 0.33 is the default of the default body only
             raise InputError(
                 f"give the {geometry}'s Poisson number: law(nu, geometry={geometry!r})"
             )
@@ -1027,11 +1016,11 @@ def law(
             shipped = [f"{x:g}" for x in sorted(x for x in found if x is not None)]
         except (FileNotFoundError, NotADirectoryError, OSError):
             pass
-        where = "" if geometry == "disk" else f"{geometry} "
+        where = f"{geometry} " if named else ""
         if partner is not None:
             where += f"pair ({_describe(partner)}) "
         load = f"path='DIR/{name}'"
-        if geometry != "disk":
+        if named:
             load = f"{nu:g}, geometry={geometry!r}, " + load
         raise InputError(
             f"no precomputed {where}law for nu = {nu:g} "

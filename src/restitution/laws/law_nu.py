@@ -30,7 +30,7 @@ from importlib import resources
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, real
 from restitution.laws.law import (
     NU_MATCH,
@@ -46,7 +46,7 @@ from restitution.laws.law import (
 __all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_nus"]
 
 
-def shipped_nus(geometry: str = "disk", partner=None) -> list[float]:
+def shipped_nus(geometry: str = DEFAULT_GEOMETRY, partner=None) -> list[float]:
     """The Poisson numbers with a law of the body ``geometry`` (with a ``partner``: of that
     pair) in ``restitution/laws/data`` (2D for the disk, 3D for the sphere), increasing."""
     geometry = body_kind(geometry).geometry
@@ -237,12 +237,16 @@ class NuInterpolatedLaw:
 
 
 def _what(nu: float, geometry: str) -> str:
-    """``nu_2d = 0.33`` for the disk, ``sphere nu = 0.3`` else: the law's parameter, named."""
-    return f"nu_2d = {nu:.6g}" if geometry == "disk" else f"{geometry} nu = {nu:.6g}"
+    """``nu_2d = 0.33`` for the disk, ``sphere nu = 0.3`` else: the law's parameter (the kind's
+    :attr:`~restitution.bodies.kinds.BodyKind.nu_name`), with the body unless it is the
+    default one."""
+    kind = body_kind(geometry)
+    body = "" if kind.geometry == DEFAULT_GEOMETRY else f"{kind.geometry} "
+    return f"{body}{kind.nu_name} = {nu:.6g}"
 
 
 def _refusal(
-    nu: float, shipped: list[float], why: str, geometry: str = "disk", partner=None
+    nu: float, shipped: list[float], why: str, geometry: str = DEFAULT_GEOMETRY, partner=None
 ) -> InputError:
     name = law_filename(nu, geometry, partner)
     pair = "" if partner is None else f" and the pair R2/R1 = {partner.radius_ratio:g}"
@@ -257,7 +261,7 @@ def _refusal(
 def law_for(
     nu: float,
     *,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     path: str | os.PathLike | None = None,
     laws: list[EpsilonLaw] | None = None,
     partner=None,
@@ -268,8 +272,9 @@ def law_for(
     ----------
     nu : float
         Poisson number: two-dimensional for the disk, three-dimensional for the sphere.
-    geometry : {"disk", "sphere"}
-        The body; laws of another body are refused.
+    geometry : str
+        The body's kind (:func:`restitution.bodies.kinds.geometries`, default the disk); laws
+        of another body are refused.
     path : path, optional
         A law JSON file (written by ``restitution curve``); its body must be ``geometry`` and
         its ``nu`` must match within :data:`NU_MATCH`.
@@ -298,7 +303,7 @@ def law_for(
         one = EpsilonLaw.from_json(path)
         _refuse_other_body(one, geometry, path, partner)
         if abs(one.nu - nu) > NU_MATCH:
-            which = "nu_2d" if geometry == "disk" else "nu"
+            which = body_kind(geometry).nu_name
             raise InputError(
                 f"the law file {path} is for {which} = {one.nu:g}, not {nu:.6g}; compute it "
                 f"with `{_curve_command(geometry, nu, partner)}`"
@@ -332,7 +337,7 @@ def law_for(
 
 
 def _check_inside(
-    nu: float, nus: list[float], which: str, geometry: str = "disk", partner=None
+    nu: float, nus: list[float], which: str, geometry: str = DEFAULT_GEOMETRY, partner=None
 ) -> None:
     if len(nus) < 3:
         raise _refusal(

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_nus
@@ -65,6 +66,12 @@ DISK_QUASISTATIC_NOTE = (
     "docs/quasistatic.md, section 7)"
 )
 """What ``quasistatic`` means for a disk's law (:data:`STATUSES` says it for the sphere's)."""
+
+_ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
+"""What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
+kind's :attr:`~restitution.bodies.kinds.BodyKind.low_speed_route`, the routes of
+:mod:`restitution.laws.production`): the disk's slow-impact model; for any other route (the
+sphere's Rayleigh estimate) :data:`STATUSES` says it."""
 
 SI_UNITS: dict[str, str] = {
     "system": "SI at the edge: the material's 3D constants and the speeds; reduced speeds v/c",
@@ -124,8 +131,11 @@ class SIPoint:
 
 
 def _quasistatic_note(law) -> str:
-    """What a low-speed point of ``law`` is: the sphere's or the disk's route."""
-    return DISK_QUASISTATIC_NOTE if law.geometry == "disk" else STATUSES[Status.QUASISTATIC]
+    """What a low-speed point of ``law`` is, by the route of its body's kind (on the wall, or of
+    its pair): the disk's slow-impact model or the sphere's Rayleigh estimate."""
+    kind = body_kind(law.geometry)
+    route = kind.low_speed_route if law.partner is None else kind.pair_low_speed_route
+    return _ROUTE_NOTES.get(route, STATUSES[Status.QUASISTATIC])
 
 
 def _status(law, v: float) -> tuple[str, str]:
@@ -214,7 +224,7 @@ class SILaw:
                 "material; pass the law of the two materials (si_law(..., partner_grain=...)) or "
                 "leave partner_grain out"
             )
-        body = getattr(self.law, "geometry", "disk")
+        body = getattr(self.law, "geometry", DEFAULT_GEOMETRY)
         if body != self.grain.body:
             raise InputError(
                 f"the law is a law of the {body}, the grain ({self.grain.geometry}) needs a law "
@@ -328,10 +338,10 @@ class SILaw:
         lo, hi = self.computed_range_m_s
         g = self.grain
         head = {"c_m_s": g.c_m_s}
-        if g.body == "disk":
+        if g.kind.planar:
             head["nu_2d"] = g.nu_2d
         law = {"geometry": self.law.geometry, "nu": float(self.law.nu)}
-        if g.body == "disk":
+        if g.kind.planar:
             law["nu_2d"] = float(self.law.nu)
         pair = self.law.partner
         if pair is not None:
@@ -426,7 +436,7 @@ def si_law(
     partner_factor(against)
     partner = _partner(radius_ratio, against, grain, partner_grain)
     other = _other_material(grain, partner_grain)
-    if other is not None and path is None and not _shipped(grain.law_nu, partner):
+    if other is not None and path is None and not _shipped(grain, partner):
         raise InputError(
             "no law of these two materials is shipped: compute it with `restitution law ... "
             "--compute` (or restitution.laws.compute.computed_law), or give its law file (path)"
@@ -439,10 +449,11 @@ def si_law(
     )
 
 
-def _shipped(law_nu: float, partner) -> bool:
-    """Whether a shipped law of two disks serves ``law_nu`` with ``partner`` exactly (laws of
-    two materials are not interpolated in ``nu``)."""
-    return any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus("disk", partner))
+def _shipped(grain: Grain, partner) -> bool:
+    """Whether a shipped law of two bodies of ``grain``'s kind (disks) serves its ``law_nu``
+    with ``partner`` exactly (laws of two materials are not interpolated in ``nu``)."""
+    shipped = shipped_nus(grain.body, partner)
+    return any(abs(x - grain.law_nu) <= NU_MATCH for x in shipped)
 
 
 def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None, partner_grain=None):
@@ -537,7 +548,8 @@ def _partner(radius_ratio, against: str, grain: Grain, partner_grain=None):
         raise InputError(
             f"{what} describes a second grain; it needs against='grain', not {against!r}"
         )
-    if grain.body != "disk" and (r != 1.0 or other is not None):
+    # Pairs of different bodies are sized (and computed) for the kinds with a pair compression.
+    if grain.kind.pair_compression is None and (r != 1.0 or other is not None):
         raise InputError(
             f"laws of two {grain.body}s of different sizes or materials are not computed yet; "
             "give radius_ratio=None and no partner material (identical grains)"

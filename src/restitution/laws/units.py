@@ -32,7 +32,7 @@ from typing import Literal
 
 import numpy as np
 
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import BodyKind, geometries, kinds
 from restitution.bodies.material import Material
 from restitution.errors import InputError, describe, is_real, non_negative
 
@@ -44,14 +44,39 @@ __all__ = [
     "partner_factor",
 ]
 
-Geometry = Literal["cylinder", "thin-disk", "sphere"]
+Geometry = str
+"""A geometry name: an SI shape of a kind of body (:data:`GEOMETRIES`)."""
 Partner = Literal["wall", "grain"]
 
-GEOMETRIES: dict[str, str | None] = {"cylinder": "strain", "thin-disk": "stress", "sphere": None}
-"""Geometry name -> plane condition of eq. (2); ``None`` for the sphere (a 3D body)."""
 
-BODIES: dict[str, str] = {"cylinder": "disk", "thin-disk": "disk", "sphere": "sphere"}
-"""Geometry name -> the body whose law serves it (:data:`restitution.bodies.kinds.GEOMETRIES`)."""
+def _shape_kinds() -> dict[str, BodyKind]:
+    """Geometry name -> the kind of body whose law serves it: the
+    :attr:`~restitution.bodies.kinds.BodyKind.shapes` of every kind, the default kind's first
+    (a kind registered later included)."""
+    every = kinds()
+    return {shape: every[name] for name in geometries() for shape in every[name].shapes}
+
+
+GEOMETRIES: dict[str, str | None] = {
+    shape: kind.shapes[shape] for shape, kind in _shape_kinds().items()
+}
+"""Geometry name -> plane condition of eq. (2); ``None`` for the sphere (a 3D body): the
+``shapes`` of the package's kinds (:attr:`~restitution.bodies.kinds.BodyKind.shapes`)."""
+
+BODIES: dict[str, str] = {shape: kind.geometry for shape, kind in _shape_kinds().items()}
+"""Geometry name -> the body whose law serves it (:data:`restitution.bodies.kinds.GEOMETRIES`),
+from the same ``shapes``."""
+
+
+def _choices(shapes: dict[str, BodyKind]) -> str:
+    """``'cylinder' (plane strain), 'thin-disk' (plane stress) or 'sphere'``: the geometries,
+    each with its plane condition where it has one."""
+    names = [
+        f"'{shape}' (plane {kind.shapes[shape]})" if kind.shapes[shape] else f"'{shape}'"
+        for shape, kind in shapes.items()
+    ]
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
+
 
 PARTNERS: dict[str, str] = {
     "wall": "a rigid flat wall hit at speed w (v = w / c)",
@@ -104,10 +129,10 @@ class Grain:
     geometry: Geometry
 
     def __post_init__(self) -> None:
-        if not (isinstance(self.geometry, str) and self.geometry in GEOMETRIES):
+        shapes = _shape_kinds()
+        if not (isinstance(self.geometry, str) and self.geometry in shapes):
             raise InputError(
-                f"the geometry must be 'cylinder' (plane strain), 'thin-disk' (plane stress) or "
-                f"'sphere', got {describe(self.geometry)}"
+                f"the geometry must be {_choices(shapes)}, got {describe(self.geometry)}"
             )
         for name, unit in (("E", "Pa"), ("nu", "dimensionless"), ("rho", "kg/m^3")):
             value = getattr(self, name)
@@ -118,24 +143,30 @@ class Grain:
                 )
             object.__setattr__(self, name, float(value))
         # One-line messages for E, nu, rho: the 3D checks of Material.from_3d (nu in
-        # (-1, 0.5]), then the sphere's open interval.
+        # (-1, 0.5]), then, where the 3D nu is the law's (a sphere), the kind's open interval.
         Material.from_3d(E=self.E, nu=self.nu, plane=self.plane or "stress", rho=self.rho)
-        if self.body != "disk":
-            body_kind(self.body).check_nu(self.nu)
+        if not self.kind.planar:
+            self.kind.check_nu(self.nu)
+
+    @property
+    def kind(self) -> BodyKind:
+        """The kind of body whose law serves this grain (the kind whose
+        :attr:`~restitution.bodies.kinds.BodyKind.shapes` name its geometry)."""
+        return _shape_kinds()[self.geometry]
 
     @property
     def body(self) -> str:
         """The body whose law serves this grain: ``"disk"`` (cylinder, thin disk) or
         ``"sphere"``."""
-        return BODIES[self.geometry]
+        return self.kind.geometry
 
     @property
     def plane(self) -> str | None:
         """``"strain"`` for a cylinder, ``"stress"`` for a thin disk, ``None`` for a sphere."""
-        return GEOMETRIES[self.geometry]
+        return self.kind.shapes[self.geometry]
 
-    def _disk_only(self, what: str) -> None:
-        if self.body != "disk":
+    def _planar_only(self, what: str) -> None:
+        if not self.kind.planar:
             raise InputError(
                 f"a {self.geometry} has no {what}: its law takes the 3D nu (Grain.law_nu) and "
                 "c = sqrt(E / rho) (Grain.c_m_s)"
@@ -144,44 +175,45 @@ class Grain:
     @property
     def material(self) -> Material:
         """The 2D constants per unit thickness (``E_2d`` in Pa, ``rho`` in kg/m^3); disks only."""
-        self._disk_only("two-dimensional material")
+        self._planar_only("two-dimensional material")
         return Material.from_3d(E=self.E, nu=self.nu, plane=self.plane, rho=self.rho)
 
     @property
     def nu_2d(self) -> float:
         """Two-dimensional Poisson number of eq. (6), the disk law's parameter; disks only."""
-        self._disk_only("two-dimensional Poisson number")
+        self._planar_only("two-dimensional Poisson number")
         return self.material.nu
 
     @property
     def E_2d(self) -> float:
         """Two-dimensional Young modulus per unit thickness, Pa; disks only."""
-        self._disk_only("two-dimensional Young modulus")
+        self._planar_only("two-dimensional Young modulus")
         return self.material.E
 
     @property
     def law_nu(self) -> float:
         """The Poisson number of the law that serves this grain: ``nu_2d`` for a disk, ``nu``
         itself for a sphere."""
-        return self.nu_2d if self.body == "disk" else float(self.nu)
+        return self.nu_2d if self.kind.planar else float(self.nu)
 
     @property
     def law_nu_name(self) -> str:
-        """What :attr:`law_nu` is called: ``"nu_2d"`` (disk) or ``"nu"`` (sphere)."""
-        return "nu_2d" if self.body == "disk" else "nu"
+        """What :attr:`law_nu` is called: ``"nu_2d"`` (disk) or ``"nu"`` (sphere), the kind's
+        :attr:`~restitution.bodies.kinds.BodyKind.nu_name`."""
+        return self.kind.nu_name
 
     @property
     def c_m_s(self) -> float:
         """The velocity unit, m/s: ``c = sqrt(E_2d / rho)`` for a disk, ``sqrt(E / rho)`` with
         the 3D ``E`` for a sphere."""
-        if self.body == "disk":
+        if self.kind.planar:
             return self.material.c
         return math.sqrt(self.E / self.rho)
 
     @property
     def c_formula(self) -> str:
         """How :attr:`c_m_s` is made, in words."""
-        if self.body == "disk":
+        if self.kind.planar:
             return "c = sqrt(E_2d / rho), E_2d the two-dimensional Young modulus"
         return "c = sqrt(E / rho), the three-dimensional constants"
 
@@ -230,7 +262,7 @@ class Grain:
             "geometry": self.geometry,
             "body": self.body,
         }
-        if self.body == "disk":
+        if self.kind.planar:
             out.update(plane=self.plane, E_2d_Pa=self.E_2d, nu_2d=self.nu_2d)
         out.update(law_nu=self.law_nu, c_m_s=self.c_m_s, c_formula=self.c_formula)
         return out
@@ -238,7 +270,7 @@ class Grain:
     def describe(self) -> str:
         """One line: material, geometry, the law's constants and ``c``."""
         head = f"E = {self.E:.4g} Pa, nu = {self.nu:g}, rho = {self.rho:.4g} kg/m^3, "
-        if self.body != "disk":
+        if not self.kind.planar:
             return (
                 head + f"{self.geometry} (3D constants as they are): law nu = {self.nu:g}, "
                 f"c = sqrt(E/rho) = {self.c_m_s:.6g} m/s"
