@@ -411,7 +411,9 @@ def test_lammps_rebound_ratio_equals_the_exported_constant(tmp_path, against):
 def test_closed_form_refuses_a_pole_inside_the_range(monkeypatch):
     # b < 0 puts a pole at x = (-1/b)^(1/p); a fit landing there (forced here) is refused.
     b = -(0.2**-0.9)  # pole at v = 0.2, inside the points (up to 0.3)
-    monkeypatch.setattr(exports, "curve_fit", lambda *a, **k: (np.array([0.05, b, 0.9]), None))
+    monkeypatch.setattr(
+        exports.closed_form, "curve_fit", lambda *a, **k: (np.array([0.05, b, 0.9]), None)
+    )
     with pytest.raises(RestitutionError, match="pole at v = 0.2 c"):
         exports.fit_closed_form(synthetic(lambda v: closed(v, *TRUE)))
 

@@ -408,7 +408,7 @@ def test_export_without_a_closed_form_still_writes_the_table_and_the_code(
     def refuse(s):
         raise RestitutionError("no run of 4 points follows the form")
 
-    monkeypatch.setattr(exports, "fit_closed_form", refuse)
+    monkeypatch.setattr(exports.folder, "fit_closed_form", refuse)
     code, out, err = cli("law", "--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--geometry",
                          "cylinder", "--against", "wall", "--speed", "100", "--export",
                          str(tmp_path / "x"))  # fmt: skip

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import click
 
-from restitution import atomic
 from restitution.bodies.kinds import body_kind
 from restitution.cli._common import note, quiet_option
 from restitution.cli.epsilon import _ListCommand
@@ -533,42 +532,12 @@ def _computed(E, nu, rho, geometry, against, ratio, law_file, store, force, othe
 def _export(s, constant, out: Path) -> list[Path]:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``), the snippets into ``out``."""
-    from restitution.errors import RestitutionError
     from restitution.laws import exports
 
-    out.mkdir(parents=True, exist_ok=True)
-    # The three-parameter form exists only where it follows the points within their errors;
-    # the C and Fortran evaluate the law's table either way.
-    try:
-        fit = exports.fit_closed_form(s)
-    except RestitutionError as exc:
-        fit = None
-        note(f"note: no closed form written: {exc}")
-    stem = "epsilon"
-    written = [
-        exports.write_table(s, out / f"{stem}_table.txt"),
-        exports.write_csv(s, out / f"{stem}.csv"),
-    ]
-    if fit is not None:
-        fit_path = out / f"{stem}_closed_form.json"
-        atomic.write_text(fit_path, json.dumps(fit.to_dict(), indent=1) + "\n")
-        written.append(fit_path)
-    header = out / f"{stem}.h"
-    atomic.write_text(header, exports.c_header(s, fit))
-    fortran = out / f"{stem}.f90"
-    atomic.write_text(fortran, exports.fortran_include(s, fit))
-    written += [header, fortran]
-    if constant is not None:
-        for name, func in (
-            ("lammps.in", exports.lammps_snippet),
-            ("liggghts.in", exports.liggghts_snippet),
-            ("mercurydpm.cpp", exports.mercurydpm_snippet),
-            ("yade.py", exports.yade_snippet),
-        ):
-            path = out / f"{stem}_{name}"
-            atomic.write_text(path, func(s, constant))
-            written.append(path)
-    return written
+    written = exports.write_folder(s, constant, out)
+    if written.no_closed_form is not None:
+        note(f"note: no closed form written: {written.no_closed_form}")
+    return list(written.paths)
 
 
 def ratio_constants(reference_speed, maxwell_temperature) -> bool:

@@ -1,0 +1,56 @@
+"""The comment lines every export opens with: what the law is for, in words.
+
+Every file and snippet of :mod:`restitution.laws.exports` carries them: the package version and
+the time of writing, the grain (geometry and body of the law: a cylinder or thin disk is served
+by the disk's law, a sphere by the sphere's), its material (and the partner's), what the speed
+``w`` means (a wall, or two grains' relative normal speed) with the speed unit ``k c`` in m/s,
+which law serves it and where it is from, and the computed speeds in m/s.
+"""
+
+from __future__ import annotations
+
+import datetime
+
+from restitution._version import __version__
+from restitution.laws.si_law import SILaw
+
+_BODY_WORDS = {
+    "cylinder": "long elastic cylinder hit along a diameter (the 2D disk in plane strain)",
+    "thin-disk": "thin elastic disk hit on its rim (the 2D disk in plane stress)",
+    "sphere": "elastic sphere (3D)",
+}
+
+
+def _law_line(s: SILaw) -> str:
+    """``law: ...``: which law serves ``s`` (the body's, or the pair's) and where it is from."""
+    g = s.grain
+    pair = s.law.partner
+    if pair is not None:
+        which = (
+            f"this {g.body} and one of the partner's material"
+            if s.partner_grain is not None
+            else f"a small and a large {g.body} of one material"
+        )
+        return (
+            f"law: the pair's ({which}, R2/R1 = {pair.radius_ratio:g}; w their relative normal "
+            f"speed), {g.law_nu_name} = {float(s.law.nu):g}, {s.law_source}"
+        )
+    if g.body == "disk":
+        return f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}"
+    return f"law: the {g.body}'s, nu = {float(s.law.nu):g}, {s.law_source}"
+
+
+def _header(s: SILaw) -> list[str]:
+    g = s.grain
+    lo, hi = s.computed_range_m_s
+    return [
+        f"restitution {__version__}, {datetime.datetime.now(datetime.UTC):%Y-%m-%dT%H:%M:%SZ}: "
+        "coefficient of restitution of an elastic grain from its vibrational modes "
+        "(Gerl & Zippelius model)",
+        f"grain: {g.geometry}: {_BODY_WORDS[g.geometry]}",
+        f"material: {g.describe()}",
+        *([f"partner material: {s.partner_grain.describe()}"] if s.partner_grain else []),
+        f"partner: {s.against}: {s.against_meaning}; speed unit k c = {s.speed_scale_m_s:.6g} m/s",
+        _law_line(s),
+        f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; the law serves nothing outside them",
+    ]

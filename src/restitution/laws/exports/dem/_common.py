@@ -1,0 +1,77 @@
+"""What every DEM snippet says in its comments, and the constants it serves per type pair.
+
+The snippets' comment block (the export heading, the constant or the constants per type pair
+with their statuses, and what the code's particles stand for), and ``(i, j) -> Constant`` per
+pair of particle types. SI units, epsilon dimensionless.
+"""
+
+from __future__ import annotations
+
+from restitution.errors import InputError
+from restitution.laws.exports._heading import _header, _law_line
+from restitution.laws.exports.constants import Constant
+from restitution.laws.exports.type_pairs import SAME_SIZE_NOTE, TWO_MATERIALS_NOTE, TypePairs
+from restitution.laws.si_law import SILaw
+
+
+def _constants(s: SILaw, c: Constant | TypePairs) -> dict[tuple[int, int], Constant]:
+    """``(i, j) -> Constant`` per pair of particle types: ``{(1, 1): c}`` for one constant."""
+    if isinstance(c, TypePairs):
+        if c.pair is not s:
+            raise InputError(
+                "constants per type pair go with their pair's law: pass TypePairs.pair as the law"
+            )
+        return c.constants
+    return {(1, 1): c}
+
+
+def _constant_line(c: Constant) -> str:
+    return f"epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g}, {c.how}"
+
+
+def _comment(s: SILaw, c: Constant | TypePairs, mark: str) -> str:
+    lines = _header(s)
+    if isinstance(c, TypePairs) and c.two_materials:
+        words = c.type_words()
+        lines += [
+            f"type 1 = {words['1']}",
+            f"type 2 = {words['2']}",
+            f"1-2: {_constant_line(c.mixed)}; status: {c.mixed.status}",
+            f"1-1: {_constant_line(c.same)}; status: {c.same.status}",
+            f"2-2: {_constant_line(c.same2)}; status: {c.same2.status}",
+            f"1-1 {_law_line(c.identical)}",
+            f"2-2 {_law_line(c.identical2)}",
+            TWO_MATERIALS_NOTE,
+        ]
+    elif isinstance(c, TypePairs):
+        lines += [
+            f"types: 1 = the small grain (radius R1), 2 = the large one (R2 = "
+            f"{c.radius_ratio:g} R1), one material",
+            f"1-2 (small with large): {_constant_line(c.mixed)}; status: {c.mixed.status}",
+            f"1-1 and 2-2 (two grains of one size): {_constant_line(c.same)}; status: "
+            f"{c.same.status}",
+            f"1-1 and 2-2 {_law_line(c.identical)}",
+            SAME_SIZE_NOTE,
+        ]
+    else:
+        lines += [f"constant: {_constant_line(c)}", f"status: {c.status}"]
+    lines.append(
+        "only epsilon comes from restitution; stiffness and contact time come from the code's "
+        "own contact model"
+    )
+    return "\n".join(f"{mark} {line}" for line in lines)
+
+
+def _particles(s: SILaw) -> str:
+    """What the DEM code's particles stand for, for the snippets' comments."""
+    if s.grain.body == "sphere":
+        return "this law is the sphere's: it applies to the code's spherical particles"
+    return (
+        f"this law is the {s.grain.geometry}'s (a 2D disk), not a sphere's: use it for "
+        "disk-shaped grains (e.g. a 2D simulation)"
+    )
+
+
+def _grain_of(s: SILaw, c: Constant | TypePairs, i: int):
+    """The grain of particle type ``i``: the partner's material for type 2 of two materials."""
+    return c.grains[i] if isinstance(c, TypePairs) else s.grain

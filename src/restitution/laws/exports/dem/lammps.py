@@ -1,0 +1,101 @@
+"""The LAMMPS snippet (GRANULAR package): ``pair_style granular`` or ``fix wall/gran``.
+
+Hertz contact with the material's 3D ``E`` (Pa) and ``nu``, epsilon as the coefficient of
+restitution; ``units si``. Registers itself as the DEM target ``lammps`` (``lammps.in``).
+"""
+
+from __future__ import annotations
+
+from restitution.laws.exports.constants import Constant
+from restitution.laws.exports.dem._common import _comment, _constants, _grain_of, _particles
+from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
+from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.si_law import SILaw
+
+__all__ = ["TARGET", "lammps_snippet"]
+
+
+def _lammps_model(g, eps: float) -> str:
+    """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu``, epsilon as the
+    restitution coefficient, frictionless tangential model."""
+    return (
+        f"hertz/material {g.E:.8g} {eps:.8f} {g.nu:.8g} "
+        "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+    )
+
+
+def _lammps_mixed(g1, g2) -> str:
+    """``hertz/material`` arguments ``E`` and ``nu`` for an explicit 1-2 ``pair_coeff`` of two
+    materials. LAMMPS reads an explicit ``pair_coeff i j`` as one material on both sides
+    (stiffness ``4/3 E / (2 (1 - nu^2))``); ``nu = 0`` and ``E = 2 E*`` with
+    ``1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2`` give the two materials' Hertz stiffness."""
+    e_star = 1.0 / ((1.0 - g1.nu**2) / g1.E + (1.0 - g2.nu**2) / g2.E)
+    return f"{2.0 * e_star:.12g}", "0.0"
+
+
+def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+    """Input lines for LAMMPS (GRANULAR package), SI units.
+
+    Hertz contact with the material's 3D ``E`` and ``nu``; ``damping coeff_restitution`` makes
+    LAMMPS take the second normal coefficient as the coefficient of restitution. Frictionless
+    tangential model; replace it with yours.
+
+    * Two grains: ``pair_style granular`` with ``pair_coeff * *`` for one constant, or
+      ``pair_coeff 1 1``, ``2 2`` and ``1 2`` for a :class:`TypePairs` (type 1 the small
+      grains).
+    * A wall: ``fix wall/gran granular`` with the same model and a ``zplane`` wall at ``z = 0``
+      (replace the wall geometry with yours). ``pair_coeff`` does not act on walls: a grain
+      would pass through them. Grain-grain contacts need the law of two grains
+      (``--against grain``), not this constant.
+    """
+    g = s.grain
+    consts = _constants(s, c)
+    head = [_comment(s, c, "#"), f"# {_particles(s)}"]
+    if s.against == "wall":
+        return "\n".join(
+            [
+                *head,
+                "# needs: units si, atom_style sphere, comm_modify vel yes",
+                "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
+                "wall); grain-grain contacts take the law of two grains (--against grain)",
+                "fix restitution_wall all wall/gran granular "
+                f"{_lammps_model(g, consts[1, 1].epsilon)} zplane 0.0 NULL",
+                "",
+            ]
+        )
+    if len(consts) == 1:
+        pairs, needs = {("*", "*"): consts[1, 1]}, ""
+    elif c.two_materials:
+        pairs, needs = consts, ", create_box 2 (type 1 this grain, type 2 the partner grain)"
+    else:
+        pairs, needs = consts, ", create_box 2 (type 1 the small grains, type 2 the large)"
+    lines = []
+    for (i, j), k in pairs.items():
+        if i == j or i == "*" or not c.two_materials:
+            model = _lammps_model(_grain_of(s, c, 1 if i == "*" else i), k.epsilon)
+        else:
+            e12, nu12 = _lammps_mixed(c.grains[1], c.grains[2])
+            lines.append(
+                "# 1-2: E = 2 E* and nu = 0, 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2: an explicit "
+                "pair_coeff is read as one material on both sides"
+            )
+            model = (
+                f"hertz/material {e12} {k.epsilon:.8f} {nu12} "
+                "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+            )
+        lines.append(f"pair_coeff {i} {j} {model}")
+    return "\n".join(
+        [
+            *head,
+            f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
+            "pair_style granular",
+            *lines,
+            "",
+        ]
+    )
+
+
+TARGET = register_dem_target(
+    DemTarget(name="lammps", file_name="lammps.in", snippet=lammps_snippet)
+)
+"""This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

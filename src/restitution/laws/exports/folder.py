@@ -1,0 +1,82 @@
+"""The export folder: every file of one law written as a set, the DEM snippets from the registry.
+
+:func:`write_folder` writes, into one folder, the table (``epsilon_table.txt``), the CSV
+(``epsilon.csv``), the closed form where it follows the points (``epsilon_closed_form.json``),
+the C header and the Fortran include that evaluate the law's table (``epsilon.h``,
+``epsilon.f90``) and, given a constant, one snippet per registered DEM target
+(:data:`~restitution.laws.exports.dem.DEM_TARGETS`, ``epsilon_<file_name>``). Speeds in m/s,
+every file in SI units; each file is written whole or not at all (:mod:`restitution.atomic`).
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from restitution import atomic
+from restitution.errors import RestitutionError
+from restitution.laws.exports.c_fortran import c_header, fortran_include
+from restitution.laws.exports.closed_form import ClosedForm, fit_closed_form
+from restitution.laws.exports.constants import Constant
+from restitution.laws.exports.dem import DEM_TARGETS
+from restitution.laws.exports.table import write_csv, write_table
+from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.si_law import SILaw
+
+__all__ = ["ExportFolder", "write_folder"]
+
+
+@dataclass(frozen=True)
+class ExportFolder:
+    """What :func:`write_folder` wrote.
+
+    Attributes
+    ----------
+    paths : tuple of pathlib.Path
+        The files, in the order written.
+    closed_form : ClosedForm or None
+        The fitted closed form; ``None`` when none follows the points within their errors.
+    no_closed_form : str or None
+        Why no closed form was written (the fit's refusal), else ``None``.
+    """
+
+    paths: tuple[Path, ...]
+    closed_form: ClosedForm | None
+    no_closed_form: str | None
+
+
+def write_folder(s: SILaw, constant: Constant | TypePairs | None, out: Path) -> ExportFolder:
+    """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
+    ``TypePairs`` of ``s``), a snippet per registered DEM target into the folder ``out``
+    (created if missing)."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    # The three-parameter form exists only where it follows the points within their errors;
+    # the C and Fortran evaluate the law's table either way.
+    refusal = None
+    try:
+        fit = fit_closed_form(s)
+    except RestitutionError as exc:
+        fit = None
+        refusal = str(exc)
+    stem = "epsilon"
+    written = [
+        write_table(s, out / f"{stem}_table.txt"),
+        write_csv(s, out / f"{stem}.csv"),
+    ]
+    if fit is not None:
+        fit_path = out / f"{stem}_closed_form.json"
+        atomic.write_text(fit_path, json.dumps(fit.to_dict(), indent=1) + "\n")
+        written.append(fit_path)
+    header = out / f"{stem}.h"
+    atomic.write_text(header, c_header(s, fit))
+    fortran = out / f"{stem}.f90"
+    atomic.write_text(fortran, fortran_include(s, fit))
+    written += [header, fortran]
+    if constant is not None:
+        for target in DEM_TARGETS.values():
+            path = out / f"{stem}_{target.file_name}"
+            atomic.write_text(path, target.snippet(s, constant))
+            written.append(path)
+    return ExportFolder(tuple(written), fit, refusal)

@@ -1,0 +1,92 @@
+"""The law as a monotone piecewise-cubic (PCHIP) table in m/s, the one C and Fortran evaluate.
+
+Knots at the law's computed speeds ``w`` (m/s), epsilon there (dimensionless) and the PCHIP
+slopes ``d epsilon / d w`` (s/m); outside the knots the table gives :data:`OUTSIDE` (``-1``),
+never an extrapolation. Its deviation from the law is measured, in absolute terms and in units
+of the law's error there.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.interpolate import PchipInterpolator
+
+from restitution.laws.exports.closed_form import _SIGMA_FLOOR
+from restitution.laws.si_law import SILaw
+
+__all__ = ["OUTSIDE", "PchipTable", "pchip_table"]
+
+
+OUTSIDE = -1.0
+"""What the C and Fortran functions return outside the table's range (and for a NaN speed):
+epsilon is never negative, so ``-1`` cannot be mistaken for a value. No extrapolation."""
+
+
+@dataclass(frozen=True)
+class PchipTable:
+    """The law as a monotone piecewise-cubic table in m/s: what :func:`c_header` and
+    :func:`fortran_include` evaluate.
+
+    Between knots ``w_i`` the value is the cubic Hermite polynomial through ``(w_i, e_i)`` and
+    ``(w_{i+1}, e_{i+1})`` with slopes ``d_i``, ``d_{i+1}``: Fritsch-Carlson / PCHIP slopes
+    (:class:`scipy.interpolate.PchipInterpolator`), monotone wherever the points are, the
+    interpolant the law itself uses between its computed points.
+
+    Attributes
+    ----------
+    w_m_s : numpy.ndarray
+        Knots: the computed speeds, m/s.
+    epsilon : numpy.ndarray
+        The law's points at the knots.
+    slope_s_m : numpy.ndarray
+        ``d epsilon / d w`` at the knots, s/m.
+    max_deviation : float
+        Largest ``|table - law|`` on the knots and 16 speeds inside every interval.
+    max_deviation_sigma : float
+        The same in units of the law's error there (:meth:`SILaw.epsilon_err`).
+    """
+
+    w_m_s: np.ndarray
+    epsilon: np.ndarray
+    slope_s_m: np.ndarray
+    max_deviation: float
+    max_deviation_sigma: float
+
+    @property
+    def range_m_s(self) -> tuple[float, float]:
+        """``(w_min, w_max)``, m/s: the table's range (the law's computed speeds)."""
+        return float(self.w_m_s[0]), float(self.w_m_s[-1])
+
+    def __call__(self, speed_m_s):
+        """The table at speed(s) ``w`` (m/s) as C and Fortran evaluate it: :data:`OUTSIDE`
+        outside :attr:`range_m_s`."""
+        w = np.atleast_1d(np.asarray(speed_m_s, dtype=float))
+        x, y, d = self.w_m_s, self.epsilon, self.slope_s_m
+        inside = (w >= x[0]) & (w <= x[-1])
+        i = np.clip(np.searchsorted(x, np.where(inside, w, x[0]), side="right") - 1, 0, x.size - 2)
+        h = x[i + 1] - x[i]
+        t = (np.where(inside, w, x[0]) - x[i]) / h
+        val = (
+            (1 + 2 * t) * (1 - t) ** 2 * y[i]
+            + t * (1 - t) ** 2 * h * d[i]
+            + t**2 * (3 - 2 * t) * y[i + 1]
+            - t**2 * (1 - t) * h * d[i + 1]
+        )
+        out = np.where(inside, val, OUTSIDE)
+        return float(out[0]) if np.ndim(speed_m_s) == 0 else out
+
+
+def pchip_table(s: SILaw) -> PchipTable:
+    """:class:`PchipTable` of the law over its computed speeds, with its measured deviation."""
+    w = np.asarray(s.law.v, dtype=float) * s.speed_scale_m_s
+    eps = np.asarray(s.law.epsilon_points, dtype=float)
+    slope = PchipInterpolator(w, eps).derivative()(w)
+    t = PchipTable(w, eps, slope, 0.0, 0.0)
+    inner = np.linspace(0.0, 1.0, 18)[1:-1]
+    probe = np.concatenate([w, (w[:-1, None] + np.diff(w)[:, None] * inner).ravel()])
+    probe = probe[(probe >= w[0]) & (probe <= w[-1])]
+    dev = np.abs(t(probe) - s.epsilon(probe))
+    err = np.maximum(s.epsilon_err(probe), _SIGMA_FLOOR)
+    return PchipTable(w, eps, slope, float(dev.max()), float((dev / err).max()))
