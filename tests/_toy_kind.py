@@ -40,6 +40,7 @@ KIND = kinds().get(NAME) or register(
         compute=_compute,
         file_tag=NAME,
         shapes={},
+        shape_words={},
         production=None,
         pair_production=None,
         low_speed_route=None,

@@ -1,6 +1,7 @@
 """The layers of docs/architecture.md hold: no module imports the package root, and no import runs
 from a lower layer to a higher one (read from the source with :mod:`ast`, imports inside
-functions included)."""
+functions included); and above the body layer no module names a kind of body by a literal
+string: the layers above read the kind's attributes (issue 40)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from pathlib import Path
 import pytest
 
 import restitution
+from restitution.bodies.kinds import geometries
 
 SRC = Path(restitution.__file__).parent
 
@@ -94,3 +96,57 @@ def test_the_check_sees_violations():
     found = _violations(Path("dynamics/x.py"), ast.parse(source))
     assert len(found) == 3, found
     assert "root" in found[0] and "root" in found[1] and "higher layer" in found[2]
+
+
+# -- no kind by name above the body layer -------------------------------------------------------
+
+
+def _docstrings(tree) -> set[int]:
+    """``id`` of every docstring (module, class, function) and attribute docstring (a string
+    statement after an assignment): prose may name a kind."""
+    found = set()
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        for statement in body if isinstance(body, list) else ():
+            if (
+                isinstance(statement, ast.Expr)
+                and isinstance(statement.value, ast.Constant)
+                and isinstance(statement.value.value, str)
+            ):
+                found.add(id(statement.value))
+    return found
+
+
+def _kind_literals(rel: Path, tree, names) -> list[str]:
+    """Every string constant equal to a kind's name in a module outside ``bodies/``."""
+    if rel.parts[0] == "bodies":
+        return []
+    skip = _docstrings(tree)
+    return [
+        f"{rel}:{node.lineno} names the kind {node.value!r}; read an attribute of "
+        "restitution.bodies.kinds.body_kind(...) instead"
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Constant) and node.value in names and id(node) not in skip
+    ]
+
+
+@pytest.mark.parametrize("rel,tree", list(_modules()), ids=lambda x: str(x))
+def test_no_kind_is_named_by_a_literal_above_the_body_layer(rel, tree):
+    assert _kind_literals(rel, tree, set(geometries())) == []
+
+
+def test_the_kind_check_sees_literals_but_not_prose():
+    source = (
+        '"""The disk\'s law: ``geometry="disk"``."""\n'
+        "def f(geometry):\n"
+        '    """For a "sphere" too."""\n'
+        '    if geometry == "disk":\n'
+        '        return {"sphere": 1}\n'
+        "X = 1\n"
+        '"""X of the "disk"."""\n'
+    )
+    names = {"disk", "sphere"}
+    found = _kind_literals(Path("laws/x.py"), ast.parse(source), names)
+    assert sorted(line.split(" names")[0] for line in found) == ["laws/x.py:4", "laws/x.py:5"]
+    assert "names the kind 'disk'; read an attribute" in found[0] + found[1]
+    assert _kind_literals(Path("bodies/disk/kind.py"), ast.parse(source), names) == []

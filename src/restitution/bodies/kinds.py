@@ -176,6 +176,8 @@ class BodyKind:
         The real grains this kind stands for in SI units, each with the plane condition
         (``"strain"``, ``"stress"``) that makes the kind's constants from the grain's 3D ones,
         or ``None`` where the 3D constants are the kind's own.
+    shape_words : mapping of str to str
+        Each shape in words, for the heads of exported files.
     file_tag : str
         The kind's part of file names (law files, FEM references); ``""`` for the disk, whose
         files were named before there was another kind.
@@ -237,6 +239,7 @@ class BodyKind:
     order_name: str
     modes_title: str
     shapes: Mapping[str, str | None]
+    shape_words: Mapping[str, str]
     file_tag: str
     alpha_products: tuple[float, ...]
     sweep_modes: tuple[int, ...]

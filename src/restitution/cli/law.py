@@ -487,11 +487,11 @@ def _refuse_uncomputed(E, nu, rho, geometry, against, ratio, other):
     from restitution import budget
     from restitution.errors import InputError
     from restitution.laws.compute import plan
-    from restitution.laws.law_nu import NU_MATCH, shipped_nus
+    from restitution.laws.law_nu import shipped_match
     from restitution.laws.si_law import law_target
 
     law_nu, body, partner = law_target(E, nu, rho, geometry, against, ratio, other)
-    if any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus(body, partner)):
+    if shipped_match(law_nu, body, partner) is not None:
         return  # a shipped law of these two materials serves it
     p = plan(law_nu, body, partner)
     if p.exists:
@@ -512,13 +512,13 @@ def _computed(E, nu, rho, geometry, against, ratio, law_file, store, force, othe
     from restitution.cli._common import check_output_file, quiet
     from restitution.errors import InputError
     from restitution.laws.compute import check_plan, computed_law, plan
-    from restitution.laws.law_nu import NU_MATCH, shipped_nus
+    from restitution.laws.law_nu import shipped_match
     from restitution.laws.si_law import law_target
 
     if law_file is not None:
         raise InputError("give --law-file or --compute, not both")
     law_nu, body, partner = law_target(E, nu, rho, geometry, against, ratio, other)
-    if any(abs(x - law_nu) <= NU_MATCH for x in shipped_nus(body, partner)):
+    if shipped_match(law_nu, body, partner) is not None:
         note(f"note: a shipped law serves nu = {law_nu:.6g}; nothing to compute")
         return None
     if store is not None:

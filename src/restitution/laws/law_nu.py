@@ -43,7 +43,7 @@ from restitution.laws.law import (
     law_filename,
 )
 
-__all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_nus"]
+__all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_match", "shipped_nus"]
 
 
 def shipped_nus(geometry: str = DEFAULT_GEOMETRY, partner=None) -> list[float]:
@@ -56,6 +56,16 @@ def shipped_nus(geometry: str = DEFAULT_GEOMETRY, partner=None) -> list[float]:
     except (FileNotFoundError, NotADirectoryError, OSError):
         return []
     return sorted(x for x in found if x is not None)
+
+
+def shipped_match(nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None) -> float | None:
+    """The Poisson number of the shipped law that serves ``nu`` as it is (within
+    :data:`NU_MATCH`; the nearest), or ``None`` when none does: the one answer to "is a law of
+    this body (and ``partner``) shipped for ``nu``?" (else it is interpolated, computed with
+    ``--compute`` or read from a file)."""
+    shipped = shipped_nus(geometry, partner)
+    nearest = min(shipped, key=lambda x: abs(x - nu), default=None)
+    return nearest if nearest is not None and abs(nearest - nu) <= NU_MATCH else None
 
 
 def _pchip(x: np.ndarray, y: np.ndarray, at: float) -> np.ndarray:
@@ -311,10 +321,10 @@ def law_for(
         return one
     body_kind(geometry).check_nu(nu)
     if laws is None:
-        shipped = shipped_nus(geometry, partner)
-        nearest = min(shipped, key=lambda x: abs(x - nu), default=None)
-        if nearest is not None and abs(nearest - nu) <= NU_MATCH:
+        nearest = shipped_match(nu, geometry, partner)
+        if nearest is not None:
             return law(nearest, geometry=geometry, partner=partner)
+        shipped = shipped_nus(geometry, partner)
         _check_inside(nu, shipped, "shipped", geometry, partner)
         laws = [law(x, geometry=geometry, partner=partner) for x in shipped]
     if any(a.partner != partner for a in laws):

@@ -25,7 +25,7 @@ import numpy as np
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_nus
+from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.units import PARTNERS, Grain, partner_factor
 from restitution.status import Status
 
@@ -452,8 +452,7 @@ def si_law(
 def _shipped(grain: Grain, partner) -> bool:
     """Whether a shipped law of two bodies of ``grain``'s kind (disks) serves its ``law_nu``
     with ``partner`` exactly (laws of two materials are not interpolated in ``nu``)."""
-    shipped = shipped_nus(grain.body, partner)
-    return any(abs(x - grain.law_nu) <= NU_MATCH for x in shipped)
+    return shipped_match(grain.law_nu, grain.body, partner) is not None
 
 
 def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None, partner_grain=None):

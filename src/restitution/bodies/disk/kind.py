@@ -114,6 +114,10 @@ KIND = register(
         order_name="n",
         modes_title="Symmetric modes of the free disk (omega in c/R; C, S edge amplitudes)",
         shapes={"cylinder": "strain", "thin-disk": "stress"},
+        shape_words={
+            "cylinder": "long elastic cylinder hit along a diameter (the 2D disk in plane strain)",
+            "thin-disk": "thin elastic disk hit on its rim (the 2D disk in plane stress)",
+        },
         file_tag="",
         # alpha * delta_max(v) = 40, 80, 160: at v = 0.1 that is alpha = 210, 420, 840; slow
         # collisions get harder walls (v = 0.005: alpha = 3100-12300) while alpha * v stays

@@ -79,6 +79,7 @@ KIND = register(
             "S = V(1) surface amplitudes)"
         ),
         shapes={"sphere": None},
+        shape_words={"sphere": "elastic sphere (3D)"},
         file_tag="sphere",
         # The sphere's loss is linear in 1/alpha only from alpha * delta_max ~ 80 (Hertz
         # delta_max): at nu = 0.3, N = 12800 its slope in 1/alpha changes by 16-25 % between

@@ -12,13 +12,8 @@ from __future__ import annotations
 import datetime
 
 from restitution._version import __version__
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.laws.si_law import SILaw
-
-_BODY_WORDS = {
-    "cylinder": "long elastic cylinder hit along a diameter (the 2D disk in plane strain)",
-    "thin-disk": "thin elastic disk hit on its rim (the 2D disk in plane stress)",
-    "sphere": "elastic sphere (3D)",
-}
 
 
 def _law_line(s: SILaw) -> str:
@@ -35,8 +30,8 @@ def _law_line(s: SILaw) -> str:
             f"law: the pair's ({which}, R2/R1 = {pair.radius_ratio:g}; w their relative normal "
             f"speed), {g.law_nu_name} = {float(s.law.nu):g}, {s.law_source}"
         )
-    if g.body == "disk":
-        return f"law: nu_2d = {float(s.law.nu):g}, {s.law_source}"
+    if g.body == DEFAULT_GEOMETRY:
+        return f"law: {g.law_nu_name} = {float(s.law.nu):g}, {s.law_source}"
     return f"law: the {g.body}'s, nu = {float(s.law.nu):g}, {s.law_source}"
 
 
@@ -47,7 +42,7 @@ def _header(s: SILaw) -> list[str]:
         f"restitution {__version__}, {datetime.datetime.now(datetime.UTC):%Y-%m-%dT%H:%M:%SZ}: "
         "coefficient of restitution of an elastic grain from its vibrational modes "
         "(Gerl & Zippelius model)",
-        f"grain: {g.geometry}: {_BODY_WORDS[g.geometry]}",
+        f"grain: {g.geometry}: {g.kind.shape_words[g.geometry]}",
         f"material: {g.describe()}",
         *([f"partner material: {s.partner_grain.describe()}"] if s.partner_grain else []),
         f"partner: {s.against}: {s.against_meaning}; speed unit k c = {s.speed_scale_m_s:.6g} m/s",

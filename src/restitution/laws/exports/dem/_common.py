@@ -64,8 +64,8 @@ def _comment(s: SILaw, c: Constant | TypePairs, mark: str) -> str:
 
 def _particles(s: SILaw) -> str:
     """What the DEM code's particles stand for, for the snippets' comments."""
-    if s.grain.body == "sphere":
-        return "this law is the sphere's: it applies to the code's spherical particles"
+    if s.grain.kind.dimension == 3:
+        return f"this law is the {s.grain.body}'s: it applies to the code's spherical particles"
     return (
         f"this law is the {s.grain.geometry}'s (a 2D disk), not a sphere's: use it for "
         "disk-shaped grains (e.g. a 2D simulation)"

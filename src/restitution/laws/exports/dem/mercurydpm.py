@@ -24,8 +24,8 @@ def _mass_ratio(s: SILaw, r: float) -> str:
             f"m2 = r^2 (rho2/rho1) m1 = {r**2 * q:.6g} m1 for disks of one thickness (cylinders "
             "of one length)"
         )
-    if s.grain.body == "sphere":
-        return f"m2 = r^3 m1 = {r**3:.6g} m1 for spheres"
+    if s.grain.kind.dimension == 3:
+        return f"m2 = r^3 m1 = {r**3:.6g} m1 for {s.grain.body}s"
     return f"m2 = r^2 m1 = {r**2:.6g} m1 for disks of one thickness (cylinders of one length)"
 
 
@@ -47,7 +47,7 @@ def _mercury_mass(s: SILaw, c: Constant | TypePairs) -> str:
             each = "m1 for 1-1, m2 for 2-2, 2 m1 m2 / (m1 + m2) for 1-2"
             return f"{head} of each type pair: {each}; {both}"
         return f"{head} of the small and the large grain; {both}"
-    m = "m = 4/3 pi rho R^3" if s.grain.body == "sphere" else "m the particle mass"
+    m = "m = 4/3 pi rho R^3" if s.grain.kind.dimension == 3 else "m the particle mass"
     which = "two identical grains: m" if s.against == "grain" else "a grain on a wall: 2 m"
     return f"{head}; for {which}, {m}"
 
