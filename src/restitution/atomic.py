@@ -15,7 +15,9 @@ import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
-__all__ = ["replacing", "write_text"]
+from restitution.errors import OutputError
+
+__all__ = ["check_output_dir", "check_output_file", "replacing", "write_text", "writing"]
 
 # The permissions a plain open() would give a new file (mkstemp makes it 0600).
 _UMASK = os.umask(0)
@@ -60,3 +62,51 @@ def write_text(path: str | os.PathLike, text: str, *, newline: str | None = None
     """Write ``text`` to ``path`` whole or not at all (see :func:`replacing`)."""
     with replacing(path) as tmp, open(tmp, "w", newline=newline) as fh:
         fh.write(text)
+
+
+# -- checks before anything is computed ----------------------------------------------------
+
+
+def _reason(exc: OSError) -> str:
+    return exc.strerror or str(exc)
+
+
+@contextlib.contextmanager
+def writing(path: Path, option: str) -> Iterator[None]:
+    """Turn an ``OSError`` while writing ``path`` into one clear :class:`OutputError`."""
+    try:
+        yield
+    except OSError as exc:
+        raise OutputError(
+            f"cannot write {option} {path}: {_reason(exc)}; choose a writable location"
+        ) from None
+
+
+def check_output_file(path: Path, option: str) -> None:
+    """Fail before any computation when ``path`` cannot be created or written; its folder is
+    created if missing, as :func:`check_output_dir` creates an output folder (one rule for
+    ``--output``, ``--out`` and ``--export``)."""
+    if path.is_dir():
+        raise OutputError(f"{option} {path} is a directory; give a file name")
+    parent = path.parent
+    if parent.exists() and not parent.is_dir():
+        raise OutputError(f"{option} {path}: {parent} is a file, not a directory")
+    existed = path.exists()
+    with writing(path, option):
+        parent.mkdir(parents=True, exist_ok=True)
+        with open(path, "ab"):
+            pass
+    if not existed:
+        with contextlib.suppress(OSError):
+            path.unlink()
+
+
+def check_output_dir(path: Path, option: str) -> None:
+    """Create ``path`` if needed and prove that a file can be written in it."""
+    if path.exists() and not path.is_dir():
+        raise OutputError(f"{option} {path} is a file, not a directory")
+    with writing(path, option):
+        path.mkdir(parents=True, exist_ok=True)
+        probe = path / f".restitution-write-test-{os.getpid()}"
+        probe.write_bytes(b"")
+        probe.unlink()

@@ -6,17 +6,15 @@ Every JSON document a command prints carries the same envelope keys (:func:`enve
 
 from __future__ import annotations
 
-import contextlib
 import json
 import math
-import os
-from collections.abc import Iterator
 from pathlib import Path
 
 import click
 
 from restitution import atomic, budget
 from restitution._version import __version__
+from restitution.atomic import check_output_dir, check_output_file, writing  # noqa: F401 (re-exported)
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, geometries, kinds
 from restitution.bodies.material import Material
 from restitution.errors import InputError, OutputError
@@ -238,51 +236,6 @@ def refuse_ignored(ctx: click.Context, names: dict[str, str], reason: str) -> No
         raise InputError(
             f"{', '.join(bad)} {'has' if len(bad) == 1 else 'have'} no effect {reason}"
         )
-
-
-def _reason(exc: OSError) -> str:
-    return exc.strerror or str(exc)
-
-
-@contextlib.contextmanager
-def writing(path: Path, option: str) -> Iterator[None]:
-    """Turn an ``OSError`` while writing ``path`` into one clear :class:`OutputError`."""
-    try:
-        yield
-    except OSError as exc:
-        raise OutputError(
-            f"cannot write {option} {path}: {_reason(exc)}; choose a writable location"
-        ) from None
-
-
-def check_output_file(path: Path, option: str) -> None:
-    """Fail before any computation when ``path`` cannot be created or written; its folder is
-    created if missing, as :func:`check_output_dir` creates an output folder (one rule for
-    ``--output``, ``--out`` and ``--export``)."""
-    if path.is_dir():
-        raise OutputError(f"{option} {path} is a directory; give a file name")
-    parent = path.parent
-    if parent.exists() and not parent.is_dir():
-        raise OutputError(f"{option} {path}: {parent} is a file, not a directory")
-    existed = path.exists()
-    with writing(path, option):
-        parent.mkdir(parents=True, exist_ok=True)
-        with open(path, "ab"):
-            pass
-    if not existed:
-        with contextlib.suppress(OSError):
-            path.unlink()
-
-
-def check_output_dir(path: Path, option: str) -> None:
-    """Create ``path`` if needed and prove that a file can be written in it."""
-    if path.exists() and not path.is_dir():
-        raise OutputError(f"{option} {path} is a file, not a directory")
-    with writing(path, option):
-        path.mkdir(parents=True, exist_ok=True)
-        probe = path / f".restitution-write-test-{os.getpid()}"
-        probe.write_bytes(b"")
-        probe.unlink()
 
 
 def check_figure_file(path: Path, option: str) -> None:

@@ -1,0 +1,385 @@
+"""What a user asks of the SI law: one frozen request, refused in one line when it is inconsistent.
+
+Units: SI at this edge (Pa, kg/m^3, m/s, m, s, m^2/s^2); the law answers in them
+(:mod:`restitution.laws.si_law`).
+
+:class:`LawRequest` is the answer to "which options go together": its construction holds every
+refusal that needs no law (two constants asked at once, a partner option against a wall,
+damping of two materials, files that nothing would read, ``--store`` without ``--compute``, ...)
+so the command line and a notebook get the same one-line :class:`~restitution.errors.InputError`
+before anything is loaded or computed. :func:`restitution.laws.serve.serve` serves it. Each
+field's metadata carries the option that sets it on the command line and its help
+(``restitution law`` builds its options from them), in the manner of check-jsonschema's
+``ParseResult``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields
+from pathlib import Path
+
+from restitution.bodies.kinds import body_kind
+from restitution.errors import InputError
+from restitution.laws.units import BODIES, GEOMETRIES, PARTNERS, Grain
+
+__all__ = ["DEFAULT_SPEEDS_M_S", "LawRequest", "option_fields"]
+
+DEFAULT_SPEEDS_M_S: tuple[float, ...] = (0.1, 0.5, 1.0, 5.0, 10.0)
+"""Impact speeds (m/s) of a request that names none."""
+
+
+def _option(name: str, help: str, type: str = "float", **extra) -> dict:
+    """Field metadata: the command-line option ``name`` of a field, its ``help`` and its
+    ``type`` (``float``, ``floats``, ``choice``, ``file``, ``dir``, ``flag``)."""
+    return {"option": name, "help": help, "type": type, **extra}
+
+
+@dataclass(frozen=True)
+class LawRequest:
+    """One question to the SI law (module docs); constructing it checks the options together.
+
+    Every field is an option of ``restitution law`` (its metadata names it); ``None`` is
+    "not given". The fields' help says what each means.
+    """
+
+    E: float = field(metadata=_option("--E", "Young modulus of the 3D material, Pa."))
+    nu: float = field(metadata=_option("--nu", "Poisson number of the 3D material."))
+    rho: float = field(metadata=_option("--rho", "Density of the 3D material, kg/m^3."))
+    geometry: str = field(
+        metadata=_option(
+            "--geometry",
+            "Long cylinder hit along a diameter (the disk in plane strain: nu_2d = nu/(1-nu), "
+            "c = sqrt(E/((1-nu^2) rho))), thin disk (plane stress: nu_2d = nu, c = sqrt(E/rho)) "
+            "or sphere (the sphere's law for nu itself, c = sqrt(E/rho)).",
+            "choice",
+            choices=lambda: list(GEOMETRIES),
+        )
+    )
+    against: str = field(
+        metadata=_option(
+            "--against",
+            "A rigid flat wall hit at speed w (v = w/c), or an identical grain at relative normal "
+            "speed w (v = w/(2c)); with --partner-radius-ratio a grain of the same material and "
+            "another size (v = w/c, the pair's law).",
+            "choice",
+            choices=lambda: list(PARTNERS),
+        )
+    )
+    speeds: tuple[float, ...] = field(
+        default=DEFAULT_SPEEDS_M_S,
+        metadata=_option(
+            "--speed",
+            "Impact speed(s) w in m/s (several after one flag). Default: 0.1 0.5 1 5 10.",
+            "floats",
+        ),
+    )
+    partner_radius_ratio: float | None = field(
+        default=None,
+        metadata=_option(
+            "--partner-radius-ratio",
+            "With --against grain: radius of the partner grain over this grain's, R2/R1, same "
+            "material (either way round; 1 = identical grains). Served by the law of the pair "
+            "(law_pair_r<R>_nu<nu_2d>.json, or --law-file from `restitution curve --nu NU_2D "
+            "--radius-ratio R`); w is the relative normal speed. With a constant, the exports "
+            "give type pairs 1-1 and 2-2 (identical grains) and 1-2 (the pair). Cylinders and "
+            "thin disks only.",
+        ),
+    )
+    partner_E: float | None = field(
+        default=None,
+        metadata=_option(
+            "--partner-E",
+            "With --against grain: Young modulus of the partner grain's 3D material, Pa [this "
+            "grain's]. A partner of another material (--partner-E, --partner-nu, "
+            "--partner-rho): one pair is shipped (steel E = 210e9, nu = 0.3, rho = 7850 with "
+            "glass 63e9, 0.2481, 2500, 1.4 times as large, cylinders); any other is computed "
+            "with --compute (the estimate is stated first) or read from --law-file. Cylinders "
+            "and thin disks only; the partner has this grain's geometry.",
+        ),
+    )
+    partner_nu: float | None = field(
+        default=None,
+        metadata=_option(
+            "--partner-nu",
+            "With --against grain: Poisson number of the partner grain's 3D material [this "
+            "grain's].",
+        ),
+    )
+    partner_rho: float | None = field(
+        default=None,
+        metadata=_option(
+            "--partner-rho",
+            "With --against grain: density of the partner grain's 3D material, kg/m^3 [this "
+            "grain's].",
+        ),
+    )
+    law_file: Path | None = field(
+        default=None,
+        metadata=_option(
+            "--law-file",
+            "A law JSON from `restitution curve` for this material: the disk's law for its 2D "
+            "Poisson number (cylinder, thin disk), the sphere's (`curve --geometry sphere`) for "
+            "nu; with --partner-radius-ratio the pair's (`curve --radius-ratio R`).",
+            "file",
+        ),
+    )
+    identical_law_file: Path | None = field(
+        default=None,
+        metadata=_option(
+            "--identical-law-file",
+            "With --partner-radius-ratio and --reference-speed or --maxwell-temperature: the "
+            "law JSON of two identical grains of this material (`restitution curve --nu "
+            "NU_2D`), for the 1-1 and 2-2 constants [default: the shipped laws]; with a partner "
+            "material the 1-1 constant only.",
+            "file",
+        ),
+    )
+    partner_identical_law_file: Path | None = field(
+        default=None,
+        metadata=_option(
+            "--partner-identical-law-file",
+            "With a partner material and --reference-speed or --maxwell-temperature: the law "
+            "JSON of two identical grains of the partner's material, for the 2-2 constant "
+            "[default: the shipped laws].",
+            "file",
+        ),
+    )
+    export_dir: Path | None = field(
+        default=None,
+        metadata=_option(
+            "--export",
+            "Write the table (.txt, .csv), the closed form (.json, C header .h, Fortran .f90) "
+            "and, with --reference-speed or --maxwell-temperature, a snippet for every DEM code "
+            "(LAMMPS, LIGGGHTS, MercuryDPM, YADE) into this directory.",
+            "dir",
+        ),
+    )
+    reference_speed: float | None = field(
+        default=None,
+        metadata=_option(
+            "--reference-speed", "Constant for one-number codes: epsilon at this speed, m/s."
+        ),
+    )
+    maxwell_temperature: float | None = field(
+        default=None,
+        metadata=_option(
+            "--maxwell-temperature",
+            "Constant for one-number codes: epsilon averaged (dissipation-weighted) over a "
+            "Maxwell gas at this granular temperature <v_x^2>, m^2/s^2.",
+        ),
+    )
+    measured_epsilon: float | None = field(
+        default=None,
+        metadata=_option(
+            "--measured-epsilon",
+            "Material damping from one measurement: the coefficient of restitution measured at "
+            "--measured-speed (same partner). The relaxation time is inferred from it and "
+            "epsilon(w) given with its elastic and viscous parts (docs/damping.md).",
+        ),
+    )
+    measured_speed: float | None = field(
+        default=None,
+        metadata=_option("--measured-speed", "Impact speed of --measured-epsilon, m/s."),
+    )
+    relaxation_time: float | None = field(
+        default=None,
+        metadata=_option(
+            "--relaxation-time",
+            "Material damping given directly: the Kelvin-Voigt relaxation time (viscosities = "
+            "tau x moduli), s; needs --radius.",
+        ),
+    )
+    radius: float | None = field(
+        default=None,
+        metadata=_option(
+            "--radius",
+            "Radius of the grain, m (with --relaxation-time; for two sizes the smaller "
+            "grain's). The elastic law needs no radius; the viscous loss depends on tau c / R.",
+        ),
+    )
+    compute: bool = field(
+        default=False,
+        metadata=_option(
+            "--compute",
+            "Compute the law of this material's exact Poisson number with the production "
+            "settings when none is shipped for it (instead of interpolating in nu): minutes to "
+            "hours, stated before it starts, with a progress bar; every collision goes to the "
+            "result store (--store; an interrupted run resumes) and the law file to the cache, "
+            "where the next call finds it.",
+            "flag",
+        ),
+    )
+    store: Path | None = field(
+        default=None,
+        metadata=_option(
+            "--store",
+            "With --compute: the result store [results.sqlite in the user cache].",
+            "path",
+        ),
+    )
+    force: bool = field(
+        default=False,
+        metadata=_option(
+            "--force",
+            "With --compute: compute even when the estimate exceeds the bound of one run (1 h).",
+            "flag",
+        ),
+    )
+
+    def __post_init__(self) -> None:
+        if self.geometry not in GEOMETRIES:
+            self.grain  # noqa: B018 -- the grain's own one-line refusal of the geometry
+        speeds = tuple(self.speeds) or DEFAULT_SPEEDS_M_S
+        object.__setattr__(self, "speeds", speeds)
+        for name in ("law_file", "identical_law_file", "partner_identical_law_file",
+                     "export_dir", "store"):  # fmt: skip
+            value = getattr(self, name)
+            if value is not None and not isinstance(value, Path):
+                object.__setattr__(self, name, Path(value))
+        if self.reference_speed is not None and self.maxwell_temperature is not None:
+            raise InputError("give --reference-speed or --maxwell-temperature, not both")
+        self._check_ratio()
+        other = self.partner_grain
+        if other is not None and self.damped:
+            raise InputError(
+                "material damping of grains of two materials is not modelled (each material has "
+                "its own relaxation time); leave out the damping options or the partner material"
+            )
+        if self.identical_law_file is not None or self.partner_identical_law_file is not None:
+            self._check_identical_law_files()
+        if self.compute and self.law_file is not None:
+            raise InputError("give --law-file or --compute, not both")
+        if not self.compute and (self.store is not None or self.force):
+            raise InputError(
+                "--store and --force belong to --compute; add --compute or leave them out"
+            )
+
+    # -- what the options amount to -------------------------------------------------------------
+
+    @property
+    def grain(self) -> Grain:
+        """This grain (checks ``E``, ``nu``, ``rho`` and the geometry)."""
+        return Grain(E=self.E, nu=self.nu, rho=self.rho, geometry=self.geometry)
+
+    @property
+    def radius_ratio(self) -> float | None:
+        """The radius ratio the law takes: ``None`` for identical grains or a wall; ``1`` (or
+        ``None``) for two materials of one size."""
+        ratio = self.partner_radius_ratio
+        if self.partner_grain is not None:
+            return ratio
+        return None if ratio is None or ratio == 1.0 else ratio
+
+    @property
+    def partner_grain(self) -> Grain | None:
+        """The partner grain's material from the partner options (each defaulting to this
+        grain's), or ``None`` without them or for the same material."""
+        given = (self.partner_E, self.partner_nu, self.partner_rho)
+        if given == (None, None, None):
+            return None
+        if self.against != "grain":
+            raise InputError(
+                "--partner-E, --partner-nu and --partner-rho describe a second grain: give them "
+                "with --against grain"
+            )
+        kind = body_kind(BODIES[self.geometry])
+        if kind.pair_compression is None:
+            raise InputError(
+                f"laws of two {kind.geometry}s of different materials are not computed yet; use "
+                f"--geometry {_paired_shapes()}, or leave out "
+                "--partner-E/--partner-nu/--partner-rho"
+            )
+        values = tuple(
+            own if theirs is None else theirs
+            for own, theirs in zip((self.E, self.nu, self.rho), given, strict=True)
+        )
+        if values == (self.E, self.nu, self.rho):
+            return None
+        try:
+            return Grain(E=values[0], nu=values[1], rho=values[2], geometry=self.geometry)
+        except InputError as exc:
+            raise InputError(f"the partner's material: {exc}") from None
+
+    @property
+    def damped(self) -> bool:
+        """Whether a damping option is given."""
+        return (self.measured_epsilon, self.measured_speed, self.relaxation_time) != (None,) * 3
+
+    @property
+    def constants(self) -> bool:
+        """Whether a constant for one-number codes is asked for."""
+        return (self.reference_speed, self.maxwell_temperature) != (None, None)
+
+    def inputs(self) -> dict:
+        """The request as given, with units in the keys (a command's JSON ``inputs``)."""
+        path = lambda p: None if p is None else str(p)  # noqa: E731
+        return {
+            "E": self.E, "nu": self.nu, "rho": self.rho, "geometry": self.geometry,
+            "against": self.against, "partner_radius_ratio": self.partner_radius_ratio,
+            "partner_E": self.partner_E, "partner_nu": self.partner_nu,
+            "partner_rho": self.partner_rho, "speeds_m_s": list(self.speeds),
+            "law_file": path(self.law_file),
+            "identical_law_file": path(self.identical_law_file),
+            "partner_identical_law_file": path(self.partner_identical_law_file),
+            "reference_speed": self.reference_speed,
+            "maxwell_temperature": self.maxwell_temperature, "export": path(self.export_dir),
+            "measured_epsilon": self.measured_epsilon,
+            "measured_speed_m_s": self.measured_speed,
+            "relaxation_time_s": self.relaxation_time, "radius_m": self.radius,
+            "compute": self.compute,
+        }  # fmt: skip
+
+    # -- refusals -------------------------------------------------------------------------------
+
+    def _check_ratio(self) -> None:
+        ratio = self.partner_radius_ratio
+        if ratio is None:
+            return
+        if not (math.isfinite(ratio) and ratio > 0):
+            raise InputError(
+                "--partner-radius-ratio must be a positive number R2/R1 (1 = identical grains), "
+                f"got {ratio:g}"
+            )
+        if self.against != "grain":
+            raise InputError(
+                "--partner-radius-ratio describes a second grain: give it with --against "
+                "grain, or leave it out against a wall"
+            )
+        if ratio == 1.0 or self.geometry not in BODIES:
+            return
+        kind = body_kind(BODIES[self.geometry])
+        if kind.pair_compression is None:
+            raise InputError(
+                f"--partner-radius-ratio {ratio:g}: laws of two {kind.geometry}s of different "
+                f"sizes are not computed yet; use --geometry {_paired_shapes()}, or leave it out "
+                f"(identical {kind.geometry}s)"
+            )
+
+    def _check_identical_law_files(self) -> None:
+        if self.partner_identical_law_file is not None and self.partner_grain is None:
+            raise InputError(
+                "--partner-identical-law-file serves the 2-2 constant of a partner of another "
+                "material: give it with --partner-E/--partner-nu/--partner-rho"
+            )
+        if self.radius_ratio is None and self.partner_grain is None:
+            raise InputError(
+                "--identical-law-file serves the 1-1 and 2-2 constants of two grain sizes: give "
+                "it with --partner-radius-ratio other than 1 (identical grains take --law-file)"
+            )
+        if not self.constants:
+            raise InputError(
+                "--identical-law-file and --partner-identical-law-file serve the constants per "
+                "type pair: give them with --reference-speed or --maxwell-temperature"
+            )
+
+
+def _paired_shapes() -> str:
+    """The shapes whose laws of two grains of different sizes or materials are computed."""
+    names = [shape for shape, body in BODIES.items() if body_kind(body).pair_compression]
+    return " or ".join(names)
+
+
+def option_fields():
+    """The fields of :class:`LawRequest` in the order of their options."""
+    return fields(LawRequest)

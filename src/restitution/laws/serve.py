@@ -1,0 +1,250 @@
+"""Serve a :class:`~restitution.laws.request.LawRequest`: the one library call behind ``law``.
+
+Units: SI (m/s; the law's own answer carries its units, :data:`restitution.laws.si_law.SI_UNITS`).
+
+:func:`serve` decides which law answers (a shipped one, one computed on demand with
+``compute=True``, a given file), adds material damping, the constants for one-number DEM codes
+(per pair of particle types for two grains) and writes the exports; it returns a
+:class:`LawAnswer`, the same object for a notebook as for the command line, whose
+:meth:`LawAnswer.to_dict` is the command's JSON. Notes (what was computed, what was left out)
+go to the ``note`` callable instead of a terminal.
+
+Example
+-------
+>>> from restitution.laws.request import LawRequest
+>>> a = serve(LawRequest(E=63e9, nu=0.2481, rho=2500, geometry="cylinder", against="wall",
+...                      speeds=(1.0,)))
+>>> 0.99 < a.points[0].epsilon < 1.0
+True
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from restitution.atomic import check_output_dir, check_output_file
+from restitution.errors import InputError
+from restitution.laws import exports
+from restitution.laws.damped import DampedLaw, damped_law
+from restitution.laws.request import LawRequest
+from restitution.laws.si_law import SI_UNITS, SILaw, law_target, overall_status, si_law
+
+__all__ = ["LawAnswer", "serve"]
+
+
+def _silent(text: str) -> None:
+    """The default ``note``: say nothing."""
+
+
+@dataclass(frozen=True, eq=False)
+class LawAnswer:
+    """What :func:`serve` gives: the law, its points at the asked speeds and what was made of it.
+
+    Attributes
+    ----------
+    request : LawRequest
+    law : SILaw
+        The elastic law that served (for a damping grain: the law the damping was added to).
+    damped : DampedLaw or None
+        The damping grain's law (elastic and viscous parts), when damping was asked for.
+    points : tuple
+        One point per asked speed (:class:`~restitution.laws.si_law.SIPoint`, or
+        :class:`~restitution.laws.damped.DampedPoint` for a damping grain).
+    status, advice : str, str or None
+        The answer's status (the worst of its points') and what to do about it.
+    constant : Constant or None
+        The constant for one-number codes (for two grains: the 1-2 pair's).
+    pairs : TypePairs or None
+        The constants per pair of particle types (two grain sizes or materials).
+    exports : tuple of Path
+        The files written (``export_dir``).
+    units : dict
+        The units of every number.
+    """
+
+    request: LawRequest
+    law: SILaw
+    damped: DampedLaw | None
+    points: tuple
+    status: str
+    advice: str | None
+    constant: object | None = None
+    pairs: object | None = None
+    exports: tuple = ()
+    units: dict = field(default_factory=lambda: dict(SI_UNITS))
+
+    def to_dict(self) -> dict:
+        """The answer as the ``law`` command's JSON gives it (without the envelope)."""
+        speeds = list(self.request.speeds)
+        out = (self.damped or self.law).to_dict(speeds)
+        if self.constant is not None:
+            out["constant"] = self.constant.to_dict()
+        if self.pairs is not None:
+            out["type_pairs"] = self.pairs.to_dict()
+        if self.request.export_dir is not None:
+            out["exports"] = [str(p) for p in self.exports]
+        return out
+
+
+def serve(
+    request: LawRequest, *, note: Callable[[str], None] = _silent, progress: bool = False
+) -> LawAnswer:
+    """The answer to ``request`` (module docs).
+
+    Parameters
+    ----------
+    request : LawRequest
+        The question; its construction refused inconsistent options already.
+    note : callable, optional
+        Called with one line for each note (the estimate of a computation, a closed form that
+        could not be fitted); default: none.
+    progress : bool
+        Show a progress bar of a computation on stderr.
+
+    Raises
+    ------
+    InputError
+        When no law can serve (a Poisson number off the grid, two materials without a law),
+        with the command or option that makes one.
+    """
+    r = request
+    if r.export_dir is not None:
+        check_output_dir(r.export_dir, "--export")  # before anything is computed
+    other = r.partner_grain
+    served = r.law_file
+    if r.compute:
+        served = _computed(r, note, progress)
+    elif other is not None and r.law_file is None:
+        _refuse_uncomputed(r)
+    s = si_law(r.E, r.nu, r.rho, r.geometry, r.against, path=served,
+               radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
+    damped = _damped(r, s)
+    if damped is not None and s.law.partner is not None and r.constants:
+        raise InputError(
+            "constants per type pair of damping grains are not computed (tau c / R differs for "
+            "the two sizes); drop --reference-speed/--maxwell-temperature, or the damping"
+        )
+    points = (damped or s).points(list(r.speeds))
+    status, advice = overall_status(points)
+    if damped is not None and (r.constants or r.export_dir is not None):
+        # Constants, tables and snippets of the damped law: the sum at every computed speed.
+        s = damped.as_si_law()
+    constant, pairs = _constants(r, s)
+    written: tuple = ()
+    if r.export_dir is not None:
+        folder = exports.write_folder(s, pairs or constant, r.export_dir)
+        if folder.no_closed_form is not None:
+            note(f"note: no closed form written: {folder.no_closed_form}")
+        written = tuple(folder.paths)
+    return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
+
+
+def _constants(r: LawRequest, s: SILaw):
+    """``(constant, pairs)``: the constant for one-number codes and, for two grains, the
+    constants per pair of particle types (the pair's own is the 1-2 one)."""
+    if not r.constants:
+        return None, None
+    if s.law.partner is not None:
+        identical = _identical(r.E, r.nu, r.rho, r.geometry, r.identical_law_file,
+                               "--identical-law-file")  # fmt: skip
+        other = r.partner_grain
+        identical2 = None
+        if other is not None:
+            identical2 = _identical(other.E, other.nu, other.rho, r.geometry,
+                                    r.partner_identical_law_file,
+                                    "--partner-identical-law-file")  # fmt: skip
+        pairs = exports.type_pair_constants(
+            s,
+            identical,
+            speed_m_s=r.reference_speed,
+            temperature_m2_s2=r.maxwell_temperature,
+            identical2=identical2,
+        )
+        return pairs.mixed, pairs
+    if r.reference_speed is not None:
+        return exports.constant_at(s, r.reference_speed), None
+    return exports.maxwell_constant(s, r.maxwell_temperature), None
+
+
+def _identical(E, nu, rho, geometry, path, option) -> SILaw:
+    """The law of two identical grains of a material, for a type pair i-i."""
+    try:
+        return si_law(E, nu, rho, geometry, "grain", path=path)
+    except InputError as exc:
+        raise InputError(
+            f"the constants per type pair need the law of identical grains of each material: "
+            f"{exc}; give that file with {option}"
+        ) from None
+
+
+def _damped(r: LawRequest, s: SILaw) -> DampedLaw | None:
+    """The damped law the request asks for, or ``None`` without damping options."""
+    if not r.damped:
+        if r.radius is not None:
+            raise InputError("--radius goes with --relaxation-time; give both or neither")
+        return None
+    if r.relaxation_time is not None and (r.measured_epsilon, r.measured_speed) != (None, None):
+        raise InputError(
+            "give --relaxation-time (with --radius) or --measured-epsilon with --measured-speed, "
+            "not both"
+        )
+    if r.relaxation_time is None and None in (r.measured_epsilon, r.measured_speed):
+        raise InputError("--measured-epsilon and --measured-speed go together; give both")
+    if r.relaxation_time is not None and r.radius is None:
+        raise InputError(
+            "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
+        )
+    return damped_law(
+        s,
+        relaxation_time_s=r.relaxation_time,
+        radius_m=r.radius,
+        measured_epsilon=r.measured_epsilon,
+        measured_speed_m_s=r.measured_speed,
+    )
+
+
+def _target(r: LawRequest):
+    return law_target(r.E, r.nu, r.rho, r.geometry, r.against, r.radius_ratio, r.partner_grain)
+
+
+def _refuse_uncomputed(r: LawRequest) -> None:
+    """Two materials without ``compute`` or a law file: refuse, with the estimate of
+    ``compute``, unless a shipped law serves them."""
+    from restitution import budget
+    from restitution.laws.compute import plan
+    from restitution.laws.law_nu import shipped_match
+
+    law_nu, body, partner = _target(r)
+    if shipped_match(law_nu, body, partner) is not None:
+        return  # a shipped law of these two materials serves it
+    p = plan(law_nu, body, partner)
+    if p.exists:
+        how = f"--compute finds the law computed before ({p.path})"
+    else:
+        how = (
+            f"add --compute ({p.collisions} collisions, about "
+            f"{budget.format_duration(p.seconds)} on one core)"
+        )
+    raise InputError(
+        f"no law of these two materials is shipped: {how}, or give its file with --law-file"
+    )
+
+
+def _computed(r: LawRequest, note, progress: bool):
+    """``compute=True``: the law file of the material's exact Poisson number (computed with
+    the production settings, or found in the cache), or ``None`` when a shipped law serves
+    it."""
+    from restitution.laws.compute import check_plan, computed_law, plan
+    from restitution.laws.law_nu import shipped_match
+
+    law_nu, body, partner = _target(r)
+    if shipped_match(law_nu, body, partner) is not None:
+        note(f"note: a shipped law serves nu = {law_nu:.6g}; nothing to compute")
+        return None
+    if r.store is not None:
+        check_output_file(r.store, "--store")
+    p = plan(law_nu, body, partner)
+    check_plan(p, r.force)
+    note(f"note: {p.words()}")
+    return computed_law(law_nu, body, partner, store=r.store, progress=progress, force=r.force)
