@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import enum
 
-__all__ = ["Status"]
+__all__ = ["ASYMPTOTIC", "Status"]
 
 
 class Status(enum.StrEnum):
@@ -76,3 +76,46 @@ class Status(enum.StrEnum):
     fraction of its radius); the number is the linear model's, not a real body's."""
     OUTSIDE = "outside"
     """Outside the computed range of a law: no value (a law never extrapolates)."""
+
+    @property
+    def advice(self) -> str | None:
+        """What to do about a result of this status (``None``: nothing); one line that works
+        when followed. A result may say more (its own ``advice``)."""
+        return _ADVICE.get(self)
+
+    @property
+    def asymptotic(self) -> bool:
+        """Whether a result of this status passed every check of its route (an error bar that
+        means what it says)."""
+        return self in ASYMPTOTIC
+
+
+ASYMPTOTIC = frozenset({Status.OK, Status.COMPUTED, Status.INTERPOLATED})
+"""The statuses of results that passed every check of their route."""
+
+_ADVICE: dict[Status, str] = {
+    Status.FAILED: "read the stored message; recompute with --retry-failed once it is fixed",
+    Status.DRIFT_EXCEEDED: "leave out dt (the step is then refined to energy_tol) or lower it",
+    Status.NOT_FINITE: "lower dt or energy_tol; check v in (0, 1) and alpha > 0",
+    Status.NOT_ASYMPTOTIC: (
+        "read the error bar as indicative: the fits were not yet linear in 1/alpha and "
+        "1/sqrt(N); harder walls and more modes (--alphas, --modes) make them so"
+    ),
+    Status.POINTS_FAILED: (
+        "run the same command again (stored points are reused, lost ones recomputed) or add "
+        "--retry-failed for points that failed in the solver"
+    ),
+    Status.FAILED_SAMPLES: "the statistics leave the failed samples out; see 'failures'",
+    Status.COMPUTED_NOT_ASYMPTOTIC: (
+        "read the error bar as indicative; compute the law with larger windows to confirm it"
+    ),
+    Status.INTERPOLATED_NOT_ASYMPTOTIC: (
+        "read the error bar as indicative; compute the law with larger windows to confirm it"
+    ),
+    Status.QUASISTATIC: (
+        "the error is the low-speed theory's band (its model and convergence), not a "
+        "collision's extrapolation"
+    ),
+    Status.LARGE_DEFORMATION: "use v <= 0.3 c (0.6 c relative for a pair): linear elasticity",
+    Status.OUTSIDE: "give speeds inside the law's computed range; a law never extrapolates",
+}

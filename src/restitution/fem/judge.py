@@ -19,6 +19,7 @@ from typing import Protocol
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError
+from restitution.estimate import estimate_of
 from restitution.jsonable import finite_or_none
 
 __all__ = ["JudgedPoint", "LawJudgement", "LawLike", "judge_law", "judge_shipped_law"]
@@ -160,7 +161,10 @@ def judge_law(points: Iterable, laws: Mapping[float, LawLike] | LawLike) -> LawJ
                 continue
         else:
             law = laws
-        note = "" if getattr(p, "asymptotic_ok", True) else "reference flagged"
+        ref = getattr(p, "estimate", None) or estimate_of(
+            p.epsilon, p.epsilon_err, getattr(p, "asymptotic_ok", True)
+        )
+        note = "" if ref.asymptotic else "reference flagged"
         try:
             value, err = float(law.epsilon(p.v)), float(law.epsilon_err(p.v))
         except (InputError, ValueError) as exc:

@@ -33,6 +33,7 @@ from restitution._version import __version__
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
 from restitution.errors import InputError
+from restitution.estimate import Estimate, estimate_of
 from restitution.fem.elasticity import as_material
 from restitution.fem.graded import (
     ContactGrading,
@@ -241,6 +242,11 @@ class FemEpsilon:
             },
             "version": __version__,
         }
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok, self.message)
 
 
 def _one_run(

@@ -35,6 +35,7 @@ from pathlib import Path
 from restitution import atomic
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
+from restitution.estimate import Estimate, estimate_of
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun
 from restitution.fem.pair_limits import fem_pair_epsilon
@@ -113,6 +114,11 @@ class PairReferencePoint:
         """The speed a law is evaluated at (``w``): so :func:`restitution.fem.judge.judge_law`
         takes these points with the law of their pair."""
         return self.w
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok)
 
 
 def _key(point: dict) -> tuple:

@@ -28,6 +28,7 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
+from restitution.estimate import Estimate, estimate_of
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
 from restitution.fem.section import fem_geometries
@@ -122,6 +123,11 @@ class ReferencePoint:
     epsilon_err: float
     asymptotic_ok: bool
     message: str = ""
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok)
 
 
 def compute_reference(

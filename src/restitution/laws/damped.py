@@ -39,6 +39,7 @@ from scipy.optimize import brentq
 from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
+from restitution.estimate import Estimate
 from restitution.laws.si_law import SILaw
 from restitution.status import Status
 
@@ -162,6 +163,11 @@ class DampedPoint:
 
     def to_dict(self) -> dict:
         return dict(self.__dict__)
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
 
 
 def _combine(eps_el, eps_v):

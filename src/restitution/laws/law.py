@@ -62,6 +62,7 @@ from restitution.errors import (
     is_real_array,
     real,
 )
+from restitution.estimate import Estimate
 from restitution.jsonable import json_default
 from restitution.provenance import code_version
 from restitution.status import Status
@@ -304,6 +305,11 @@ class LawPoint:
     epsilon_err: float
     status: str
     message: str = ""
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return Estimate(self.epsilon, self.epsilon_err, self.status, self.message)
 
 
 @dataclass(frozen=True, eq=False)

@@ -24,6 +24,7 @@ import numpy as np
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, describe, is_real, real_array
+from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.units import PARTNERS, Grain, partner_factor
@@ -128,6 +129,11 @@ class SIPoint:
             "status": self.status,
             "note": self.note,
         }
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
 
 
 def _quasistatic_note(law) -> str:

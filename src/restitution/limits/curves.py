@@ -22,6 +22,7 @@ import numpy as np
 from restitution._version import __version__
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError, describe, is_real, real
+from restitution.estimate import Estimate, estimate_of
 from restitution.jsonable import finite_or_none
 from restitution.limits.extrapolation import (
     CombinedLimit,
@@ -232,6 +233,11 @@ class PointEpsilon:
             "settings": self.settings.to_dict(),
             "version": __version__,
         }
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok, self.message)
 
 
 def _check_point(nu, v, alpha, settings, run: bool) -> tuple[float, float, float | None]:

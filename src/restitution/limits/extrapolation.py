@@ -72,6 +72,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.estimate import Estimate, estimate_of
 from restitution.jsonable import finite_or_none
 
 __all__ = [
@@ -482,6 +483,11 @@ class CombinedLimit:
                 "check_second": self.check_second.to_dict(),
             }
         return d
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok, self.message)
 
 
 def _two_stage(

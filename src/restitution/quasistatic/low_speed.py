@@ -45,6 +45,7 @@ from scipy.interpolate import PchipInterpolator
 from restitution.bodies.base import ModalBody
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
+from restitution.estimate import Estimate
 from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz_sphere import (
     SphereHertzLaw,
@@ -53,6 +54,7 @@ from restitution.quasistatic.hertz_sphere import (
     sphere_quasistatic_collision,
 )
 from restitution.quasistatic.rayleigh import rayleigh_energy
+from restitution.status import Status
 
 __all__ = [
     "CONTACT_TIME_SPREAD",
@@ -116,6 +118,11 @@ class LowSpeedLoss:
 
     def to_dict(self) -> dict:
         return finite_tree(asdict(self))
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return Estimate(self.epsilon, self.epsilon_err, Status.QUASISTATIC)
 
 
 def _asymptotic_sum(law: SphereHertzLaw, modes: ModalBody, v: float, stretch: np.ndarray):

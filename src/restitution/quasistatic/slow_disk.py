@@ -72,9 +72,11 @@ from scipy.integrate import solve_ivp
 from restitution.bodies.base import ModalBody
 from restitution.bodies.disk.kind import KIND as DISK
 from restitution.errors import InputError, RestitutionError
+from restitution.estimate import Estimate
 from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz import HertzLaw, contact_law, quasistatic_collision
 from restitution.quasistatic.hertz_pair import pair_contact_law
+from restitution.status import Status
 
 __all__ = [
     "MODEL_SPREAD",
@@ -400,6 +402,11 @@ class SlowLoss:
 
     def to_dict(self) -> dict:
         return finite_tree(asdict(self))
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return Estimate(self.epsilon, self.epsilon_err, Status.QUASISTATIC)
 
 
 def slow_loss(modes: ModalBody, v: float, *, cuts=SLOW_CUTS) -> SlowLoss:

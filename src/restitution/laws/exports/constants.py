@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.estimate import Estimate
 from restitution.laws.si_law import SILaw
 from restitution.status import Status
 
@@ -39,6 +40,11 @@ class Constant:
     epsilon_err: float
     how: str
     status: str
+
+    @property
+    def estimate(self) -> Estimate:
+        """The constant as one :class:`~restitution.estimate.Estimate` (its status the law's)."""
+        return Estimate(self.epsilon, self.epsilon_err, self.status, self.how)
 
     def to_dict(self) -> dict:
         return {

@@ -1,0 +1,90 @@
+"""One result type for "an epsilon with its error": the estimate every route answers with.
+
+Units: epsilon is dimensionless (rebound speed over impact speed); its error too.
+
+A collision sweep's extrapolated point, a finite-element limit, a low-speed theory's point, a
+law's point, an answer in SI units, a damping grain's point and a constant for a DEM code each
+keep their own details, but each says what it estimates in the same words:
+:class:`Estimate`, from its ``estimate`` property. Its :class:`~restitution.status.Status`
+says where the number comes from and whether it passed its route's checks; the status carries
+its advice (:attr:`restitution.status.Status.advice`), as diffrax's ``RESULTS`` do.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from restitution.status import Status
+
+__all__ = ["ERROR_MEANING", "Estimate", "estimate_of"]
+
+ERROR_MEANING = (
+    "one standard deviation of the estimate as its route states it: for a modal extrapolation "
+    "the fits' error plus the spread between the two orders of the limits and between checks; "
+    "for the FEM the Richardson and fit errors; for the low-speed theories their model band; "
+    "between law points the larger neighbouring error plus the interpolation's"
+)
+"""What an :class:`Estimate`'s error covers (the routes' own documents say how it is made)."""
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """epsilon, its error and its status.
+
+    Attributes
+    ----------
+    epsilon : float or None
+        The coefficient of restitution; ``None`` where there is none (outside a law's range).
+    epsilon_err : float or None
+        Its error (:data:`ERROR_MEANING`); ``None`` when it cannot be estimated.
+    status : Status
+        Where the number comes from and whether it passed its checks.
+    message : str
+        Why the status is not ``ok``, in the route's words.
+    """
+
+    epsilon: float | None
+    epsilon_err: float | None
+    status: Status
+    message: str = ""
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "status", Status(self.status))
+        for name in ("epsilon", "epsilon_err"):
+            value = getattr(self, name)
+            if value is not None and not math.isfinite(value):
+                object.__setattr__(self, name, None)
+
+    @property
+    def asymptotic(self) -> bool:
+        """Whether it passed every check of its route (:attr:`Status.asymptotic`)."""
+        return self.status.asymptotic
+
+    @property
+    def advice(self) -> str | None:
+        """What to do about it (its status's advice)."""
+        return self.status.advice
+
+    def covers(self, value: float, k: float = 1.0) -> bool:
+        """Whether ``value`` lies within ``k`` errors of ``epsilon``."""
+        if self.epsilon is None or self.epsilon_err is None:
+            return False
+        return abs(value - self.epsilon) <= k * self.epsilon_err
+
+    def to_dict(self) -> dict:
+        """JSON-ready: ``epsilon``, ``epsilon_err``, ``status``, ``message``, ``advice``."""
+        return {
+            "epsilon": self.epsilon,
+            "epsilon_err": self.epsilon_err,
+            "status": str(self.status),
+            "message": self.message,
+            "advice": self.advice,
+        }
+
+
+def estimate_of(epsilon, epsilon_err, asymptotic_ok: bool, message: str = "") -> Estimate:
+    """The estimate of a route that reports ``asymptotic_ok`` instead of a status: ``ok`` or
+    ``not-asymptotic``."""
+    status = Status.OK if asymptotic_ok else Status.NOT_ASYMPTOTIC
+    return Estimate(epsilon, epsilon_err, status, "" if asymptotic_ok else message)
