@@ -122,7 +122,7 @@ def test_the_inverse_ratio_is_the_same_pair(laws, capsys):
 
 def _argv(inputs: dict) -> list[str]:
     """The command line that the JSON envelope's inputs record."""
-    flags = {"E": "--E", "nu": "--nu", "rho": "--rho", "geometry": "--geometry",
+    flags = {"E": "--E", "nu": "--nu", "rho": "--rho", "shape": "--shape",
              "against": "--against", "partner_radius_ratio": "--partner-radius-ratio",
              "partner_E": "--partner-E", "partner_nu": "--partner-nu",
              "partner_rho": "--partner-rho",

@@ -279,7 +279,7 @@ def test_type_pair_constants_refuse_laws_that_do_not_fit(laws):
 
 def test_json_inputs_round_trip(laws, capsys, tmp_path):
     first = run_json(capsys, *args(laws), "--speed", 3, 70.5, "--reference-speed", 70.5)
-    flags = {"E": "--E", "nu": "--nu", "rho": "--rho", "geometry": "--geometry",
+    flags = {"E": "--E", "nu": "--nu", "rho": "--rho", "shape": "--shape",
              "against": "--against", "partner_radius_ratio": "--partner-radius-ratio",
              "partner_E": "--partner-E", "partner_nu": "--partner-nu",
              "partner_rho": "--partner-rho", "law_file": "--law-file",

@@ -108,7 +108,7 @@ def test_steel_at_one_metre_per_second(capsys):
     doc = json.loads(capsys.readouterr().out)
     # The envelope every JSON output has (issue 28: law --json lacked it).
     assert doc["command"] == "law" and doc["version"] and doc["units"]["speed"].startswith("m/s")
-    assert doc["inputs"]["speeds_m_s"] == [1.0] and doc["inputs"]["geometry"] == "sphere"
+    assert doc["inputs"]["speeds_m_s"] == [1.0] and doc["inputs"]["shape"] == "sphere"
     assert doc["status"] == Status.QUASISTATIC and "low-speed theory" in doc["advice"]
     point = doc["points"][0]
     v = 1.0 / math.sqrt(E / rho)

@@ -191,3 +191,38 @@ def test_text_output_names_partner_and_status(capsys):
     # 1 um/s is v = 1.3e-8 c, below the law's lowest speed 1e-7 c: said, with no number.
     assert "outside" in captured.out
     assert "note: outside:" in captured.err
+
+
+def test_one_vocabulary_with_the_old_names_kept():
+    """Issue 40: a *shape* is the real grain (cylinder, thin disk, sphere), a *kind* the modal
+    body whose law serves it; ``geometry`` is kept as the old name of the shape."""
+    from restitution.laws.si_law import si_law
+
+    new = Grain(E=210e9, nu=0.3, rho=7850, shape="cylinder")
+    old = Grain(E=210e9, nu=0.3, rho=7850, geometry="cylinder")
+    assert new == old and new.geometry == new.shape == "cylinder" and new.kind.geometry == "disk"
+    d = new.to_dict()
+    assert (d["shape"], d["kind"], d["geometry"], d["body"]) == ("cylinder", "disk") * 2
+    with pytest.raises(InputError, match="give one"):
+        Grain(E=210e9, nu=0.3, rho=7850, shape="cylinder", geometry="sphere")
+    # Both grains alike: the first as a Grain too.
+    a = si_law(grain=new, against="wall")
+    b = si_law(210e9, 0.3, 7850, "cylinder", "wall")
+    assert a.points([1.0])[0].epsilon == b.points([1.0])[0].epsilon
+    with pytest.raises(InputError, match="not both"):
+        si_law(210e9, grain=new, against="wall")
+
+
+def test_epsilon_at_takes_the_kind_by_name(tmp_path):
+    """``epsilon_at(..., geometry="sphere")`` was a TypeError (issue 40)."""
+    from dataclasses import replace
+
+    from restitution.limits.curves import epsilon_at
+    from restitution.limits.sweep import DEFAULTS
+
+    point = epsilon_at(0.3, 0.02, geometry="sphere", run=False, store=tmp_path / "s.sqlite")
+    assert point.settings.geometry == "sphere" and point.settings.n_modes[0] == 1600
+    assert not point.asymptotic_ok  # nothing stored, nothing computed
+    with pytest.raises(InputError, match="give one"):
+        disk = replace(DEFAULTS, batch_size=3)  # a disk's settings, not the default object
+        epsilon_at(0.3, 0.02, geometry="sphere", settings=disk, run=False)

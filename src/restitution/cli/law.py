@@ -37,7 +37,8 @@ def _request_options(func):
         if meta["type"] == "choice":
             kwargs = dict(type=click.Choice(meta["choices"]()))
         required = f.default is MISSING and f.default_factory is MISSING
-        func = click.option(meta["option"], f.name, required=required, help=meta["help"],
+        names = (meta["option"], *meta.get("aliases", ()))
+        func = click.option(*names, f.name, required=required, help=meta["help"],
                             **kwargs)(func)  # fmt: skip
     return func
 
@@ -59,7 +60,7 @@ def law(fmt, as_json, **options):
     computes it. Example (a glass cylinder against a wall):
 
     \b
-    restitution law --E 63e9 --nu 0.2481 --rho 2500 --geometry cylinder \\
+    restitution law --E 63e9 --nu 0.2481 --rho 2500 --shape cylinder \\
         --against wall --speed 0.5 1 5
 
     Two grains of one material and different sizes: --against grain --partner-radius-ratio R
@@ -67,7 +68,7 @@ def law(fmt, as_json, **options):
     --partner-rho. The law of a steel cylinder with a glass one 1.4 times as large is shipped:
 
     \b
-    restitution law --E 210e9 --nu 0.3 --rho 7850 --geometry cylinder \\
+    restitution law --E 210e9 --nu 0.3 --rho 7850 --shape cylinder \\
         --against grain --partner-radius-ratio 1.4 --partner-E 63e9 \\
         --partner-nu 0.2481 --partner-rho 2500 --speed 0.1 1 10
 
@@ -78,7 +79,7 @@ def law(fmt, as_json, **options):
     vibrations, from one measured coefficient of restitution or from the relaxation time:
 
     \b
-    restitution law --E 210e9 --nu 0.3 --rho 7850 --geometry sphere \\
+    restitution law --E 210e9 --nu 0.3 --rho 7850 --shape sphere \\
         --against wall --measured-epsilon 0.9 --measured-speed 1 --speed 0.1 1 10
     """
     from restitution.laws.serve import serve

@@ -118,8 +118,8 @@ def _steel_glass():
     from restitution.laws.si_law import pair_partner
     from restitution.laws.units import Grain
 
-    steel = Grain(E=210e9, nu=0.3, rho=7850.0, geometry="cylinder")
-    glass = Grain(E=63e9, nu=0.2481, rho=2500.0, geometry="cylinder")
+    steel = Grain(E=210e9, nu=0.3, rho=7850.0, shape="cylinder")
+    glass = Grain(E=63e9, nu=0.2481, rho=2500.0, shape="cylinder")
     return steel.law_nu, pair_partner(steel, glass, 1.4)
 
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
-from restitution.laws.units import BODIES, GEOMETRIES, PARTNERS, Grain
+from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
 
 __all__ = ["DEFAULT_SPEEDS_M_S", "LawRequest", "option_fields"]
 
@@ -46,14 +46,15 @@ class LawRequest:
     E: float = field(metadata=_option("--E", "Young modulus of the 3D material, Pa."))
     nu: float = field(metadata=_option("--nu", "Poisson number of the 3D material."))
     rho: float = field(metadata=_option("--rho", "Density of the 3D material, kg/m^3."))
-    geometry: str = field(
+    shape: str = field(
         metadata=_option(
-            "--geometry",
+            "--shape",
             "Long cylinder hit along a diameter (the disk in plane strain: nu_2d = nu/(1-nu), "
             "c = sqrt(E/((1-nu^2) rho))), thin disk (plane stress: nu_2d = nu, c = sqrt(E/rho)) "
             "or sphere (the sphere's law for nu itself, c = sqrt(E/rho)).",
             "choice",
-            choices=lambda: list(GEOMETRIES),
+            choices=lambda: list(SHAPES),
+            aliases=("--geometry",),
         )
     )
     against: str = field(
@@ -228,7 +229,7 @@ class LawRequest:
     )
 
     def __post_init__(self) -> None:
-        if self.geometry not in GEOMETRIES:
+        if self.shape not in SHAPES:
             self.grain  # noqa: B018 -- the grain's own one-line refusal of the geometry
         speeds = tuple(self.speeds) or DEFAULT_SPEEDS_M_S
         object.__setattr__(self, "speeds", speeds)
@@ -260,7 +261,7 @@ class LawRequest:
     @property
     def grain(self) -> Grain:
         """This grain (checks ``E``, ``nu``, ``rho`` and the geometry)."""
-        return Grain(E=self.E, nu=self.nu, rho=self.rho, geometry=self.geometry)
+        return Grain(E=self.E, nu=self.nu, rho=self.rho, shape=self.shape)
 
     @property
     def radius_ratio(self) -> float | None:
@@ -283,11 +284,11 @@ class LawRequest:
                 "--partner-E, --partner-nu and --partner-rho describe a second grain: give them "
                 "with --against grain"
             )
-        kind = body_kind(BODIES[self.geometry])
+        kind = body_kind(BODIES[self.shape])
         if kind.pair_compression is None:
             raise InputError(
                 f"laws of two {kind.geometry}s of different materials are not computed yet; use "
-                f"--geometry {_paired_shapes()}, or leave out "
+                f"--shape {_paired_shapes()}, or leave out "
                 "--partner-E/--partner-nu/--partner-rho"
             )
         values = tuple(
@@ -297,7 +298,7 @@ class LawRequest:
         if values == (self.E, self.nu, self.rho):
             return None
         try:
-            return Grain(E=values[0], nu=values[1], rho=values[2], geometry=self.geometry)
+            return Grain(E=values[0], nu=values[1], rho=values[2], shape=self.shape)
         except InputError as exc:
             raise InputError(f"the partner's material: {exc}") from None
 
@@ -315,7 +316,7 @@ class LawRequest:
         """The request as given, with units in the keys (a command's JSON ``inputs``)."""
         path = lambda p: None if p is None else str(p)  # noqa: E731
         return {
-            "E": self.E, "nu": self.nu, "rho": self.rho, "geometry": self.geometry,
+            "E": self.E, "nu": self.nu, "rho": self.rho, "shape": self.shape,
             "against": self.against, "partner_radius_ratio": self.partner_radius_ratio,
             "partner_E": self.partner_E, "partner_nu": self.partner_nu,
             "partner_rho": self.partner_rho, "speeds_m_s": list(self.speeds),
@@ -346,13 +347,13 @@ class LawRequest:
                 "--partner-radius-ratio describes a second grain: give it with --against "
                 "grain, or leave it out against a wall"
             )
-        if ratio == 1.0 or self.geometry not in BODIES:
+        if ratio == 1.0 or self.shape not in BODIES:
             return
-        kind = body_kind(BODIES[self.geometry])
+        kind = body_kind(BODIES[self.shape])
         if kind.pair_compression is None:
             raise InputError(
                 f"--partner-radius-ratio {ratio:g}: laws of two {kind.geometry}s of different "
-                f"sizes are not computed yet; use --geometry {_paired_shapes()}, or leave it out "
+                f"sizes are not computed yet; use --shape {_paired_shapes()}, or leave it out "
                 f"(identical {kind.geometry}s)"
             )
 

@@ -117,7 +117,7 @@ def serve(
         served = _computed(r, note, progress)
     elif other is not None and r.law_file is None:
         _refuse_uncomputed(r)
-    s = si_law(r.E, r.nu, r.rho, r.geometry, r.against, path=served,
+    s = si_law(r.E, r.nu, r.rho, r.shape, r.against, path=served,
                radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
     damped = _damped(r, s)
     if damped is not None and s.law.partner is not None and r.constants:
@@ -146,12 +146,12 @@ def _constants(r: LawRequest, s: SILaw):
     if not r.constants:
         return None, None
     if s.law.partner is not None:
-        identical = _identical(r.E, r.nu, r.rho, r.geometry, r.identical_law_file,
+        identical = _identical(r.E, r.nu, r.rho, r.shape, r.identical_law_file,
                                "--identical-law-file")  # fmt: skip
         other = r.partner_grain
         identical2 = None
         if other is not None:
-            identical2 = _identical(other.E, other.nu, other.rho, r.geometry,
+            identical2 = _identical(other.E, other.nu, other.rho, r.shape,
                                     r.partner_identical_law_file,
                                     "--partner-identical-law-file")  # fmt: skip
         pairs = exports.type_pair_constants(
@@ -205,7 +205,7 @@ def _damped(r: LawRequest, s: SILaw) -> DampedLaw | None:
 
 
 def _target(r: LawRequest):
-    return law_target(r.E, r.nu, r.rho, r.geometry, r.against, r.radius_ratio, r.partner_grain)
+    return law_target(r.E, r.nu, r.rho, r.shape, r.against, r.radius_ratio, r.partner_grain)
 
 
 def _refuse_uncomputed(r: LawRequest) -> None:

@@ -10,7 +10,7 @@ says, for every point, where its number comes from (:data:`STATUSES`).
 Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2d = 0.33)::
 
     >>> from restitution.laws.si_law import si_law
-    >>> s = si_law(E=63e9, nu=0.2481, rho=2500, geometry="cylinder", against="wall")
+    >>> s = si_law(E=63e9, nu=0.2481, rho=2500, shape="cylinder", against="wall")
     >>> round(s.grain.c_m_s)
     5182
 """
@@ -207,7 +207,7 @@ class SILaw:
         if not isinstance(self.grain, Grain):
             raise InputError(
                 f"grain must be a Grain, got {describe(self.grain)}; pass e.g. Grain(E=63e9, "
-                "nu=0.25, rho=2500, geometry='cylinder'), or call si_law(...)"
+                "nu=0.25, rho=2500, shape='cylinder'), or call si_law(...)"
             )
         if not isinstance(self.law, EpsilonLaw | NuInterpolatedLaw):
             raise InputError(
@@ -358,7 +358,9 @@ class SILaw:
         return {
             **head,
             "law_nu": g.law_nu,
-            "geometry": g.geometry,
+            "shape": g.shape,
+            "kind": g.body,
+            "geometry": g.shape,
             "body": g.body,
             "against": self.against,
             "against_meaning": self.against_meaning,
@@ -383,17 +385,22 @@ class SILaw:
 
 
 def si_law(
-    E: float,
-    nu: float,
-    rho: float,
-    geometry: str,
-    against: str,
+    E: float | None = None,
+    nu: float | None = None,
+    rho: float | None = None,
+    shape: str | None = None,
+    against: str | None = None,
     *,
+    grain: Grain | None = None,
     path: str | os.PathLike | None = None,
     radius_ratio: float | None = None,
     partner_grain: Grain | None = None,
+    geometry: str | None = None,
 ) -> SILaw:
-    """epsilon at SI speeds for a material given by its 3D constants.
+    """epsilon at SI speeds for a material given by its 3D constants (or as a ``grain``).
+
+    Both grains can be given alike: ``si_law(grain=Grain(...), against="grain",
+    partner_grain=Grain(...))``, or this one by its four numbers.
 
     Parameters
     ----------
@@ -403,11 +410,14 @@ def si_law(
         Three-dimensional Poisson number.
     rho : float
         Density, kg/m^3.
-    geometry : {"cylinder", "thin-disk", "sphere"}
+    shape : {"cylinder", "thin-disk", "sphere"}
         Long cylinder (the disk in plane strain), thin disk (plane stress) or sphere (the law
-        of the sphere for ``nu`` itself, ``c = sqrt(E / rho)``).
+        of the sphere for ``nu`` itself, ``c = sqrt(E / rho)``); ``geometry=`` is its
+        deprecated alias.
     against : {"wall", "grain"}
         Rigid wall at speed ``w``, or two identical grains at relative normal speed ``w``.
+    grain : Grain, optional
+        This grain, instead of ``E``, ``nu``, ``rho`` and ``shape``.
     path : path, optional
         A law file of the grain's body for its ``law_nu`` (from ``restitution curve
         [--geometry sphere]``; for a pair ``restitution curve --radius-ratio R``, or
@@ -438,7 +448,7 @@ def si_law(
         For constants out of range, or when no law serves the grain's body and ``law_nu`` (the
         message names the command that computes it).
     """
-    grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
+    grain = _grain_of(E, nu, rho, shape, geometry, grain)
     partner_factor(against)
     partner = _partner(radius_ratio, against, grain, partner_grain)
     other = _other_material(grain, partner_grain)
@@ -461,12 +471,23 @@ def _shipped(grain: Grain, partner) -> bool:
     return shipped_match(grain.law_nu, grain.body, partner) is not None
 
 
+def _grain_of(E, nu, rho, shape, geometry, grain) -> Grain:
+    """The grain of :func:`si_law`'s arguments: ``grain``, or its four numbers."""
+    if grain is None:
+        return Grain(E, nu, rho, shape, geometry=geometry)
+    if not isinstance(grain, Grain):
+        raise InputError(f"grain must be a Grain, got {type(grain).__name__}; see Grain(...)")
+    if (E, nu, rho, shape, geometry) != (None,) * 5:
+        raise InputError("give the grain as grain=Grain(...) or as E, nu, rho and shape, not both")
+    return grain
+
+
 def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None, partner_grain=None):
     """``(law_nu, body, partner)``: the law :func:`si_law` serves for these arguments (the
     Poisson number of the law, 2D for cylinders and thin disks; the body, ``"disk"`` or
     ``"sphere"``; the :class:`~restitution.bodies.pair.partner.Partner` or ``None``), e.g. for
     :func:`restitution.laws.compute.computed_law`."""
-    grain = Grain(E=E, nu=nu, rho=rho, geometry=geometry)
+    grain = Grain(E=E, nu=nu, rho=rho, shape=geometry)
     partner_factor(against)
     return grain.law_nu, grain.body, _partner(radius_ratio, against, grain, partner_grain)
 
@@ -516,7 +537,7 @@ def _other_material(grain: Grain, partner_grain) -> Grain | None:
     if not isinstance(partner_grain, Grain):
         raise InputError(
             f"partner_grain must be a Grain, got {describe(partner_grain)}; pass e.g. "
-            "Grain(E=63e9, nu=0.25, rho=2500, geometry='cylinder')"
+            "Grain(E=63e9, nu=0.25, rho=2500, shape='cylinder')"
         )
     if partner_grain.geometry != grain.geometry:
         raise InputError(

@@ -40,13 +40,19 @@ __all__ = [
     "BODIES",
     "GEOMETRIES",
     "PARTNERS",
+    "SHAPES",
     "Grain",
     "partner_factor",
 ]
 
-Geometry = str
-"""A geometry name: an SI shape of a kind of body (:data:`GEOMETRIES`)."""
-Partner = Literal["wall", "grain"]
+Shape = str
+"""A shape name: how a real grain is made of a kind of body (:data:`SHAPES`). The package's
+vocabulary: a *kind* (``disk``, ``sphere``; :mod:`restitution.bodies.kinds`) is the modal body
+whose law serves, a *shape* (``cylinder``, ``thin-disk``, ``sphere``) the real grain in SI
+units; ``geometry`` meant either and is kept where it always named a kind (the reduced units'
+commands and functions) and as a deprecated alias of ``shape`` here."""
+Against = Literal["wall", "grain"]
+"""The collision partner of an SI answer (:data:`PARTNERS`)."""
 
 
 def _shape_kinds() -> dict[str, BodyKind]:
@@ -57,11 +63,14 @@ def _shape_kinds() -> dict[str, BodyKind]:
     return {shape: every[name] for name in geometries() for shape in every[name].shapes}
 
 
-GEOMETRIES: dict[str, str | None] = {
+SHAPES: dict[str, str | None] = {
     shape: kind.shapes[shape] for shape, kind in _shape_kinds().items()
 }
-"""Geometry name -> plane condition of eq. (2); ``None`` for the sphere (a 3D body): the
+"""Shape name -> plane condition of eq. (2); ``None`` for the sphere (a 3D body): the
 ``shapes`` of the package's kinds (:attr:`~restitution.bodies.kinds.BodyKind.shapes`)."""
+
+GEOMETRIES = SHAPES
+"""Deprecated name of :data:`SHAPES`."""
 
 BODIES: dict[str, str] = {shape: kind.geometry for shape, kind in _shape_kinds().items()}
 """Geometry name -> the body whose law serves it (:data:`restitution.bodies.kinds.GEOMETRIES`),
@@ -96,9 +105,9 @@ def partner_factor(against: str) -> float:
     )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Grain:
-    """A grain material in SI units, its geometry, and the conversion to reduced units.
+    """A grain material in SI units, its shape, and the conversion to reduced units.
 
     Parameters
     ----------
@@ -108,17 +117,18 @@ class Grain:
         Three-dimensional Poisson number, in (-1, 0.5] (``< 0.5`` for a cylinder and a sphere).
     rho : float
         Three-dimensional density, kg/m^3.
-    geometry : {"cylinder", "thin-disk", "sphere"}
-        Long cylinder (the disk in plane strain), thin disk (plane stress) or sphere.
+    shape : {"cylinder", "thin-disk", "sphere"}
+        Long cylinder (the disk in plane strain), thin disk (plane stress) or sphere
+        (:data:`SHAPES`); ``geometry=`` is its deprecated alias.
 
     Examples
     --------
-    >>> g = Grain(E=210e9, nu=0.3, rho=7850, geometry="thin-disk")
+    >>> g = Grain(E=210e9, nu=0.3, rho=7850, shape="thin-disk")
     >>> round(g.c_m_s)
     5172
     >>> round(float(g.v_over_c(1.0, "grain")), 7)
     9.67e-05
-    >>> s = Grain(E=210e9, nu=0.3, rho=7850, geometry="sphere")
+    >>> s = Grain(E=210e9, nu=0.3, rho=7850, shape="sphere")
     >>> (s.body, s.law_nu, round(s.c_m_s))
     ('sphere', 0.3, 5172)
     """
@@ -126,14 +136,24 @@ class Grain:
     E: float
     nu: float
     rho: float
-    geometry: Geometry
+    shape: Shape
+
+    def __init__(self, E, nu, rho, shape=None, *, geometry=None) -> None:
+        if shape is None:
+            shape = geometry
+        elif geometry is not None and geometry != shape:
+            raise InputError(
+                f"shape={shape!r} and geometry={geometry!r}: give one (geometry is the old name "
+                "of shape)"
+            )
+        for name, value in (("E", E), ("nu", nu), ("rho", rho), ("shape", shape)):
+            object.__setattr__(self, name, value)
+        self.__post_init__()
 
     def __post_init__(self) -> None:
         shapes = _shape_kinds()
-        if not (isinstance(self.geometry, str) and self.geometry in shapes):
-            raise InputError(
-                f"the geometry must be {_choices(shapes)}, got {describe(self.geometry)}"
-            )
+        if not (isinstance(self.shape, str) and self.shape in shapes):
+            raise InputError(f"the geometry must be {_choices(shapes)}, got {describe(self.shape)}")
         for name, unit in (("E", "Pa"), ("nu", "dimensionless"), ("rho", "kg/m^3")):
             value = getattr(self, name)
             if not is_real(value):
@@ -149,10 +169,15 @@ class Grain:
             self.kind.check_nu(self.nu)
 
     @property
+    def geometry(self) -> str:
+        """Deprecated name of :attr:`shape`."""
+        return self.shape
+
+    @property
     def kind(self) -> BodyKind:
         """The kind of body whose law serves this grain (the kind whose
         :attr:`~restitution.bodies.kinds.BodyKind.shapes` name its geometry)."""
-        return _shape_kinds()[self.geometry]
+        return _shape_kinds()[self.shape]
 
     @property
     def body(self) -> str:
@@ -163,12 +188,12 @@ class Grain:
     @property
     def plane(self) -> str | None:
         """``"strain"`` for a cylinder, ``"stress"`` for a thin disk, ``None`` for a sphere."""
-        return self.kind.shapes[self.geometry]
+        return self.kind.shapes[self.shape]
 
     def _planar_only(self, what: str) -> None:
         if not self.kind.planar:
             raise InputError(
-                f"a {self.geometry} has no {what}: its law takes the 3D nu (Grain.law_nu) and "
+                f"a {self.shape} has no {what}: its law takes the 3D nu (Grain.law_nu) and "
                 "c = sqrt(E / rho) (Grain.c_m_s)"
             )
 
@@ -250,8 +275,9 @@ class Grain:
     def to_dict(self) -> dict:
         """JSON-ready description with units in every key.
 
-        Every grain: ``E_Pa``, ``nu``, ``rho_kg_m3`` (the 3D constants as given), ``geometry``,
-        ``body`` (the law's body), ``law_nu`` (the law's Poisson number), ``c_m_s`` and
+        Every grain: ``E_Pa``, ``nu``, ``rho_kg_m3`` (the 3D constants as given), ``shape``,
+        ``kind`` (the kind of body whose law serves), ``geometry`` and ``body`` (their
+        deprecated names, kept for scripts), ``law_nu`` (the law's Poisson number), ``c_m_s`` and
         ``c_formula``. A disk adds ``plane``, ``E_2d_Pa`` and ``nu_2d``; a sphere has no 2D
         constants and no such keys.
         """
@@ -259,7 +285,9 @@ class Grain:
             "E_Pa": self.E,
             "nu": self.nu,
             "rho_kg_m3": self.rho,
-            "geometry": self.geometry,
+            "shape": self.shape,
+            "kind": self.body,
+            "geometry": self.shape,
             "body": self.body,
         }
         if self.kind.planar:
@@ -272,10 +300,8 @@ class Grain:
         head = f"E = {self.E:.4g} Pa, nu = {self.nu:g}, rho = {self.rho:.4g} kg/m^3, "
         if not self.kind.planar:
             return (
-                head + f"{self.geometry} (3D constants as they are): law nu = {self.nu:g}, "
+                head + f"{self.shape} (3D constants as they are): law nu = {self.nu:g}, "
                 f"c = sqrt(E/rho) = {self.c_m_s:.6g} m/s"
             )
         plane = "plane strain" if self.plane == "strain" else "plane stress"
-        return (
-            head + f"{self.geometry} ({plane}): nu_2d = {self.nu_2d:.6g}, c = {self.c_m_s:.6g} m/s"
-        )
+        return head + f"{self.shape} ({plane}): nu_2d = {self.nu_2d:.6g}, c = {self.c_m_s:.6g} m/s"

@@ -36,6 +36,7 @@ from restitution.limits.sweep import (
     DEFAULTS,
     SweepSettings,
     collide_points,
+    defaults_for,
     grid,
     load_grid,
     run_sweep,
@@ -283,6 +284,7 @@ def epsilon_at(
     v: float,
     *,
     alpha: float | None = None,
+    geometry: str | None = None,
     settings: SweepSettings = DEFAULTS,
     store: Store | str | os.PathLike | None = None,
     run: bool = True,
@@ -296,6 +298,9 @@ def epsilon_at(
     ``settings.geometry`` (the disk by default) with Poisson number ``nu`` (two-dimensional for
     the disk), both limits alpha, N -> infinity taken (the central computation).
 
+    ``geometry`` names the body's kind (its default sweep, :func:`restitution.limits.sweep.
+    defaults_for`) when ``settings`` are not given; given both, they must name one kind.
+
     With ``alpha`` only ``N -> infinity`` is taken at that wall hardness; without it both limits
     on the grid ``settings.alphas_at(v) x settings.n_modes``. Missing collisions are computed first
     (unless ``run=False``); the executor keywords go to :func:`restitution.limits.sweep.run_sweep`.
@@ -307,6 +312,15 @@ def epsilon_at(
         ``(0, 1)``, ``alpha`` neither ``None`` nor a positive number, ``settings`` not a
         :class:`SweepSettings` or ``run`` not a bool.
     """
+    if geometry is not None:
+        kind = body_kind(geometry).geometry
+        if settings is DEFAULTS:
+            settings = defaults_for(kind)
+        elif isinstance(settings, SweepSettings) and settings.geometry != kind:
+            raise InputError(
+                f"geometry={kind!r} and settings of a {settings.geometry}: give one (the "
+                f"settings' geometry names the body)"
+            )
     nu, v, alpha = _check_point(nu, v, alpha, settings, run)
     settings = replace(settings, velocities=(v,))
     if alpha is not None:
