@@ -17,12 +17,19 @@ Per body (speed ``V = 0.1`` of its own ``c``; the wall ``alpha = WALL / delta_ma
 * the rigid limits: modes that do not touch the surface take no energy, stiffened modes less
   and less;
 * the energy balance ``1 - epsilon^2 = sum of the mode energies``.
+
+Per shipped law file (``restitution/laws/data/law_*.json``, every body and pair): the stored
+points are physical and their flags are the current extrapolation's, and the cheapest stored
+collisions have not moved (the stale-data test).
 """
 
 from __future__ import annotations
 
+import json
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from importlib import resources
 
 import numpy as np
 import pytest
@@ -30,11 +37,15 @@ from numpy.testing import assert_allclose
 
 from restitution import get_modes
 from restitution.bodies.base import ModalBody
-from restitution.bodies.kinds import KINDS, BodyKind
+from restitution.bodies.kinds import GEOMETRIES, KINDS, BodyKind
 from restitution.bodies.pair import BodyPair, Partner
-from restitution.dynamics.collision import collide, start_position
+from restitution.dynamics.collision import CollisionSettings, collide, start_position
 from restitution.dynamics.integrators import INTEGRATORS, System, free_modes, initial_state
 from restitution.dynamics.reference import collide_dop853
+from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law_nu import shipped_nus
+from restitution.limits.extrapolation import combined_limit
+from restitution.provenance import code_version
 
 V = 0.1
 """Speed towards the wall, ``c`` of the body (the first body's for the pair)."""
@@ -232,3 +243,96 @@ def test_energy_lost_by_the_translation_sits_in_the_modes(body):
     assert np.all(r.mode_energy_after >= 0.0)
     assert 0.0 < r.epsilon < 1.0
     assert r.contact_time > 0 and r.max_compression > 0 and r.max_force > 0
+
+
+# -- the shipped laws cannot go stale silently ------------------------------------------------
+
+_DATA = resources.files("restitution.laws").joinpath("data")
+LAW_FILES = sorted(p.name for p in _DATA.iterdir() if p.name.startswith("law_"))
+
+
+def _meta(name: str) -> dict:
+    return json.loads(_DATA.joinpath(name).read_text())["metadata"]
+
+
+def _modal(points: list[dict]) -> list[dict]:
+    """The points from collisions (the low-speed points: tests/test_slow_disk.py and
+    tests/test_sphere_laws.py)."""
+    return [p for p in points if p.get("route") != "quasistatic"]
+
+
+def test_there_are_shipped_laws():
+    assert {"law_nu0.33.json", "law_nu0.9.json", "law_sphere_nu0.3.json"} <= set(LAW_FILES)
+    assert {"law_pair_r1.4_nu0.33.json", "law_pair_r2_nu0.9.json"} <= set(LAW_FILES)
+    for geometry in GEOMETRIES:
+        assert {law_filename(nu, geometry) for nu in shipped_nus(geometry)} <= set(LAW_FILES)
+
+
+@pytest.mark.parametrize("name", LAW_FILES)
+def test_shipped_law_points_are_physical_and_their_flags_truthful(name):
+    """Every point's extrapolation, redone by the current code from the loss grid stored in the
+    file, gives the stored epsilon, error and verdict, so a point that fails its checks cannot
+    be served unflagged; the law serves the file's body."""
+    meta = _meta(name)
+    served = EpsilonLaw.from_json(_DATA.joinpath(name))
+    assert served.geometry == meta["geometry"] in GEOMETRIES
+    partner = meta.get("partner")
+    assert served.partner == (None if partner is None else Partner.from_key(partner))
+    modal = _modal(meta["points"])
+    assert modal and served.v[~served.quasistatic].size == len(modal)
+    for p in meta["points"]:
+        assert p["epsilon"] <= 1.0, (p["v"], p["epsilon"])
+        assert np.isfinite(p["epsilon_err"]) and p["epsilon_err"] > 0
+    for p in modal:
+        ex = p["extrapolation"]
+        redo = combined_limit(
+            ex["alpha"],
+            ex["n_modes"],
+            np.array(ex["energy_loss_grid"], dtype=float),
+            order=p["settings"]["order"],
+        )
+        assert redo.epsilon == pytest.approx(p["epsilon"], rel=0, abs=1e-12), p["v"]
+        assert redo.epsilon_err == pytest.approx(p["epsilon_err"], rel=1e-9), p["v"]
+        assert bool(redo.asymptotic_ok) == bool(p["asymptotic_ok"]), (p["v"], redo.message)
+
+
+@pytest.mark.parametrize("name", LAW_FILES)
+def test_shipped_law_cheap_collisions_have_not_moved(name):
+    """Three of the cheapest stored collisions (the smallest mode count, softest wall; first,
+    middle and last speed), recomputed by the current code with the file's own settings, have
+    moved by less than a tenth of their point's error. A changed code version with unmoved
+    numbers is only reported. Regenerate with `make law` (`law-sphere`, `law-pair`)."""
+    meta = _meta(name)
+    points = _modal(meta["points"])
+    # The slow points need 1e4-1e5 modes; their stored grids are checked above.
+    smallest = min(min(p["extrapolation"]["n_modes"]) for p in points)
+    cheap = [p for p in points if min(p["extrapolation"]["n_modes"]) == smallest]
+    geometry, partner = meta["geometry"], meta.get("partner")
+    moved = []
+    for p in (cheap[0], cheap[len(cheap) // 2], cheap[-1]):
+        params = p["settings"]
+        if params.get("select", "lowest") != "lowest":
+            pytest.fail(f"{name}: the sample recomputation knows only the 'lowest' selection")
+        settings = CollisionSettings(integrator=params["integrator"], **params["options"])
+        ex = p["extrapolation"]
+        j, i = int(np.argmin(ex["n_modes"])), int(np.argmin(ex["alpha"]))
+        count = int(ex["n_modes"][j])
+        if partner is None:
+            modes = get_modes(meta["nu"], count, geometry=geometry)
+        else:
+            modes = Partner.from_key(partner).pair(meta["nu"], count, geometry=geometry)
+        now = 1.0 - collide(modes, p["v"], ex["alpha"][i], settings).epsilon ** 2
+        stored = ex["energy_loss_grid"][i][j]
+        moved.append(abs(now - stored) / p["energy_loss_err"])
+        assert abs(now - stored) <= 0.1 * p["energy_loss_err"], (
+            f"{name}: the collision at v = {p['v']}, alpha = {ex['alpha'][i]:.4g}, N = {count} "
+            f"moved from {stored:.8f} to {now:.8f}, more than a tenth of the point's error "
+            f"{p['energy_loss_err']:.2e}; regenerate the law"
+        )
+    now = code_version(geometry, pair=partner is not None)
+    if meta["code_version"] != now:
+        warnings.warn(
+            f"{name} was computed with code {meta['code_version']}, this is {now}; "
+            f"its sampled collisions moved by at most {max(moved):.1e} of their point errors",
+            stacklevel=1,
+        )
