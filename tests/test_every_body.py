@@ -95,6 +95,7 @@ def _kind_body(kind: BodyKind) -> Body:
 
 BODIES = [
     *(_kind_body(kind) for kind in KINDS.values()),
+    # Pairs of different radii are computed for disks (Partner.max_compression).
     Body(
         "disk-pair",
         lambda count: PARTNER.pair(_nu(KINDS["disk"]), count),
