@@ -325,19 +325,6 @@ def test_judge_reports_differences_in_combined_errors_and_coverage():
     assert short.coverage(1.0) == 1.0
 
 
-def test_judge_accepts_the_package_law():
-    from restitution.laws.law import law
-
-    served = law(0.33)
-    own = next(p for p in served.points if p.v == 0.1)
-    points = [ReferencePoint(0.33, 0.1, own.epsilon, own.epsilon_err, True)]
-    judged = judge_law(points, served)
-    # A law judged at one of its own computed points: the interpolant passes through it, so the
-    # difference is zero and the combined error is sqrt(2) times the point's error.
-    assert abs(judged.points[0].sigma) < 1e-9
-    assert judged.points[0].law_err == pytest.approx(own.epsilon_err, rel=1e-12)
-
-
 def test_shipped_reference_has_provenance_and_the_issue_points():
     points = load_reference()
     have = {(p.nu, p.v) for p in points}

@@ -410,23 +410,17 @@ def test_the_shipped_pair_of_materials_is_steel_and_glass_as_the_cli_reads_them(
         assert s.epsilon(p["v"] * C1) == pytest.approx(p["epsilon"], rel=1e-12)
 
 
-def test_the_fem_judges_the_shipped_law_of_two_materials():
+def test_the_fem_file_of_two_materials_holds_the_steel_glass_pair():
     """The FEM of the steel-glass pair (its own route: two meshes, h -> 0 and alpha -> inf;
-    docs/two-disks.md) against the shipped law at w = 0.01, 0.2, 0.6 c1: within two combined
-    errors, the judge's rule for every body (measured: -0.05, -0.06, -0.40; the FEM points at
-    0.01 and 0.6 carry their own asymptotic flags, stated in the file and the docs)."""
-    from restitution.fem.judge import judge_law
+    docs/two-disks.md) at w = 0.01, 0.2, 0.6 c1, of the shipped law's pair (its judgement of
+    the law: tests/test_every_body.py; the FEM points at 0.01 and 0.6 carry their own
+    asymptotic flags, stated in the file and the docs)."""
     from restitution.fem.pair_reference import load_pair_reference
-    from restitution.laws.law import law
 
     points = load_pair_reference(_data(FEM_FILE))
     assert sorted(p.w for p in points) == [0.01, 0.2, 0.6]
-    sigmas = []
     for p in points:
         assert p.partner == PARTNER and p.nu == pytest.approx(NU1_2D, rel=1e-12)
-        (row,) = judge_law([p], law(p.nu, partner=p.partner)).compared
-        sigmas.append(row.sigma)
-    assert all(abs(s) <= 2.0 for s in sigmas), sigmas
 
 
 def test_the_fem_file_of_two_materials_names_its_provenance():
