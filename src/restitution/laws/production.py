@@ -8,7 +8,7 @@ restitution.laws.production --geometry sphere`` computes the sphere's, ``law_sph
 disks of one material, ``law_pair_r<R2/R1>_nu<nu>.json`` (:data:`PAIR_RADIUS_RATIOS`,
 :data:`PAIR_NUS`, :func:`pair_groups`). All go through the same sweep, store and
 extrapolation as ``restitution curve`` (:mod:`restitution.limits.curves`), with a progress bar. The
-result store is reused, so an interrupted run resumes. ``tests/test_shipped_laws.py`` fails
+result store is reused, so an interrupted run resumes. ``tests/test_every_body.py`` fails
 when the shipped files no longer match the code. ``make law`` then draws the slow-point figures
 with :mod:`restitution.reproduction.law_figures` (laws never import the reproduction layer).
 
