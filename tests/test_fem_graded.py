@@ -387,3 +387,18 @@ def test_shipped_reference_point_is_reproduced():
     again = fem_epsilon(0.9, 0.3, levels=stored["settings"]["levels"])
     assert_allclose(again.epsilon, stored["epsilon"], rtol=1e-9)
     assert_allclose(again.epsilon_err, stored["epsilon_err"], rtol=1e-6)
+
+
+def test_the_fem_grid_is_one_object_and_the_loose_keywords_its_shorthand():
+    """Issue 40: the walls, levels, grading and settings of the FEM limits are one FemGrid; the
+    five loose keywords still work, the two together are refused."""
+    from restitution.fem.limits import FemGrid, grid_of
+
+    grid = FemGrid(alphas=(40, 80), alpha_scale="compression", levels=(1, 2))
+    assert grid.alphas == (40.0, 80.0) and grid.levels == (1, 2)
+    assert grid_of(None, alphas=(40, 80), alpha_scale="compression", levels=(1, 2)) == grid
+    assert grid_of(grid) is grid and grid_of() == FemGrid()
+    with pytest.raises(InputError, match="give grid= or levels, not both"):
+        grid_of(grid, levels=(0, 1))
+    with pytest.raises(InputError, match="consecutive"):
+        FemGrid(levels=(0, 2))

@@ -24,7 +24,7 @@ from restitution.fem.eigen import fem_count_below, fem_symmetric_frequencies
 from restitution.fem.graded import ContactGrading, contact_half_width
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide
 from restitution.fem.judge import LawJudgement, judge_law
-from restitution.fem.limits import FemEpsilon, fem_epsilon
+from restitution.fem.limits import FemEpsilon, FemGrid, fem_epsilon
 from restitution.fem.pair_impact import PairCollision, fem_collide_pair
 from restitution.fem.pair_limits import FemPairEpsilon, fem_pair_epsilon
 from restitution.fem.reference import load_reference
@@ -34,6 +34,7 @@ __all__ = [
     "ContactGrading",
     "FemCollisionError",
     "FemEpsilon",
+    "FemGrid",
     "FemPairEpsilon",
     "FemSettings",
     "LawJudgement",

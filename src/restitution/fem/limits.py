@@ -54,10 +54,60 @@ from restitution.limits.defaults import (
 )
 from restitution.limits.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
 
-__all__ = ["FemEpsilon", "FemRun", "fem_epsilon"]
+__all__ = ["LEVELS", "FemEpsilon", "FemGrid", "FemRun", "fem_epsilon", "grid_of"]
 
 LEVELS = (0, 1, 2)
 """Mesh levels of the convergence study (each halves all element sizes)."""
+
+
+@dataclass(frozen=True)
+class FemGrid:
+    """The grid of finite-element runs behind one epsilon: walls, mesh levels and run settings.
+
+    Attributes
+    ----------
+    alphas : tuple of float or None
+        Wall hardness values for ``alpha -> inf``, read by ``alpha_scale``; ``None``: the
+        modal sweeps' products of the body
+        (:func:`restitution.limits.defaults.default_products`).
+    alpha_scale : {"absolute", "compression"} or None
+        ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; ``None``: the
+        modal sweeps' default (:data:`restitution.limits.defaults.ALPHA_SCALE`).
+    levels : tuple of int
+        Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level).
+    grading : ContactGrading or None
+        The mesh's grading towards the contact; ``None``: the body's default
+        (:func:`restitution.fem.graded.default_grading`).
+    base : FemSettings or None
+        Integrator settings of every run.
+    """
+
+    alphas: tuple[float, ...] | None = None
+    alpha_scale: str | None = None
+    levels: tuple[int, ...] = LEVELS
+    grading: object | None = None
+    base: object | None = None
+
+    def __post_init__(self) -> None:
+        if self.alphas is not None:
+            object.__setattr__(self, "alphas", tuple(float(a) for a in self.alphas))
+        levels = tuple(int(k) for k in self.levels)
+        if len(levels) < 2 or any(b - a != 1 for a, b in zip(levels, levels[1:], strict=False)):
+            raise InputError(f"levels must be at least two consecutive integers, got {levels}")
+        object.__setattr__(self, "levels", levels)
+
+
+def grid_of(grid: FemGrid | None = None, **loose) -> FemGrid:
+    """A :class:`FemGrid`, or one made of the loose keywords ``alphas``, ``alpha_scale``,
+    ``levels``, ``grading``, ``base`` (the older spelling; not both)."""
+    given = {k: v for k, v in loose.items() if v is not None}
+    if grid is None:
+        return FemGrid(**given)
+    if not isinstance(grid, FemGrid):
+        raise InputError(f"grid must be a FemGrid, got {type(grid).__name__}")
+    if given:
+        raise InputError(f"give grid= or {', '.join(sorted(given))}, not both")
+    return grid
 
 
 @dataclass(frozen=True)
@@ -285,12 +335,13 @@ def fem_epsilon(
     *,
     geometry: str = DEFAULT_GEOMETRY,
     alpha: float | None = None,
+    grid: FemGrid | None = None,
+    on_run: Callable[[FemRun], None] | None = None,
     alphas: Sequence[float] | None = None,
     alpha_scale: str | None = None,
-    levels: Sequence[int] = LEVELS,
+    levels: Sequence[int] | None = None,
     grading: ContactGrading | None = None,
     base: FemSettings | None = None,
-    on_run: Callable[[FemRun], None] | None = None,
 ) -> FemEpsilon:
     """epsilon at speed ``v`` from the FEM alone, extrapolated to ``h -> 0`` and ``alpha -> inf``.
 
@@ -306,6 +357,9 @@ def fem_epsilon(
         The body (:mod:`restitution.fem.section`).
     alpha : float, optional
         Only take ``h -> 0`` at this wall hardness (``1/R``).
+    grid : FemGrid, optional
+        The walls, mesh levels and run settings (:class:`FemGrid`); the five keywords below
+        are its older spelling.
     alphas : sequence of float, optional
         Wall hardness values for ``alpha -> inf``, read by ``alpha_scale``; default the modal
         sweeps' products ``alpha * delta_max(v)`` of the body
@@ -315,7 +369,8 @@ def fem_epsilon(
         ``"compression"``: ``alphas`` are products ``alpha * delta_max(v)``; default as
         :data:`restitution.limits.defaults.ALPHA_SCALE` (the modal sweeps' default).
     levels : sequence of int
-        Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level).
+        Mesh levels, ascending and consecutive (the Richardson ratio is 2 per level; default
+        :data:`LEVELS`).
     grading : ContactGrading, optional
         Default :func:`restitution.fem.graded.default_grading` of the ``geometry``.
     base : FemSettings, optional
@@ -328,14 +383,14 @@ def fem_epsilon(
     FemEpsilon
         Failed runs are kept (``epsilon = nan``, with their message) and flag the result.
     """
+    grid = grid_of(grid, alphas=alphas, alpha_scale=alpha_scale, levels=levels,
+                   grading=grading, base=base)  # fmt: skip
     material = as_material(material_or_nu, geometry)
     v = float(v)
     if not 0.0 < v < 1.0:
         raise InputError(f"the speed v must lie in (0, 1) in units of c, got {v}")
-    levels = tuple(int(k) for k in levels)
-    if len(levels) < 2 or any(b - a != 1 for a, b in zip(levels, levels[1:], strict=False)):
-        raise InputError(f"levels must be at least two consecutive integers, got {levels}")
-    grading = grading or default_grading(geometry)
+    levels, alphas, alpha_scale, base = grid.levels, grid.alphas, grid.alpha_scale, grid.base
+    grading = grid.grading or default_grading(geometry)
     if alpha is not None:
         if not (alpha > 0 and math.isfinite(alpha)):
             raise InputError(f"the wall hardness alpha must be positive (1/R), got {alpha}")

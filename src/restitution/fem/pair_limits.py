@@ -27,7 +27,7 @@ from restitution.errors import InputError
 from restitution.fem.elasticity import as_material
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.impact import FemCollisionError, FemSettings
-from restitution.fem.limits import LEVELS, FemEpsilon, FemRun, _assemble
+from restitution.fem.limits import FemEpsilon, FemGrid, FemRun, _assemble, grid_of
 from restitution.fem.pair_impact import fem_collide_pair, pair_model_for
 from restitution.fem.pair_model import PAIR_GEOMETRY
 from restitution.limits.defaults import (
@@ -200,12 +200,13 @@ def fem_pair_epsilon(
     w: float,
     *,
     alpha: float | None = None,
+    grid: FemGrid | None = None,
+    on_run: Callable[[FemRun], None] | None = None,
     alphas: Sequence[float] | None = None,
     alpha_scale: str | None = None,
-    levels: Sequence[int] = LEVELS,
+    levels: Sequence[int] | None = None,
     grading: ContactGrading | None = None,
     base: FemSettings | None = None,
-    on_run: Callable[[FemRun], None] | None = None,
 ) -> FemPairEpsilon:
     """epsilon of two disks at relative speed ``w``, extrapolated to ``h -> 0`` and
     ``alpha -> inf``.
@@ -239,13 +240,14 @@ def fem_pair_epsilon(
     """
     if not isinstance(partner, Partner):
         raise InputError(f"the second disk must be a Partner, got {partner!r}")
+    grid = grid_of(grid, alphas=alphas, alpha_scale=alpha_scale, levels=levels,
+                   grading=grading, base=base)  # fmt: skip
     material = as_material(float(nu))
     w = float(w)
     if not 0.0 < w < 1.0:
         raise InputError(f"the relative speed w must lie in (0, 1) in units of c1, got {w}")
-    levels = tuple(int(k) for k in levels)
-    if len(levels) < 2 or any(b - a != 1 for a, b in zip(levels, levels[1:], strict=False)):
-        raise InputError(f"levels must be at least two consecutive integers, got {levels}")
+    levels, alphas, alpha_scale, base = grid.levels, grid.alphas, grid.alpha_scale, grid.base
+    grading = grid.grading
     if levels[0] < 0:
         raise InputError(f"mesh levels must be non-negative, got {levels}")
     grading = grading or default_grading(PAIR_GEOMETRY)
