@@ -304,7 +304,9 @@ def _cutoff(law, law_params, alpha):
     return math.inf  # no other branch yet: every node counts (run_batch refuses such a law)
 
 
-@njit(cache=True, nogil=True, fastmath=_FAST)
+# Inlined into _wall (numba IR), so that the node loop is compiled inside it as before laws
+# were objects: the same machine code for the exponential wall.
+@njit(cache=True, nogil=True, fastmath=_FAST, inline="always")
 def _law_nodes(law, law_params, alpha, x0, cos_phi, weight, x_a, x_b, J, e):
     """The law on the first ``J`` nodes at ``x_j = x0 + cos_phi[j] + x_a[j] + x_b[j]``: each
     node's share of the force, weight included, into ``e``; returns ``(V, F, last)``, ``last``
