@@ -286,8 +286,13 @@ def _kernel_inputs(modes, v, alpha):
 
 def _old_args(args: tuple) -> tuple:
     """``run_batch`` arguments for a baseline kernel: the quadrature (third) with old names, and
-    without the arguments kernels before material damping lack (the 16th, ``damping``, must be
-    ``None``: an elastic body)."""
+    without the arguments kernels before material damping and contact laws lack (the 16th,
+    ``damping``, and 17th, ``stop``, must be ``None``: an elastic body; the 18th, ``law``, the
+    exponential wall without parameters)."""
+    if len(args) > 17:
+        law, params = args[17], args[18] if len(args) > 18 else None
+        assert law == 0 and (params is None or len(params) == 0), "only the exponential wall"
+        args = args[:17]
     if len(args) > 15:
         assert all(a is None for a in args[15:]), "a damped body has no baseline kernel"
         args = args[:15]

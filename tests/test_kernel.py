@@ -160,7 +160,7 @@ def test_raised_stop_flag_ends_every_member_at_its_next_check(count):
     body = get_modes(0.33, count=count)
     v, alpha = np.array([0.1, 0.2][: 1 if count > 2000 else 2]), np.array([300.0, 300.0])
     alpha = alpha[: v.size]
-    quad = body.surface_quadrature(body.default_nodes(300.0))
+    quad = body.surface_quadrature(body.contact_nodes(300.0))
     begin = start_of(body, v, alpha, quad, None)
     got = run_batch(
         body.omega, body.mass, quad, v, alpha, begin.x0, np.full(v.size, 1e-3), begin.t_max,

@@ -21,7 +21,7 @@ def test_the_rigid_sphere_turns_where_the_wall_holds_its_energy():
 
     With the tip at ``x = x0 + 1`` the wall energy is
     ``V = (1/alpha) int exp(alpha (x0 + cos theta)) dA = exp(alpha x) I / alpha`` with
-    ``I = 2 pi (1 - e^-alpha) / alpha`` (:func:`restitution.bodies.sphere.surface.wall_integral`),
+    ``I = 2 pi (1 - e^-alpha) / alpha`` (:func:`restitution.bodies.sphere.surface.depth_transform`),
     and the force ``alpha V``. At the
     turning point ``V = E0 = (m/2) v^2``: the deepest tip position and the largest force follow.
     """

@@ -14,7 +14,7 @@ from scipy.integrate import quad
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.bodies.kinds import body_kind
 from restitution.bodies.sphere.modes import compute_sphere_modes
-from restitution.bodies.sphere.surface import max_compression_estimate, wall_integral
+from restitution.bodies.sphere.surface import depth_transform, max_compression_estimate
 from restitution.cli import main
 from restitution.dynamics.collision import CollisionSettings, estimate_work
 from restitution.errors import InputError
@@ -94,7 +94,7 @@ def test_sphere_walls_follow_the_hertz_compression():
 
 
 @pytest.mark.parametrize("alpha", [0.5, 3.0, 40.0, 900.0])
-def test_the_sphere_wall_integral_against_quadrature(alpha):
+def test_the_sphere_depth_transform_against_quadrature(alpha):
     # 2 pi int_0^{pi/2} exp(alpha (cos t - 1)) sin t dt, by scipy's adaptive quadrature.
     ref, _ = quad(
         lambda t: 2 * math.pi * math.exp(alpha * (math.cos(t) - 1)) * math.sin(t),
@@ -104,7 +104,7 @@ def test_the_sphere_wall_integral_against_quadrature(alpha):
         epsrel=1e-12,
         points=[min(1.0, 5 / math.sqrt(alpha))],
     )
-    assert float(wall_integral(alpha)) == pytest.approx(ref, rel=1e-10)
+    assert float(depth_transform(alpha)) == pytest.approx(ref, rel=1e-10)
 
 
 def test_the_work_estimate_of_a_sphere_brackets_the_run():

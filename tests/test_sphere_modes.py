@@ -193,9 +193,9 @@ def test_surface_quadrature(modes):
     assert lpmv(1, 2, 0.3) == pytest.approx(-3 * 0.3 * math.sqrt(1 - 0.09))  # dP_2/dtheta
 
 
-def test_wall_integral_with_default_nodes(modes):
+def test_depth_transform_with_the_contact_nodes(modes):
     alpha = 400.0
-    quad = modes.surface_quadrature(modes.default_nodes(alpha))
+    quad = modes.surface_quadrature(modes.contact_nodes(alpha))
     exact = 2 * math.pi * (1 - math.exp(-alpha)) / alpha  # int exp(alpha (cos - 1)) 2 pi dmu
     approx = np.sum(quad.weight * np.exp(alpha * (quad.height - 1)))
     assert approx == pytest.approx(exact, rel=1e-12)

@@ -1,4 +1,5 @@
-"""The wall potential: quadrature, forces as derivatives, truncation to the active nodes."""
+"""The exponential wall on a disk's edge: quadrature, forces as derivatives, truncation to the
+active nodes (:class:`restitution.dynamics.contact.exponential.ExponentialWall`)."""
 
 import numpy as np
 from numpy.testing import assert_allclose
@@ -6,7 +7,9 @@ from scipy.integrate import quad as adaptive
 
 from restitution import get_modes
 from restitution.bodies.disk.surface import dense_edge_matrix
-from restitution.dynamics.wall import wall_terms
+from restitution.dynamics.contact import EXPONENTIAL_WALL
+
+wall_terms = EXPONENTIAL_WALL.contact_terms
 
 
 def _state(modes, seed=3):

@@ -16,7 +16,10 @@ does (the wall integral, its forces, the stop test) follows from:
 
 * the mode set: ``omega``, ``order``, ``C``, ``S`` (arrays of shape (N,)) and the ``mass``;
 * the :class:`SurfaceQuadrature` of its surface against the wall (:meth:`ModalBody.
-  surface_quadrature`, with :meth:`ModalBody.default_nodes` nodes for a wall ``alpha``);
+  surface_quadrature`, with :meth:`ModalBody.contact_nodes` nodes for a contact zone of a given
+  depth) and the Laplace transform of its depth below the tip (:meth:`ModalBody.
+  depth_transform`): geometry, which the contact law (:mod:`restitution.dynamics.contact`)
+  reads;
 * its quasistatic contact scales (:meth:`ModalBody.contact_time_estimate`), which size the time
   steps and the time bounds.
 
@@ -173,8 +176,9 @@ class ModalBody(Protocol):
         """The ``count`` lowest-frequency modes."""
         ...
 
-    def default_nodes(self, alpha: float) -> int:
-        """Quadrature nodes that resolve the contact of a wall of hardness ``alpha`` (1/R)."""
+    def contact_nodes(self, s: float) -> int:
+        """Quadrature nodes that resolve a contact zone of depth ``1 / s`` below the tip
+        (``s`` in ``1/R``; the exponential wall asks for ``s = alpha``)."""
         ...
 
     def surface_quadrature(self, n_nodes: int) -> SurfaceQuadrature:
@@ -189,11 +193,12 @@ class ModalBody(Protocol):
         """Quasistatic contact time against a rigid wall at speed ``v`` (``c``), ``R / c``."""
         ...
 
-    def wall_integral(self, alpha):
-        """``int exp(alpha (h - 1))`` over the undeformed surface facing the wall, the rigid
-        body touching it (``h`` the height along the impact axis): what turns the wall's
-        pressure at the tip into its potential, ``R`` for the disk's edge, ``R^2`` for a
-        surface."""
+    def depth_transform(self, s):
+        """``int exp(-s (1 - h)) dA`` over the undeformed surface facing the wall (``h`` the
+        height along the impact axis, ``1 - h`` the depth below the tip, ``s`` in ``1/R``):
+        the Laplace transform of the surface's depth distribution, ``R`` for the disk's edge,
+        ``R^2`` for a surface. (The exponential wall of hardness ``alpha`` touching the tip
+        has the potential ``depth_transform(alpha) / alpha``.)"""
         ...
 
 

@@ -11,6 +11,13 @@ The disk starts undeformed with its centre at ``x0 < -1`` where the wall potenti
 away and provably cannot touch again: the rigid motion is away from the wall and even the sum of
 all modal amplitudes cannot bring the edge to where ``exp(alpha x)`` exceeds ``CONTACT_TOL``.
 
+**The contact law** is an object (:mod:`restitution.dynamics.contact`): the paper's exponential
+wall by default, or any :class:`~restitution.dynamics.contact.base.ContactLaw` passed as
+``contact_law=``. It supplies the potential and forces, the start position, the stop test, the
+step's time scale and the surface nodes; ``alpha`` is its hardness. A law without a branch in the
+compiled kernel runs on the NumPy path. A law that is not conservative has its step judged by
+epsilon, as a damped body's (below).
+
 The step is chosen automatically (see :func:`initial_step`) and the run is repeated with a
 smaller step while the relative energy drift exceeds ``energy_tol``; after ``max_refinements``
 the point fails with :class:`CollisionError`, whose message says what to change. A bound on the
@@ -45,6 +52,7 @@ at ``dt = 4e-4``, 0.0355552 at ``2.5e-5``, where the sum of the flows' losses ga
 
 from __future__ import annotations
 
+import math
 import time
 import warnings
 from dataclasses import replace
@@ -54,12 +62,14 @@ import numpy as np
 from restitution.bodies.base import ModalBody
 from restitution.bodies.viscoelastic import mode_damping
 from restitution.dynamics.compiled_path import run_kernel, use_kernel
+from restitution.dynamics.contact.base import ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.dynamics.integrators import INTEGRATORS
 from restitution.dynamics.numpy_path import run_numpy
 from restitution.dynamics.results import CollisionResult
 from restitution.dynamics.run import UNSTABLE, CollisionError, MemberRun
 from restitution.dynamics.settings import CONTACT_TOL, CollisionSettings
-from restitution.dynamics.start import check_initial, energy_before, start_position_of
+from restitution.dynamics.start import check_initial, energy_before
 from restitution.dynamics.steps import WorkEstimate, check_work, estimate_work, initial_step
 from restitution.errors import InputError, is_real, real_array
 
@@ -133,6 +143,16 @@ def _check_inputs(v, alpha, body: ModalBody) -> tuple[np.ndarray, np.ndarray]:
     return v, alpha
 
 
+def _check_law(contact_law) -> ContactLaw:
+    """The contact law of a run, refused in one line when it is not a :class:`ContactLaw`."""
+    if not isinstance(contact_law, ContactLaw):
+        raise InputError(
+            f"contact_law must be a ContactLaw (see restitution.dynamics.contact), got "
+            f"{type(contact_law).__name__}; omit it for the exponential wall"
+        )
+    return contact_law
+
+
 def _settings(settings, overrides: dict) -> CollisionSettings:
     """The settings of a run: ``settings`` (default ones when ``None``) with ``overrides``."""
     if settings is None:
@@ -174,19 +194,27 @@ def _dissipated(r: MemberRun) -> float:
 
 
 def start_position(
-    body: ModalBody, v: float, alpha: float, settings: CollisionSettings | None = None
+    body: ModalBody,
+    v: float,
+    alpha: float,
+    settings: CollisionSettings | None = None,
+    *,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
 ) -> float:
     """The start position of the centre (``R``) for a disk at rest: where the undeformed disk's
     wall energy is ``CONTACT_TOL`` times its kinetic energy. An ``initial`` state of
     :func:`collide` is the free-flight state at the moment the centre passes this position."""
     settings = _settings(settings, {})
+    contact_law = _check_law(contact_law)
     v_arr, alpha_arr = _check_inputs(v, alpha, body)
-    n_phi = settings.n_phi or body.default_nodes(float(alpha_arr[0]))
+    n_phi = settings.n_phi or contact_law.nodes(body, float(alpha_arr[0]))
     quad = body.surface_quadrature(int(n_phi))
-    return float(start_position_of(alpha_arr, 0.5 * body.mass * v_arr**2, quad)[0])
+    return float(contact_law.start_position(alpha_arr, 0.5 * body.mass * v_arr**2, quad)[0])
 
 
-def _attempt(body, v, alpha, dts, pending, settings, quad, raw, attempt, initial) -> np.ndarray:
+def _attempt(
+    body, v, alpha, dts, pending, settings, quad, raw, attempt, initial, contact_law
+) -> np.ndarray:
     """Run the pending members, each with its own step; store results; return those to redo.
 
     Every member's step depends only on its own inputs and history, never on the other
@@ -195,16 +223,35 @@ def _attempt(body, v, alpha, dts, pending, settings, quad, raw, attempt, initial
     fixed = settings.dt is not None
     damped = mode_damping(body) is not None
     # A damped body's energy balance carries the energy its kicks give to damped modes (module
-    # docstring): only a collapse of the step aborts, and epsilon judges the step.
-    abort = None if fixed else (0.5 if damped else max(100.0 * settings.energy_tol, 1e-4))
-    run = run_kernel if use_kernel(settings) else run_numpy
+    # docstring): only a collapse of the step aborts, and epsilon judges the step. A law that
+    # is not conservative has no energy balance to hold: only an overflow aborts.
+    judged_by_epsilon = damped or not contact_law.conservative
+    if fixed:
+        abort = None
+    elif damped:
+        abort = 0.5
+    elif not contact_law.conservative:
+        abort = math.inf
+    else:
+        abort = max(100.0 * settings.energy_tol, 1e-4)
+    run = run_kernel if use_kernel(settings, contact_law) else run_numpy
     mine = None if initial is None else (initial[0][pending], initial[1][pending])
-    got = run(body, v[pending], alpha[pending], dts[pending], settings, quad, abort, mine)
+    got = run(
+        body, v[pending], alpha[pending], dts[pending], settings, quad, abort, mine, contact_law
+    )
     order = INTEGRATORS[settings.integrator].order
     halves = [None] * len(got)
-    if damped and not fixed:
+    if judged_by_epsilon and not fixed:
         halves = run(
-            body, v[pending], alpha[pending], dts[pending] / 2, settings, quad, abort, mine
+            body,
+            v[pending],
+            alpha[pending],
+            dts[pending] / 2,
+            settings,
+            quad,
+            abort,
+            mine,
+            contact_law,
         )
     redo = []
     for i, r, half in zip(pending, got, halves, strict=True):
@@ -248,6 +295,7 @@ def collide_batch(
     settings: CollisionSettings | None = None,
     *,
     initial=None,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
     **overrides,
 ) -> list[CollisionResult]:
     """Integrate many collisions ``(v_i, alpha_i)`` on one mode set at once.
@@ -264,13 +312,16 @@ def collide_batch(
     v : float or array_like, shape (B,)
         Speeds towards the wall, units of ``c``, in (0, 1).
     alpha : float or array_like, shape (B,)
-        Wall hardness, ``1 / R``; broadcast against ``v``.
+        Wall hardness, ``1 / R`` (the hardness of ``contact_law``); broadcast against ``v``.
     settings : CollisionSettings, optional
         Numerical settings; keyword ``overrides`` replace single fields.
     initial : (Q, P), optional
         Modal coordinates (``R``) and momenta (``m c``) of the vibrating disk, each of shape
         (N,) for every member or (B, N), in the order of ``body``: the free-flight state when
         the centre passes the start position (module docstring). Omitted: disks at rest.
+    contact_law : ContactLaw, optional
+        The law that pushes the body off the wall (:mod:`restitution.dynamics.contact`);
+        default the paper's exponential wall.
 
     Returns
     -------
@@ -278,19 +329,21 @@ def collide_batch(
         In the order of the inputs.
     """
     settings = _settings(settings, overrides)
+    contact_law = _check_law(contact_law)
     v, alpha = _check_inputs(v, alpha, body)
     initial = check_initial(initial, body, v.size)
     _check_damped(body, settings, initial)
+    use_kernel(settings, contact_law)  # a refused backend fails before the work estimate
     damped = mode_damping(body) is not None
-    check_work(body, v, alpha, settings)
+    check_work(body, v, alpha, settings, contact_law)
     # Each member's quadrature follows from its own alpha, never from its batch.
-    n_phis = np.array([settings.n_phi or body.default_nodes(float(a)) for a in alpha])
+    n_phis = np.array([settings.n_phi or contact_law.nodes(body, float(a)) for a in alpha])
     t_start = time.perf_counter()
     if settings.dt is not None:
         dts = np.full(v.size, settings.dt)
     else:
         dts = settings.step_safety * initial_step(
-            body, v, alpha, settings.integrator, settings.energy_tol
+            body, v, alpha, settings.integrator, settings.energy_tol, contact_law
         )
     raw: list[MemberRun | None] = [None] * v.size
     unresolved = []
@@ -298,7 +351,9 @@ def collide_batch(
         quad = body.surface_quadrature(int(n_phi))
         pending = np.nonzero(n_phis == n_phi)[0]
         for attempt in range(settings.max_refinements + 1):
-            pending = _attempt(body, v, alpha, dts, pending, settings, quad, raw, attempt, initial)
+            pending = _attempt(
+                body, v, alpha, dts, pending, settings, quad, raw, attempt, initial, contact_law
+            )
             if pending.size == 0:
                 break
         unresolved.extend(pending.tolist())
@@ -366,6 +421,7 @@ def collide(
     settings: CollisionSettings | None = None,
     *,
     initial=None,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
     **overrides,
 ) -> CollisionResult:
     """One collision of the disk with the wall (see :func:`collide_batch` for parameters).
@@ -379,7 +435,9 @@ def collide(
     """
     if np.ndim(v) or np.ndim(alpha):
         raise InputError("collide takes one speed v and one alpha; use collide_batch for several")
-    return collide_batch(body, [v], [alpha], settings, initial=initial, **overrides)[0]
+    return collide_batch(
+        body, [v], [alpha], settings, initial=initial, contact_law=contact_law, **overrides
+    )[0]
 
 
 def rank_modes(
@@ -388,12 +446,15 @@ def rank_modes(
     v: float,
     alpha: float,
     settings: CollisionSettings | None = None,
+    *,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
     **overrides,
 ) -> ModalBody:
     """The paper's mode selection: the ``count`` body of ``pool`` with the largest average
-    energy during the contact of a preliminary run with the whole pool (section 4)."""
+    energy during the contact of a preliminary run with the whole pool (section 4), against
+    ``contact_law``."""
     if count > len(pool):
         raise InputError(f"cannot rank {count} body out of a pool of {len(pool)}")
-    pre = collide(pool, v, alpha, settings, **overrides)
+    pre = collide(pool, v, alpha, settings, contact_law=contact_law, **overrides)
     top = np.argsort(-pre.mode_energy_mean, kind="stable")[:count]
     return pool.take(np.sort(top))

@@ -7,7 +7,11 @@ Units: ``E = rho = R = 1``; times in ``R / c``.
 
 from __future__ import annotations
 
+import numpy as np
+
 from restitution.bodies.viscoelastic import mode_damping
+from restitution.dynamics.contact.base import ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.dynamics.integrators import INTEGRATORS
 from restitution.dynamics.run import (
     UNSTABLE,
@@ -26,8 +30,9 @@ __all__ = ["KERNEL_WEIGHTS", "run_kernel", "use_kernel"]
 KERNEL_WEIGHTS = {name: INTEGRATORS[name].weights for name in ("split", "split4")}
 
 
-def use_kernel(settings: CollisionSettings) -> bool:
-    """Whether the compiled kernel runs this setting (splittings, no recorded history)."""
+def use_kernel(settings: CollisionSettings, contact_law: ContactLaw = EXPONENTIAL_WALL) -> bool:
+    """Whether the compiled kernel runs this setting (splittings, no recorded history, a contact
+    law with a compiled branch)."""
     if settings.backend == "numpy":
         return False
     supported = settings.integrator in KERNEL_WEIGHTS and not settings.record
@@ -37,16 +42,31 @@ def use_kernel(settings: CollisionSettings) -> bool:
             "recorded histories; use backend='numpy' (or 'auto') for "
             f"integrator={settings.integrator!r}, record={settings.record}"
         )
+    if contact_law.kernel is None:
+        if settings.backend == "compiled":
+            raise InputError(
+                f"the contact law {contact_law.name!r} has no branch in the compiled kernel; "
+                "use backend='numpy' (or 'auto', which picks it)"
+            )
+        return False
     return supported
 
 
-def run_kernel(body, v, alpha, dts, settings, quad, abort, initial) -> list[MemberRun | str]:
+def run_kernel(
+    body, v, alpha, dts, settings, quad, abort, initial, contact_law=EXPONENTIAL_WALL
+) -> list[MemberRun | str]:
     """Run members on the compiled kernel; a dict per finished member, else ``"unstable"``."""
-    from restitution.dynamics.kernel import STATUS_OK, STATUS_TIMEOUT, run_batch
+    from restitution.dynamics.kernel import KERNEL_LAWS, STATUS_OK, STATUS_TIMEOUT, run_batch
 
+    if contact_law.kernel not in KERNEL_LAWS:
+        raise InputError(
+            f"the contact law {contact_law.name!r} names the kernel branch "
+            f"{contact_law.kernel!r}, which the compiled kernel lacks (it has "
+            f"{sorted(KERNEL_LAWS)}); set its kernel to None or use backend='numpy'"
+        )
     m = body.mass
     e0 = 0.5 * m * v**2
-    begin = start_of(body, v, alpha, quad, initial)
+    begin = start_of(body, v, alpha, quad, initial, contact_law)
     got = run_batch(
         body.omega,
         m,
@@ -64,6 +84,9 @@ def run_kernel(body, v, alpha, dts, settings, quad, abort, initial) -> list[Memb
         begin.Q,
         begin.P,
         mode_damping(body),
+        None,  # stop: a flag of the kernel's own
+        KERNEL_LAWS[contact_law.kernel],
+        np.asarray(contact_law.kernel_parameters(), dtype=float),
     )
     out: list[MemberRun | str] = []
     for i in range(v.size):

@@ -7,7 +7,8 @@ harmonic oscillator)::
 
     H_free = p0^2 / (2m) + sum_k [P_k^2 / (2m) + (m/2) omega_k^2 Q_k^2]
 
-and the wall potential ``V(x0, Q)`` of :mod:`restitution.dynamics.wall`. Every integrator implements
+and the wall potential ``V(x0, Q)`` of a contact law (:mod:`restitution.dynamics.contact`; the
+paper's exponential wall by default). Every integrator implements
 the same tiny interface: ``step(system, state, dt) -> state`` with class attributes ``order`` and
 ``symplectic``. States hold a batch of ``B`` independent collisions sharing one mode set.
 """
@@ -20,8 +21,9 @@ from typing import ClassVar, Protocol
 import numpy as np
 
 from restitution.bodies.base import SurfaceQuadrature
+from restitution.dynamics.contact.base import ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.dynamics.damping import damped_flow
-from restitution.dynamics.wall import wall_terms
 
 __all__ = [
     "System",
@@ -51,9 +53,11 @@ class System:
     quad : SurfaceQuadrature
         Edge quadrature of the wall integral for these modes.
     alpha : numpy.ndarray, shape (B,)
-        Wall hardness per batch member, ``1 / R``.
+        Wall hardness per batch member (the exponential wall: ``1 / R``).
     damping : numpy.ndarray, shape (N,), or None
         Damping rate of every mode (``c / R``) of a viscoelastic body; ``None``: elastic.
+    law : ContactLaw
+        The contact law (:mod:`restitution.dynamics.contact`); the exponential wall by default.
     """
 
     omega: np.ndarray
@@ -61,6 +65,7 @@ class System:
     quad: SurfaceQuadrature
     alpha: np.ndarray
     damping: np.ndarray | None = None
+    law: ContactLaw = EXPONENTIAL_WALL
     # Memo of the harmonic rotation (cos, sin, m omega sin, sin/(m omega)) per step size.
     _rotations: dict = field(default_factory=dict, repr=False, compare=False)
 
@@ -122,7 +127,7 @@ class State:
 
 
 def _evaluate(system: System, t: float, x0, p0, Q, P, dissipated=0.0) -> State:
-    V, F, f = wall_terms(system.quad, system.alpha, x0, Q)
+    V, F, f = system.law.contact_terms(system.quad, system.alpha, x0, Q)
     return State(t=t, x0=x0, p0=p0, Q=Q, P=P, V=V, F=F, f=f, dissipated=dissipated)
 
 
@@ -273,7 +278,7 @@ class RK4Interaction:
             phase = np.exp(1j * w * tau)
             if F is None:
                 Q = (q * phase).real
-                _, F, f = wall_terms(system.quad, system.alpha, x0, Q)
+                _, F, f = system.law.contact_terms(system.quad, system.alpha, x0, Q)
             return p0 / m, -F, 1j * f / (mw * phase)
 
         k1 = deriv(0.0, state.x0, state.p0, q0, F=state.F, f=state.f)

@@ -5,10 +5,11 @@ Units: ``E = rho = R = 1``; times in ``R / c``.
 This is the production path of :func:`restitution.dynamics.collision.collide_batch` for the
 symplectic splittings ``split`` (Strang, second order) and ``split4`` (Yoshida, fourth order). It
 performs, per batch member and entirely in compiled code, exactly the arithmetic of the NumPy
-reference path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynamics.wall` and
+reference path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynamics.contact` and
 :mod:`restitution.dynamics.numpy_path`):
 
-* the wall terms order by order (eqs. 40-42, 45) over the prefix of provably active nodes;
+* the wall terms order by order (eqs. 40-42, 45) over the prefix of provably active nodes, of
+  the contact law the kernel is given (below);
 * the half kicks of the wall and the exact harmonic free flow (the two half kicks between
   substeps merged into one, fused with the flow and the order sums in one pass over the
   modes);
@@ -19,6 +20,14 @@ reference path (:mod:`restitution.dynamics.integrators`, :mod:`restitution.dynam
 * for a viscoelastic body, each mode's exact damped flow (:mod:`restitution.dynamics.damping`)
   in a loop of its own (:func:`_kick_flow_damped`), with the dissipated energy counted in the
   energy balance; an elastic body runs the rotation loop, bit for bit as before.
+
+**Contact laws.** The kernel dispatches on the law's branch number (``law``, one of
+:data:`KERNEL_LAWS`, from :attr:`~restitution.dynamics.contact.base.ContactLaw.kernel`) as it
+does on damping: :func:`_cutoff`, :func:`_law_nodes` and :func:`_separated` each hold one branch
+per law, the law's numbers ``law_params`` beside it
+(:meth:`~restitution.dynamics.contact.base.ContactLaw.kernel_parameters`). The exponential wall
+is branch 0, the arithmetic of every earlier kernel. A law of its own is one more branch in each
+of the three and one entry of :data:`KERNEL_LAWS`; a law without one runs on the NumPy path.
 
 Only the summation order of reductions and the merged kicks differ from the NumPy path, so the
 two agree to round-off (checked to 1e-12 in ``tests/test_kernel.py``). Members of a batch are
@@ -43,11 +52,14 @@ import numba
 import numpy as np
 from numba import njit
 
+from restitution.dynamics.contact.exponential import NEGLIGIBLE
 from restitution.dynamics.damping import fill_damped_flow
 from restitution.dynamics.spin import LINE, barrier
 
 __all__ = [
     "CHECK_EVERY",
+    "KERNEL_LAWS",
+    "LAW_EXPONENTIAL",
     "STATUS_INTERRUPTED",
     "STATUS_OK",
     "STATUS_TIMEOUT",
@@ -63,6 +75,14 @@ STATUS_UNSTABLE = 1  # drift above the abort level, or overflow
 STATUS_TIMEOUT = 2  # no separation within t_max or max_steps
 STATUS_INTERRUPTED = 3  # the caller raised the stop flag (Ctrl-C)
 
+LAW_EXPONENTIAL = 0
+"""Branch of the exponential wall (:class:`restitution.dynamics.contact.exponential.
+ExponentialWall`)."""
+
+KERNEL_LAWS: dict[str, int] = {"exponential": LAW_EXPONENTIAL}
+"""The contact laws this kernel runs: branch number by the law's
+:attr:`~restitution.dynamics.contact.base.ContactLaw.kernel` name."""
+
 SPLIT_MIN_MODES = 2000
 """A single collision with at least this many modes runs on two threads when numba has two
 (measured in ``benchmarks/bench_kernel.py``; below it the meetings cost more than they save)."""
@@ -73,8 +93,9 @@ SPLIT_MIN_MODES = 2000
 # (_dot_split). Only speed depends on it; spin counts at 8, 15 and 30 were within the noise.
 _COLUMN_COST = 12.0
 
-# Nodes whose exponent is certainly below -_NEGLIGIBLE are skipped (see wall.active_nodes).
-_NEGLIGIBLE = 40.0
+# The exponential wall skips nodes whose exponent is certainly below -_NEGLIGIBLE (see
+# restitution.dynamics.contact.surface.active_nodes).
+_NEGLIGIBLE = NEGLIGIBLE
 
 
 class _Quadrature(NamedTuple):
@@ -102,6 +123,8 @@ class _Control(NamedTuple):
     stop_log: float  # stop when alpha * gap > stop_log ...
     contact_tol: float  # ... and V < contact_tol * E0
     stop: np.ndarray  # (1,) int64: the caller sets it to end every member at its next check
+    law: int  # the contact law's branch (KERNEL_LAWS)
+    law_params: np.ndarray  # its numbers (ContactLaw.kernel_parameters)
 
 
 class _Members(NamedTuple):
@@ -273,8 +296,52 @@ def _rows_sum(e, trig, J, cs, c0, c1):
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
-def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, dcols, g0, g1, sync):
-    """Wall potential ``V`` and force ``F`` from the per-order amplitudes ``ab``.
+def _cutoff(law, law_params, alpha):
+    """The law's :meth:`~restitution.dynamics.contact.base.ContactLaw.cutoff`, ``R``: nodes
+    certainly farther from the wall are skipped."""
+    if law == LAW_EXPONENTIAL:
+        return _NEGLIGIBLE / alpha
+    return math.inf  # no other branch yet: every node counts (run_batch refuses such a law)
+
+
+# Inlined into _wall (numba IR), so that the node loop is compiled inside it as before laws
+# were objects: the same machine code for the exponential wall.
+@njit(cache=True, nogil=True, fastmath=_FAST, inline="always")
+def _law_nodes(law, law_params, alpha, x0, cos_phi, weight, x_a, x_b, J, e):
+    """The law on the first ``J`` nodes at ``x_j = x0 + cos_phi[j] + x_a[j] + x_b[j]``: each
+    node's share of the force, weight included, into ``e``; returns ``(V, F, last)``, ``last``
+    the number of leading nodes whose force is not negligible (the second wall product stops
+    there). :meth:`~restitution.dynamics.contact.base.ContactLaw.node_terms`, branch by branch.
+    """
+    if law == LAW_EXPONENTIAL:
+        F = 0.0
+        # The prefix bound J is loose; past the last node whose exponent exceeds -_NEGLIGIBLE
+        # the terms are below exp(-40) of the force and the second product can stop there.
+        last = 0
+        for j in range(J):
+            ax = alpha * (x0 + cos_phi[j] + (x_a[j] + x_b[j]))
+            ej = math.exp(ax) * weight[j]
+            e[j] = ej
+            F += ej
+            if ax > -_NEGLIGIBLE:
+                last = j + 1
+        return F / alpha, F, last
+    return math.nan, math.nan, 0  # no other branch yet (run_batch refuses such a law)
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _separated(law, law_params, gap, alpha, V, e0, stop_log, contact_tol):
+    """The law's stop test (:meth:`~restitution.dynamics.contact.base.ContactLaw.separated`) of
+    a body moving away whose surface stays ``gap`` from the wall."""
+    if law == LAW_EXPONENTIAL:
+        return gap * alpha > stop_log and V < contact_tol * e0
+    return False  # no other branch yet (run_batch refuses such a law)
+
+
+@njit(cache=True, nogil=True, fastmath=_FAST)
+def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, dcols, g0, g1, sync, law, params):
+    """Wall potential ``V`` and force ``F`` of the contact law ``law`` (with its numbers
+    ``params``) from the per-order amplitudes ``ab``.
 
     The orders form two groups; group ``g`` has the orders ``cols[g] <= i < cols[g + 1]``
     and the contiguous columns ``ucols[g] <= c < ucols[g + 1]`` (``ucols = 2 cols``) of
@@ -300,7 +367,7 @@ def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, dcols, g0, g1, syn
         red[par, g, 0] = r
     barrier(flags, me, nthreads)
     reach = x0 + red[par, 0, 0] + red[par, 1, 0]
-    bound = -reach - _NEGLIGIBLE / alpha
+    bound = -reach - _cutoff(law, params, alpha)
     J = 0
     while J < M and cos_phi[J] >= bound:
         J += 1
@@ -322,20 +389,10 @@ def _wall(x0, alpha, cos_phi, weight, trig, ab, cs, e, ucols, dcols, g0, g1, syn
     barrier(flags, me, nthreads)
     x_a = xs[par, 0]
     x_b = xs[par, 1]
-    F = 0.0
-    # The prefix bound J is loose; past the last node whose exponent exceeds -_NEGLIGIBLE the
-    # terms are below exp(-40) of the force and the second product can stop there.
-    last = 0
-    for j in range(J):
-        ax = alpha * (x0 + cos_phi[j] + (x_a[j] + x_b[j]))
-        ej = math.exp(ax) * weight[j]
-        e[j] = ej
-        F += ej
-        if ax > -_NEGLIGIBLE:
-            last = j + 1
+    V, F, last = _law_nodes(law, params, alpha, x0, cos_phi, weight, x_a, x_b, J, e)
     # Column by column, so one call for all of this thread's columns.
     _rows_sum(e, trig, last, cs, ucols[g0], ucols[g1])
-    return F / alpha, F
+    return V, F
 
 
 @njit(cache=True, nogil=True, fastmath=_FAST)
@@ -471,6 +528,8 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
     abort_drift = ctl.abort_drift
     stop_log = ctl.stop_log
     contact_tol = ctl.contact_tol
+    law = ctl.law
+    params = ctl.law_params
     v = members.v[b]
     alpha = members.alpha[b]
     x_start = members.x_start[b]
@@ -496,7 +555,9 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
     for g in range(g0, g1):
         lo, hi = cols[g], cols[g + 1]
         _order_sums(Q, C, S, starts[lo : hi + 1], ab[2 * lo : 2 * hi])
-    V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, dcols, g0, g1, sync)
+    V, F = _wall(
+        x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, dcols, g0, g1, sync, law, params
+    )
     for g in range(g0, g1):
         h = 0.0
         for k in range(starts[cols[g]], starts[cols[g + 1]]):
@@ -555,7 +616,10 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
                     ab[2 * lo : 2 * hi],
                 )
             x0 = x0 + p0 * (h_dt / m)
-            V, F = _wall(x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, dcols, g0, g1, sync)
+            V, F = _wall(
+                x0, alpha, cos_phi, weight, trig, ab, cs, ew, ucols, dcols, g0, g1, sync, law,
+                params,
+            )  # fmt: skip
             t = t + h_dt
             if s + 1 < n_sub:
                 kick = 0.5 * h_dt + 0.5 * (weights[s + 1] * dt)
@@ -613,7 +677,7 @@ def _member(b, omega, mass, quad, ctl, members, rotations, rot_of, out, ab, g0, 
                 reach += math.sqrt(2.0 * out_e[k] / m) / omega[k] * g_max[k]
             parts[g] = reach
         gap = -(x0 + 1.0 + _meet(parts, 2, g0, g1, sync))
-        if gap * alpha > stop_log and V < contact_tol * e0:
+        if _separated(law, params, gap, alpha, V, e0, stop_log, contact_tol):
             dissipated = _meet(lost, 3, g0, g1, sync) if damped else 0.0
             eps = -p0 / (m * v)
             return STATUS_OK, eps, drift, contact, max_comp, max_force, steps, t, x0, dissipated
@@ -771,6 +835,8 @@ def run_batch(
     P0: np.ndarray | None = None,
     damping: np.ndarray | None = None,
     stop: np.ndarray | None = None,
+    law: int = LAW_EXPONENTIAL,
+    law_params: np.ndarray | None = None,
 ) -> dict[str, np.ndarray]:
     """Integrate ``B`` independent collisions, each with its own step ``dt[b]``.
 
@@ -793,7 +859,8 @@ def run_batch(
     abort_drift : float or None
         Stop a member as unstable once its relative energy drift exceeds this.
     stop_log, contact_tol : float
-        Stop test: ``alpha * gap > stop_log`` and ``V < contact_tol * E0``.
+        Stop test of the exponential wall: ``alpha * gap > stop_log`` and
+        ``V < contact_tol * E0``.
     Q0, P0 : numpy.ndarray, shape (B, N), optional
         Modal coordinates (``R``) and momenta (``m c``) at the start; zero (disk at rest in its
         undeformed shape) when omitted.
@@ -805,6 +872,10 @@ def run_batch(
         with status ``STATUS_INTERRUPTED``. The members always run in worker threads, so
         Ctrl-C (``KeyboardInterrupt`` in the waiting main thread) raises it and returns within
         ``CHECK_EVERY`` steps instead of when the collision ends.
+    law : int
+        The contact law's branch, one of :data:`KERNEL_LAWS` (default: the exponential wall).
+    law_params : numpy.ndarray, optional
+        Its numbers (:meth:`~restitution.dynamics.contact.base.ContactLaw.kernel_parameters`).
 
     Returns
     -------
@@ -816,6 +887,8 @@ def run_batch(
         ``final_Q``, ``final_P`` (B, N) and ``final_x0`` (B,): the state where the run stopped.
         ``dissipated`` (B,): the energy the damping took (absolute; zero for an elastic body).
     """
+    if law not in KERNEL_LAWS.values():
+        raise ValueError(f"no kernel branch {law!r}; the kernel runs {KERNEL_LAWS}")
     B, N = v.size, omega.size
     # Modes sorted by order (stable, so each order keeps its original sequence); results are
     # mapped back to the caller's order at the end.
@@ -860,6 +933,8 @@ def run_batch(
         stop_log=float(stop_log),
         contact_tol=float(contact_tol),
         stop=np.zeros(1, dtype=np.int64) if stop is None else stop,
+        law=int(law),
+        law_params=np.zeros(0) if law_params is None else np.asarray(law_params, np.float64),
     )
     members = _Members(
         *(np.ascontiguousarray(a, dtype=np.float64) for a in (v, alpha, x_start, dt, t_max))

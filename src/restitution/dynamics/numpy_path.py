@@ -13,6 +13,8 @@ import numpy as np
 
 from restitution.bodies.base import ModalBody
 from restitution.bodies.viscoelastic import mode_damping
+from restitution.dynamics.contact.base import ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.dynamics.integrators import (
     INTEGRATORS,
     System,
@@ -29,7 +31,7 @@ from restitution.dynamics.run import (
     contact_mean,
     timeout_message,
 )
-from restitution.dynamics.settings import CONTACT_TOL, STOP_LOG, CollisionSettings
+from restitution.dynamics.settings import CollisionSettings
 from restitution.dynamics.start import start_of
 
 __all__ = ["run_numpy"]
@@ -67,6 +69,7 @@ def _run(
     quad,
     abort_drift: float | None = None,
     initial=None,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
 ) -> list[MemberRun]:
     """Integrate a batch with one fixed step; returns one dict of raw results per member.
 
@@ -77,8 +80,15 @@ def _run(
     m = body.mass
     B = v.size
     e0 = 0.5 * m * v**2
-    begin = start_of(body, v, alpha, quad, initial)
-    system = System(omega=body.omega, mass=m, quad=quad, alpha=alpha, damping=mode_damping(body))
+    begin = start_of(body, v, alpha, quad, initial, contact_law)
+    system = System(
+        omega=body.omega,
+        mass=m,
+        quad=quad,
+        alpha=alpha,
+        damping=mode_damping(body),
+        law=contact_law,
+    )
     state = initial_state(system, begin.x0, m * v, begin.Q, begin.P)
     t_max = float(np.max(begin.t_max))
     N = len(body)
@@ -151,7 +161,7 @@ def _run(
         e = e_all
         reach = _edge_reach(system, e, quad.g_max)
         gap = -(state.x0 + 1.0 + reach)
-        done = leaving & (gap * system.alpha > STOP_LOG) & (state.V < CONTACT_TOL * track.e0[a])
+        done = leaving & contact_law.separated(gap, system.alpha, state.V, track.e0[a])
         if not np.any(done):
             continue
         for i in np.nonzero(done)[0]:
@@ -203,14 +213,17 @@ def _run(
     return out
 
 
-def run_numpy(body, v, alpha, dts, settings, quad, abort, initial) -> list[MemberRun | str]:
+def run_numpy(
+    body, v, alpha, dts, settings, quad, abort, initial, contact_law=EXPONENTIAL_WALL
+) -> list[MemberRun | str]:
     """Run members one by one on the NumPy reference path (same contract as the kernel)."""
     out: list[MemberRun | str] = []
     for i in range(v.size):
         one = None if initial is None else (initial[0][i : i + 1], initial[1][i : i + 1])
+        a = alpha[i : i + 1]
         try:
             out.append(
-                _run(body, v[i : i + 1], alpha[i : i + 1], dts[i], settings, quad, abort, one)[0]
+                _run(body, v[i : i + 1], a, dts[i], settings, quad, abort, one, contact_law)[0]
             )
         except Unstable:
             out.append(UNSTABLE)

@@ -16,9 +16,8 @@ from scipy.integrate import solve_ivp
 
 from restitution.bodies.base import ModalBody
 from restitution.bodies.viscoelastic import mode_damping
-from restitution.dynamics.settings import CONTACT_TOL
-from restitution.dynamics.start import start_position_of
-from restitution.dynamics.wall import wall_terms
+from restitution.dynamics.contact.base import CONTACT_TOL, ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.errors import InputError
 
 __all__ = ["collide_dop853"]
@@ -34,12 +33,14 @@ def collide_dop853(
     atol: float = 1e-12,
     n_phi: int | None = None,
     wall: str = "dense",
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
 ) -> dict:
     """Integrate one collision with ``solve_ivp(method="DOP853")``.
 
     The wall terms are evaluated the straightforward way, with the dense matrix ``g_k(phi_j)``
     of eq. (40) over all quadrature nodes (no grouping by order, no skipping of inactive
     nodes): an independent implementation of the same equations and the natural baseline.
+    Only the contact law's node terms are shared with the modal solver.
 
     Parameters
     ----------
@@ -56,8 +57,12 @@ def collide_dop853(
     wall : {"dense", "orders"}
         ``dense`` (default) as described above; ``orders`` uses the modal solver's own
         order-by-order wall terms with inactive nodes skipped
-        (:func:`restitution.dynamics.wall.wall_terms`), so that a benchmark can separate the gain of
-        the integrator from that of the wall evaluation.
+        (:meth:`~restitution.dynamics.contact.base.ContactLaw.contact_terms`), so that a
+        benchmark can separate the gain of the integrator from that of the wall evaluation.
+    contact_law : ContactLaw, optional
+        The contact law (:mod:`restitution.dynamics.contact`); default the exponential wall.
+        ``wall="dense"`` sums its node terms, so a law that replaces ``contact_terms`` needs
+        ``wall="orders"``.
 
     Returns
     -------
@@ -68,24 +73,30 @@ def collide_dop853(
     """
     m, w = body.mass, body.omega
     N = len(body)
-    quad = body.surface_quadrature(n_phi or body.default_nodes(alpha))
+    quad = body.surface_quadrature(n_phi or contact_law.nodes(body, alpha))
     a = np.array([alpha], float)
     e0 = 0.5 * m * v**2
-    x_start = float(start_position_of(a, np.array([e0]), quad)[0])
+    x_start = float(contact_law.start_position(a, np.array([e0]), quad)[0])
     if t_end is None:
         t_end = 2.0 * (-1.0 - x_start) / v + 20.0
 
     if wall not in ("dense", "orders"):
         raise InputError(f"wall must be 'dense' or 'orders', got {wall!r}")
+    if wall == "dense" and type(contact_law).contact_terms is not ContactLaw.contact_terms:
+        raise InputError(
+            f"the contact law {contact_law.name!r} replaces contact_terms, so the dense sum of "
+            "its node terms is not its force; pass wall='orders'"
+        )
     G = body.surface_matrix(quad.nodes) if wall == "dense" else None
 
+    alpha_0d = np.asarray(float(alpha))
+
     def wall_terms_dense(x0, Q):
-        e = np.exp(alpha * (x0 + quad.height + G @ Q)) * quad.weight
-        F = e.sum()
-        return F / alpha, F, e @ G
+        V, F, e = contact_law.node_terms(alpha_0d, x0 + quad.height + G @ Q, quad.weight)
+        return V, F, e @ G
 
     def wall_terms_orders(x0, Q):
-        V, F, f = wall_terms(quad, a, np.array([x0]), Q[None, :])
+        V, F, f = contact_law.contact_terms(quad, a, np.array([x0]), Q[None, :])
         return V[0], F[0], f[0]
 
     wall = wall_terms_dense if G is not None else wall_terms_orders
@@ -118,8 +129,8 @@ def collide_dop853(
     h = np.array(
         [energy(sol.y[:, i]) for i in range(0, sol.y.shape[1], max(1, sol.y.shape[1] // 200))]
     )
-    _, F_end, _ = wall(y[0], Q)
-    if F_end > CONTACT_TOL * e0 * alpha:
+    V_end, _, _ = wall(y[0], Q)
+    if V_end > CONTACT_TOL * e0:
         raise RuntimeError("DOP853 reference ended while still in contact; increase t_end")
     return {
         "epsilon": float(-y[1] / (m * v)),

@@ -1,6 +1,9 @@
-"""Numerical settings of a collision run, and the contact threshold of its start and stop.
+"""Numerical settings of a collision run.
 
-Units: ``E = rho = R = 1``; times in ``R / c``.
+Units: ``E = rho = R = 1``; times in ``R / c``. The contact threshold of a collision's start and
+stop (``CONTACT_TOL``, ``STOP_LOG``) belongs to the contact law
+(:mod:`restitution.dynamics.contact`); it is re-exported here for the callers that import it
+from this module.
 """
 
 from __future__ import annotations
@@ -10,15 +13,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.dynamics.contact.base import CONTACT_TOL
+from restitution.dynamics.contact.exponential import STOP_LOG
 from restitution.dynamics.integrators import INTEGRATORS
 from restitution.errors import InputError
 
 __all__ = ["BACKENDS", "CONTACT_TOL", "DEFAULT_ENERGY_TOL", "STOP_LOG", "CollisionSettings"]
-
-CONTACT_TOL = 1e-12
-"""Wall potential energy at the start, and the wall force scale at the end, relative to E0."""
-
-STOP_LOG = math.log(1.0 / CONTACT_TOL)
 
 BACKENDS = ("auto", "compiled", "numpy")
 
@@ -37,8 +37,8 @@ class CollisionSettings:
         Time integrator (see :mod:`restitution.dynamics.integrators`); the default ``split4`` is the
         fourth-order symplectic composition of the exact-free-flow splitting.
     n_phi : int or None
-        Nodes of the edge quadrature on ``[0, pi/2]``; ``None`` picks
-        the body's ``default_nodes(alpha)``.
+        Nodes of the surface quadrature (the disk's edge on ``[0, pi/2]``); ``None`` picks
+        the contact law's demand (:meth:`~restitution.dynamics.contact.base.ContactLaw.nodes`).
     energy_tol : float
         Largest accepted relative energy drift ``max |H(t) - H(0)| / H(0)``.
     dt : float or None

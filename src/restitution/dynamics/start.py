@@ -2,7 +2,8 @@
 
 Units: ``E = rho = R = 1``; speeds in ``c``, times in ``R / c``, ``Q`` in ``R``, ``P`` in ``m c``.
 
-A body at rest starts undeformed with its centre where its wall energy is ``CONTACT_TOL * E0``.
+A body at rest starts undeformed with its centre where its wall energy is ``CONTACT_TOL * E0``
+(:meth:`~restitution.dynamics.contact.base.ContactLaw.start_position` of the contact law).
 A vibrating body's ``initial = (Q, P)`` is its *free-flight* state at the moment the centre
 passes that position; the integration begins earlier by the vibration's reach (the bound on the
 surface displacement that the stop test uses), with the state carried back by the exact free
@@ -17,18 +18,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.bodies.base import ModalBody
+from restitution.dynamics.contact.base import ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.dynamics.integrators import free_modes
-from restitution.dynamics.settings import CONTACT_TOL
 from restitution.errors import InputError
 
-__all__ = ["Start", "check_initial", "energy_before", "start_of", "start_position_of", "time_bound"]
-
-
-def start_position_of(alpha: np.ndarray, e0: np.ndarray, quad) -> np.ndarray:
-    """Centre position where the undeformed disk's wall energy is ``CONTACT_TOL * E0``."""
-    # V(x0) = exp(alpha (x0 + 1)) * I / alpha with I = int exp(alpha (cos phi - 1)) dphi.
-    integral = np.exp(alpha[:, None] * (quad.height[None, :] - 1.0)) @ quad.weight
-    return -1.0 + np.log(CONTACT_TOL * e0 * alpha / integral) / alpha
+__all__ = ["Start", "check_initial", "energy_before", "start_of", "time_bound"]
 
 
 @dataclass(frozen=True)
@@ -47,14 +42,21 @@ class Start:
     t_max: np.ndarray
 
 
-def start_of(body: ModalBody, v: np.ndarray, alpha: np.ndarray, quad, initial) -> Start:
+def start_of(
+    body: ModalBody,
+    v: np.ndarray,
+    alpha: np.ndarray,
+    quad,
+    initial,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
+) -> Start:
     """Start of each member: the standard position, or earlier when a vibrating edge reaches.
 
     ``initial`` is ``None`` or ``(Q, P)`` of shape (B, N): the free-flight state at the moment
-    the centre passes the standard start position (module docstring).
+    the centre passes the standard start position (module docstring) of ``contact_law``.
     """
     m = body.mass
-    x_start = start_position_of(alpha, 0.5 * m * v**2, quad)
+    x_start = contact_law.start_position(alpha, 0.5 * m * v**2, quad)
     if initial is None:
         return Start(x_start, None, None, np.zeros(v.size), time_bound(body, v, x_start))
     Q, P = initial

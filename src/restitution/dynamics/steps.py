@@ -10,8 +10,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.bodies.base import ModalBody
+from restitution.dynamics.contact.base import ContactLaw
+from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL
 from restitution.dynamics.integrators import INTEGRATORS
-from restitution.dynamics.settings import CONTACT_TOL, DEFAULT_ENERGY_TOL, CollisionSettings
+from restitution.dynamics.settings import DEFAULT_ENERGY_TOL, CollisionSettings
 from restitution.errors import InputError
 
 __all__ = ["MAX_MEMORY_BYTES", "WorkEstimate", "check_work", "estimate_work", "initial_step"]
@@ -23,21 +25,28 @@ _STEP_COEFF = {"split4": 0.2, "split": 0.03, "rk4": 0.2}
 
 
 def initial_step(
-    body: ModalBody, v: np.ndarray, alpha: np.ndarray, integrator: str, energy_tol: float
+    body: ModalBody,
+    v: np.ndarray,
+    alpha: np.ndarray,
+    integrator: str,
+    energy_tol: float,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
 ) -> np.ndarray:
     """First guess of the step for each collision, ``R / c``.
 
     Two time scales limit the step. An edge point arriving at the wall with speed ``~v`` is
-    stopped within the decay length ``1/alpha`` of the exponential potential, in a time
-    ``1 / (alpha v)``; and the wall force, which depends on every mode, varies on the period
+    stopped by the contact law in its :meth:`~restitution.dynamics.contact.base.ContactLaw.
+    step_time` (the exponential wall: within the decay length ``1/alpha``, in a time
+    ``1 / (alpha v)``); and the wall force, which depends on every mode, varies on the period
     of the fastest mode, ``1 / omega_max``. The step is ``c`` times the smaller, with ``c``
     calibrated per integrator for a drift of 1e-6 and scaled as ``energy_tol^(1/order)``.
-    The driver measures the actual drift and refines the step when needed.
+    The driver measures the actual drift (or, for a law that is not conservative, epsilon's
+    step error) and refines the step when needed.
     """
     order = INTEGRATORS[integrator].order
     coeff = _STEP_COEFF[integrator] * (energy_tol / 1e-6) ** (1.0 / order)
     w_max = float(body.omega.max())
-    return coeff * np.minimum(1.0 / (alpha * v), 1.0 / w_max)
+    return coeff * np.minimum(contact_law.step_time(alpha, v), 1.0 / w_max)
 
 
 MAX_MEMORY_BYTES = 4 * 2**30
@@ -78,27 +87,32 @@ class WorkEstimate:
 
 
 def estimate_work(
-    body: ModalBody, v: np.ndarray, alpha: np.ndarray, settings: CollisionSettings
+    body: ModalBody,
+    v: np.ndarray,
+    alpha: np.ndarray,
+    settings: CollisionSettings,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
 ) -> WorkEstimate:
     """Estimate steps and memory of :func:`collide_batch` before anything is allocated.
 
-    The start position solves ``V(x0) = CONTACT_TOL E0`` with the body's wall integral
-    (:meth:`~restitution.bodies.base.ModalBody.wall_integral`); the body flies that distance at
-    ``v`` in and out, and touches for its quasistatic contact time.
+    The body starts where its wall energy is ``CONTACT_TOL E0``, the contact law's
+    :meth:`~restitution.dynamics.contact.base.ContactLaw.approach_gap` from the wall (the
+    exponential wall: with the body's :meth:`~restitution.bodies.base.ModalBody.
+    depth_transform`); it flies that distance at ``v`` in and out, and touches for its
+    quasistatic contact time. The law's node demand sizes the memory.
     """
     v = np.asarray(v, dtype=float)
     alpha = np.asarray(alpha, dtype=float)
     e0 = 0.5 * body.mass * v**2
-    integral = body.wall_integral(alpha)
-    with np.errstate(over="ignore", divide="ignore"):
-        gap = np.maximum(0.0, -np.log(CONTACT_TOL * e0 * alpha / integral) / alpha)
+    gap = contact_law.approach_gap(body, alpha, e0)
     flight = 2.0 * gap / v
     t_end = flight + body.contact_time_estimate(v)
+    wall_time = contact_law.step_time(alpha, v)
     if settings.dt is not None:
         dt = np.full(v.size, settings.dt)
     else:
         dt = settings.step_safety * initial_step(
-            body, v, alpha, settings.integrator, settings.energy_tol
+            body, v, alpha, settings.integrator, settings.energy_tol, contact_law
         )
     steps = t_end / dt
     worst = int(np.argmax(steps))
@@ -114,11 +128,11 @@ def estimate_work(
         limit = "tolerance"  # the default tolerance's step would fit
     elif flight[worst] > 0.5 * t_end[worst]:
         limit = "approach"
-    elif alpha[worst] * v[worst] > float(body.omega.max()):
-        limit = "wall"
+    elif wall_time[worst] * float(body.omega.max()) < 1.0:
+        limit = "wall"  # the exponential wall: alpha v > omega_max
     else:
         limit = "body"
-    n_phi = settings.n_phi or body.default_nodes(float(alpha.max()))
+    n_phi = settings.n_phi or contact_law.nodes(body, float(alpha.max()))
     orders = np.unique(body.order).size
     # trig (n_phi x 2K) and a few (B x n_phi) and (B x N) work arrays, 8 bytes each.
     memory = 8.0 * (n_phi * (2 * orders + 4) + 6 * v.size * (n_phi + len(body)))
@@ -133,7 +147,11 @@ def estimate_work(
 
 
 def check_work(
-    body: ModalBody, v: np.ndarray, alpha: np.ndarray, settings: CollisionSettings
+    body: ModalBody,
+    v: np.ndarray,
+    alpha: np.ndarray,
+    settings: CollisionSettings,
+    contact_law: ContactLaw = EXPONENTIAL_WALL,
 ) -> WorkEstimate:
     """Refuse a batch whose estimated work exceeds ``settings.max_steps`` or the memory bound.
 
@@ -142,7 +160,7 @@ def check_work(
     InputError
         Saying the estimate and what to change.
     """
-    est = estimate_work(body, v, alpha, settings)
+    est = estimate_work(body, v, alpha, settings, contact_law)
     if est.memory_bytes > MAX_MEMORY_BYTES:
         raise InputError(
             f"alpha up to {float(np.max(alpha)):.3g} needs {est.n_phi:.3g} edge quadrature "

@@ -33,9 +33,10 @@ import numpy as np
 from restitution._version import __version__
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.bodies.pair.partner import Partner
+from restitution.dynamics.contact import EXPONENTIAL_WALL, ContactLaw, law_from_key
 from restitution.errors import InputError, RestitutionError
 from restitution.jsonable import finite_or_none, json_default
-from restitution.provenance import code_version
+from restitution.provenance import SOLVER_PACKAGES, code_version, source_digest
 from restitution.status import Status
 
 __all__ = [
@@ -147,6 +148,12 @@ class PointSpec:
     relaxation_time : float
         ``tau`` of a viscoelastic body (:class:`restitution.bodies.viscoelastic.Viscoelastic`),
         ``R / c``; ``0``: elastic, and then the key does not name it (as for ``partner``).
+    contact_law : ContactLaw
+        The law that pushes the body off the wall (:mod:`restitution.dynamics.contact`), whose
+        hardness is ``alpha``; a key (``ContactLaw.key()``) is read as its law. The exponential
+        wall (default) is not named in the key (as for ``partner``); another law is, by
+        :meth:`~restitution.dynamics.contact.base.ContactLaw.key` and, for a law defined
+        outside the solver's packages, a digest of its module.
     """
 
     nu: float
@@ -159,8 +166,10 @@ class PointSpec:
     geometry: str = DEFAULT_GEOMETRY
     partner: Partner | None = None
     relaxation_time: float = 0.0
+    contact_law: ContactLaw = EXPONENTIAL_WALL
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "contact_law", _as_law(self.contact_law))
         object.__setattr__(self, "relaxation_time", float(self.relaxation_time))
         object.__setattr__(self, "nu", float(self.nu))
         object.__setattr__(self, "v", float(self.v))
@@ -184,6 +193,7 @@ class PointSpec:
             self.options,
             self.partner,
             self.relaxation_time,
+            self.contact_law,
         )
 
     @property
@@ -201,6 +211,9 @@ class PointSpec:
             d["partner"] = self.partner.to_dict()
         if self.relaxation_time == 0.0:
             del d["relaxation_time"]
+        del d["contact_law"]
+        if self.contact_law != EXPONENTIAL_WALL:
+            d["contact_law"] = _law_inputs(self.contact_law)
         d["code_version"] = self.code_version
         return _canonical(d)
 
@@ -208,6 +221,44 @@ class PointSpec:
         """SHA-256 of the canonical inputs."""
         text = json.dumps(self.inputs(), sort_keys=True, separators=(",", ":"))
         return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _as_law(value) -> ContactLaw:
+    """A point's contact law: a :class:`ContactLaw`, or its key as a store holds it."""
+    if isinstance(value, ContactLaw):
+        return value
+    if isinstance(value, dict | str):
+        return law_from_key(value)
+    raise InputError(
+        f"contact_law must be a ContactLaw (restitution.dynamics.contact) or its key, got "
+        f"{type(value).__name__}; omit it for the exponential wall"
+    )
+
+
+def _law_inputs(law: ContactLaw) -> dict:
+    """A law's part of a key: :meth:`ContactLaw.key`, and the digest of the module defining
+    it when that module is not one of the solver's (whose digest the code version holds)."""
+    d = dict(law.key())
+    module = type(law).__module__
+    if not module.startswith(tuple(f"{p}." for p in SOLVER_PACKAGES)):
+        try:
+            d["code"] = source_digest((module,), "law.")
+        except ValueError:  # a module without a spec (a script run as __main__)
+            d["code"] = source_digest((), "law.")
+    return d
+
+
+def _law_of(stored: dict | None) -> ContactLaw:
+    """The :class:`ContactLaw` of a row's canonical inputs (exponential when not named)."""
+    if stored is None:
+        return EXPONENTIAL_WALL
+    return law_from_key(
+        {
+            k: float.fromhex(v) if isinstance(v, str) and v.startswith(("0x", "-0x")) else v
+            for k, v in stored.items()
+            if k != "code"
+        }
+    )
 
 
 @dataclass(frozen=True)
@@ -603,6 +654,7 @@ def _row_to_point(row: tuple) -> StoredPoint:
         ),  # rows of 0.1.0 before the sphere name no body
         partner=_partner(d.get("partner"), num),
         relaxation_time=num(d.get("relaxation_time", 0.0)),
+        contact_law=_law_of(d.get("contact_law")),
     )
     values = dict(zip(_SCALARS, scalars, strict=True))
     nan = float("nan")

@@ -35,6 +35,7 @@ import numpy as np
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, SweepPlan, body_kind
 from restitution.bodies.pair.partner import Partner
 from restitution.bodies.viscoelastic import Viscoelastic
+from restitution.dynamics.contact import EXPONENTIAL_WALL, ContactLaw, law_from_key
 from restitution.errors import InputError
 from restitution.limits.claims import POLL_S, Claims
 from restitution.limits.defaults import (
@@ -128,6 +129,10 @@ class SweepSettings:
         (:class:`restitution.bodies.viscoelastic.Viscoelastic`); ``0``: elastic. A damped sweep
         runs Strang's splitting (``integrator`` ``None`` becomes ``"split"``; another is
         refused).
+    contact_law : ContactLaw
+        The law that pushes the body off the wall (:mod:`restitution.dynamics.contact`; a key
+        is read as its law); ``alphas`` are its hardness values. Default the exponential wall,
+        which ``to_dict`` and the store keys do not name.
     """
 
     velocities: tuple[float, ...] = PAPER_VELOCITIES
@@ -145,8 +150,16 @@ class SweepSettings:
     geometry: str = DEFAULT_GEOMETRY
     partner: Partner | None = None
     relaxation_time: float = 0.0
+    contact_law: ContactLaw = EXPONENTIAL_WALL
 
     def __post_init__(self) -> None:
+        if isinstance(self.contact_law, dict | str):
+            object.__setattr__(self, "contact_law", law_from_key(self.contact_law))
+        if not isinstance(self.contact_law, ContactLaw):
+            raise InputError(
+                f"contact_law must be a ContactLaw (restitution.dynamics.contact), got "
+                f"{type(self.contact_law).__name__}; omit it for the exponential wall"
+            )
         tau = self.relaxation_time
         if isinstance(tau, bool) or not isinstance(tau, (int, float)) or not tau >= 0:
             raise InputError(f"relaxation_time must be a number >= 0 (R/c), got {tau!r}")
@@ -206,12 +219,17 @@ class SweepSettings:
             "geometry": self.geometry,
             **({} if self.partner is None else {"partner": self.partner.to_dict()}),
             **({"relaxation_time": self.relaxation_time} if self.relaxation_time else {}),
+            **(
+                {}
+                if self.contact_law == EXPONENTIAL_WALL
+                else {"contact_law": self.contact_law.key()}
+            ),
         }
 
     def point(self, nu: float, v: float, alpha: float, n_modes: int) -> PointSpec:
         """The store key of one collision of this sweep: ``nu``, speed ``v`` (``c``), wall
-        ``alpha`` (``1/R``) and ``n_modes`` with the sweep's solver settings, body and
-        partner."""
+        ``alpha`` (``1/R``) and ``n_modes`` with the sweep's solver settings, body, partner
+        and contact law."""
         return PointSpec(
             nu,
             v,
@@ -223,6 +241,7 @@ class SweepSettings:
             self.geometry,
             self.partner,
             self.relaxation_time,
+            self.contact_law,
         )
 
     def alphas_at(
@@ -367,6 +386,7 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
     if any(s.group != first.group for s in specs):
         raise InputError("collide_points needs points that share nu, N, selection and options")
     settings = CollisionSettings(integrator=first.integrator, **dict(first.options))
+    law = first.contact_law
     if first.select == "ranked" and first.relaxation_time:
         raise InputError("a viscoelastic body takes its lowest modes (select='lowest')")
     if first.select == "ranked":
@@ -376,7 +396,11 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
             out.append(
                 _guard(
                     lambda s=s: collide(
-                        rank_modes(pool, s.n_modes, s.v, s.alpha, settings), s.v, s.alpha, settings
+                        rank_modes(pool, s.n_modes, s.v, s.alpha, settings, contact_law=law),
+                        s.v,
+                        s.alpha,
+                        settings,
+                        contact_law=law,
                     )
                 )
             )
@@ -389,11 +413,15 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
         modes = Viscoelastic(modes, first.relaxation_time)
     if len(specs) > 1:
         try:
-            results = collide_batch(modes, [s.v for s in specs], [s.alpha for s in specs], settings)
+            results = collide_batch(
+                modes, [s.v for s in specs], [s.alpha for s in specs], settings, contact_law=law
+            )
             return [(Status.OK, r.to_dict()) for r in results]
         except Exception:  # noqa: BLE001 - retried point by point below
             pass
-    return [_guard(lambda s=s: collide(modes, s.v, s.alpha, settings)) for s in specs]
+    return [
+        _guard(lambda s=s: collide(modes, s.v, s.alpha, settings, contact_law=law)) for s in specs
+    ]
 
 
 def _guard(run: Callable[[], Any]) -> tuple[str, Any]:

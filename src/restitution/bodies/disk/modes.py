@@ -122,10 +122,10 @@ class ModeSet:
         """Angular order of every mode: the number ``n`` of directional nodes."""
         return self.n
 
-    def default_nodes(self, alpha: float) -> int:
-        """Edge nodes on ``[0, pi/2]`` for a wall of hardness ``alpha``
+    def contact_nodes(self, s: float) -> int:
+        """Edge nodes on ``[0, pi/2]`` for a contact zone of depth ``1 / s``
         (:func:`restitution.bodies.disk.surface.default_n_phi`)."""
-        return surface.default_n_phi(float(alpha), int(self.n.max()))
+        return surface.default_n_phi(float(s), int(self.n.max()))
 
     def surface_quadrature(self, n_nodes: int) -> SurfaceQuadrature:
         """The edge quadrature with ``n_nodes`` nodes on ``[0, pi/2]`` (eqs. 40-41)."""
@@ -139,10 +139,10 @@ class ModeSet:
         """Quasistatic contact time ``pi sqrt(ln(4/v))`` of eq. (61), ``R / c``."""
         return contact.contact_time_estimate(v)
 
-    def wall_integral(self, alpha):
-        """The edge integral of the wall's pressure profile, ``R``
-        (:func:`restitution.bodies.disk.surface.wall_integral`)."""
-        return surface.wall_integral(alpha)
+    def depth_transform(self, s):
+        """``int exp(-s (1 - cos phi)) dphi`` over the edge, ``R``
+        (:func:`restitution.bodies.disk.surface.depth_transform`)."""
+        return surface.depth_transform(s)
 
     def take(self, index: np.ndarray) -> ModeSet:
         """Subset of modes at ``index`` (integer or boolean array), in the order given."""

@@ -29,25 +29,31 @@ from restitution.errors import InputError
 if TYPE_CHECKING:
     from restitution.bodies.disk.modes import ModeSet
 
-__all__ = ["default_n_phi", "dense_edge_matrix", "edge_basis", "edge_quadrature", "wall_integral"]
+__all__ = [
+    "default_n_phi",
+    "dense_edge_matrix",
+    "depth_transform",
+    "edge_basis",
+    "edge_quadrature",
+]
 
 
 def default_n_phi(alpha: float, n_max: int) -> int:
-    """Number of quadrature nodes on ``[0, pi/2]``.
+    """Number of quadrature nodes on ``[0, pi/2]`` for a contact zone of depth ``1 / alpha``.
 
     At least 256 (the paper's choice), at least 8 nodes per period of the highest angular
     order ``n_max``, and a node spacing of at most ``0.12 / sqrt(alpha)`` so that the initial
-    contact peak ``exp(-alpha phi^2 / 2)`` is resolved. The convergence in this parameter is
-    checked by a test.
+    contact peak ``exp(-alpha phi^2 / 2)`` (the edge within ``1 / alpha`` of its tip) is
+    resolved. The convergence in this parameter is checked by a test.
     """
     spacing = min(0.12 / math.sqrt(alpha), 2.0 * math.pi / (8.0 * max(n_max, 1)))
     return max(256, int(math.ceil(0.5 * math.pi / spacing)) + 1)
 
 
-def wall_integral(alpha):
-    """``int_0^{pi/2} exp(alpha (cos phi - 1)) dphi``, ``R``, approximated by the Gaussian peak
-    at ``phi = 0``: ``min(pi/2, sqrt(pi / (2 alpha)))`` (the quarter arc for soft walls)."""
-    return np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / alpha))
+def depth_transform(s):
+    """``int_0^{pi/2} exp(-s (1 - cos phi)) dphi``, ``R``, approximated by the Gaussian peak
+    at ``phi = 0``: ``min(pi/2, sqrt(pi / (2 s)))`` (the quarter arc for small ``s``)."""
+    return np.minimum(0.5 * math.pi, np.sqrt(0.5 * math.pi / s))
 
 
 def edge_basis(orders: np.ndarray, phi: np.ndarray) -> np.ndarray:

@@ -232,13 +232,14 @@ class BodyPair:
         """Which body's surface carries the potential: the smaller (the first on a tie)."""
         return 0 if self.radius_ratio >= 1.0 else 1
 
-    def default_nodes(self, alpha: float) -> int:
-        """Nodes on the reference body's surface: those it needs against a wall of the same
-        curvature of the gap, ``alpha R_ref / R_eff`` in its own units, and those each body's
-        orders need (``2 alpha`` for identical bodies, as on the wall)."""
+    def contact_nodes(self, s: float) -> int:
+        """Nodes on the reference body's surface for a contact zone of gap depth ``1 / s``:
+        those it needs for a zone of the same width on its own surface, ``s R_ref / R_eff`` in
+        its own units, and those each body's orders need (``2 s`` for identical bodies, as on
+        the wall)."""
         ref_radius = self.radii[self._reference()]
-        a_ref = float(alpha) * ref_radius / self.effective_radius * ref_radius
-        return max(m.default_nodes(a_ref) for m in self._members() if len(m))
+        a_ref = float(s) * ref_radius / self.effective_radius * ref_radius
+        return max(m.contact_nodes(a_ref) for m in self._members() if len(m))
 
     def surface_quadrature(self, n_nodes: int) -> SurfaceQuadrature:
         """The gap quadrature with ``n_nodes`` nodes of the reference body (module docs)."""
@@ -329,16 +330,16 @@ class BodyPair:
         t2 = self.second.contact_time_estimate(0.5 * w / speed_ratio)
         return np.maximum(t1, t2 * self.radius_ratio / speed_ratio)
 
-    def wall_integral(self, alpha):
-        """``int exp(alpha (H - 1)) dA_ref``: the Gaussian of the gap's curvature,
-        ``sqrt(pi R_eff / (2 alpha))`` per side for disks (``R1``; the quarter arc of the
-        reference body for soft walls), ``2 pi R_eff / alpha`` for spheres (``R1^2``)."""
-        alpha = np.asarray(alpha, dtype=float)
+    def depth_transform(self, s):
+        """``int exp(-s (1 - H)) dA_ref`` (``1 - H`` the gap's depth): the Gaussian of the
+        gap's curvature, ``sqrt(pi R_eff / (2 s))`` per side for disks (``R1``; the quarter arc
+        of the reference body for small ``s``), ``2 pi R_eff / s`` for spheres (``R1^2``)."""
+        s = np.asarray(s, dtype=float)
         r_eff = self.effective_radius
         ref_radius = self.radii[self._reference()]
         if _kind(self.first.geometry).dimension == 2:
-            return np.minimum(0.5 * math.pi * ref_radius, np.sqrt(0.5 * math.pi * r_eff / alpha))
-        return 2.0 * math.pi * r_eff * (1.0 - np.exp(-alpha * ref_radius / r_eff)) / alpha
+            return np.minimum(0.5 * math.pi * ref_radius, np.sqrt(0.5 * math.pi * r_eff / s))
+        return 2.0 * math.pi * r_eff * (1.0 - np.exp(-s * ref_radius / r_eff)) / s
 
     def member_energies(self, mode_energy: np.ndarray) -> tuple[float, float]:
         """Split per-mode energies (shape (N,), in the pair's order) into each body's share."""

@@ -340,10 +340,10 @@ class SphereModes:
         """Radial shapes ``U(r)``, ``V(r)``, shape (N, M), at radii ``r`` in ``(0, 1]``."""
         return radial_shapes(self.l, self.omega, self.A, self.B, r, self.nu)
 
-    def default_nodes(self, alpha: float) -> int:
-        """Surface nodes for a wall of hardness ``alpha``
+    def contact_nodes(self, s: float) -> int:
+        """Surface nodes for a contact zone of depth ``1 / s``
         (:func:`restitution.bodies.sphere.surface.default_n_nodes`)."""
-        return surface.default_n_nodes(float(alpha), int(self.l.max()))
+        return surface.default_n_nodes(float(s), int(self.l.max()))
 
     def surface_quadrature(self, n_nodes: int) -> SurfaceQuadrature:
         """Gauss-Legendre in ``cos(theta)`` on the near hemisphere, tangential columns scaled
@@ -359,10 +359,10 @@ class SphereModes:
         """Hertz contact time ``2.9433 delta_max / v`` against a rigid wall, ``R / c``."""
         return surface.contact_time_estimate(v, self.nu)
 
-    def wall_integral(self, alpha):
-        """The surface integral of the wall's pressure profile, ``R^2``
-        (:func:`restitution.bodies.sphere.surface.wall_integral`)."""
-        return surface.wall_integral(alpha)
+    def depth_transform(self, s):
+        """``int exp(-s (1 - cos theta)) dA`` over the near hemisphere, ``R^2``
+        (:func:`restitution.bodies.sphere.surface.depth_transform`)."""
+        return surface.depth_transform(s)
 
     def as_records(self) -> list[dict]:
         """One dict per mode with keys ``l, n, omega, A, B, C, S``."""

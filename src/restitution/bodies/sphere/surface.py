@@ -40,10 +40,10 @@ __all__ = [
     "contact_time_estimate",
     "default_n_nodes",
     "dense_surface_matrix",
+    "depth_transform",
     "legendre_and_theta_derivative",
     "max_compression_estimate",
     "sphere_quadrature",
-    "wall_integral",
 ]
 
 
@@ -59,7 +59,7 @@ def legendre_and_theta_derivative(l, theta):
 
 
 def default_n_nodes(alpha: float, l_max: int) -> int:
-    """Gauss-Legendre nodes on the near hemisphere for a wall of hardness ``alpha``.
+    """Gauss-Legendre nodes on the near hemisphere for a contact zone of depth ``1 / alpha``.
 
     At least 128, a tip spacing ``~2.2 / M`` of at most ``0.12 / sqrt(alpha)`` (the disk's
     criterion for the peak ``exp(-alpha theta^2 / 2)``), and at least ``4 l_max + 32`` so that
@@ -105,11 +105,11 @@ def dense_surface_matrix(modes: SphereModes, theta: np.ndarray) -> np.ndarray:
     )
 
 
-def wall_integral(alpha):
-    """``int_0^{pi/2} exp(alpha (cos theta - 1)) 2 pi sin(theta) dtheta
-    = 2 pi (1 - exp(-alpha)) / alpha``, ``R^2`` (exact)."""
-    alpha = np.asarray(alpha, dtype=float)
-    return 2.0 * math.pi * -np.expm1(-alpha) / alpha
+def depth_transform(s):
+    """``int_0^{pi/2} exp(-s (1 - cos theta)) 2 pi sin(theta) dtheta
+    = 2 pi (1 - exp(-s)) / s``, ``R^2`` (exact)."""
+    s = np.asarray(s, dtype=float)
+    return 2.0 * math.pi * -np.expm1(-s) / s
 
 
 def max_compression_estimate(v, nu: float):

@@ -1,30 +1,36 @@
-"""The exponential wall potential and its forces on a body (paper eqs. 41-42, 45).
+"""A local contact law summed over a body's surface (paper eqs. 40-42, 45 for the disk).
 
 Units: ``E = rho = R = 1``. The wall is the plane ``x = 0``; the body approaches from ``x < 0``.
 
 A surface point at node ``j`` of the body's :class:`~restitution.bodies.base.SurfaceQuadrature`
-sits at ``x_j = x0 + height_j + basis_j @ [a, b]`` (for the disk, eq. 40), and the wall potential
-is ``V = (1/alpha) sum_j weight_j exp(alpha x_j)`` (eq. 41). Its derivatives are the total wall
-force on the centre of mass ``F = dV/dx0`` (eq. 45) and the generalised forces on the modes
-``f_k = dV/dQ_k`` (eq. 42). Nothing here depends on the body's shape.
+sits at ``x_j = x0 + height_j + basis_j @ [a, b]`` (for the disk, eq. 40). The law gives each
+node's potential and force (:meth:`~restitution.dynamics.contact.base.ContactLaw.node_terms`;
+the exponential wall: ``V = (1/alpha) sum_j weight_j exp(alpha x_j)``, eq. 41); their sums are
+the wall potential, the total force on the centre of mass ``F = dV/dx0`` (eq. 45) and the
+generalised forces on the modes ``f_k = dV/dQ_k`` (eq. 42), formed order by order. Nothing here
+depends on the body's shape or on which law it is.
 """
 
 from __future__ import annotations
+
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from restitution.bodies.base import SurfaceQuadrature
 
-__all__ = ["active_nodes", "wall_terms"]
+if TYPE_CHECKING:
+    from restitution.dynamics.contact.base import ContactLaw
+
+__all__ = ["active_nodes", "surface_terms"]
 
 
-# Nodes whose exponent alpha x is certainly below -_NEGLIGIBLE contribute less than
-# exp(-40) = 4e-18 of the force at the wall and are skipped.
-_NEGLIGIBLE = 40.0
-
-
-def active_nodes(quad: SurfaceQuadrature, alpha: np.ndarray, x0: np.ndarray, ab: np.ndarray) -> int:
-    """Number of leading nodes where ``exp(alpha x)`` can exceed ``exp(-40)``.
+def active_nodes(
+    law: ContactLaw, quad: SurfaceQuadrature, alpha: np.ndarray, x0: np.ndarray, ab: np.ndarray
+) -> int:
+    """Number of leading nodes that can come within the law's :meth:`~restitution.dynamics.
+    contact.base.ContactLaw.cutoff` of the wall (the exponential wall: where ``exp(alpha x)``
+    can exceed ``exp(-40)``).
 
     With the per-order amplitudes ``ab = [a, b]`` (shape (B, 2K)) and basis values of magnitude
     at most 1 (the disk: ``|cos(n phi) cos(phi)|, |sin(n phi) sin(phi)| <= 1``),
@@ -33,20 +39,21 @@ def active_nodes(quad: SurfaceQuadrature, alpha: np.ndarray, x0: np.ndarray, ab:
     that matter for the whole batch form a prefix.
     """
     reach = x0 + np.abs(ab).sum(axis=1)
-    bound = np.min(-reach - _NEGLIGIBLE / alpha)
+    bound = np.min(-reach - law.cutoff(alpha))
     return int(np.searchsorted(-quad.height, -bound, side="right"))
 
 
-def wall_terms(
-    quad: SurfaceQuadrature, alpha: np.ndarray, x0: np.ndarray, Q: np.ndarray
+def surface_terms(
+    law: ContactLaw, quad: SurfaceQuadrature, alpha: np.ndarray, x0: np.ndarray, Q: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Wall potential and forces for a batch of states.
+    """Wall potential and forces of ``law`` for a batch of states.
 
     Parameters
     ----------
+    law : ContactLaw
     quad : SurfaceQuadrature
     alpha : numpy.ndarray, shape (B,)
-        Wall hardness per batch member, ``1 / R``.
+        Hardness of the law per batch member (the exponential wall: ``1 / R``).
     x0 : numpy.ndarray, shape (B,)
         Centre-of-mass positions, ``R``.
     Q : numpy.ndarray, shape (B, N)
@@ -63,14 +70,13 @@ def wall_terms(
     """
     # Per-order amplitudes [a_n, b_n], shape (B, 2K).
     ab = (quad.edge_t @ Q.T).T
-    J = active_nodes(quad, alpha, x0, ab)
+    J = active_nodes(law, quad, alpha, x0, ab)
     if J == 0:
         zeros = np.zeros(x0.shape)
         return zeros, zeros, np.zeros(Q.shape)
     trig = quad.basis[:J]
     x = x0[:, None] + quad.height[None, :J] + ab @ trig.T
-    e = np.exp(alpha[:, None] * x) * quad.weight[None, :J]
-    F = e.sum(axis=1)
+    V, F, e = law.node_terms(alpha, x, quad.weight[:J])
     cs = e @ trig  # [c_n, -s_n], shape (B, 2K)
     f = (quad.edge @ cs.T).T
-    return F / alpha, F, np.ascontiguousarray(f)
+    return V, F, np.ascontiguousarray(f)
