@@ -29,8 +29,8 @@ from restitution.limits import store as store_module
 from restitution.limits.store import PointSpec, Store
 from restitution.limits.sweep import (
     DEFAULTS,
-    SPHERE_DEFAULTS,
     SweepSettings,
+    defaults_for,
     grid,
     load_grid,
     pair_settings,
@@ -212,7 +212,7 @@ def test_store_keys_of_the_exponential_wall_are_unchanged(monkeypatch):
     )
     specs = [
         DEFAULTS.point(0.33, 0.1, 500.0, 300),
-        SPHERE_DEFAULTS.point(0.3, 0.02, 1500.0, 1600),
+        defaults_for("sphere").point(0.3, 0.02, 1500.0, 1600),
         pair_settings(DEFAULTS, Partner(radius_ratio=1.4)).point(0.33, 0.2, 500.0, 600),
         replace(DEFAULTS, relaxation_time=0.05, integrator=None).point(0.33, 0.1, 500.0, 300),
         PointSpec(nu=0.33, v=0.1, alpha=500.0, n_modes=40, options={"energy_tol": 1e-6}),
