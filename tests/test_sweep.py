@@ -238,3 +238,28 @@ def test_kill_and_resume(tmp_path):
     assert all(after[s] == before[s] for s in before)  # nothing lost or rewritten
     with Store(path) as db:
         assert len(db) == 16  # no duplicate rows
+
+
+def test_run_options_are_objects_and_the_old_keywords_their_shorthand(tmp_path, client):
+    """Issue 40: where a sweep runs is one Executor, what it shows one Progress."""
+    from restitution.limits.run_options import Executor, Progress, executor_of, progress_of
+
+    assert executor_of(workers=2) == Executor(workers=2)
+    assert executor_of(Executor(scheduler="tcp://x:1")).scheduler == "tcp://x:1"
+    with pytest.raises(InputError, match="at most one"):
+        Executor(workers=2, scheduler="tcp://x:1")
+    with pytest.raises(InputError, match="not both"):
+        executor_of(Executor(workers=2), workers=2)
+    assert progress_of(None) == Progress() and progress_of(True).shown
+    assert list(Progress(False).track([1, 2, 3], "items")) == [1, 2, 3]
+    with pytest.raises(InputError, match="progress must be"):
+        progress_of("yes")
+    # The same sweep through an Executor and through the old keyword.
+    settings = SweepSettings(velocities=(0.02,), alphas=(10.0, 20.0), n_modes=(5, 6),
+                             alpha_scale="absolute")  # fmt: skip
+    points = grid([0.33], settings)
+    one = run_sweep(points, store=tmp_path / "a.sqlite", executor=Executor(client=client),
+                    batch_function=fake_batch, progress=Progress(False))  # fmt: skip
+    two = run_sweep(points, store=tmp_path / "b.sqlite", client=client,
+                    batch_function=fake_batch, progress=False)  # fmt: skip
+    assert one.computed == two.computed == 4 and one.executor == two.executor

@@ -179,9 +179,10 @@ def computed_law(
     *,
     out_dir=None,
     store=None,
-    workers: int | None = None,
-    progress: bool | None = None,
+    executor=None,
+    progress=None,
     force: bool = False,
+    workers: int | None = None,
 ) -> Path:
     """The law file of the exact ``nu`` (2D for the disk, 3D for the sphere), computed with the
     production settings unless it is in ``out_dir`` already.
@@ -196,7 +197,7 @@ def computed_law(
         A second disk (its radius ratio and, in the first disk's units, its material).
     out_dir : path, optional
         Where the law file goes [:func:`law_dir`].
-    store, workers, progress
+    store, executor, progress, workers
         As for :func:`restitution.laws.production.build`.
     force : bool
         Compute even when the estimate exceeds :data:`restitution.budget.TIME_BOUND_S`.
@@ -213,6 +214,7 @@ def computed_law(
         return p.path
     check_plan(p, force)
     groups = production_groups(geometry, partner)
-    (written,) = build(p.path.parent, [nu], groups, store=store, workers=workers,
-                       progress=progress, low_speeds=low_speeds_of(geometry, partner))  # fmt: skip
+    (written,) = build(p.path.parent, [nu], groups, store=store, executor=executor,
+                       workers=workers, progress=progress,
+                       low_speeds=low_speeds_of(geometry, partner))  # fmt: skip
     return written

@@ -34,6 +34,7 @@ import numpy as np
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
+from restitution.limits.run_options import Executor, Progress, progress_of
 from restitution.limits.sweep import SweepSettings, pair_settings, planned
 
 __all__ = [
@@ -194,16 +195,14 @@ def low_speeds_of(geometry: str, partner=None) -> tuple[float, ...]:
     return plan.low_speeds
 
 
-def _track(speeds, nu: float, progress: bool):
+def _track(speeds, nu: float, progress: Progress):
     """The speeds with a progress bar on stderr (stdout may carry a command's JSON)."""
-    from rich.console import Console
-    from rich.progress import track
-
-    return track(speeds, description=f"low speeds, nu = {nu:g}", disable=not progress,
-                 console=Console(stderr=True))  # fmt: skip
+    return progress.track(speeds, f"low speeds, nu = {nu:g}")
 
 
-def _rayleigh_points(geometry: str, nu: float, speeds: list[float], progress: bool, partner=None):
+def _rayleigh_points(
+    geometry: str, nu: float, speeds: list[float], progress: Progress, partner=None
+):
     from restitution.bodies.cache import get_modes
     from restitution.quasistatic.low_speed import (
         CONTACT_TIME_SPREAD,
@@ -245,7 +244,9 @@ def leave_one_out(v, loss) -> np.ndarray:
     return out
 
 
-def _slow_modal_points(geometry: str, nu: float, speeds: list[float], progress: bool, partner=None):
+def _slow_modal_points(
+    geometry: str, nu: float, speeds: list[float], progress: Progress, partner=None
+):
     from restitution.quasistatic.slow_disk import MODEL_SPREAD, SLOW_CUTS, slow_loss, slow_modes
 
     modes = slow_modes(nu, partner)
@@ -276,7 +277,7 @@ def low_speed_points(
     *,
     geometry: str = DEFAULT_GEOMETRY,
     partner=None,
-    progress: bool = False,
+    progress: Progress | bool = False,
 ) -> tuple[list[dict], dict]:
     """A body's low-speed law points, by its kind's route (:func:`low_speed_route`): the
     sphere's from Rayleigh's estimate (:mod:`restitution.quasistatic.low_speed`), the disk's
@@ -293,8 +294,9 @@ def low_speed_points(
         The kind (the disk by default).
     partner : Partner, optional
         The second disk of a pair (then ``speeds`` are relative speeds ``w``).
-    progress : bool
-        Show a progress bar on stderr.
+    progress : Progress or bool
+        The progress bar on stderr (:class:`restitution.limits.run_options.Progress`;
+        ``True``/``False`` its shorthand).
 
     Returns
     -------
@@ -320,7 +322,7 @@ def low_speed_points(
         )
     route = _LOW_SPEED_ROUTES[name]
     speeds = [float(v) for v in (low_speeds_of(geometry, partner) if speeds is None else speeds)]
-    results, parameters = route(geometry, float(nu), speeds, progress, partner)
+    results, parameters = route(geometry, float(nu), speeds, progress_of(progress), partner)
     records = []
     for v, (r, gap, details) in zip(speeds, results, strict=True):
         err = r.energy_loss_err + gap
@@ -373,9 +375,10 @@ def build(
     groups=SETTINGS_GROUPS,
     *,
     store=None,
-    workers: int | None = None,
-    progress: bool | None = None,
+    executor: Executor | None = None,
+    progress: Progress | bool | None = None,
     low_speeds=None,
+    workers: int | None = None,
 ) -> list[Path]:
     """Compute the laws for ``nus`` and write them into ``out_dir``.
 
@@ -392,8 +395,10 @@ def build(
         Poisson numbers: two-dimensional for the disk, three-dimensional for the sphere.
     groups : iterable of SweepSettings
         Sweeps whose points are merged into each law (speeds must not repeat), all of one body.
-    store, workers, progress
-        Passed to :func:`restitution.limits.curves.compute_curves`.
+    store, executor, progress
+        Passed to :func:`restitution.limits.curves.compute_curves` (``workers``: the older
+        spelling of ``executor=Executor(workers=...)``); the progress bar also shows the
+        low-speed points.
     low_speeds : iterable of float, optional
         Speeds of the low-speed points joined to each law (:func:`low_speed_points`); default
         the body's production speeds (:func:`low_speeds_of`), ``()`` for none.
@@ -425,21 +430,22 @@ def build(
             f"{geometry}{' pair' if partner is not None else ''}"
         )
     per_group = [
-        compute_curves(nus, g, store=store, workers=workers, progress=progress) for g in groups
+        compute_curves(nus, g, store=store, executor=executor, workers=workers, progress=progress)
+        for g in groups
     ]
     written = []
     for nu in nus:
         law = EpsilonLaw.from_curves([curves[nu] for curves in per_group])
         if low:
             records, parameters = low_speed_points(
-                nu, low, geometry=geometry, partner=partner, progress=bool(progress)
+                nu, low, geometry=geometry, partner=partner, progress=progress
             )
             law = law.joined(records, key="low_speed", parameters=parameters)
         written.append(law.to_json(out / law_filename(nu, geometry, partner)))
     return written
 
 
-def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: bool = False) -> Path:
+def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: Progress | bool = False) -> Path:
     """Compute the low-speed points of the law file ``path`` again and join them to its modal
     points (which stay as they are), writing the file in place.
 
@@ -449,8 +455,8 @@ def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: bool = False) 
         A law of a disk or a sphere on a wall.
     speeds : iterable of float, optional
         The low speeds; default the body's production speeds (:func:`low_speeds_of`).
-    progress : bool
-        Show a progress bar.
+    progress : Progress or bool
+        The progress bar (:class:`restitution.limits.run_options.Progress`).
     """
     from restitution.laws.law import EpsilonLaw
 

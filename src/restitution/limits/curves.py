@@ -31,6 +31,7 @@ from restitution.limits.extrapolation import (
     epsilon_from_loss,
     extrapolate_modes,
 )
+from restitution.limits.run_options import Executor, Progress
 from restitution.limits.store import Store
 from restitution.limits.sweep import (
     DEFAULTS,
@@ -81,11 +82,12 @@ def compute_curves(
     *,
     store: Store | str | os.PathLike | None = None,
     run: bool = True,
+    executor: Executor | None = None,
+    progress: Progress | bool | None = None,
+    batch_function=collide_points,
     workers: int | None = None,
     scheduler: str | None = None,
     client: Any = None,
-    progress: bool | None = None,
-    batch_function=collide_points,
 ) -> dict[float, Curve]:
     """Run (or read) the sweep of ``settings`` for every ``nu`` and extrapolate every speed.
 
@@ -100,8 +102,9 @@ def compute_curves(
     run : bool
         Compute missing points first; with ``False`` only the store is read (missing points
         become ``nan`` and are flagged).
-    workers, scheduler, client, progress, batch_function
-        Passed to :func:`restitution.limits.sweep.run_sweep`.
+    executor, progress, batch_function
+        Passed to :func:`restitution.limits.sweep.run_sweep` (``workers``, ``scheduler``,
+        ``client``: the older spelling of ``executor``).
 
     Returns
     -------
@@ -128,6 +131,7 @@ def compute_curves(
             run_sweep(
                 grid(nus, settings),
                 store=db,
+                executor=executor,
                 workers=workers,
                 scheduler=scheduler,
                 client=client,
@@ -288,11 +292,12 @@ def epsilon_at(
     settings: SweepSettings = DEFAULTS,
     store: Store | str | os.PathLike | None = None,
     run: bool = True,
+    executor: Executor | None = None,
+    progress: Progress | bool | None = None,
+    batch_function=collide_points,
     workers: int | None = None,
     scheduler: str | None = None,
     client: Any = None,
-    progress: bool | None = None,
-    batch_function=collide_points,
 ) -> PointEpsilon:
     """epsilon at one speed ``v`` (units of ``c``, towards the wall) of the body
     ``settings.geometry`` (the disk by default) with Poisson number ``nu`` (two-dimensional for
@@ -332,6 +337,7 @@ def epsilon_at(
             run_sweep(
                 grid([nu], settings),
                 store=db,
+                executor=executor,
                 workers=workers,
                 scheduler=scheduler,
                 client=client,

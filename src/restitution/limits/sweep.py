@@ -23,7 +23,6 @@ from __future__ import annotations
 import concurrent.futures as cf
 import math
 import os
-import sys
 import time
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Sequence
@@ -52,6 +51,7 @@ from restitution.limits.executors import (
     infrastructure_message,
     is_infrastructure_failure,
 )
+from restitution.limits.run_options import Executor, Progress, executor_of, progress_of
 from restitution.limits.store import PointSpec, Store
 from restitution.status import Status
 
@@ -505,44 +505,18 @@ def _batches(specs: list[PointSpec], batch_size: int) -> list[list[PointSpec]]:
     return out
 
 
-def _progress(enabled: bool | None, total: int):
-    from rich.console import Console
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TextColumn,
-        TimeElapsedColumn,
-        TimeRemainingColumn,
-    )
-
-    console = Console(stderr=True)
-    if enabled is None:
-        enabled = sys.stderr.isatty()
-    return Progress(
-        TextColumn("collisions"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        TextColumn("ETA"),
-        TimeRemainingColumn(),
-        console=console,
-        disable=not enabled,
-        transient=False,
-    )
-
-
 def run_sweep(
     points: Iterable[PointSpec],
     *,
     store: Store | str | os.PathLike | None = None,
+    executor: Executor | None = None,
+    batch_size: int = DEFAULTS.batch_size,
+    batch_function: Callable[[list[PointSpec]], list[tuple[str, Any]]] = collide_points,
+    progress: Progress | bool | None = None,
+    retry_failed: bool = False,
     workers: int | None = None,
     scheduler: str | None = None,
     client: Any = None,
-    batch_size: int = DEFAULTS.batch_size,
-    batch_function: Callable[[list[PointSpec]], list[tuple[str, Any]]] = collide_points,
-    progress: bool | None = None,
-    retry_failed: bool = False,
 ) -> SweepReport:
     """Compute every point not yet in the store.
 
@@ -552,20 +526,21 @@ def run_sweep(
         The grid (see :func:`grid`); duplicates are computed once.
     store : Store or path, optional
         Result store; default :func:`restitution.limits.store.default_store_path`.
-    workers : int, optional
-        Run on a Dask ``LocalCluster`` with this many single-threaded worker processes.
-    scheduler : str, optional
-        Address of an existing Dask scheduler (e.g. ``"tcp://host:8786"``).
-    client : distributed.Client, optional
-        An existing Dask client.
+    executor : Executor, optional
+        Where the collisions run (:class:`restitution.limits.run_options.Executor`): local
+        processes on every core by default, a local Dask cluster, a scheduler or a client.
+    workers, scheduler, client : optional
+        The older spelling of ``executor`` (its three fields); not together with it.
     batch_size : int
         Points per task (they share a mode set and a time step).
     batch_function : callable
         ``f(list[PointSpec]) -> list[(status, payload)]`` run in the workers; the default
         :func:`collide_points` runs the real solver. Must be picklable (a module-level
         function).
-    progress : bool, optional
-        Show a progress bar with ETA on stderr; default: only when stderr is a terminal.
+    progress : Progress or bool, optional
+        The progress bar with ETA on stderr
+        (:class:`restitution.limits.run_options.Progress`; ``True``/``False`` its shorthand);
+        default: only when stderr is a terminal.
     retry_failed : bool
         Also recompute points stored as failed. Points whose task died with its worker
         (``BrokenProcessPool``, a lost Dask worker) are never stored as failed; they are
@@ -576,8 +551,8 @@ def run_sweep(
     -------
     SweepReport
     """
-    if sum(x is not None for x in (workers, scheduler, client)) > 1:
-        raise InputError("give at most one of workers, scheduler and client")
+    where = executor_of(executor, workers=workers, scheduler=scheduler, client=client)
+    progress = progress_of(progress)
     if batch_size < 1:
         raise InputError("batch_size must be >= 1")
     own_store = not isinstance(store, Store)
@@ -603,8 +578,8 @@ def run_sweep(
             with Claims(db.path) as claims:
 
                 def run(specs):
-                    return _execute(db, specs, batch_size, batch_function, workers, scheduler,
-                                    client, progress, on_batch=claims.beat)  # fmt: skip
+                    return _execute(db, specs, batch_size, batch_function, where, progress,
+                                    on_batch=claims.beat)  # fmt: skip
 
                 computed, failed, lost, name, waited = _claimed(db, claims, todo, run)
         return SweepReport(
@@ -647,15 +622,14 @@ def _claimed(db, claims, todo, run):
     return computed, failed, lost, name, waited
 
 
-def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, progress,
+def _execute(db, todo, batch_size, batch_function, where: Executor, progress: Progress,
              on_batch=None):  # fmt: skip
     pending = _batches(todo, batch_size)
     computed, failed, lost, name = 0, [], [], "none"
-    with _progress(progress, len(todo)) as bar:
-        task = bar.add_task("sweep", total=len(todo))
+    with progress.bar(len(todo)) as advance:
         for attempt in range(INFRASTRUCTURE_RETRIES + 1):
             retry = []
-            with executor(workers, scheduler, client) as (pool, name):
+            with executor(where.workers, where.scheduler, where.client) as (pool, name):
                 futures = {pool.submit(_run_task, batch_function, b): b for b in pending}
                 try:
                     for future in cf.as_completed(futures):
@@ -675,7 +649,7 @@ def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, p
                             else:
                                 db.put_failure(spec, str(payload))
                                 failed.append((spec, str(payload)))
-                        bar.advance(task, len(batch))
+                        advance(len(batch))
                         if on_batch is not None:
                             on_batch()
                 except BaseException:
@@ -689,7 +663,7 @@ def _execute(db, todo, batch_size, batch_function, workers, scheduler, client, p
             pending = [batch for batch, _ in retry]
             points = sum(len(b) for b in pending)
             if attempt < INFRASTRUCTURE_RETRIES:
-                bar.console.print(
+                advance.note(
                     f"warning: {points} point(s) lost with a worker ({retry[0][1][:120]}); "
                     f"retrying ({attempt + 1}/{INFRASTRUCTURE_RETRIES})"
                 )
