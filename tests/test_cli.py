@@ -40,7 +40,7 @@ def test_modes_csv_and_figures(tmp_path):
             "--plot-shapes", str(shapes))  # fmt: skip
     assert r.returncode == 0, r.stderr
     lines = r.stdout.strip().splitlines()
-    assert lines[0].startswith("n,l,omega") and len(lines) == 21
+    assert lines[0].startswith("order,n,l,omega") and len(lines) == 21
     import matplotlib.image as mpimg
 
     for path in (spec, shapes):
@@ -56,7 +56,7 @@ def test_collide_json_keys():
                 "mode_energies_after", "wall_time_s"):  # fmt: skip
         assert key in d
     assert 0.9 < d["epsilon"] < 1.0
-    assert {"n", "l", "energy"} == set(d["mode_energies_after"][0])
+    assert {"order", "n", "l", "energy"} == set(d["mode_energies_after"][0])
     loss = sum(m["energy"] for m in d["mode_energies_after"])
     assert loss == pytest.approx(1 - d["epsilon"] ** 2, abs=1e-5)
 

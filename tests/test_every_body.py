@@ -403,3 +403,18 @@ def test_shipped_laws_cover_their_fem_reference(reference, law_of):
     within_one = sum(abs(row.sigma) <= 1.0 for row in judged.compared)
     assert within_one >= math.floor(0.68 * len(points)), table
     assert judged.coverage(2.0) == 1.0, table
+
+
+@pytest.mark.parametrize("geometry", sorted(KINDS))
+def test_every_body_names_the_angular_order_alike(geometry):
+    """Issue 40: the disk calls its angular order n, the sphere l; records and collision
+    results also carry it as ``order``."""
+    from restitution.dynamics.collision import collide
+
+    modes = get_modes(0.3, count=12, geometry=geometry)
+    records = modes.as_records()
+    assert [r["order"] for r in records] == [int(o) for o in modes.order]
+    assert [r[KINDS[geometry].order_name] for r in records] == [int(o) for o in modes.order]
+    result = collide(modes, 0.1, 500.0)
+    np.testing.assert_array_equal(result.mode_order, modes.order)
+    assert [m["order"] for m in result.to_dict()["mode_energies_after"]] == list(modes.order)

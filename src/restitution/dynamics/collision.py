@@ -396,6 +396,7 @@ def collide_batch(
                 integrator=settings.integrator,
                 mode_n=body.n.copy(),
                 mode_l=body.l.copy(),
+                mode_order=np.asarray(body.order).copy(),
                 mode_energy_after=r.energy_after,
                 mode_energy_mean=r.energy_mean,
                 mode_energy_closest=r.energy_closest,

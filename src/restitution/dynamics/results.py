@@ -81,7 +81,10 @@ class CollisionResult:
     integrator : str
         Name of the time integrator.
     mode_n, mode_l : numpy.ndarray of int, shape (N,)
-        Mode labels (empty for FEM).
+        Mode labels as the body's mode records name them (empty for FEM): ``n`` and ``l`` of the
+        disk (order, root index), of the sphere (radial index, order).
+    mode_order : numpy.ndarray of int, shape (N,)
+        The angular order of every mode, whatever the body calls it (the one name for it).
     mode_energy_after, mode_energy_mean, mode_energy_closest : numpy.ndarray, shape (N,)
         Energy per mode after the collision, averaged over the contact (``x0 > -1``), and at
         closest approach (largest ``x0``); fractions of the initial kinetic energy.
@@ -130,6 +133,7 @@ class CollisionResult:
     integrator: str
     mode_n: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     mode_l: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    mode_order: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     mode_energy_after: np.ndarray = field(default_factory=lambda: np.zeros(0))
     mode_energy_mean: np.ndarray = field(default_factory=lambda: np.zeros(0))
     mode_energy_closest: np.ndarray = field(default_factory=lambda: np.zeros(0))
@@ -183,8 +187,16 @@ class CollisionResult:
         d["status"] = self.status
         d["advice"] = self.advice
         if modes:
+            order = self.mode_order if self.mode_order.size == self.mode_n.size else None
             d["mode_energies_after"] = [
-                {"n": int(n), "l": int(l), "energy": float(e)}
-                for n, l, e in zip(self.mode_n, self.mode_l, self.mode_energy_after, strict=True)
+                {
+                    **({} if order is None else {"order": int(order[i])}),
+                    "n": int(n),
+                    "l": int(l),
+                    "energy": float(e),
+                }
+                for i, (n, l, e) in enumerate(
+                    zip(self.mode_n, self.mode_l, self.mode_energy_after, strict=True)
+                )
             ]
         return d

@@ -186,9 +186,11 @@ class ModeSet:
         return U_r, U_phi
 
     def as_records(self) -> list[dict]:
-        """One dict per mode with keys ``n, l, omega, kappa, kappa_p, A, B, C, S``."""
+        """One dict per mode with keys ``order`` (the angular order ``n``: the one name every
+        body gives it), ``n, l, omega, kappa, kappa_p, A, B, C, S``."""
         return [
             {
+                "order": int(self.order[i]),
                 "n": int(self.n[i]),
                 "l": int(self.l[i]),
                 "omega": float(self.omega[i]),

@@ -365,9 +365,11 @@ class SphereModes:
         return surface.depth_transform(s)
 
     def as_records(self) -> list[dict]:
-        """One dict per mode with keys ``l, n, omega, A, B, C, S``."""
+        """One dict per mode with keys ``order`` (the angular order ``l``: the one name every
+        body gives it), ``l, n, omega, A, B, C, S``."""
         return [
             {
+                "order": int(self.order[i]),
                 "l": int(self.l[i]),
                 "n": int(self.n[i]),
                 "omega": float(self.omega[i]),
