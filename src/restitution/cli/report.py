@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -110,6 +111,13 @@ def _json(report: Report) -> str:
     return dumps(report.document())
 
 
+def _cell(value):
+    """A CSV cell: empty for a missing number (``None``, NaN, an infinity: JSON's ``null``)."""
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return ""
+    return value
+
+
 @reporter("csv")
 def _csv(report: Report) -> str:
     if report.rows is None:
@@ -120,7 +128,7 @@ def _csv(report: Report) -> str:
     writer = csv.DictWriter(buf, fieldnames=columns, lineterminator="\n")
     writer.writeheader()
     for row in rows:
-        writer.writerow({k: ("" if v is None else v) for k, v in row.items()})
+        writer.writerow({k: _cell(v) for k, v in row.items()})
     return buf.getvalue().rstrip("\n")
 
 
