@@ -502,7 +502,8 @@ def curve(
     from restitution.limits.sweep import grid
     from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes
 
-    figure_given = figure_fmt is not None or fmt in _FIGURE_FORMATS
+    if production and (figure_fmt is not None or fmt in _FIGURE_FORMATS):
+        raise InputError(f"--figure-format has no effect {_PRODUCTION}")
     fmt, figure_fmt = figure_format(fmt, figure_fmt, _FIGURE_FORMATS, "png")
     fmt = output_format(fmt, as_json)
     kind = body_kind(geometry)
@@ -529,7 +530,7 @@ def curve(
     units = _curve_units(geometry, partner)
     if production:
         return _production(ctx, nus, geometry, partner, out, store, workers, progress, force,
-                           figure_given, fmt, inputs, units)  # fmt: skip
+                           fmt, inputs, units)  # fmt: skip
     refuse_ignored(ctx, {"force": "--force"}, "without --production")
     settings = _settings(velocities, alphas, modes, alpha_scale, geometry, partner)
     inputs.update(settings=settings.to_dict(), figure_format=figure_fmt)
@@ -660,25 +661,25 @@ def _curve_rows(c, settings: SweepSettings) -> list[dict]:
     return rows
 
 
-def _production(ctx, nus, geometry, partner, out, store, workers, progress, force,
-                figure_given, fmt, inputs, units) -> None:  # fmt: skip
+_PRODUCTION = (
+    "with --production (its speeds, walls and mode windows are the shipped laws'; it draws no "
+    "figures)"
+)
+
+
+def _production(ctx, nus, geometry, partner, out, store, workers, progress, force, fmt, inputs,
+                units) -> None:  # fmt: skip
     """``curve --production``: each law with the production settings
     (:mod:`restitution.laws.compute`), written as JSON, CSV and table into ``out``."""
     from restitution.laws.compute import check_plan, plan, production_groups
     from restitution.laws.law import EpsilonLaw
     from restitution.laws.production import build, low_speeds_of
 
-    reason = (
-        "with --production (its speeds, walls and mode windows are the shipped laws'; it "
-        "draws no figures)"
-    )
-    if figure_given:
-        raise InputError(f"--figure-format has no effect {reason}")
     refuse_ignored(
         ctx,
         {"velocities": "--v", "alphas": "--alphas", "alpha_scale": "--alpha-scale",
          "modes": "--modes", "scheduler": "--scheduler", "retry_failed": "--retry-failed"},
-        reason,
+        _PRODUCTION,
     )  # fmt: skip
     groups = production_groups(geometry, partner)
     plans = [plan(nu, geometry, partner, out, reuse=False) for nu in nus]
