@@ -8,6 +8,8 @@ next call served from that file without computing, and the refusals.
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 from dataclasses import replace
 
@@ -145,6 +147,19 @@ def test_curve_production_writes_the_law_with_the_production_groups(cli, tiny, m
     assert EpsilonLaw.from_json(out / "law_nu0.41.json").epsilon_points.tolist() == (
         law.epsilon_points.tolist()
     )
+    # The same answer as JSON (the law per nu, a point per speed) and as a CSV of the points.
+    code, stdout, err = cli(*args, "--json")
+    assert code == 0, err
+    doc = json.loads(stdout)
+    assert doc["command"] == "curve" and doc["inputs"]["production"] is True
+    assert [p["v"] for p in doc["points"]] == list(law.v)
+    assert doc["laws"][0]["files"][0] == str(out / "law_nu0.41.json")
+    code, stdout, err = cli(*args, "--format", "csv")
+    rows = list(csv.DictReader(io.StringIO(stdout)))
+    assert [float(r["epsilon"]) for r in rows] == law.epsilon_points.tolist()
+    # Figures are not drawn there: a figure format is refused, by either spelling.
+    code, stdout, err = cli(*args, "--format", "svg")
+    one_line_error(code, err, "--figure-format has no effect with --production")
 
 
 @pytest.mark.parametrize(

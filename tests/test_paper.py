@@ -7,6 +7,8 @@ verdict rules are tested on synthetic data where the answer is known by construc
 """
 
 import csv
+import io
+import json
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -310,6 +312,26 @@ def test_paper_command_rejects_bad_options(tmp_path):
     assert result.exit_code == 2
     assert "--quick" in runner.invoke(paper, ["--help"]).output
     assert "--c-only" in runner.invoke(paper, ["--help"]).output
+
+
+def test_paper_answers_its_verdicts_in_every_format(run):
+    """What `paper --format json|csv` prints of this run: the sweep, the verdicts (the CSV one
+    row per claim judged) and the files; the text as the command prints it."""
+    from restitution.cli.paper import paper_report
+    from restitution.cli.report import REPORTERS
+    from restitution.reproduction.claims import counts
+
+    report = paper_report(run, {"quick": True, "out": str(run.out)})
+    doc = json.loads(REPORTERS["json"](report))
+    assert doc["command"] == "paper" and doc["settings"] == "quick"
+    assert doc["verdicts"] == counts(run.comparisons)
+    assert doc["sweep"]["total"] == run.data.sweep_report.total
+    assert doc["record"] == str(run.record)
+    rows = list(csv.DictReader(io.StringIO(REPORTERS["csv"](report))))
+    assert len(rows) == len(run.comparisons)
+    assert [r["outcome"] for r in rows] == [c.outcome for c in run.comparisons]
+    text = REPORTERS["text"](report)
+    assert text.startswith("quick run in") and "QUICK RUN" in text
 
 
 def test_paper_settings_refuse_what_they_cannot_run():

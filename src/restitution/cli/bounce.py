@@ -11,8 +11,6 @@ import click
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
     check_figure_file,
-    dumps,
-    envelope,
     material_from,
     note,
     nu_option,
@@ -20,6 +18,7 @@ from restitution.cli._common import (
     positive_finite,
     quiet_option,
 )
+from restitution.cli.report import Report, emit, format_options, output_format
 from restitution.errors import InputError
 
 
@@ -42,13 +41,13 @@ from restitution.errors import InputError
               help="Largest accepted relative energy drift of each collision.")  # fmt: skip
 @click.option("--plot", type=click.Path(dir_okay=False, path_type=Path), default=None,
               help="Draw the impact speeds against a constant-eps disk to this file.")  # fmt: skip
-@click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
+@format_options
 @click.option("--force", is_flag=True,
               help="Run even when the estimated time exceeds the bound of one run (1 h); "
               "the memory bound is never lifted.")  # fmt: skip
 @quiet_option
 def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, energy_tol,
-           plot, as_json, force):  # fmt: skip
+           plot, fmt, as_json, force):  # fmt: skip
     """Successive collisions of one disk under gravity or between two walls.
 
     Units: E = rho = R = 1; speeds in c, times in R/c, energies in E R^2 (m = pi), gravity in
@@ -58,6 +57,7 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
     """
     from restitution.dynamics.collision import CollisionSettings
 
+    fmt = output_format(fmt, as_json)
     material = material_from(nu, plane)
     if not (0 < v < 1):
         raise InputError(f"--v must lie in (0, 1) (units of c), got {v}")
@@ -83,7 +83,7 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
         constant_epsilon_speeds,
     )
 
-    check_bounce_memory(collisions, cli=True, json=as_json, name="--collisions")
+    check_bounce_memory(collisions, cli=True, json=fmt != "text", name="--collisions")
     ms = get_modes(material, count=n_modes)
     check_bounce_time(ms, v, alpha, collisions, force=force, name="--collisions",
                       override="--force", energy_tol=energy_tol)  # fmt: skip
@@ -98,19 +98,30 @@ def bounce(nu, plane, v, alpha, n_modes, collisions, gravity, walls_distance, en
         plot_bounce(BounceData(seq, constant, memoryless=constant * math.nan,
                                epsilon_constant=float(seq.epsilon[0])), plot)  # fmt: skip
         note(f"wrote {plot}")
-    if as_json:
-        inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "modes": n_modes,
-                  "collisions": collisions, "gravity": gravity,
-                  "walls_distance": walls_distance, "energy_tol": energy_tol}  # fmt: skip
-        d = envelope("bounce", inputs, seq.to_dict())
-        d["energy_unit"] = "E R^2 (reduced units; m = pi)"
-        d["constant_epsilon"] = {"epsilon": float(seq.epsilon[0]),
-                                 "impact_speeds": constant.tolist()}  # fmt: skip
-        click.echo(dumps(d))
-        return
-    click.echo(f"{'k':>3} {'v':>10} {'epsilon':>10} {'E_vib':>11} {'contact':>8} "
-               f"{'flight':>11} {'v const eps':>11}")  # fmt: skip
+    inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "modes": n_modes,
+              "collisions": collisions, "gravity": gravity,
+              "walls_distance": walls_distance, "energy_tol": energy_tol}  # fmt: skip
+    payload = {**seq.to_dict(), "energy_unit": "E R^2 (reduced units; m = pi)",
+               "constant_epsilon": {"epsilon": float(seq.epsilon[0]),
+                                    "impact_speeds": constant.tolist()}}  # fmt: skip
+    emit(Report("bounce", inputs, payload, text=lambda: "\n".join(_text(seq, constant)),
+                rows=lambda: _rows(payload)), fmt)  # fmt: skip
+
+
+def _text(seq, constant) -> list[str]:
+    """One line per collision: impact speed, epsilon, vibrational energy, contact and flight
+    times, and the impact speed of a disk with a constant epsilon."""
+    lines = [f"{'k':>3} {'v':>10} {'epsilon':>10} {'E_vib':>11} {'contact':>8} "
+             f"{'flight':>11} {'v const eps':>11}"]  # fmt: skip
     for k in range(seq.v.size):
-        click.echo(f"{k:3d} {seq.v[k]:10.6f} {seq.epsilon[k]:10.6f} "
-                   f"{seq.vibration_before[k]:11.4e} {seq.contact_time[k]:8.4f} "
-                   f"{seq.flight_time[k]:11.4g} {constant[k]:11.6f}")  # fmt: skip
+        lines.append(f"{k:3d} {seq.v[k]:10.6f} {seq.epsilon[k]:10.6f} "
+                     f"{seq.vibration_before[k]:11.4e} {seq.contact_time[k]:8.4f} "
+                     f"{seq.flight_time[k]:11.4g} {constant[k]:11.6f}")  # fmt: skip
+    return lines
+
+
+def _rows(payload: dict) -> list[dict]:
+    """One row per collision (``k`` from 0): the JSON's record and the constant-epsilon speed."""
+    speeds = payload["constant_epsilon"]["impact_speeds"]
+    return [{"k": k, **row, "v_constant_epsilon": speeds[k]}
+            for k, row in enumerate(payload["collisions"])]  # fmt: skip

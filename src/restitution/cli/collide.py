@@ -17,8 +17,6 @@ from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
     body_nu,
-    dumps,
-    envelope,
     force_option,
     geometry_option,
     material_from,
@@ -34,6 +32,14 @@ from restitution.cli._common import (
     refuse_ignored,
     strict_option,
 )
+from restitution.cli.report import (
+    Report,
+    emit,
+    format_options,
+    no_table,
+    output_format,
+    rich_text,
+)
 from restitution.errors import InputError
 from restitution.status import Status
 
@@ -48,15 +54,21 @@ _EXCITE_OPTIONS = {
 }
 _EXCITATIONS = ("none", "mode", "thermal")
 
+_NO_MODES = "finite elements have no modes; --method modal gives one row per mode"
+"""Why ``collide --method fem`` answers no table (``--format csv``)."""
+
 _LONG_RUN_STEPS = 200_000
 """Runs expected to take more steps than this are announced with their estimate."""
 
 
-def _print_summary(result, top: int = 10) -> None:
-    from rich.console import Console
+def _summary(result, top: int = 10) -> str:
+    """The collision for people: epsilon, the run, the modes with most energy after it."""
+    return rich_text(lambda console: _print_summary(console, result, top))
+
+
+def _print_summary(console, result, top: int) -> None:
     from rich.table import Table
 
-    console = Console()
     console.print(
         f"[bold]epsilon = {result.epsilon:.8f}[/bold]  (1 - eps^2 = {result.energy_loss:.6g})\n"
         f"method {result.method}, nu = {result.nu}, v = {result.v} c towards the wall, "
@@ -89,6 +101,25 @@ def _print_summary(result, top: int = 10) -> None:
         console.print(table)
     if result.status != Status.OK:
         console.print(f"[yellow]status {result.status}: {result.advice}[/yellow]")
+
+
+def _mode_rows(result, modes) -> list[dict]:
+    """One row per mode of a modal collision, in the order of the mode set ``modes`` (``index``;
+    ``body`` 1 or 2 for a pair): its labels, frequency and energies (fractions of E0)."""
+    member = getattr(modes, "member", None)
+    rows = []
+    for i in range(result.mode_n.size):
+        row = {"index": i, "n": int(result.mode_n[i]), "l": int(result.mode_l[i])}
+        if member is not None:
+            row["body"] = int(member[i]) + 1
+        row["omega"] = float(modes.omega[i])
+        for key, values in (("energy_before", result.mode_energy_before),
+                            ("energy_after", result.mode_energy_after),
+                            ("energy_mean", result.mode_energy_mean),
+                            ("energy_closest", result.mode_energy_closest)):  # fmt: skip
+            row[key] = float(values[i]) if len(values) else 0.0
+        rows.append(row)
+    return rows
 
 
 def _vibrating() -> str:
@@ -216,7 +247,7 @@ def _vibrating() -> str:
     "--integrator split (docs/damping.md). 0: elastic.",
 )
 @partner_options
-@click.option("--json", "as_json", is_flag=True, help="Print the result as JSON.")
+@format_options
 @strict_option
 @quiet_option
 @click.pass_context
@@ -247,6 +278,7 @@ def collide(
     modulus_ratio,
     density_ratio,
     relaxation_time,
+    fmt,
     as_json,
     strict,
 ):
@@ -261,6 +293,7 @@ def collide(
     run that would not fit in memory, or take more than the bound of one run (unless --force),
     is refused before its mesh is made.
     """
+    fmt = output_format(fmt, as_json)
     body = body_nu(nu, plane, geometry)
     if method != "fem" and excite != "thermal":  # one collision bounds its steps itself
         refuse_ignored(ctx, {"force": "--force"}, "without --method fem or --excite thermal")
@@ -268,7 +301,7 @@ def collide(
     integrator = _damped_integrator(ctx, relaxation_time, integrator, excite, method, select)
     if partner is not None:
         return _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol,
-                     as_json, strict, relaxation_time)  # fmt: skip
+                     fmt, strict, relaxation_time)  # fmt: skip
     kind = body_kind(geometry)
     material = material_from(nu, plane) if kind.planar else None
     if not kind.vibrating and excite != "none":
@@ -277,12 +310,14 @@ def collide(
         )
     if excite != "none":
         return _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method,
-                        energy_tol, excite, as_json, strict, force)  # fmt: skip
+                        energy_tol, excite, fmt, strict, force)  # fmt: skip
     refuse_ignored(ctx, _EXCITE_OPTIONS, "without --excite mode or --excite thermal")
     _check_up_front(v, alpha, integrator, energy_tol)
     if n_modes < 1:
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     if method == "fem":
+        if fmt == "csv":
+            raise no_table("collide", _NO_MODES)
         refuse_ignored(
             ctx,
             {
@@ -299,6 +334,7 @@ def collide(
         refuse_ignored(ctx, {"mesh_refine": "--mesh-refine"}, "with --method modal")
         check_mode_request(body, 2 * n_modes if select == "ranked" else n_modes, None, geometry)
     start = time.perf_counter()
+    ms = None
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         if method == "fem":
@@ -329,27 +365,25 @@ def collide(
                 result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol)
     wall = time.perf_counter() - start
     status, advice = _stretched(result.status, result.advice, v, LINEAR_SPEED, result)
-    if as_json:
-        inputs = {"geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v,
-                  "alpha": alpha, "method": method}  # fmt: skip
-        if method == "fem":
-            inputs["mesh_refine"] = mesh_refine
-        else:
-            inputs.update(
-                modes=n_modes,
-                select=select,
-                integrator=integrator,
-                energy_tol=energy_tol,
-                relaxation_time=relaxation_time,
-            )
-        d = envelope("collide", inputs, result.to_dict(), status=status, advice=advice)
-        d["wall_time_s"] = wall
-        d["select"] = select if method == "modal" else None
-        click.echo(dumps(d))
+    inputs = {"geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v, "alpha": alpha,
+              "method": method}  # fmt: skip
+    if method == "fem":
+        inputs["mesh_refine"] = mesh_refine
     else:
-        _print_summary(result)
+        inputs.update(
+            modes=n_modes,
+            select=select,
+            integrator=integrator,
+            energy_tol=energy_tol,
+            relaxation_time=relaxation_time,
+        )
+    payload = {**result.to_dict(), "wall_time_s": wall,
+               "select": select if method == "modal" else None}  # fmt: skip
+    rows = None if ms is None else (lambda: _mode_rows(result, ms))
+    emit(Report("collide", inputs, payload, status, advice, text=lambda: _summary(result),
+                rows=rows, no_table=_NO_MODES), fmt)  # fmt: skip
     if status != Status.OK:
-        if not as_json:  # the JSON says it in "status"
+        if fmt != "json":  # the JSON says it in "status"
             note(f"warning: status {status}: {advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
@@ -385,7 +419,7 @@ def _check_fem(material, v: float, alpha: float, refine: int, geometry: str, for
                   name="--mesh-refine", override="--force")  # fmt: skip
 
 
-def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol, as_json,
+def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_tol, fmt,
           strict, relaxation_time=0.0):  # fmt: skip
     """``collide --radius-ratio ...``: two bodies head-on (:mod:`restitution.bodies.pair`)."""
     import numpy as np
@@ -425,35 +459,34 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
         "energy_after": [first, second],
         "speed_meaning": "relative normal speed of the two centres, c of the first body",
     }
-    if as_json:
-        inputs = {"geometry": geometry, "nu": body, "partner_nu": nu2, "v": v,
-                  "alpha": alpha, "modes": n_modes, "integrator": integrator,
-                  "energy_tol": energy_tol, "radius_ratio": partner.radius_ratio,
-                  "modulus_ratio": partner.modulus_ratio,
-                  "density_ratio": partner.density_ratio,
-                  "relaxation_time": relaxation_time}  # fmt: skip
-        d = envelope("collide", inputs, result.to_dict(), status=status, advice=advice)
-        d["pair"] = detail
-        d["units"] = {
-            **d["units"],
-            "system": f"E1 = rho1 = R1 = 1: the first {geometry}'s constants",
-            "speed": "c1 = sqrt(E1/rho1) (v: the relative normal speed of the two centres)",
-            "energy": "fraction of the kinetic energy in the centre-of-mass frame (mu/2) v^2, "
-            "mu the reduced mass",
-        }
-        d["wall_time_s"] = time.perf_counter() - start
-        click.echo(dumps(d))
-    else:
-        _print_summary(result)
-        click.echo(
+    inputs = {"geometry": geometry, "nu": body, "partner_nu": nu2, "v": v,
+              "alpha": alpha, "modes": n_modes, "integrator": integrator,
+              "energy_tol": energy_tol, "radius_ratio": partner.radius_ratio,
+              "modulus_ratio": partner.modulus_ratio,
+              "density_ratio": partner.density_ratio,
+              "relaxation_time": relaxation_time}  # fmt: skip
+    units = {
+        **body_kind(geometry).units,
+        "system": f"E1 = rho1 = R1 = 1: the first {geometry}'s constants",
+        "speed": "c1 = sqrt(E1/rho1) (v: the relative normal speed of the two centres)",
+        "energy": "fraction of the kinetic energy in the centre-of-mass frame (mu/2) v^2, "
+        "mu the reduced mass",
+    }
+    payload = {**result.to_dict(), "wall_time_s": time.perf_counter() - start, "pair": detail}
+
+    def text() -> str:
+        return _summary(result) + (
             f"two {geometry}s: R2/R1 = {partner.radius_ratio:g}, E2/E1 = "
             f"{partner.modulus_ratio:g}, rho2/rho1 = {partner.density_ratio:g}, nu2 = "
             f"{nu2:g}; v is the relative speed; modes {counts[0]} + {counts[1]}; "
             f"energy left in the first body {first:.6g}, in the second {second:.6g} (fractions "
             "of the kinetic energy in the centre-of-mass frame)"
         )
+
+    emit(Report("collide", inputs, payload, status, advice, units, text,
+                lambda: _mode_rows(result, pair)), fmt)  # fmt: skip
     if status != Status.OK:
-        if not as_json:
+        if fmt != "json":
             note(f"warning: status {status}: {advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
@@ -528,7 +561,7 @@ def _announce(modes, v: float, alpha: float, integrator: str, energy_tol: float)
 
 
 def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method, energy_tol,
-             excite, as_json, strict, force=False):  # fmt: skip
+             excite, fmt, strict, force=False):  # fmt: skip
     """``collide --excite mode|thermal``: a vibrating disk (thin layer over
     :mod:`restitution.vibrating.vibration` and :mod:`restitution.vibrating.ensemble`)."""
     import math
@@ -562,7 +595,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
             raise InputError(f"--samples must be at least 1, got {p['samples']}")
         from restitution.vibrating.ensemble import check_ensemble_memory
 
-        check_ensemble_memory(p["samples"] or 1, n_modes, json=as_json, name="--samples")
+        check_ensemble_memory(p["samples"] or 1, n_modes, json=fmt != "text", name="--samples")
         if p["plot"] is not None:
             from restitution.cli._common import check_figure_file
 
@@ -588,15 +621,13 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
             result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol,
                          initial=(Q, P))  # fmt: skip
         inputs.update(mode_index=index, amplitude=p["amplitude"], phase=phase)
-        if as_json:
-            d = envelope("collide", inputs, result.to_dict(), status=result.status,
-                         advice=result.advice)  # fmt: skip
-            d["excited_mode"] = {"index": index, "n": int(ms.n[index]), "l": int(ms.l[index]),
-                                 "omega": float(ms.omega[index])}  # fmt: skip
-            d["wall_time_s"] = time.perf_counter() - start
-            click.echo(dumps(d))
-        else:
-            _print_summary(result)
+        excited = {"index": index, "n": int(ms.n[index]), "l": int(ms.l[index]),
+                   "omega": float(ms.omega[index])}  # fmt: skip
+        payload = {**result.to_dict(), "excited_mode": excited,
+                   "wall_time_s": time.perf_counter() - start}  # fmt: skip
+        emit(Report("collide", inputs, payload, result.status, result.advice,
+                    text=lambda: _summary(result), rows=lambda: _mode_rows(result, ms)),
+             fmt)  # fmt: skip
         status = result.status
     else:
         from restitution.vibrating.ensemble import thermal_ensemble
@@ -623,14 +654,12 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
 
             plot_histogram(ens, p["plot"])
             note(f"wrote {p['plot']}")
-        if as_json:
-            d = envelope("collide", inputs, ens.to_dict(), status=status, advice=advice)
-            d["wall_time_s"] = time.perf_counter() - start
-            click.echo(dumps(d))
-        else:
-            _print_ensemble(ens)
+        payload = {**ens.to_dict(), "wall_time_s": time.perf_counter() - start}
+        emit(Report("collide", inputs, payload, status, advice,
+                    text=lambda: "\n".join(_ensemble_text(ens)),
+                    rows=lambda: payload["per_sample"]), fmt)  # fmt: skip
     if status != Status.OK:
-        if not as_json:
+        if fmt != "json":
             note(f"warning: status {status}")
         if status == Status.FAILED_SAMPLES:  # as epsilon and curve when collisions failed
             sys.exit(EXIT_FAILED_POINTS)
@@ -667,16 +696,16 @@ def _progress_bar(total: int):
     return bar()
 
 
-def _print_ensemble(ens) -> None:
+def _ensemble_text(ens) -> list[str]:
+    """The thermal ensemble for people: epsilon's statistics and the temperature."""
     s = ens.summary()
     if not s["samples"]:
-        click.echo("no sample could be integrated")
-        return
-    click.echo(
+        return ["no sample could be integrated"]
+    return [
         f"epsilon over {s['samples']} thermal samples: mean {s['mean']:.6f} "
         f"(+- {s['mean_error'] or 0:.2g}), spread {s['spread']:.4g}, "
         f"min {s['min']:.4f}, max {s['max']:.4f}, fraction above 1: {s['fraction_above_1']:.3f}\n"
         f"temperature {ens.temperature:.4g} E R^2 per mode = {ens.temperature_fraction:.4g} "
         f"(m/2) v^2; v / v_thermal = {ens.v_over_v_thermal:.4g}; {ens.n_modes} modes, "
         f"v = {ens.v} c, alpha = {ens.alpha}, seed {ens.seed}"
-    )
+    ]

@@ -19,8 +19,6 @@ from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
     body_nu,
     check_output_dir,
-    dumps,
-    envelope,
     force_option,
     geometry_option,
     note,
@@ -31,6 +29,14 @@ from restitution.cli._common import (
     refuse_ignored,
     strict_option,
     writing,
+)
+from restitution.cli.report import (
+    Report,
+    emit,
+    figure_format,
+    figure_format_option,
+    format_options,
+    output_format,
 )
 from restitution.errors import InputError
 from restitution.limits.sweep import (
@@ -188,7 +194,7 @@ def _executor_options(f):
     default=None,
     help="Only extrapolate N -> infinity at this wall hardness (1/R); default: both limits.",
 )
-@click.option("--json", "as_json", is_flag=True, help="Print JSON with the grid and fits.")
+@format_options
 @click.option(
     "--method",
     type=click.Choice(["modal", "fem"]),
@@ -203,6 +209,7 @@ def epsilon(
     geometry,
     v,
     alpha,
+    fmt,
     as_json,
     method,
     force,
@@ -227,6 +234,7 @@ def epsilon(
     from restitution.limits.curves import epsilon_at
     from restitution.limits.sweep import grid
 
+    fmt = output_format(fmt, as_json)
     nu = body_nu(nu, None, geometry)
     if alpha is not None and (alphas or alpha_scale):
         raise InputError(
@@ -236,7 +244,7 @@ def epsilon(
     if method == "fem":
         modal_only = {"--modes": modes, "--workers": workers, "--scheduler": scheduler}
         modal_only.update({"--store": store, "--retry-failed": retry_failed or None})
-        _fem_epsilon(nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress,
+        _fem_epsilon(nu, geometry, v, alpha, alphas, alpha_scale, fmt, modal_only, progress,
                      strict, force)  # fmt: skip
         return
     if force:  # the modal sweep has no time bound to lift
@@ -249,35 +257,42 @@ def epsilon(
     result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
     failed = len(result.failures) + len(report.lost)
     status, advice = _status(result.asymptotic_ok, result.message, failed)
-    if as_json:
-        inputs = {
-            "geometry": geometry,
-            "nu": nu,
-            "v": v,
-            "alpha": alpha,
-            "settings": swept.to_dict(),
-            "store": None if store is None else str(store),
-        }
-        body = _unknown_errors(result.to_dict(), swept)
-        click.echo(dumps(envelope("epsilon", inputs, body, status=status, advice=advice)))
-    else:
+    inputs = {
+        "geometry": geometry,
+        "nu": nu,
+        "v": v,
+        "alpha": alpha,
+        "settings": swept.to_dict(),
+        "store": None if store is None else str(store),
+    }
+    body = _unknown_errors(result.to_dict(), swept)
+
+    def text() -> str:
         limits = "N -> inf" if alpha is not None else "alpha -> inf and N -> inf"
         where = f" at alpha = {alpha:g}" if alpha is not None else ""
-        click.echo(
-            f"epsilon = {result.epsilon:.6f} +- {_err(result.epsilon_err, swept)}   "
-            f"({geometry}, nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})"
-        )
-        click.echo(
-            f"energy loss 1 - epsilon^2 = {result.energy_loss:.6f} +- "
-            f"{_err(result.energy_loss_err, swept)}"
-        )
         grid_alphas = [alpha] if alpha is not None else list(settings.alphas_at(v, nu=nu))
-        click.echo(
+        return (
+            f"epsilon = {result.epsilon:.6f} +- {_err(result.epsilon_err, swept)}   "
+            f"({geometry}, nu = {nu:g}, v = {v:g} c towards the wall; {limits}{where})\n"
+            f"energy loss 1 - epsilon^2 = {result.energy_loss:.6f} +- "
+            f"{_err(result.energy_loss_err, swept)}\n"
             f"grid: alpha = {', '.join(f'{a:g}' for a in grid_alphas)}; "
             f"N = {', '.join(str(n) for n in settings.n_modes)} "
             f"({settings.select} modes, {settings.integrator} integrator)"
         )
-    _finish(status, advice, list(result.failures), report, strict, as_json)
+
+    emit(Report("epsilon", inputs, body, status, advice, text=text,
+                rows=lambda: [_epsilon_row(body, status)]), fmt)  # fmt: skip
+    _finish(status, advice, list(result.failures), report, strict, fmt)
+
+
+_ROW_KEYS = ("geometry", "nu", "v", "alpha", "epsilon", "epsilon_err", "energy_loss",
+             "energy_loss_err", "asymptotic_ok")  # fmt: skip
+
+
+def _epsilon_row(body: dict, status: str) -> dict:
+    """``epsilon --format csv``: the answer's numbers as one row, with its status."""
+    return {**{k: body[k] for k in _ROW_KEYS}, "status": status}
 
 
 def _two_point(settings: SweepSettings) -> bool:
@@ -322,7 +337,7 @@ def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
 
 
 def _fem_epsilon(
-    nu, geometry, v, alpha, alphas, alpha_scale, as_json, modal_only, progress, strict, force
+    nu, geometry, v, alpha, alphas, alpha_scale, fmt, modal_only, progress, strict, force
 ):
     """``epsilon --method fem``: both limits (or h -> 0 at one alpha) on the FEM route, printed
     like the modal route (JSON: the same envelope and keys, with levels in place of N)."""
@@ -352,13 +367,10 @@ def _fem_epsilon(
         advice = f"{result.message}; refine the meshes or add harder walls (--alphas)"
     inputs = {"geometry": geometry, "nu": nu, "v": v, "alpha": alpha, "method": "fem",
               "alphas": list(alphas) or None, "alpha_scale": alpha_scale}  # fmt: skip
-    if as_json:
-        click.echo(
-            dumps(envelope("epsilon", inputs, result.to_dict(), status=status, advice=advice))
-        )
-    else:
-        click.echo(result.summary())
-    _finish(status, advice, (), None, strict, as_json)
+    body = result.to_dict()
+    emit(Report("epsilon", inputs, body, status, advice, text=result.summary,
+                rows=lambda: [_epsilon_row(body, status)]), fmt)  # fmt: skip
+    _finish(status, advice, (), None, strict, fmt)
 
 
 def _status(asymptotic: bool, message: str, failed: int) -> tuple[str, str | None]:
@@ -376,11 +388,11 @@ def _status(asymptotic: bool, message: str, failed: int) -> tuple[str, str | Non
     return Status.OK, None
 
 
-def _finish(status, advice, failures, report, strict, as_json=False) -> None:
+def _finish(status, advice, failures, report, strict, fmt="text") -> None:
     """Print what went wrong (JSON says it in 'status') and exit with the documented status."""
     if status == Status.OK:
         return
-    if not as_json:
+    if fmt != "json":
         note(f"warning: {status}: {advice}")
         for a, n, m in failures[:3]:
             note(f"  failed: alpha = {a:g}, N = {n}: {m}")
@@ -393,6 +405,10 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
         sys.exit(EXIT_FAILED_POINTS)
     if strict:
         sys.exit(EXIT_NOT_CONVERGED)
+
+
+_FIGURE_FORMATS = ("png", "pdf", "svg")
+"""Figure formats of ``curve`` (``--figure-format``; ``--format`` before it named the reporter)."""
 
 
 @click.command(cls=_CurveCommand)
@@ -419,13 +435,11 @@ def _finish(status, advice, failures, report, strict, as_json=False) -> None:
     show_default=True,
     help="Directory for figures and exports.",
 )
-@click.option(
-    "--format",
-    "fmt",
-    type=click.Choice(["png", "pdf", "svg"]),
-    default="png",
-    show_default=True,
-    help="Figure format.",
+@figure_format_option(_FIGURE_FORMATS, "png", "Figure format.")
+@format_options(
+    also=_FIGURE_FORMATS,
+    also_help=" CSV: one row per (nu, v). png, pdf, svg: the old spelling of --figure-format "
+    "(deprecated).",
 )
 @click.option(
     "--production",
@@ -449,7 +463,9 @@ def curve(
     geometry,
     velocities,
     out,
+    figure_fmt,
     fmt,
+    as_json,
     production,
     force,
     alphas,
@@ -476,8 +492,9 @@ def curve(
     file `restitution law --geometry sphere --law-file` reads). With --radius-ratio (or
     another partner option) the law of two bodies meeting head-on: v is their relative speed
     (default speeds twice the wall's, mode windows of both bodies at the wall's frequency cutoff;
-    files law_pair_r<R2/R1>..._nu*.json). Exit status 1 when collisions failed; with --strict, 3
-    when a speed is not asymptotic.
+    files law_pair_r<R2/R1>..._nu*.json). The figures are PNG unless --figure-format says
+    otherwise; --format text|json|csv chooses how the table is printed. Exit status 1 when
+    collisions failed; with --strict, 3 when a speed is not asymptotic.
     """
     from restitution.laws.law import EpsilonLaw, law_filename
     from restitution.limits.curves import compute_curves
@@ -485,6 +502,10 @@ def curve(
     from restitution.limits.sweep import grid
     from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes
 
+    if production and (figure_fmt is not None or fmt in _FIGURE_FORMATS):
+        raise InputError(f"--figure-format has no effect {_PRODUCTION}")
+    fmt, figure_fmt = figure_format(fmt, figure_fmt, _FIGURE_FORMATS, "png")
+    fmt = output_format(fmt, as_json)
     kind = body_kind(geometry)
     if not nus and not kind.default_nus:
         defaults = "; ".join(
@@ -503,10 +524,16 @@ def curve(
             "--partner-nu names the second body's material for one --nu; give one --nu with it"
         )
     partner = partner_from(ctx, nus[0], None, geometry)
+    inputs = {"geometry": geometry, "nus": list(nus),
+              "partner": None if partner is None else partner.to_dict(),
+              "out": str(out), "store": None if store is None else str(store)}  # fmt: skip
+    units = _curve_units(geometry, partner)
     if production:
-        return _production(ctx, nus, geometry, partner, out, store, workers, progress, force)
+        return _production(ctx, nus, geometry, partner, out, store, workers, progress, force,
+                           fmt, inputs, units)  # fmt: skip
     refuse_ignored(ctx, {"force": "--force"}, "without --production")
     settings = _settings(velocities, alphas, modes, alpha_scale, geometry, partner)
+    inputs.update(settings=settings.to_dict(), figure_format=figure_fmt)
     # The figures draw the curves' numbers whatever the body; a sphere's say so and are named
     # apart from the disk's, so one --out can hold both.
     tag, body_note = "", ""
@@ -527,62 +554,121 @@ def curve(
     curves = compute_curves(nus, settings, store=store, run=False)
     with Store(store) as db:
         errors = db.errors(points)
-    failures = [(s.alpha, s.n_modes, errors[s.key()]) for s in points if s.key() in errors]
+    failed_specs = [s for s in points if s.key() in errors]
+    failures = [(s.alpha, s.n_modes, errors[s.key()]) for s in failed_specs]
     with writing(out, "--out"):
         written = [
             fig01_epsilon.plot(
                 fig01_epsilon.compute(nus, curves=curves),
-                out / f"fig01_epsilon{tag}.{fmt}",
+                out / f"fig01_epsilon{tag}.{figure_fmt}",
                 note=body_note,
             )
         ]
-    asymptotic = True
+    lines, rows, laws = [], [], []
     for nu in nus:
         c = curves[nu]
         with writing(out, "--out"):
             written.append(
                 fig07_alpha.plot(
                     fig07_alpha.compute(nu, curve=c),
-                    out / f"fig07_alpha{tag}_nu{nu:g}.{fmt}",
+                    out / f"fig07_alpha{tag}_nu{nu:g}.{figure_fmt}",
                     note=body_note,
                 )
             )
             written.append(
                 fig08_modes.plot(
                     fig08_modes.compute(nu, curve=c),
-                    out / f"fig08_modes{tag}_nu{nu:g}.{fmt}",
+                    out / f"fig08_modes{tag}_nu{nu:g}.{figure_fmt}",
                     note=body_note,
                 )
             )
-        body = "" if geometry == DEFAULT_GEOMETRY else f"{geometry}, "
-        click.echo(f"{body}nu = {nu:g}:   v/c    epsilon     error   asymptotic")
-        for v, lim in zip(c.velocities, c.limits, strict=True):
-            asymptotic &= bool(lim.asymptotic_ok)
-            eps = "nan" if not math.isfinite(lim.epsilon) else f"{lim.epsilon:.5f}"
-            click.echo(
-                f"          {v:5.3f}  {eps:>8}  {_err(lim.epsilon_err, settings)[:8]:>8}   "
-                f"{'yes' if lim.asymptotic_ok else 'NO: ' + lim.message[:70]}"
-            )
+        lines += _curve_lines(c, geometry, settings)
+        rows += _curve_rows(c, settings)
         try:
             law = EpsilonLaw.from_curve(c)
         except Exception as exc:  # noqa: BLE001 - report and go on with the other nu
             note(f"warning: no {geometry} law for nu = {nu:g}: {exc}")
+            laws.append({"nu": nu, "files": [], "error": str(exc)})
             continue
         stem = Path(law_filename(nu, geometry, partner)).stem
         with writing(out, "--out"):
-            written += [
+            files = [
                 law.to_json(out / f"{stem}.json"),
                 law.to_csv(out / f"{stem}.csv"),
                 law.to_table(out / f"{stem}.txt"),
             ]
-    click.echo("wrote " + ", ".join(str(p) for p in written))
+        written += files
+        laws.append({"nu": nu, "files": [str(p) for p in files], "error": None})
+    lines.append("wrote " + ", ".join(str(p) for p in written))
+    asymptotic = all(row["asymptotic_ok"] for row in rows)
     failed = len(failures) + len(report.lost)
     message = "" if asymptotic else "some speeds are not asymptotic (see the table)"
     status, advice = _status(asymptotic, message, failed)
-    _finish(status, advice, failures, report, strict)
+    payload = {
+        "points": rows,
+        "laws": laws,
+        "written": [str(p) for p in written],
+        "failed_points": [_point(s, errors[s.key()]) for s in failed_specs],
+        "lost_points": [_point(s, m) for s, m in report.lost],
+    }
+    emit(Report("curve", inputs, payload, status, advice, units, lambda: "\n".join(lines),
+                lambda: rows), fmt)  # fmt: skip
+    _finish(status, advice, failures, report, strict, fmt)
 
 
-def _production(ctx, nus, geometry, partner, out, store, workers, progress, force) -> None:
+def _point(spec, message: str) -> dict:
+    """A collision of the grid that failed (or whose worker died), with its message."""
+    return {"nu": spec.nu, "v": spec.v, "alpha": spec.alpha, "n_modes": spec.n_modes,
+            "message": message}  # fmt: skip
+
+
+def _curve_units(geometry: str, partner) -> dict:
+    """The units of ``curve``'s numbers: the body's, ``v`` the relative speed of a pair."""
+    units = dict(body_kind(geometry).units)
+    if partner is not None:
+        units["speed"] = "c1 = sqrt(E1/rho1) of the first body (v: the relative normal speed)"
+    return units
+
+
+def _curve_lines(c, geometry: str, settings: SweepSettings) -> list[str]:
+    """The table of one Poisson number for people: v, epsilon, its error, asymptotic or why not."""
+    body = "" if geometry == DEFAULT_GEOMETRY else f"{geometry}, "
+    lines = [f"{body}nu = {c.nu:g}:   v/c    epsilon     error   asymptotic"]
+    for v, lim in zip(c.velocities, c.limits, strict=True):
+        eps = "nan" if not math.isfinite(lim.epsilon) else f"{lim.epsilon:.5f}"
+        lines.append(
+            f"          {v:5.3f}  {eps:>8}  {_err(lim.epsilon_err, settings)[:8]:>8}   "
+            f"{'yes' if lim.asymptotic_ok else 'NO: ' + lim.message[:70]}"
+        )
+    return lines
+
+
+def _curve_rows(c, settings: SweepSettings) -> list[dict]:
+    """One row per speed of one Poisson number: epsilon, its error (``None`` when the fit
+    cannot estimate one, as the text's ``unknown``), whether asymptotic, status and why."""
+    rows = []
+    for v, lim in zip(c.velocities, c.limits, strict=True):
+        err = None if _err(lim.epsilon_err, settings) == "unknown" else float(lim.epsilon_err)
+        rows.append({
+            "nu": float(c.nu),
+            "v": float(v),
+            "epsilon": float(lim.epsilon) if math.isfinite(lim.epsilon) else None,
+            "epsilon_err": err,
+            "asymptotic_ok": bool(lim.asymptotic_ok),
+            "status": Status.OK if lim.asymptotic_ok else Status.NOT_ASYMPTOTIC,
+            "message": lim.message,
+        })  # fmt: skip
+    return rows
+
+
+_PRODUCTION = (
+    "with --production (its speeds, walls and mode windows are the shipped laws'; it draws no "
+    "figures)"
+)
+
+
+def _production(ctx, nus, geometry, partner, out, store, workers, progress, force, fmt, inputs,
+                units) -> None:  # fmt: skip
     """``curve --production``: each law with the production settings
     (:mod:`restitution.laws.compute`), written as JSON, CSV and table into ``out``."""
     from restitution.laws.compute import check_plan, plan, production_groups
@@ -592,10 +678,8 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
     refuse_ignored(
         ctx,
         {"velocities": "--v", "alphas": "--alphas", "alpha_scale": "--alpha-scale",
-         "modes": "--modes", "fmt": "--format", "scheduler": "--scheduler",
-         "retry_failed": "--retry-failed"},
-        "with --production (its speeds, walls and mode windows are the shipped laws'; it "
-        "draws no figures)",
+         "modes": "--modes", "scheduler": "--scheduler", "retry_failed": "--retry-failed"},
+        _PRODUCTION,
     )  # fmt: skip
     groups = production_groups(geometry, partner)
     plans = [plan(nu, geometry, partner, out, reuse=False) for nu in nus]
@@ -603,15 +687,34 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
         check_plan(p, force)
     check_output_dir(out, "--out")  # before the sweep, not after it
     low = low_speeds_of(geometry, partner)
-    written = []
+    written, lines, laws, rows = [], [], [], []
     for nu, p in zip(nus, plans, strict=True):
         note(f"note: nu = {nu:g}: {p.words()}")
         with writing(out, "--out"):
             (path,) = build(out, [nu], groups, store=store, workers=workers,
                             progress=False if quiet() else progress, low_speeds=low)  # fmt: skip
             law = EpsilonLaw.from_json(path)
-            written += [path, law.to_csv(path.with_suffix(".csv")),
-                        law.to_table(path.with_suffix(".txt"))]  # fmt: skip
+            files = [path, law.to_csv(path.with_suffix(".csv")),
+                     law.to_table(path.with_suffix(".txt"))]  # fmt: skip
+        written += files
         ok = [bool(x) for x in law.asymptotic_ok]
-        click.echo(f"nu = {nu:g}: {sum(ok)} of {len(ok)} speeds pass every check; {path.name}")
-    click.echo("wrote " + ", ".join(str(p) for p in written))
+        lines.append(f"nu = {nu:g}: {sum(ok)} of {len(ok)} speeds pass every check; {path.name}")
+        laws.append({"nu": nu, "files": [str(f) for f in files], "speeds": len(ok),
+                     "passing": sum(ok)})  # fmt: skip
+        rows += [
+            {"nu": nu, "v": float(v), "epsilon": float(e), "epsilon_err": float(de),
+             "asymptotic_ok": good,
+             "status": Status.OK if good else Status.NOT_ASYMPTOTIC}
+            for v, e, de, good in zip(law.v, law.epsilon_points, law.epsilon_err_points, ok,
+                                      strict=True)
+        ]  # fmt: skip
+    lines.append("wrote " + ", ".join(str(p) for p in written))
+    failing = sum(law["speeds"] - law["passing"] for law in laws)
+    status, advice = Status.OK, None
+    if failing:
+        status = Status.NOT_ASYMPTOTIC
+        advice = f"{failing} speed(s) fail a check (see 'points'); the laws mark them"
+    inputs = {**inputs, "production": True}
+    payload = {"laws": laws, "points": rows, "written": [str(p) for p in written]}
+    emit(Report("curve", inputs, payload, status, advice, units, lambda: "\n".join(lines),
+                lambda: rows), fmt)  # fmt: skip

@@ -10,8 +10,6 @@ import click
 from restitution.bodies.cache import check_mode_request
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
-    dumps,
-    envelope,
     force_option,
     material_from,
     note,
@@ -20,6 +18,7 @@ from restitution.cli._common import (
     quiet_option,
     strict_option,
 )
+from restitution.cli.report import Report, emit, format_options, output_format, rich_text
 from restitution.errors import InputError
 from restitution.status import Status
 
@@ -34,11 +33,37 @@ def _int_list(text: str, name: str) -> list[int]:
     return values
 
 
-def _print(comparison, nu, v, alpha) -> None:
-    from rich.console import Console
+def _text(comparison, nu, v, alpha) -> str:
+    """Both methods' runs and limits for people (rich tables)."""
+    return rich_text(lambda console: _print(console, comparison, nu, v, alpha))
+
+
+_COLUMNS = ("method", "refine", "dofs", "n_modes", "epsilon", "epsilon_err", "energy_loss",
+            "energy_drift", "n_steps", "dt", "wall_time_s")  # fmt: skip
+"""The columns of ``compare-fem --format csv``."""
+
+
+def _rows(d: dict) -> list[dict]:
+    """One row per run (each FEM level, each modal N), then the two limits compared: the FEM's
+    finest mesh and the modal N -> infinity, with their errors."""
+
+    def row(values: dict) -> dict:
+        return {k: values.get(k) for k in _COLUMNS}
+
+    finest = d["fem"][-1]
+    return [
+        *(row({**run, "method": "fem", "n_modes": None}) for run in d["fem"]),
+        *(row({**run, "method": "modal"}) for run in d["modal"]),
+        row({"method": "fem finest", "refine": finest["refine"], "dofs": finest["dofs"],
+             "epsilon": d["fem_epsilon"], "epsilon_err": d["fem_error"]}),
+        row({"method": "modal N -> inf", "epsilon": d["modal_epsilon"],
+             "epsilon_err": d["modal_error"]}),
+    ]  # fmt: skip
+
+
+def _print(console, comparison, nu, v, alpha) -> None:
     from rich.table import Table
 
-    console = Console()
     fem = Table(title=f"FEM, nu = {nu}, v = {v} c, alpha = {alpha}")
     for col in ("refine", "dofs", "epsilon", "change", "drift", "steps", "time/s"):
         fem.add_column(col, justify="right")
@@ -119,11 +144,11 @@ def _print(comparison, nu, v, alpha) -> None:
     show_default=True,
     help="Comma-separated numbers of lowest modes for the modal runs.",
 )
-@click.option("--json", "as_json", is_flag=True, help="Print the comparison as JSON.")
+@format_options
 @force_option()
 @strict_option
 @quiet_option
-def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, force, strict):
+def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, fmt, as_json, force, strict):
     """Compare the FEM impact solver with the modal solver extrapolated to N -> infinity.
 
     The FEM runs at mesh levels refine-min..refine (error: last Cauchy difference); the modal
@@ -135,6 +160,7 @@ def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, force, 
     """
     from restitution.fem.compare import compare_fem_modal
 
+    fmt = output_format(fmt, as_json)
     material = material_from(nu, plane)
     if refine_min < 0 or refine < refine_min:
         raise InputError(f"need 0 <= --refine-min <= --refine, got {refine_min} and {refine}")
@@ -158,25 +184,21 @@ def compare_fem(nu, plane, v, alpha, refine, refine_min, modes, as_json, force, 
         advice = (lim.message if lim is not None else "no modal extrapolation") + (
             "; use more and larger --modes"
         )
-    if as_json:
-        inputs = {
-            "nu": material.nu,
-            "plane": plane,
-            "v": v,
-            "alpha": alpha,
-            "refine": refine,
-            "refine_min": refine_min,
-            "modes": counts,
-        }
-        click.echo(
-            dumps(
-                envelope("compare-fem", inputs, comparison.to_dict(), status=status, advice=advice)
-            )
-        )
-    else:
-        _print(comparison, material.nu, v, alpha)
+    inputs = {
+        "nu": material.nu,
+        "plane": plane,
+        "v": v,
+        "alpha": alpha,
+        "refine": refine,
+        "refine_min": refine_min,
+        "modes": counts,
+    }
+    d = comparison.to_dict()
+    emit(Report("compare-fem", inputs, d, status, advice,
+                text=lambda: _text(comparison, material.nu, v, alpha),
+                rows=lambda: _rows(d)), fmt)  # fmt: skip
     if status != Status.OK:
-        if not as_json:  # the JSON says it in "status"
+        if fmt != "json":  # the JSON says it in "status"
             note(f"warning: {status}: {advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)

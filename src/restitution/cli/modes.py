@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import io
 from pathlib import Path
 
@@ -14,8 +13,6 @@ from restitution.cli._common import (
     body_nu,
     check_figure_file,
     check_output_file,
-    dumps,
-    envelope,
     geometry_option,
     note,
     nu_inputs,
@@ -23,9 +20,9 @@ from restitution.cli._common import (
     plane_option,
     quiet_option,
     refuse_ignored,
-    write_text,
     writing,
 )
+from restitution.cli.report import Report, emit, format_options, output_format
 from restitution.errors import InputError
 
 
@@ -44,29 +41,13 @@ def _table(records: list[dict], geometry: str) -> str:
     return buf.getvalue()
 
 
-def _csv(records: list[dict]) -> str:
-    buf = io.StringIO()
-    columns = list(records[0]) if records else []
-    writer = csv.DictWriter(buf, fieldnames=columns, lineterminator="\n")
-    writer.writeheader()
-    for r in records:
-        writer.writerow({c: (r[c] if isinstance(r[c], int) else repr(r[c])) for c in columns})
-    return buf.getvalue()
-
-
 @click.command()
 @nu_option
 @plane_option
 @geometry_option
 @click.option("--count", type=int, default=None, help="Number of lowest modes [default: 1600].")
 @click.option("--omega-max", type=float, default=None, help="All modes below this omega (c/R).")
-@click.option(
-    "--format",
-    "fmt",
-    type=click.Choice(["table", "csv", "json"]),
-    default="table",
-    show_default=True,
-)
+@format_options(also=("table",), also_help=" CSV: one row per mode. table: the old name of text.")
 @click.option(
     "--output",
     type=click.Path(dir_okay=False, path_type=Path),
@@ -86,15 +67,18 @@ def _csv(records: list[dict]) -> str:
     help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.",
 )
 @quiet_option
-def modes(nu, plane, geometry, count, omega_max, fmt, output, plot_spectrum, plot_shapes):
+def modes(nu, plane, geometry, count, omega_max, fmt, as_json, output, plot_spectrum,
+          plot_shapes):  # fmt: skip
     """Eigenmodes of the free elastic body that couple to a head-on impact, by frequency.
 
     Units: E = rho = R = 1 of the body's own constants, omega in c/R. Disk: the symmetric
     family; for n = 0 only the breathing modes (eq. 20); C = U_r(1) > 0 and S = U_phi(1) are
     the edge amplitudes. Sphere: Lamb's axisymmetric spheroidal modes of order l (u_r = U(r)
     P_l, u_theta = V(r) dP_l/dtheta), C = U(1) and S = V(1). The rigid translation is excluded.
-    The JSON format is one object: version, units, inputs, status and the list "modes".
+    The JSON format is one object: version, units, inputs, status and the list "modes"; the
+    CSV one row per mode.
     """
+    fmt = output_format(fmt, as_json, aliases={"table": "text"})
     if count is not None and omega_max is not None:
         raise InputError("give either --count or --omega-max, not both")
     if count is None and omega_max is None:
@@ -114,19 +98,14 @@ def modes(nu, plane, geometry, count, omega_max, fmt, output, plot_spectrum, plo
             check_figure_file(path, option)
     ms = get_modes(nu, count=count, omega_max=omega_max, geometry=geometry)
     records = ms.as_records()
-    if fmt == "json":
-        inputs = {
-            "geometry": geometry,
-            **nu_inputs(given, plane, geometry),
-            "count": count,
-            "omega_max": omega_max,
-        }
-        text = dumps(envelope("modes", inputs, {"modes": records}))
-    elif fmt == "csv":
-        text = _csv(records)
-    else:
-        text = _table(records, geometry)
-    write_text(text, output)
+    inputs = {
+        "geometry": geometry,
+        **nu_inputs(given, plane, geometry),
+        "count": count,
+        "omega_max": omega_max,
+    }
+    emit(Report("modes", inputs, {"modes": records}, text=lambda: _table(records, geometry),
+                rows=lambda: records), fmt, output)  # fmt: skip
     if plot_spectrum is not None:
         from restitution.reproduction.figures import fig03_spectrum
 

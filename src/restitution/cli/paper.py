@@ -10,6 +10,20 @@ from pathlib import Path
 
 import click
 
+from restitution.cli.report import (
+    Report,
+    emit,
+    figure_format,
+    figure_format_option,
+    format_options,
+    output_format,
+)
+from restitution.status import Status
+
+_VECTOR_FORMATS = ("svg", "pdf")
+"""Vector formats written beside every PNG (``--figure-format``; ``--format`` before it named
+the reporter)."""
+
 
 class _StageProgress:
     """Shows the stages of a paper run with rich: a bar over the stages and one line each.
@@ -101,13 +115,11 @@ class _StageProgress:
     metavar="ADDRESS",
     help="Run the sweep on an existing Dask cluster, e.g. tcp://host:8786.",
 )
-@click.option(
-    "--format",
-    "fmt",
-    type=click.Choice(["svg", "pdf"]),
-    default="svg",
-    show_default=True,
-    help="Vector format written beside every PNG.",
+@figure_format_option(_VECTOR_FORMATS, "svg", "Vector format written beside every PNG.")
+@format_options(
+    also=_VECTOR_FORMATS,
+    also_help=" CSV: one row per claim of the paper judged. svg, pdf: the old spelling of "
+    "--figure-format (deprecated).",
 )
 @click.option(
     "--c-only",
@@ -120,19 +132,22 @@ class _StageProgress:
     default=None,
     help="Progress bars on stderr (default: when stderr is a terminal).",
 )
-def paper(quick, out, store, workers, scheduler, fmt, c_only, progress):
+def paper(quick, out, store, workers, scheduler, figure_fmt, fmt, as_json, c_only, progress):
     """Regenerate the paper: Figs. 1-3, 5-8, 10-12, Table 1 and a report comparing with it.
 
     Writes PNG and SVG (or PDF) figures, table1.md / table1.csv, report.html and report.md
     (the paper's stated values beside ours, "agrees" or "differs by ...", the errata, every
     parameter) and paper.json into --out. Speeds are the disk's speed towards the wall in
     units of c = sqrt(E/rho). The collisions of the sweep go through the result store, so a
-    second run only redraws.
+    second run only redraws. --format json|csv prints the verdicts (the record of the run is
+    paper.json either way).
     """
     from dataclasses import replace
 
     from restitution.reproduction.paper import FULL, QUICK, STAGES, build_paper
 
+    fmt, figure_fmt = figure_format(fmt, figure_fmt, _VECTOR_FORMATS, "svg")
+    fmt = output_format(fmt, as_json)
     settings = QUICK if quick else FULL
     if c_only:
         settings = replace(settings, speed_units=("c",))
@@ -143,23 +158,59 @@ def paper(quick, out, store, workers, scheduler, fmt, c_only, progress):
             store=store,
             workers=workers,
             scheduler=scheduler,
-            fmt=fmt,
+            fmt=figure_fmt,
             progress=progress,
             on_stage=reporter,
         )
+    inputs = {"quick": quick, "c_only": c_only, "out": str(out),
+              "store": None if store is None else str(store),
+              "figure_format": figure_fmt}  # fmt: skip
+    emit(paper_report(run, inputs), fmt)
+    return run
+
+
+def paper_report(run, inputs: dict) -> Report:
+    """The answer of ``restitution paper`` from its run (:class:`PaperRun`): the sweep, the
+    verdicts on the paper's claims (the CSV: one row per claim) and the files."""
+    from dataclasses import asdict
+
     from restitution.reproduction.claims import counts
 
     n = counts(run.comparisons)
     sr = run.data.sweep_report
-    click.echo(
-        f"{settings.name} run in {run.run_time_s:.0f} s: sweep {sr.computed} computed, "
-        f"{sr.skipped} from the store, {len(sr.failed)} failed; claims of the paper: "
-        f"{n['agrees']} agree, {n['differs']} differ, {n['inconclusive']} inconclusive"
-    )
-    if settings.name == "quick":
-        click.echo("QUICK RUN: coarse grids, numbers not converged")
-    for c in run.comparisons:
-        if c.agrees is False and not c.detail:
-            click.echo(f"  differs: {c.figure}: {c.claim}: {c.verdict}")
-    click.echo(f"report: {run.report_html}  (and {run.report_md.name})")
-    return run
+    name = run.data.settings.name
+    status, advice = Status.OK, None
+    if sr.failed:
+        status = Status.POINTS_FAILED
+        advice = (
+            f"{len(sr.failed)} collision(s) of the sweep failed (see {run.record.name}); rerun "
+            "to retry them, or change the settings"
+        )
+    payload = {
+        "settings": name,
+        "run_time_s": run.run_time_s,
+        "sweep": {"total": sr.total, "computed": sr.computed, "skipped": sr.skipped,
+                  "failed": len(sr.failed)},
+        "verdicts": n,
+        "comparisons": [{**asdict(c), "outcome": c.outcome} for c in run.comparisons],
+        "report_html": str(run.report_html),
+        "report_md": str(run.report_md),
+        "record": str(run.record),
+    }  # fmt: skip
+
+    def text() -> str:
+        lines = [
+            f"{name} run in {run.run_time_s:.0f} s: sweep {sr.computed} computed, "
+            f"{sr.skipped} from the store, {len(sr.failed)} failed; claims of the paper: "
+            f"{n['agrees']} agree, {n['differs']} differ, {n['inconclusive']} inconclusive"
+        ]
+        if name == "quick":
+            lines.append("QUICK RUN: coarse grids, numbers not converged")
+        for c in run.comparisons:
+            if c.agrees is False and not c.detail:
+                lines.append(f"  differs: {c.figure}: {c.claim}: {c.verdict}")
+        lines.append(f"report: {run.report_html}  (and {run.report_md.name})")
+        return "\n".join(lines)
+
+    return Report("paper", inputs, payload, status, advice, text=text,
+                  rows=lambda: payload["comparisons"])  # fmt: skip

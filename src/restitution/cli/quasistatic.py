@@ -12,8 +12,6 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.cli._common import (
     body_nu,
-    dumps,
-    envelope,
     geometry_option,
     given,
     note,
@@ -25,6 +23,7 @@ from restitution.cli._common import (
     quiet_option,
     refuse_ignored,
 )
+from restitution.cli.report import Report, emit, format_options, output_format
 from restitution.dynamics.results import UNITS
 from restitution.errors import InputError
 from restitution.quasistatic.hertz import (
@@ -143,7 +142,7 @@ _DISK_ONLY = {"law": "--law", "plane": "--plane"}
     help="Lowest modes driven in Rayleigh's approach (the paper's Fig. 12 uses 1800).",
 )
 @partner_options
-@click.option("--json", "as_json", is_flag=True, help="Print JSON instead of text.")
+@format_options
 @quiet_option
 @click.pass_context
 def quasistatic(
@@ -158,6 +157,7 @@ def quasistatic(
     partner_nu,
     modulus_ratio,
     density_ratio,
+    fmt,
     as_json,
 ):
     """Quasistatic collision (2D Hertz law for the disk, 3D Hertz for the sphere) and
@@ -169,6 +169,7 @@ def quasistatic(
     partner option) two disks meet at relative speed V: their 2D Hertz law with a common
     contact width (docs/two-disks.md), without Rayleigh's estimate.
     """
+    fmt = output_format(fmt, as_json)
     if geometry != DISK.geometry:
         refuse_ignored(
             ctx,
@@ -181,11 +182,11 @@ def quasistatic(
     body = body_nu(nu, plane, geometry)
     partner = partner_from(ctx, nu, plane, geometry)
     if partner is not None:
-        _pair(ctx, body, partner, geometry, v, law, as_json)
+        _pair(ctx, body, partner, geometry, v, law, fmt)
         return
     check_mode_request(body, n_modes, geometry=geometry)
     if geometry == SPHERE.geometry:
-        _sphere(body, v, n_modes, as_json)
+        _sphere(body, v, n_modes, fmt)
         return
     if geometry != DISK.geometry:
         raise InputError(
@@ -195,14 +196,39 @@ def quasistatic(
     out = quasistatic_summary(body, v, law, n_modes)
     if not math.isfinite(out["contact_time"]):
         raise InputError("contact time is not finite; use a smaller --v")
-    if as_json:
-        inputs = {
-            "geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v, "law": law,
-            "modes": n_modes,
-        }  # fmt: skip
-        click.echo(dumps(envelope("quasistatic", inputs, out)))
-        return
-    click.echo(
+    inputs = {
+        "geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v, "law": law,
+        "modes": n_modes,
+    }  # fmt: skip
+    _emit(inputs, out, _disk_text(out, v, law), fmt)
+
+
+def _emit(inputs: dict, out: dict, text: str, fmt: str) -> None:
+    """The answer of one quasistatic collision (the CSV: one row), and the note on Rayleigh's
+    validity with the text."""
+    emit(Report("quasistatic", inputs, out, text=lambda: text, rows=lambda: [_row(out)]), fmt)
+    if fmt == "text" and "rayleigh_energy_fraction" in out:
+        _note_validity(out)
+
+
+def _row(out: dict) -> dict:
+    """The summary as one CSV row: nested entries flattened (``partner_radius_ratio``,
+    ``rayleigh_dominant_n``), the units left to the JSON."""
+    row = {}
+    for key, value in out.items():
+        if key == "units":
+            continue
+        if key == "rayleigh_dominant_mode":
+            row["rayleigh_dominant_n"], row["rayleigh_dominant_l"] = value
+        elif isinstance(value, dict):  # a top-level key of the same name wins (partner_nu)
+            row.update({f"{key}_{k}": v for k, v in value.items() if f"{key}_{k}" not in out})
+        else:
+            row[key] = value
+    return row
+
+
+def _disk_text(out: dict, v: float, law: str) -> str:
+    return (
         f"quasistatic collision, nu = {out['nu']:g}, v = {v:g} c towards the wall, "
         f"law '{law}' (c = {out['law_constant']:.6g})\n"
         f"  max compression  {out['max_compression']:.6g} R   (eq. 61: "
@@ -216,7 +242,6 @@ def quasistatic(
         f"{100 * out['rayleigh_dominant_share']:.1f}% in mode "
         f"(n={out['rayleigh_dominant_mode'][0]}, l={out['rayleigh_dominant_mode'][1]})"
     )
-    _note_validity(out)
 
 
 def pair_quasistatic_summary(nu: float, partner, w: float, law: str = "centre") -> dict:
@@ -257,7 +282,7 @@ def pair_quasistatic_summary(nu: float, partner, w: float, law: str = "centre") 
     }
 
 
-def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, as_json: bool) -> None:
+def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, fmt: str) -> None:
     """``quasistatic --radius-ratio ...``: two disks (:mod:`restitution.quasistatic.hertz_pair`)."""
     if geometry != DISK.geometry:
         raise InputError(
@@ -272,14 +297,11 @@ def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, as_json: b
     out = pair_quasistatic_summary(nu, partner, w, law)
     if not math.isfinite(out["contact_time"]):
         raise InputError("contact time is not finite; use a smaller --v")
-    if as_json:
-        inputs = {"geometry": geometry, "nu": nu, "partner_nu": out["partner_nu"], "v": w,
-                  "law": law, "radius_ratio": partner.radius_ratio,
-                  "modulus_ratio": partner.modulus_ratio,
-                  "density_ratio": partner.density_ratio}  # fmt: skip
-        click.echo(dumps(envelope("quasistatic", inputs, out)))
-        return
-    click.echo(
+    inputs = {"geometry": geometry, "nu": nu, "partner_nu": out["partner_nu"], "v": w,
+              "law": law, "radius_ratio": partner.radius_ratio,
+              "modulus_ratio": partner.modulus_ratio,
+              "density_ratio": partner.density_ratio}  # fmt: skip
+    text = (
         f"quasistatic collision of two disks, nu = {nu:g} and {out['partner_nu']:g}, R2/R1 = "
         f"{partner.radius_ratio:g}, E2/E1 = {partner.modulus_ratio:g}, rho2/rho1 = "
         f"{partner.density_ratio:g}; relative speed v = {w:g} c1, law '{law}'\n"
@@ -290,16 +312,14 @@ def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, as_json: b
         f"  contact time     {out['contact_time']:.6g} R1/c1\n"
         f"  max force        {out['max_force']:.6g} E1 R1"
     )
+    _emit(inputs, out, text, fmt)
 
 
-def _sphere(nu: float, v: float, n_modes: int, as_json: bool) -> None:
+def _sphere(nu: float, v: float, n_modes: int, fmt: str) -> None:
     out = sphere_quasistatic_summary(nu, v, n_modes)
-    if as_json:
-        inputs = {"geometry": SPHERE.geometry, "nu": nu, "v": v, "modes": n_modes}
-        click.echo(dumps(envelope("quasistatic", inputs, out)))
-        return
+    inputs = {"geometry": SPHERE.geometry, "nu": nu, "v": v, "modes": n_modes}
     n, l = out["rayleigh_dominant_mode"]
-    click.echo(
+    text = (
         f"quasistatic collision of a sphere, nu = {nu:g}, v = {v:g} c towards the wall, "
         f"3D Hertz law (E* = {out['E_star']:.6g} E)\n"
         f"  max compression  {out['max_compression']:.6g} R   (contact radius "
@@ -311,7 +331,7 @@ def _sphere(nu: float, v: float, n_modes: int, as_json: bool) -> None:
         f"{out['rayleigh_energy_fraction']:.6g} of (m/2) v^2, "
         f"{100 * out['rayleigh_dominant_share']:.1f}% in mode (l={l}, n={n})"
     )
-    _note_validity(out)
+    _emit(inputs, out, text, fmt)
 
 
 def _note_validity(out: dict) -> None:
