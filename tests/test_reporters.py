@@ -242,3 +242,15 @@ def test_modes_table_is_text_with_a_note(cli, tmp_path):
                          str(tmp_path / "m.csv"))  # fmt: skip
     assert code == 0 and out == "" and "wrote" in err
     assert len(list(csv.DictReader(open(tmp_path / "m.csv")))) == 4
+
+
+def test_a_new_output_format_is_one_registered_function(cli, monkeypatch):
+    """Issue 40: an output format is one function registered with ``@reporter``; every
+    command offers it at once."""
+    from restitution.cli import report
+
+    monkeypatch.setitem(report.REPORTERS, "keys", lambda r: " ".join(sorted(r.document())))
+    code, out, err = cli("modes", "--nu", "0.33", "--count", "3", "--format", "keys")
+    assert code == 0, err
+    assert out.split() == sorted(["version", "command", "units", "inputs", "status", "advice",
+                                  "modes"])  # fmt: skip

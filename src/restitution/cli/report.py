@@ -153,6 +153,19 @@ def output_format(fmt: str | None, as_json: bool, aliases: dict[str, str] | None
     return "json" if as_json else (fmt or "text")
 
 
+class _Formats(click.Choice):
+    """The choice of ``--format``: every registered reporter, read when the option is parsed
+    (a reporter registered after the command was built counts), and a command's ``also``."""
+
+    def __init__(self, also: tuple[str, ...] = ()) -> None:
+        self.also = tuple(also)
+        super().__init__([*REPORTERS, *self.also])
+
+    def convert(self, value, param, ctx):
+        self.choices = [*REPORTERS, *self.also]
+        return super().convert(value, param, ctx)
+
+
 def format_options(func=None, *, also: tuple[str, ...] = (), also_help: str = ""):
     """``--format text|json|csv`` and its alias ``--json``; the command receives ``fmt`` and
     ``as_json`` (resolved by :func:`output_format`).
@@ -169,7 +182,7 @@ def format_options(func=None, *, also: tuple[str, ...] = (), also_help: str = ""
         return click.option(
             "--format",
             "fmt",
-            type=click.Choice([*REPORTERS, *also]),
+            type=_Formats(also),
             default=None,
             help="Print the answer as text (default), JSON or a CSV table." + also_help,
         )(func)
