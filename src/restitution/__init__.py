@@ -31,7 +31,10 @@ from restitution.dynamics.collision import (
 )
 from restitution.dynamics.results import UNITS, CollisionResult
 from restitution.errors import InputError, RestitutionError
+from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.request import LawRequest
+from restitution.laws.serve import LawAnswer, serve
 from restitution.laws.si_law import SILaw, si_law
 from restitution.laws.units import Grain
 from restitution.limits.curves import PointEpsilon, epsilon_at
@@ -45,8 +48,11 @@ __all__ = [
     "CollisionResult",
     "CollisionSettings",
     "EpsilonLaw",
+    "Estimate",
     "Grain",
     "InputError",
+    "LawAnswer",
+    "LawRequest",
     "Material",
     "MaterialError",
     "ModeError",
@@ -61,6 +67,7 @@ __all__ = [
     "epsilon_at",
     "get_modes",
     "law",
+    "serve",
     "si_law",
     "weyl_count",
 ]
