@@ -1,0 +1,118 @@
+"""The text of ``restitution law``'s answer, for people: the grain, the law, a row per speed,
+the constants per type pair, the files written, and (on stderr) what the rows' statuses mean.
+
+The JSON and CSV reports are the answer's own ``to_dict``; this module is only the text reporter.
+"""
+
+from __future__ import annotations
+
+import math
+
+from restitution.status import Status
+
+
+def _constant_text(c) -> str:
+    return f"epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g} ({c.how}; {c.status})"
+
+
+def text_lines(a) -> list[str]:
+    """The answer for people: the grain, the law, a row per speed, the constants, the files."""
+    from restitution.laws.exports import SAME_SIZE_NOTE
+
+    r, s, result = a.request, a.law, a.to_dict()
+    g, other, pair = s.grain, r.partner_grain, s.law.partner
+    lines = [g.describe()]
+    if other is not None:
+        lines.append(f"partner: {other.describe()}")
+    body = g.body if pair is None else f"{g.body} pair (R2/R1 = {pair.radius_ratio:g})"
+    lines.append(
+        f"against {r.against}: {result['against_meaning']}; {body} law "
+        f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']})"
+    )
+    if pair is not None and pair.same_material and r.partner_radius_ratio < 1.0:
+        lines.append(
+            f"the radius ratio {r.partner_radius_ratio:g} is the pair R2/R1 = "
+            f"{pair.radius_ratio:g} seen from the large grain: the same collision"
+        )
+    lines += _damped_rows(a) if a.damped is not None else _rows(a)
+    pairs = a.pairs
+    if pairs is not None and pairs.two_materials:
+        lines.append(
+            f"type 1 = this grain, type 2 = the partner (R2 = {pairs.radius_ratio:g} R1); "
+            "constants per type pair:"
+        )
+        for name, c in (("1-2", pairs.mixed), ("1-1", pairs.same), ("2-2", pairs.same2)):
+            lines.append(f"  {name:>8}: {_constant_text(c)}")
+    elif pairs is not None:
+        lines.append(
+            f"type 1 = the small grain, type 2 = the large one (R2 = {pairs.radius_ratio:g} R1); "
+            f"constants per type pair:"
+        )
+        for name, c in (("1-2", pairs.mixed), ("1-1, 2-2", pairs.same)):
+            lines.append(f"  {name:>8}: {_constant_text(c)}")
+        lines.append(f"  ({SAME_SIZE_NOTE})")
+    elif a.constant is not None:
+        lines.append(f"constant: {_constant_text(a.constant)}")
+    if r.export_dir is not None:
+        lines.append("wrote " + ", ".join(result["exports"]))
+    return lines
+
+
+def _places(err) -> int:
+    """Decimals for two significant digits of the error (slow impacts: 1 - 1e-8)."""
+    return 6 if not err else max(6, 1 - math.floor(math.log10(err)))
+
+
+def _eps(p) -> tuple[str, str]:
+    eps = "-" if p.epsilon is None else f"{p.epsilon:.{_places(p.epsilon_err)}f}"
+    err = "-" if p.epsilon_err is None else f"{p.epsilon_err:.2g}"
+    return eps, err
+
+
+def _rows(a) -> list[str]:
+    """The elastic law's rows."""
+    lines = ["  speed [m/s]        v/c       epsilon      error   status"]
+    for p in a.points:
+        eps, err = _eps(p)
+        lines.append(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}")
+    return lines
+
+
+def _damped_rows(a) -> list[str]:
+    """Rows of a damping grain: both losses, and each alone."""
+    d = a.damped
+    line = f"damping: tau c/R = {d.tau:.6g} +- {d.tau_err:.2g}"
+    if d.relaxation_time_s is not None:
+        line += f" (tau = {d.relaxation_time_s:.4g} s for R = {d.radius_m:g} m)"
+    if d.measured is not None:
+        line += f", from epsilon = {d.measured[0]:g} measured at {d.measured[1]:g} m/s"
+    lines = [
+        line,
+        "  speed [m/s]        v/c       epsilon      error    elastic    viscous   status",
+    ]
+    for p in a.points:
+        eps, err = _eps(p)
+        el = "-" if p.epsilon_elastic is None else f"{p.epsilon_elastic:.6f}"
+        vi = "-" if p.epsilon_viscous is None else f"{p.epsilon_viscous:.6f}"
+        lines.append(
+            f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}  {el:>9}  {vi:>9}   "
+            f"{p.status}"
+        )
+    return lines
+
+
+def status_notes(a) -> list[str]:
+    """What the statuses of the rows mean (stderr, with the text)."""
+    statuses = a.to_dict()["statuses"]
+    notes = {}
+    for p in a.points:
+        if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
+            notes[p.status] = statuses.get(p.status) or getattr(p, "note", "")
+    s = a.damped.si if a.damped is not None else a.law
+    out = []
+    for status, text in notes.items():
+        if status == Status.OUTSIDE:
+            lo, hi = s.computed_range_m_s
+            text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
+        out.append(f"note: {status}: {text}")
+    return out
