@@ -50,7 +50,9 @@ def test_single_mode_matches_the_library(cli):
     d = json.loads(out)
     ms = get_modes(0.33, count=12)
     Q, P = single_mode_state(ms, 2, 0.05 * kinetic_energy(ms, 0.1), 1.0)
-    assert d["epsilon"] == collide(ms, 0.1, 500.0, initial=(Q, P)).epsilon
+    # The command judges the step by epsilon (--step-check, default epsilon): the same call.
+    assert d["inputs"]["step_check"] == "epsilon"
+    assert d["epsilon"] == collide(ms, 0.1, 500.0, initial=(Q, P), step_judge="epsilon").epsilon
     assert d["vibration_energy_before"] == pytest.approx(0.05, rel=1e-12)
     assert d["excited_mode"]["n"] == int(ms.n[2])
 

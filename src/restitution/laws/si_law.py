@@ -307,13 +307,17 @@ class SILaw:
         arr = np.where(np.abs(arr - hi) <= _SAME * hi, hi, arr)
         return float(arr) if np.ndim(v) == 0 else arr
 
-    def epsilon(self, speed_m_s):
-        """epsilon at SI speed(s) ``w`` (m/s); raises outside the law's range."""
-        return self.law.epsilon(self._served_v(self._reduced(speed_m_s)))
+    def epsilon(self, speed_m_s, *, outside: str = "raise"):
+        """epsilon at SI speed(s) ``w`` (m/s).
 
-    def epsilon_err(self, speed_m_s):
-        """Error of :meth:`epsilon` at ``w`` (m/s)."""
-        return self.law.epsilon_err(self._served_v(self._reduced(speed_m_s)))
+        ``outside`` is the law's (:meth:`EpsilonLaw.epsilon`): outside the law's range raise
+        ``InputError`` (``"raise"``), or return ``nan`` (``"nan"``; ``"warn"`` warns too).
+        """
+        return self.law.epsilon(self._served_v(self._reduced(speed_m_s)), outside=outside)
+
+    def epsilon_err(self, speed_m_s, *, outside: str = "raise"):
+        """Error of :meth:`epsilon` at ``w`` (m/s); ``outside`` as there."""
+        return self.law.epsilon_err(self._served_v(self._reduced(speed_m_s)), outside=outside)
 
     def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon, its error and its status at every speed (m/s); never raises for range."""
