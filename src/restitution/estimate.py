@@ -22,8 +22,11 @@ __all__ = ["ERROR_MEANING", "Estimate", "estimate_of"]
 ERROR_MEANING = (
     "one standard deviation of the estimate as its route states it: for a modal extrapolation "
     "the fits' error plus the spread between the two orders of the limits and between checks; "
-    "for the FEM the Richardson and fit errors; for the low-speed theories their model band; "
-    "between law points the larger neighbouring error plus the interpolation's"
+    "for the FEM the Richardson and fit errors; for the low-speed theories their model band "
+    "plus what PCHIP between neighbouring low-speed points strays; between a law's points the "
+    "neighbouring errors (interpolated) joined in quadrature with the interpolation's "
+    "estimate, the larger leave-one-out error of the interval's ends times 2 sqrt(s (1 - s)): "
+    "an upper estimate (PCHIP at twice the spacing), not a standard deviation"
 )
 """What an :class:`Estimate`'s error covers (the routes' own documents say how it is made)."""
 

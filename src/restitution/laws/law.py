@@ -44,6 +44,7 @@ import os
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from importlib import resources
 from pathlib import Path
 
@@ -283,6 +284,21 @@ def _check_path(path) -> None:
         )
 
 
+def leave_one_out(v, loss) -> np.ndarray:
+    """How far PCHIP through the other points (in ``v``, as a law interpolates) strays from each
+    interior point, shape (K,); the end points take their neighbour's. It is the error of twice
+    the spacing, an upper estimate of the interpolation's between the points."""
+    v, loss = np.asarray(v, dtype=float), np.asarray(loss, dtype=float)
+    if v.size < 4:
+        return np.zeros(v.size)
+    out = np.empty(v.size)
+    for j in range(1, v.size - 1):
+        rest = np.delete(np.arange(v.size), j)
+        out[j] = abs(float(PchipInterpolator(v[rest], loss[rest])(v[j])) - loss[j])
+    out[0], out[-1] = out[1], out[-2]
+    return out
+
+
 @dataclass(frozen=True)
 class LawPoint:
     """One computed point of a law.
@@ -502,8 +518,45 @@ class EpsilonLaw:
         return self._evaluate(self.epsilon_points, v, outside)
 
     def epsilon_err(self, v, *, outside: str = "raise"):
-        """Error of :meth:`epsilon` at ``v`` (the points' errors, interpolated)."""
-        return self._evaluate(self.epsilon_err_points, v, outside)
+        """Error of :meth:`epsilon` at ``v``: the points' errors, interpolated, joined in
+        quadrature with :meth:`interpolation_err` (zero at the computed points)."""
+        point = np.abs(self._evaluate(self.epsilon_err_points, v, outside))
+        # Outside speeds were handled (raised, warned) by the line above: nan here.
+        out = np.hypot(point, self.interpolation_err(v, outside="nan"))
+        return float(out) if np.ndim(v) == 0 else out
+
+    @cached_property
+    def _leave_one_out(self) -> np.ndarray:
+        return leave_one_out(self.v, self.epsilon_points)
+
+    def interpolation_err(self, v, *, outside: str = "raise"):
+        """What PCHIP between the computed points may miss at ``v`` (units of epsilon).
+
+        PCHIP makes no extremum between two points, and epsilon(v) turns where the contact
+        time beats against the low modes. The estimate is the larger leave-one-out error of
+        the interval's two ends (how far PCHIP through the other points strays from each: the
+        error at twice the spacing) times ``2 sqrt(s (1 - s))``, ``s`` the position in the
+        interval (zero at a computed point; steep beside it, where a wrong slope at the point
+        makes the miss grow linearly). Between two low-speed points it is zero: their errors
+        hold what their intervals stray (:func:`restitution.laws.production.low_speed_points`).
+
+        Measured on 300 log-periodic oscillations ``a sin(k ln v + phi)`` (``k`` 2-15) on the
+        sphere's grid (26 speeds a factor 1.2 apart): the estimate exceeds PCHIP's miss at
+        98.5 % of the speeds between points on average, at 84 % in the worst case. It is an
+        upper estimate, not a standard deviation.
+        """
+        arr = _speeds(v)
+        bad = self._check(arr, outside)
+        x = np.where(bad, self.v[0], arr)
+        j = np.clip(np.searchsorted(self.v, x, side="right") - 1, 0, self.v.size - 2)
+        lo, hi = self.v[j], self.v[j + 1]
+        s = np.clip((x - lo) / (hi - lo), 0.0, 1.0)
+        loo = np.maximum(self._leave_one_out[j], self._leave_one_out[j + 1])
+        quasi = self.quasistatic
+        modal_end = ~(quasi[j] & quasi[j + 1])
+        shape = 2.0 * np.sqrt(s * (1.0 - s))
+        out = np.where(bad, np.nan, np.where(modal_end, loo * shape, 0.0))
+        return float(out) if np.ndim(v) == 0 else out
 
     def checked(self, v, *, outside: str = "raise"):
         """Whether both computed points around ``v`` passed their checks (bool, or array)."""

@@ -30,10 +30,9 @@ import argparse
 import time
 from pathlib import Path
 
-import numpy as np
-
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
+from restitution.laws.law import leave_one_out
 from restitution.limits.run_options import Executor, Progress, progress_of
 from restitution.limits.sweep import SweepSettings, pair_settings, planned
 
@@ -225,23 +224,6 @@ def _rayleigh_points(
         "contact_time_spread": CONTACT_TIME_SPREAD,
     }
     return out, parameters
-
-
-def leave_one_out(v, loss) -> np.ndarray:
-    """How far PCHIP through the other points (in ``v``, as a law interpolates) strays from each
-    interior point, shape (K,); the end points take their neighbour's. It is the error of twice
-    the spacing, an upper estimate of the interpolation's between the points."""
-    from scipy.interpolate import PchipInterpolator
-
-    v, loss = np.asarray(v, dtype=float), np.asarray(loss, dtype=float)
-    if v.size < 4:
-        return np.zeros(v.size)
-    out = np.empty(v.size)
-    for j in range(1, v.size - 1):
-        rest = np.delete(np.arange(v.size), j)
-        out[j] = abs(float(PchipInterpolator(v[rest], loss[rest])(v[j])) - loss[j])
-    out[0], out[-1] = out[1], out[-2]
-    return out
 
 
 def _slow_modal_points(

@@ -1,0 +1,182 @@
+"""Direct computations between a law's computed points: what its served values there miss.
+
+A law serves PCHIP through its computed points, which cannot make an extremum between two of
+them; where epsilon(v) turns (the contact time beating against the low modes) the served value
+may miss. This module computes epsilon directly, with the production settings of the
+neighbouring points (the same sweep, store and extrapolation as the law's own points), at
+speeds between the computed ones, and compares: the served value and its stated error against
+the direct value and its own.
+
+``python -m restitution.laws.between --geometry sphere --nu 0.3 --per-interval 2 --out F``
+writes the comparison (JSON, whole or not at all); ``tests/test_between.py`` reads the stored
+comparisons and checks the served errors' coverage, ``-m slow`` recomputes a sample.
+
+Units: speeds in ``c`` (towards the wall), as the law's ``v``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import os
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from restitution.errors import InputError
+from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.production import production_groups
+from restitution.limits.run_options import Progress, progress_of
+from restitution.limits.sweep import SweepSettings
+
+__all__ = ["between_speeds", "compare", "coverage", "direct_points", "group_of", "main"]
+
+
+def _group_at(geometry: str, v: float) -> SweepSettings | None:
+    """The production group that computed the speed ``v`` (to rounding), or ``None``."""
+    for group in production_groups(geometry):
+        if np.any(np.isclose(group.velocities, v, rtol=1e-9, atol=0.0)):
+            return group
+    return None
+
+
+def group_of(geometry: str, v: float, points) -> SweepSettings:
+    """The production sweep for a speed ``v`` between two of the computed speeds ``points``:
+    the group of the neighbour with the larger mode window (the groups' windows grow towards
+    slow speeds, where fewer modes are not yet asymptotic), at the single speed ``v``.
+
+    Raises
+    ------
+    InputError
+        When ``v`` is not strictly between two of ``points`` computed by production groups.
+    """
+    pts = np.asarray(points, dtype=float)
+    j = int(np.searchsorted(pts, v))
+    if not (0 < j < pts.size) or v in pts:
+        raise InputError(
+            f"v = {v:g} c is not strictly between two computed speeds of the {geometry} law "
+            f"({pts[0]:g} ... {pts[-1]:g}); choose a speed between two of them"
+        )
+    groups = [g for g in (_group_at(geometry, pts[j - 1]), _group_at(geometry, pts[j])) if g]
+    if not groups:
+        raise InputError(f"no production group computed the neighbours of v = {v:g} c")
+    group = max(groups, key=lambda g: max(g.n_modes))
+    return replace(group, velocities=(float(v),))
+
+
+def between_speeds(law_: EpsilonLaw, per_interval: int, lo: float = 0.0, hi: float = 1.0):
+    """``per_interval`` speeds evenly spaced in ``log v`` inside every interval of the law's
+    modal points within ``[lo, hi]`` (the points themselves excluded)."""
+    if not (isinstance(per_interval, int) and per_interval >= 1):
+        raise InputError(f"per_interval must be an integer >= 1, got {per_interval!r}")
+    v = law_.v[~law_.quasistatic]
+    out = []
+    for a, b in zip(v[:-1], v[1:], strict=True):
+        if a >= lo and b <= hi:
+            inner = np.geomspace(a, b, per_interval + 2)[1:-1]
+            out.extend(float(f"{x:.6g}") for x in inner)
+    return out
+
+
+def direct_points(geometry, nu, speeds, *, store=None, progress: Progress | bool = False):
+    """epsilon at each speed by the production route (both limits, the settings of
+    :func:`group_of` against the shipped law's modal speeds), one
+    :class:`~restitution.limits.curves.PointEpsilon` a speed."""
+    from restitution.limits.curves import epsilon_at
+
+    shipped = law(nu, geometry=geometry)
+    points = shipped.v[~shipped.quasistatic]
+    meter = progress_of(progress)
+    out = []
+    for v in meter.track(list(speeds), f"direct points, {geometry} nu = {nu:g}"):
+        settings = group_of(geometry, v, points)
+        out.append(epsilon_at(nu, v, settings=settings, store=store))
+    return out
+
+
+def compare(law_: EpsilonLaw, points) -> list[dict]:
+    """The served value and error against each direct point.
+
+    ``z`` is ``|served - direct| / served_err`` (the promise: the served error covers the
+    truth); ``z_joint`` divides by ``sqrt(served_err^2 + direct_err^2)`` (the direct value has
+    an error of its own).
+    """
+    rows = []
+    for p in points:
+        served = float(law_.epsilon(p.v))
+        err = float(law_.epsilon_err(p.v))
+        diff = abs(served - p.epsilon)
+        rows.append(
+            {
+                "v": p.v,
+                "served": served,
+                "served_err": err,
+                "direct": p.epsilon,
+                "direct_err": p.epsilon_err,
+                "direct_asymptotic_ok": bool(p.asymptotic_ok),
+                "z": diff / err,
+                "z_joint": diff / float(np.hypot(err, p.epsilon_err)),
+            }
+        )
+    return rows
+
+
+def coverage(rows, key: str = "z") -> dict:
+    """The fractions of rows within one and two stated errors, and the largest ``key``."""
+    z = np.array([r[key] for r in rows], dtype=float)
+    return {
+        "n": int(z.size),
+        "within_1": float(np.mean(z <= 1.0)) if z.size else float("nan"),
+        "within_2": float(np.mean(z <= 2.0)) if z.size else float("nan"),
+        "largest": float(z.max()) if z.size else float("nan"),
+    }
+
+
+def _write(path: Path, data: dict) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    tmp.write_text(json.dumps(data, indent=1) + "\n")
+    os.replace(tmp, path)
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(
+        prog="python -m restitution.laws.between", description=__doc__.split("\n\n")[0]
+    )
+    parser.add_argument("--geometry", default="sphere")
+    parser.add_argument("--nu", type=float, required=True)
+    parser.add_argument("--speeds", type=float, nargs="*", help="speeds (c); else --per-interval")
+    parser.add_argument("--per-interval", type=int, default=1)
+    parser.add_argument("--lo", type=float, default=0.0)
+    parser.add_argument("--hi", type=float, default=1.0)
+    parser.add_argument("--store", default=None)
+    parser.add_argument("--out", type=Path, required=True)
+    args = parser.parse_args(argv)
+    served = law(args.nu, geometry=args.geometry)
+    speeds = args.speeds or between_speeds(served, args.per_interval, args.lo, args.hi)
+    points = direct_points(args.geometry, args.nu, speeds, store=args.store, progress=True)
+    rows = compare(served, points)
+    _write(
+        args.out,
+        {
+            "what": "epsilon computed directly (production route: sweep, store, both limits) "
+            "at speeds between a shipped law's computed points, against the law's served value "
+            "and error there",
+            "source": "this package, python -m restitution.laws.between (the direct values are "
+            "regression values of this package's production route, not of an independent code)",
+            "geometry": args.geometry,
+            "nu": args.nu,
+            "law_code_version": served.metadata.get("code_version"),
+            "date": datetime.date.today().isoformat(),
+            "coverage": coverage(rows),
+            "coverage_joint": coverage(rows, "z_joint"),
+            "rows": rows,
+        },
+    )
+    print(json.dumps({"coverage": coverage(rows), "coverage_joint": coverage(rows, "z_joint")}))
+
+
+if __name__ == "__main__":
+    main()
