@@ -63,15 +63,19 @@ def test_vanishing_damping_is_the_elastic_law(cylinder):
         assert p.epsilon == pytest.approx(e.epsilon, abs=1e-9)
 
 
-def test_below_the_elastic_law_only_the_viscous_part(cylinder):
+def test_below_the_elastic_law_its_low_speed_route_continues(cylinder):
     """The cylinder's elastic law reaches 1e-7 c (0.54 mm/s) with its low-speed points: at
-    1 cm/s both parts are given; below the law only the viscous one."""
+    1 cm/s both parts are given; below the law's slowest point (0.1 mm/s) the elastic part is
+    the same route's, computed at that speed (issue 45), and both parts are given again."""
     d = damped_law(cylinder, measured_epsilon=0.9, measured_speed_m_s=5.0)
     slow, below = d.points([0.01, 1e-4])
     assert slow.status == "quasistatic" and slow.epsilon_elastic > 0.99
     assert slow.epsilon < min(slow.epsilon_elastic, slow.epsilon_viscous)
-    assert below.epsilon is None and below.epsilon_elastic is None
-    assert below.status == "outside"
+    elastic = cylinder.points([1e-4])[0]
+    assert below.status == elastic.status == "quasistatic"
+    assert "computed at this speed" in elastic.note
+    assert below.epsilon_elastic == elastic.epsilon
+    assert below.epsilon < min(below.epsilon_elastic, below.epsilon_viscous)
     assert 0.9 < below.epsilon_viscous < 1.0  # slower: less viscous loss than at the datum
 
 

@@ -383,12 +383,13 @@ def test_lammps_takes_the_constant_of_each_type_pair(laws, tmp_path):
 def test_law_is_quiet_after_the_command_and_outside_says_the_served_speeds(cli):
     """Issue 28: ``law ... --quiet`` was refused and ``-q law`` still printed notes; an
     ``outside`` row now says which speeds in m/s the law serves (steel cylinders on the wall:
-    the disk laws' 1e-7 <= v/c <= 0.3 times c = 5421.93 m/s)."""
+    the disk laws' 1e-7 <= v/c <= 0.3 times c = 5421.93 m/s). Above them (5000 m/s) there is
+    no value, and the exit status says so (1, issue 45)."""
     args = ("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--geometry", "cylinder",
-            "--against", "wall", "--speed", "0.0001", "1")  # fmt: skip
+            "--against", "wall", "--speed", "5000", "1")  # fmt: skip
     for quiet in ((*args, "--quiet"), ("-q", *args)):
         code, out, err = cli(*quiet)
-        assert code == 0 and err == "" and "outside" in out
+        assert code == 1 and err == "" and "outside" in out
     code, out, err = cli(*args)
     c = (210e9 / ((1 - 0.3**2) * 7850)) ** 0.5
     assert f"the law serves {1e-7 * c:.4g} m/s <= w <= {0.3 * c:.4g} m/s" in err

@@ -252,5 +252,5 @@ def test_a_new_output_format_is_one_registered_function(cli, monkeypatch):
     monkeypatch.setitem(report.REPORTERS, "keys", lambda r: " ".join(sorted(r.document())))
     code, out, err = cli("modes", "--nu", "0.33", "--count", "3", "--format", "keys")
     assert code == 0, err
-    assert out.split() == sorted(["version", "command", "units", "inputs", "status", "advice",
-                                  "modes"])  # fmt: skip
+    assert out.split() == sorted(["version", "command", "units", "error_meaning", "inputs",
+                                  "status", "advice", "modes"])  # fmt: skip

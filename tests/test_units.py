@@ -113,9 +113,15 @@ def test_rubber_like_cylinder_in_the_computed_range(capsys):
 
 
 def test_speed_above_the_range_has_no_value(capsys):
-    out = run_json(capsys, [*RUBBER, "--against", "wall", "--speed", "100"])
-    (p,) = out["points"]
+    # Issue 45: the exit status says that a requested speed got no value (1, as for failed
+    # collisions of a sweep); the JSON is written whole before it.
+    with pytest.raises(SystemExit) as info:
+        main(["law", *RUBBER, "--against", "wall", "--speed", "100", "--json"])
+    assert info.value.code == 1
+    out = capsys.readouterr()
+    (p,) = json.loads(out.out)["points"]
     assert p["status"] == "outside" and p["epsilon"] is None
+    assert "no value at 1 of the requested speeds" in out.err
 
 
 def test_steel_cylinder_is_interpolated_between_its_grid_neighbours(capsys):
@@ -154,10 +160,10 @@ def test_nu_beyond_the_grid_is_refused_with_the_command_that_computes_it(capsys)
 def test_python_api_matches_the_command(capsys):
     s = si_law(E=63e9, nu=0.2481, rho=2500, geometry="cylinder", against="grain")
     out = run_json(capsys, [*GLASS, "--against", "grain", "--speed", "2", "26", "300"])
-    # The command's JSON is the envelope (version, command, units, inputs, status, advice) and
-    # then exactly what the Python API gives.
+    # The command's JSON is the envelope (version, command, units, error_meaning, inputs, status,
+    # advice) and then exactly what the Python API gives.
     payload = json.loads(json.dumps(s.to_dict([2, 26, 300])))
-    head = ("version", "command", "units", "inputs", "status", "advice")
+    head = ("version", "command", "units", "error_meaning", "inputs", "status", "advice")
     assert list(out)[: len(head)] == list(head)
     assert {k: v for k, v in out.items() if k not in head} == payload
     assert_allclose([p["epsilon"] for p in out["points"]], s.epsilon([2, 26, 300]))
@@ -184,12 +190,18 @@ def test_docstring_examples():
 
 
 def test_text_output_names_partner_and_status(capsys):
-    main(["law", *RUBBER, "--against", "wall", "--speed", "0.000001", "5"])
+    with pytest.raises(SystemExit) as info:
+        main(["law", *RUBBER, "--against", "wall", "--speed", "0.000001", "5", "100"])
+    assert info.value.code == 1  # a requested speed got no value
     captured = capsys.readouterr()
     assert "against wall: a rigid flat wall" in captured.out
     assert "c = 76.55" in captured.out
-    # 1 um/s is v = 1.3e-8 c, below the law's lowest speed 1e-7 c: said, with no number.
-    assert "outside" in captured.out
+    # 1 um/s is v = 1.3e-8 c, below the law's lowest speed 1e-7 c (a low-speed point): the
+    # low-speed route answers there (issue 45); 100 m/s is v = 1.3 c, above it: said, with no
+    # number.
+    rows = {line.split()[0]: line for line in captured.out.splitlines() if line[:2] == "  "}
+    assert rows["1e-06"].split()[-1] == "quasistatic"
+    assert rows["100"].split()[-1] == "outside"
     assert "note: outside:" in captured.err
 
 

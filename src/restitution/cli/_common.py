@@ -18,6 +18,7 @@ from restitution.atomic import check_output_dir, check_output_file, writing  # n
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, geometries, kinds
 from restitution.bodies.material import Material
 from restitution.errors import InputError, OutputError
+from restitution.estimate import ERROR_MEANING
 from restitution.jsonable import finite_tree, json_default
 from restitution.status import Status
 
@@ -278,12 +279,14 @@ def envelope(
     ``inputs["geometry"]``, the disk's :data:`restitution.dynamics.results.UNITS` if none:
     :attr:`restitution.bodies.kinds.BodyKind.units`), ``inputs`` (every option that determines the
     result), ``status`` (``"ok"`` or what is wrong, :class:`restitution.status.Status`) and
-    ``advice`` (what to do when the status is not ``"ok"``).
+    ``advice`` (what to do when the status is not ``"ok"``). ``error_meaning`` says what every
+    error of an epsilon (``epsilon_err``) covers (:data:`restitution.estimate.ERROR_MEANING`).
     """
     head = {
         "version": __version__,
         "command": command,
         "units": dict(units or body_kind(inputs.get("geometry", DEFAULT_GEOMETRY)).units),
+        "error_meaning": ERROR_MEANING,
         "inputs": inputs,
         "status": status,
         "advice": advice,

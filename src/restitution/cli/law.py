@@ -7,12 +7,13 @@ The options are the request's fields (their metadata holds names and help).
 
 from __future__ import annotations
 
+import sys
 from dataclasses import MISSING, fields
 from pathlib import Path
 
 import click
 
-from restitution.cli._common import note, quiet, quiet_option
+from restitution.cli._common import EXIT_FAILED_POINTS, note, quiet, quiet_option
 from restitution.cli.epsilon import _ListCommand
 from restitution.cli.law_text import status_notes, text_lines
 from restitution.cli.report import Report, emit, format_options, output_format
@@ -92,3 +93,9 @@ def law(fmt, as_json, **options):
     if fmt == "text":
         for line in status_notes(answer):
             note(line)
+    missing = [p.speed_m_s for p in answer.points if p.epsilon is None]
+    if missing:
+        if fmt != "text":  # the text says it in its notes
+            note(f"no value at {len(missing)} of the requested speeds ({missing[0]:g} m/s ...): "
+                 "outside the law's range (their status and note say which range)")  # fmt: skip
+        sys.exit(EXIT_FAILED_POINTS)

@@ -125,7 +125,7 @@ def serve(
             "constants per type pair of damping grains are not computed (tau c / R differs for "
             "the two sizes); drop --reference-speed/--maxwell-temperature, or the damping"
         )
-    points = (damped or s).points(list(r.speeds))
+    points = damped.points(list(r.speeds)) if damped else s.points(list(r.speeds), note=note)
     status, advice = overall_status(points)
     if damped is not None and (r.constants or r.export_dir is not None):
         # Constants, tables and snippets of the damped law: the sum at every computed speed.

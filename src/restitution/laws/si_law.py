@@ -17,6 +17,7 @@ Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2
 
 from __future__ import annotations
 
+import functools
 import os
 from dataclasses import dataclass
 
@@ -120,12 +121,26 @@ class SIPoint:
     status: str
     note: str = ""
 
+    @property
+    def epsilon_range(self) -> tuple[float, float] | None:
+        """``(epsilon - err, epsilon + err)`` cut to ``[0, 1]``: an elastic grain at rest before
+        the impact only loses energy, so epsilon <= 1 whatever the error; ``None`` outside."""
+        if self.epsilon is None or self.epsilon_err is None:
+            return None
+        return (
+            max(0.0, self.epsilon - self.epsilon_err),
+            min(1.0, self.epsilon + self.epsilon_err),
+        )
+
     def to_dict(self) -> dict:
+        rng = self.epsilon_range
         return {
             "speed_m_s": self.speed_m_s,
             "v_over_c": self.v_over_c,
             "epsilon": self.epsilon,
             "epsilon_err": self.epsilon_err,
+            "epsilon_min": None if rng is None else rng[0],
+            "epsilon_max": None if rng is None else rng[1],
             "status": self.status,
             "note": self.note,
         }
@@ -134,6 +149,32 @@ class SIPoint:
     def estimate(self) -> Estimate:
         """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
         return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
+
+
+_CUT_AT_ONE = (
+    "epsilon + error exceeds 1: an elastic grain at rest before the impact only loses energy, "
+    "so epsilon <= 1 and epsilon_max is cut there"
+)
+
+
+BELOW_BUDGET_S = 300.0
+"""Longest estimated time for the speeds below a law computed on demand by its low-speed
+route; beyond it they stay ``outside`` (ask for fewer speeds)."""
+
+
+@functools.lru_cache(maxsize=4096)
+def _low_speed_at(geometry: str, nu: float, partner, v: float) -> tuple[float, float]:
+    """epsilon and its error at ``v`` (``c``) by the low-speed route of ``geometry`` (with
+    ``partner``), one speed alone (so without an interpolation term); remembered."""
+    from restitution.laws.production import low_speed_points
+
+    (record,), _ = low_speed_points(nu, [v], geometry=geometry, partner=partner)
+    return float(record["epsilon"]), float(record["epsilon_err"])
+
+
+def _cut(note: str, eps: float, err: float) -> str:
+    """``note``, saying so when ``epsilon + err`` exceeds 1."""
+    return note if eps + err <= 1.0 else (note + "; " if note else "") + _CUT_AT_ONE
 
 
 def _quasistatic_note(law) -> str:
@@ -313,29 +354,101 @@ class SILaw:
         ``outside`` is the law's (:meth:`EpsilonLaw.epsilon`): outside the law's range raise
         ``InputError`` (``"raise"``), or return ``nan`` (``"nan"``; ``"warn"`` warns too).
         """
-        return self.law.epsilon(self._served_v(self._reduced(speed_m_s)), outside=outside)
+        return self.law.epsilon(self._inside(speed_m_s, outside), outside=outside)
 
     def epsilon_err(self, speed_m_s, *, outside: str = "raise"):
         """Error of :meth:`epsilon` at ``w`` (m/s); ``outside`` as there."""
-        return self.law.epsilon_err(self._served_v(self._reduced(speed_m_s)), outside=outside)
+        return self.law.epsilon_err(self._inside(speed_m_s, outside), outside=outside)
 
-    def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
-        """epsilon, its error and its status at every speed (m/s); never raises for range."""
+    def _inside(self, speed_m_s, outside: str):
+        """The reduced speeds of ``speed_m_s``; with ``outside="raise"`` a speed outside the
+        law's range is refused here, in m/s (the law would say it in units of ``c``)."""
+        v = self._served_v(self._reduced(speed_m_s))
+        if outside == "raise":
+            lo, hi = self.law.valid_range
+            arr = np.atleast_1d(v)
+            bad = ~((arr >= lo) & (arr <= hi))
+            if np.any(bad):
+                w = np.atleast_1d(np.asarray(speed_m_s, dtype=float))
+                w = np.broadcast_to(w, arr.shape)[bad]
+                slo, shi = self.speed_range_m_s
+                raise InputError(
+                    f"speed(s) {[float(f'{x:.4g}') for x in np.unique(w)[:5]]} m/s outside the "
+                    f"{slo:.4g} m/s <= w <= {shi:.4g} m/s this law serves; it does not "
+                    "extrapolate (pass outside='nan' for nan there, or see each speed's status "
+                    "with .points(speeds))"
+                )
+        return v
+
+    def _route(self):
+        """``(name, nu, partner)`` of the low-speed route that continues this law below its
+        slowest point (the law's own, at the grain's exact Poisson number), or ``None``."""
+        from restitution.laws.production import low_speed_route
+
+        partner = self.law.partner
+        name = low_speed_route(self.law.geometry, partner)
+        if name is None:
+            return None
+        nu = float(self.law.nu) if partner is not None else float(self.grain.law_nu)
+        return name, nu, partner
+
+    def _below(self, speeds: list[float], note) -> dict[float, tuple[float, float]]:
+        """epsilon and its error at speeds (``c``) below the law's slowest point, each computed
+        now by the law's low-speed route (the model the law's slowest points come from; one
+        speed at a time, so no interpolation). Skipped (``{}``) beyond :data:`BELOW_BUDGET_S`."""
+        route = self._route()
+        # Only a law whose slowest point is the route's own continues below it: there the route
+        # is known to hold (a law of collisions alone stops at its slowest collision).
+        if route is None or not speeds or not bool(self.law.quasistatic[0]):
+            return {}
+        name, nu, partner = route
+        plan = body_kind(self.law.geometry).production
+        each = getattr(plan, "seconds_per_low_point", 1.0) or 1.0
+        estimate = (len(speeds) + 1) * 4.0 * each
+        if estimate > BELOW_BUDGET_S:
+            return {}
+        if estimate > 5.0 and note is not None:
+            note(f"computing {len(speeds)} speed(s) below the law's slowest point by its "
+                 f"low-speed route ({name}; about {estimate:.0f} s)")  # fmt: skip
+        return {v: _low_speed_at(self.law.geometry, nu, partner, v) for v in speeds}
+
+    def points(self, speeds_m_s, *, note=None) -> tuple[SIPoint, ...]:
+        """epsilon, its error and its status at every speed (m/s); never raises for range.
+
+        Below the law's slowest point, when that point is from the law's low-speed route, a
+        speed is computed now by that route (status ``quasistatic``; a few seconds a speed,
+        ``note(text)`` told first when it takes longer); above the fastest point, and below a
+        law of collisions alone, it is ``outside``.
+        """
+        ws = np.atleast_1d(real_array(speeds_m_s, "speeds_m_s", "(m/s)"))
+        vs = [float(self._reduced(float(w))) for w in ws]
+        lowest = float(self.law.v[0])
+        below = self._below(sorted({v for v in vs if v < lowest * (1.0 - _SAME)}), note)
         out = []
-        for w in np.atleast_1d(real_array(speeds_m_s, "speeds_m_s", "(m/s)")):
-            v = float(self._reduced(float(w)))
-            status, note = _status(self.law, v)
+        for w, v in zip(ws, vs, strict=True):
+            status, text = _status(self.law, v)
             eps = err = None
+            if v in below:
+                eps, err = below[v]
+                status = Status.QUASISTATIC
+                text = (
+                    _quasistatic_note(self.law) + "; computed at this speed by the route of "
+                    "the law's slowest points (below them)"
+                )
+                out.append(SIPoint(float(w), v, eps, err, status, _cut(text, eps, err)))
+                continue
             if status != Status.OUTSIDE:
                 try:
                     eps = float(self.law.epsilon(self._served_v(v)))
                     err = float(self.law.epsilon_err(self._served_v(v)))
                 except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
-                    status, note = Status.OUTSIDE, str(exc)
+                    status, text = Status.OUTSIDE, str(exc)
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
-                note += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
-            out.append(SIPoint(float(w), v, eps, err, status, note))
+                text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
+            else:
+                text = _cut(text, eps, err)
+            out.append(SIPoint(float(w), v, eps, err, status, text))
         return tuple(out)
 
     def to_dict(self, speeds_m_s) -> dict:
