@@ -254,6 +254,7 @@ def _modal_limit(nu: float, v: float, alpha: float, counts):
     return fit, eps, err
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_fem_agrees_with_the_modal_route_at_a_soft_wall():
     # nu = 0.3, v = 0.1, alpha delta_max = 80 (alpha = 303.3). FEM levels 0, 1 (3137, 12417
     # dofs): epsilon 0.9931166, 0.9931130 (level 2: 0.9931126); modal, N = 400, 800, 1600, 3200

@@ -47,6 +47,7 @@ def test_flux_speeds_follow_the_flux_density(modes):
     assert stats.kstest(v, cdf).pvalue > 0.01
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_detailed_balance_on_a_thermal_ensemble(modes):
     """400 collisions (N = 4 modes, about 15 s). Measured: Bowker p = 0.82, z = -0.77, -0.65."""
     T = float(kinetic_energy(modes, V_TH))

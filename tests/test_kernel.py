@@ -109,6 +109,7 @@ def _split_runs(monkeypatch, modes, v, alpha, **kw):
     return results, parts
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_two_threads_give_one_threads_collision_bit_for_bit(monkeypatch):
     # One large collision runs on two threads, one group of orders each, meeting at every
     # wall evaluation; the grouping depends on the mode set only, so the bits are the same.

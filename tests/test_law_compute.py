@@ -77,6 +77,7 @@ def test_a_shipped_nu_is_not_computed(cli, tiny, monkeypatch):
     assert code == 0 and "a shipped law serves nu = 0.33; nothing to compute" in err
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_a_computation_beyond_the_time_bound_is_refused_unless_forced(cli, tiny, monkeypatch):
     disk = KINDS["disk"]
     slow = replace(disk.production, seconds_per_collision=1e4)
@@ -123,6 +124,7 @@ def test_plan_counts_the_production_collisions():
         compute.plan(0.27, "sphere", Partner(radius_ratio=1.4))
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_curve_production_writes_the_law_with_the_production_groups(cli, tiny, monkeypatch):
     """``curve --production`` (the command a refusal names) runs the production groups (here the
     tiny stand-in) through the store and writes the law as JSON, CSV and table; a second run

@@ -21,6 +21,7 @@ def small():
     return get_modes(0.33, count=40)
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_a_tolerance_too_tight_is_blamed_on_itself_not_on_alpha(small):
     """A tolerance the step bound cannot meet once said "lower alpha" up front, or "reduce dt or
     energy_tol" after the run: both must name energy_tol and advise raising it."""
@@ -46,6 +47,7 @@ def test_a_fixed_step_beyond_the_step_bound_advises_a_larger_step(small):
         collide(small, 0.1, 500.0, dt=1e-4, max_steps=1000)
 
 
+@pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)
 def test_thermal_samples_that_all_failed_exit_non_zero(cli):
     code, out, err = cli(
         "collide", "--v", "0.1", "--modes", "40", "--excite", "thermal", "--temperature", "1e3",
