@@ -82,3 +82,22 @@ def test_below_the_slowest_point_the_low_speed_route_answers(steel_sphere):
     assert 1.0 - slow.epsilon < 1.0 - at.epsilon  # slower: less loss
     (again,), _ = low_speed_points(0.3, [at.v_over_c], geometry="sphere")
     assert abs(again["epsilon"] - at.epsilon) <= at.epsilon_err
+
+
+def test_the_advice_below_a_law_works_when_followed():
+    """The law in units of c, asked below its slowest point, names the call of its low-speed
+    route (issue 45: it named `restitution epsilon --geometry sphere --v 9.67e-7`, which runs
+    collisions for minutes where the route answers in a second); the call, made as written,
+    answers at that speed."""
+    from restitution.laws.law import law
+
+    served = law(0.3, geometry="sphere")
+    with pytest.raises(InputError) as info:
+        served.epsilon(1e-7)
+    call = re.search(r"(restitution\.laws\.production\.low_speed_points\(.*?\))(?=, or)",
+                     str(info.value))  # fmt: skip
+    assert call is not None, str(info.value)
+    import restitution.laws.production  # noqa: F401 (the call's module)
+
+    records, _ = eval(call.group(1), {"restitution": restitution, "v": 1e-7})  # noqa: S307
+    assert records[0]["v"] == 1e-7 and 1.0 - records[0]["epsilon"] < 1e-7

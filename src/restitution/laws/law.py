@@ -482,16 +482,26 @@ class EpsilonLaw:
                 f"{lo:g} <= v <= {hi:g} (units of c, {meaning}) of the "
                 f"{self.body_name} law for nu = {self.nu:g}"
             )
-            option = body_kind(self.geometry).option
-            flag = f" {option}" if option else ""
             if outside == "raise":
-                raise InputError(
-                    text + "; the law does not extrapolate (compute further speeds with "
-                    f"`restitution epsilon{flag} --v ...`, or pass outside='nan')"
-                )
+                raise InputError(text + "; the law does not extrapolate (" + self._beyond(v[bad]))
             if outside == "warn":
                 warnings.warn(text + "; returning nan", stacklevel=3)
         return bad
+
+    def _beyond(self, v: np.ndarray) -> str:
+        """What computes speeds ``v`` outside the law, and how to get ``nan`` instead."""
+        kind = body_kind(self.geometry)
+        flag = f" {kind.option}" if kind.option else ""
+        partner = "" if self.partner is None else ", partner=law.partner"
+        if np.all(v < self.v[0]) and bool(self.quasistatic[0]):
+            how = (
+                "below its slowest point its low-speed route answers: restitution.laws."
+                f"production.low_speed_points({float(self.nu):g}, [v], geometry="
+                f"{self.geometry!r}{partner})"
+            )
+        else:
+            how = f"compute further speeds with `restitution epsilon{flag} --v ...`"
+        return how + ", or pass outside='nan')"
 
     def _evaluate(self, values: np.ndarray, v, outside: str):
         arr = _speeds(v)
