@@ -633,8 +633,9 @@ def test_ctrl_c_of_a_dask_sweep_prints_no_traceback(tmp_path, after_s):
     tracebacks, and the cluster's exit handler an AssertionError (issue 30); now the workers
     ignore SIGINT and the sweep stops them. Before the workers run, the sweep may not take the
     Ctrl-C (it then finishes: exit 0); after, it exits with 130. Never a traceback. Not
-    covered: a Ctrl-C in the first second, while Python still imports the package (before the
-    command's code runs), prints Python's own KeyboardInterrupt traceback."""
+    covered: a Ctrl-C while Python still imports the package (before the command's code runs)
+    prints Python's own KeyboardInterrupt traceback; so the clock starts when the sweep has
+    opened its store (under load the imports alone took over 1.5 s, and this test failed)."""
     import sys
     import time
 
@@ -646,6 +647,11 @@ def test_ctrl_c_of_a_dask_sweep_prints_no_traceback(tmp_path, after_s):
     proc = subprocess.Popen(args, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             start_new_session=True)  # fmt: skip
     try:
+        store = tmp_path / "s.db"
+        deadline = time.monotonic() + 120.0
+        while not store.exists() and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert store.exists(), "the sweep never opened its store"
         time.sleep(after_s)
         os.killpg(proc.pid, signal.SIGINT)
         out, err = proc.communicate(timeout=240)
