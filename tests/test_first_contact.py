@@ -1,0 +1,66 @@
+"""What a new user meets first: the README, ``--help`` and the first outputs of ``law``.
+
+The README's list of statuses is the code's :class:`restitution.status.Status`, it links every
+page of docs/, every ``--option`` a command's help names is one it has (or is named with the
+command that has it), the text of ``law`` ends its table before the notes start, the refusal of
+a too cold Maxwell gas gives advice that works, and the damped law's long tabulation is
+announced on stderr with the number of collisions it integrates.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import sys
+from pathlib import Path
+
+from numpy.testing import assert_array_equal
+
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+RESTITUTION = str(Path(sys.executable).with_name("restitution"))
+STEEL = ["--E", "210e9", "--nu", "0.3", "--rho", "7850"]
+
+
+# -- the damped law's tabulation ---------------------------------------------------------------
+
+
+def test_a_viscous_collision_advances_a_meter_once_per_speed():
+    from restitution.quasistatic.hertz import contact_law
+    from restitution.quasistatic.viscoelastic import viscous_collision
+
+    law = contact_law(0.33)
+    v = [1e-4, 1e-3, 1e-2]
+    done = []
+    metered = viscous_collision(law, v, 0.01, advance=done.append)
+    assert done == [1, 1, 1]
+    assert_array_equal(metered.epsilon, viscous_collision(law, v, 0.01).epsilon)
+
+
+def test_a_damped_constant_announces_the_collisions_it_integrates(cli, monkeypatch):
+    """The note on stderr says how many viscous collisions the damped law's table takes, that
+    is how many it integrates, and stdout stays one JSON document."""
+    from restitution.laws.damped import DampedLaw
+    from restitution.quasistatic import viscoelastic
+
+    calls = []
+    collide_one = viscoelastic._collide_one
+    monkeypatch.setattr(viscoelastic, "_collide_one", lambda *a: calls.append(1) or collide_one(*a))
+    integrated = []
+    as_si_law = DampedLaw.as_si_law
+
+    def counted(self, progress=False):
+        before = len(calls)
+        out = as_si_law(self, progress)
+        integrated.append(len(calls) - before)
+        return out
+
+    monkeypatch.setattr(DampedLaw, "as_si_law", counted)
+    code, out, err = cli("law", *STEEL, "--shape", "cylinder", "--against", "wall",
+                         "--relaxation-time", "2e-8", "--radius", "0.005", "--speed", "1",
+                         "--reference-speed", "1", "--json")  # fmt: skip
+    assert code == 0, err
+    assert json.loads(out)["constant"]["epsilon"] < 1.0
+    announced = [int(m.group(1)) for m in re.finditer(r"note: .*?(\d+) viscous collisions", err)]
+    assert announced == integrated
+    assert integrated[0] > 100  # one per computed speed of the disk's law
