@@ -14,6 +14,8 @@ import re
 import sys
 from pathlib import Path
 
+import pytest
+from _cli_checks import one_line_error
 from numpy.testing import assert_array_equal
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -64,3 +66,34 @@ def test_a_damped_constant_announces_the_collisions_it_integrates(cli, monkeypat
     announced = [int(m.group(1)) for m in re.finditer(r"note: .*?(\d+) viscous collisions", err)]
     assert announced == integrated
     assert integrated[0] > 100  # one per computed speed of the disk's law
+
+
+# -- a too cold Maxwell gas: the advice works --------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "grain",
+    [
+        ["--shape", "cylinder", "--against", "wall"],  # 0.98 % below the law: the mean speed
+        ["--shape", "sphere", "--against", "wall"],  # all below: the slowest served speed
+        ["--shape", "cylinder", "--against", "grain", "--partner-radius-ratio", "1.4",
+         "--partner-E", "63e9", "--partner-nu", "0.2481", "--partner-rho", "2500"],
+    ],
+)  # fmt: skip
+def test_the_refusal_of_a_cold_maxwell_gas_gives_advice_that_works(cli, grain):
+    """``--maxwell-temperature 1e-6`` (sigma = 1 mm/s) is below what the laws average; the
+    refusal names the temperatures they do average and a --reference-speed, and both work."""
+
+    base = ["law", *STEEL, *grain, "--speed", "1"]
+    code, _, err = cli(*base, "--maxwell-temperature", "1e-6")
+    line = one_line_error(code, err, "slower than", "--reference-speed")
+    assert "higher temperature" not in line
+    lowest = re.search(r"average only (\S+) <= T <= (\S+) m\^2/s\^2", line).group(1)
+    speed = re.search(r"--reference-speed (\S+) \(", line).group(1)
+    assert float(lowest) > 1e-6
+    for advice in (["--maxwell-temperature", lowest], ["--reference-speed", speed]):
+        code, out, err = cli(*base, *advice, "--json")
+        assert code == 0, err
+        d = json.loads(out)
+        constant = d["type_pairs"]["1-2"] if "type_pairs" in d else d["constant"]
+        assert 0.9 < constant["epsilon"] < 1.0
