@@ -14,9 +14,13 @@ import re
 import sys
 from pathlib import Path
 
+import click
 import pytest
 from _cli_checks import one_line_error
+from click.testing import CliRunner
 from numpy.testing import assert_array_equal
+
+from restitution.cli import cli as cli_group
 
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
@@ -97,3 +101,57 @@ def test_the_refusal_of_a_cold_maxwell_gas_gives_advice_that_works(cli, grain):
         d = json.loads(out)
         constant = d["type_pairs"]["1-2"] if "type_pairs" in d else d["constant"]
         assert 0.9 < constant["epsilon"] < 1.0
+
+
+# -- every --option a help text names ----------------------------------------------------------
+
+_OPTION = re.compile(r"(?<![\w-])--[A-Za-z][\w-]*")
+_QUOTED = re.compile(r"`([^`]*)`")
+
+
+def _options(command: click.Command) -> set[str]:
+    return {o for p in command.params for o in (*p.opts, *p.secondary_opts)} | {"--help"}
+
+
+def _help(args: list[str]) -> str:
+    """``--help`` of ``args`` as the group prints it, on one line per paragraph (no wrapping
+    that could split an option at its hyphens)."""
+    result = CliRunner().invoke(
+        cli_group, [*args, "--help"], terminal_width=10**6, max_content_width=10**6
+    )
+    assert result.exit_code == 0, result.output
+    return result.output
+
+
+def _foreign_options(text: str, command: click.Command) -> list[str]:
+    """The ``--options`` in ``text`` (the help of ``command``) that the command they are written
+    with does not have. The rule: an option is ``command``'s own, or it sits in a quoted command
+    line that starts with the name of the command that has it (`` `curve --radius-ratio R` ``,
+    `` `restitution law --law-file` ``)."""
+    bad = []
+    outside = text
+    for quoted in _QUOTED.findall(text):
+        outside = outside.replace(f"`{quoted}`", " ", 1)
+        words = quoted.split()
+        if words[:1] == ["restitution"]:
+            words = words[1:]
+        other = cli_group.commands.get(words[0]) if words else None
+        allowed = _options(other if other is not None else command)
+        bad += [t for t in _OPTION.findall(quoted) if t not in allowed]
+    own = _options(command)
+    return bad + [t for t in _OPTION.findall(outside) if t not in own]
+
+
+def test_the_rule_catches_an_option_the_command_does_not_have():
+    epsilon = cli_group.commands["epsilon"]
+    assert _foreign_options("give --nu and --plane", epsilon) == ["--plane"]
+    assert _foreign_options("as `restitution law --law-file` reads it", epsilon) == []
+    assert _foreign_options("as `law --plane` reads it", epsilon) == ["--plane"]
+    assert _foreign_options("as `--law-file` says", epsilon) == ["--law-file"]
+
+
+@pytest.mark.parametrize("name", [None, *sorted(cli_group.commands)])
+def test_every_option_a_help_names_is_one_the_command_has(name):
+    command = cli_group if name is None else cli_group.commands[name]
+    text = _help([] if name is None else [name])
+    assert _foreign_options(text, command) == []
