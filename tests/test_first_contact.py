@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -21,6 +22,7 @@ from click.testing import CliRunner
 from numpy.testing import assert_array_equal
 
 from restitution.cli import cli as cli_group
+from restitution.status import Status
 
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
@@ -155,3 +157,29 @@ def test_every_option_a_help_names_is_one_the_command_has(name):
     command = cli_group if name is None else cli_group.commands[name]
     text = _help([] if name is None else [name])
     assert _foreign_options(text, command) == []
+
+
+# -- law's text: the table, then the notes -----------------------------------------------------
+
+
+def test_law_text_ends_its_last_row_before_the_first_note_in_merged_output():
+    """stdout (the table) ends with a newline, so with stderr (the notes) merged into it, as
+    a terminal shows them, the last row and the first note are two lines."""
+    argv = [RESTITUTION, "law", *STEEL, "--shape", "cylinder", "--against", "wall",
+            "--speed", "1e-3", "0.01", "1"]  # fmt: skip
+    merged = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    assert merged.returncode == 0, merged.stdout
+    lines = merged.stdout.splitlines()
+    first_note = next(i for i, line in enumerate(lines) if line.startswith("note: "))
+    assert first_note > 0
+    last_row = lines[first_note - 1].split()
+    assert [float(x) for x in last_row[:2]] == [1.0, pytest.approx(1 / 5421.93, rel=5e-3)]
+    assert last_row[-1] in set(Status)
+    assert all("note: " not in line for line in lines[:first_note])  # no note inside a row
+    assert {line.split(":")[1].strip() for line in lines[first_note:]} == {
+        Status.QUASISTATIC,
+        Status.INTERPOLATED_NOT_ASYMPTOTIC,
+    }
+    alone = subprocess.run(argv, capture_output=True, text=True)
+    assert alone.stdout.endswith(" interpolated-not-asymptotic\n")
+    assert alone.stderr.startswith("note: quasistatic: ")
