@@ -183,3 +183,23 @@ def test_law_text_ends_its_last_row_before_the_first_note_in_merged_output():
     alone = subprocess.run(argv, capture_output=True, text=True)
     assert alone.stdout.endswith(" interpolated-not-asymptotic\n")
     assert alone.stderr.startswith("note: quasistatic: ")
+
+
+# -- docs/materials.md: where a steel sphere's law starts --------------------------------------
+
+
+def test_materials_page_states_the_sphere_law_s_served_range():
+    """The page once said the sphere's laws start at 15.5 m/s (their first collision); the
+    low-speed points serve down to v = 1e-6 c."""
+    from restitution import si_law
+
+    text = (ROOT / "docs" / "materials.md").read_text()
+    stated = re.search(
+        r"\"sphere\", \"wall\"\)\.speed_range_m_s` = \(([\d.]+), ([\d.]+)\) m/s", text
+    )
+    lo, hi = si_law(210e9, 0.3, 7850, "sphere", "wall").speed_range_m_s
+    assert float(stated.group(1)) == pytest.approx(lo, rel=1e-4)
+    assert float(stated.group(2)) == pytest.approx(hi, rel=1e-4)
+    assert "from 5.2 mm/s for steel against a wall" in text and lo == pytest.approx(
+        5.2e-3, rel=0.01
+    )
