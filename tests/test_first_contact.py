@@ -203,3 +203,52 @@ def test_materials_page_states_the_sphere_law_s_served_range():
     assert "from 5.2 mm/s for steel against a wall" in text and lo == pytest.approx(
         5.2e-3, rel=0.01
     )
+
+
+# -- the README --------------------------------------------------------------------------------
+
+
+def _section(text: str, title: str) -> str:
+    """The README's section ``## title``, up to the next ``## ``."""
+    start = text.index(f"\n## {title}\n")
+    end = text.find("\n## ", start + 1)
+    return text[start : end if end > 0 else None]
+
+
+def test_readme_opens_with_its_title_and_the_two_commands():
+    lines = README.read_text().splitlines()
+    assert lines[0] == "# restitution"
+    block = lines[lines.index("```sh") + 1 : lines.index("```")]
+    assert [line.split()[:2] for line in block] == [["make", "paper"], ["make", "test"]]
+
+
+def test_readme_lists_every_status_of_the_code_with_its_meaning():
+    rows = re.findall(r"^\| `([a-z-]+)` \| ([^|]+) \| ([^|]+) \|$", _section(README.read_text(),
+                      "Statuses"), re.M)  # fmt: skip
+    listed = [status for status, _, _ in rows]
+    assert sorted(listed) == sorted(s.value for s in Status)  # every member, once
+    assert listed == [s.value for s in Status]  # in the enum's order
+    for _, where, meaning in rows:
+        assert where.strip() and len(meaning.split()) >= 8, meaning
+
+
+def test_readme_links_every_page_of_the_docs_from_its_documentation_list():
+    text = README.read_text()
+    pages = {p.name for p in (ROOT / "docs").glob("*.md")}
+    documentation = text[text.index("\nDocumentation: ") :].split("\n\n")[0]
+    listed = set(re.findall(r"\]\(docs/([\w.-]+\.md)\)", documentation))
+    assert listed == pages
+    linked = set(re.findall(r"\]\(docs/([\w.-]+\.md)\)", text))
+    assert linked <= pages  # and no link to a page that is not there
+
+
+def test_readme_python_example_uses_the_current_spelling():
+    """The first Python block calls ``restitution.law(nu)`` (``nu_2d=`` is its former keyword,
+    kept as a deprecated alias) and what it serves is the same law."""
+    import restitution
+
+    block = re.search(r"```python\n(.*?)```", README.read_text(), re.S).group(1)
+    assert "nu_2d=" not in block
+    call = re.search(r"restitution\.law\(([^)]*)\)", block).group(1)
+    assert call == "0.33"
+    assert restitution.law(0.33).nu == restitution.law(nu_2d=0.33).nu == 0.33
