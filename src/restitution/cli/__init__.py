@@ -23,15 +23,26 @@ from restitution.errors import RestitutionError
 @click.version_option(__version__, prog_name="restitution")
 @quiet_option
 def cli() -> None:
-    """Coefficient of restitution of elastic disks from their vibrational modes.
+    """Coefficient of restitution of elastic grains from their vibrational modes.
 
-    Units: E = rho = R = 1 (two-dimensional constants), so speeds are in units of
-    c = sqrt(E/rho), times in R/c, and the disk mass is pi. Speeds v are the disk's speed
-    towards the wall; two identical disks approaching each other at +-v collide at relative
-    speed 2v.
+    Bodies: a disk (2D: a long cylinder in plane strain or a thin disk in plane stress) or a
+    sphere (3D), e.g. `collide --geometry sphere`. Partners: a rigid wall, or a second grain:
+    a disk of another size and/or material (`collide --radius-ratio R`), an identical sphere.
+    Material damping: a Kelvin-Voigt relaxation time (`collide --relaxation-time`).
+    `law` answers for a real material in SI units (m/s), damping included, and exports tables,
+    closed forms and constants for DEM codes (LAMMPS, LIGGGHTS, MercuryDPM, YADE); every point
+    says its status.
 
-    Exit status: 0 success; 1 some collisions of a sweep failed; 2 an error; 3 with --strict,
-    a result that is not asymptotic or not converged.
+    Units of the other commands: E = rho = R = 1 of the body's own constants, so speeds are in
+    c = sqrt(E/rho) and times in R/c. A disk: its two-dimensional (plane-stress) E and nu, mass
+    pi (`modes --plane strain|stress` reads the 3D nu of a cylinder|thin disk). A sphere: its
+    three-dimensional E and nu, mass 4 pi/3. v is the body's speed towards the wall (two
+    identical bodies approaching at +-v collide the same way, at relative speed 2v); with a
+    second body v is the relative speed, in c of the first.
+
+    Exit status: 0 success; 1 some collisions of a sweep failed; 2 an error; 3 a result that is
+    not asymptotic or not converged, with `epsilon --strict` (likewise curve, collide,
+    compare-fem).
     """
 
 

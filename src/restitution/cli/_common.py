@@ -43,12 +43,16 @@ plane_option = click.option(
 )
 
 
-def _geometry_help() -> str:
-    """Each kind in one clause: what --nu is for it."""
+def _geometry_help(plane: bool = True) -> str:
+    """Each kind in one clause: what --nu is for it (``plane``: the command has --plane)."""
     clauses = []
     for kind in kinds().values():
         nu = (
-            "--nu is two-dimensional unless --plane is given"
+            (
+                "--nu is two-dimensional unless --plane is given"
+                if plane
+                else "--nu is two-dimensional"
+            )
             if kind.planar
             else f"--nu is its three-dimensional Poisson number, in ({kind.nu_low:g}, "
             f"{kind.nu_high:g}); units E = rho = R = 1 of the {kind.geometry}"
@@ -64,6 +68,16 @@ geometry_option = click.option(
     show_default=True,
     help=_geometry_help(),
 )
+"""``--geometry`` of a command that has ``--plane``."""
+
+geometry_option_no_plane = click.option(
+    "--geometry",
+    type=click.Choice(geometries()),
+    default=DEFAULT_GEOMETRY,
+    show_default=True,
+    help=_geometry_help(plane=False),
+)
+"""``--geometry`` of a command without ``--plane`` (a disk's --nu is two-dimensional)."""
 
 _state = {"quiet": False}
 
@@ -158,9 +172,14 @@ PARTNER_OPTIONS = {
 """The options that describe a second body (parameter name -> flag)."""
 
 
-def partner_options(f):
+def partner_options(f=None, *, plane: bool = True):
     """``--radius-ratio``, ``--partner-nu``, ``--modulus-ratio``, ``--density-ratio``: a second
-    body instead of the wall (read with :func:`partner_from`)."""
+    body instead of the wall (read with :func:`partner_from`). ``plane``: the command has
+    ``--plane`` (which reads ``--partner-nu`` too). Used bare (``@partner_options``) or called
+    (``@partner_options(plane=False)``)."""
+    if f is None:
+        return lambda func: partner_options(func, plane=plane)
+    read = "read like --nu (with --plane)" if plane else "read like --nu"
     for option in reversed(
         (
             click.option(
@@ -176,8 +195,7 @@ def partner_options(f):
                 "--partner-nu",
                 type=float,
                 default=None,
-                help="Poisson number of the second body, read like --nu (with --plane) "
-                "[default: --nu].",
+                help=f"Poisson number of the second body, {read} [default: --nu].",
             ),
             click.option(
                 "--modulus-ratio",

@@ -20,7 +20,7 @@ from restitution.cli._common import (
     body_nu,
     check_output_dir,
     force_option,
-    geometry_option,
+    geometry_option_no_plane,
     note,
     partner_from,
     partner_options,
@@ -186,7 +186,7 @@ def _executor_options(f):
     required=True,
     help="Poisson number: two-dimensional for a disk, three-dimensional for a sphere.",
 )
-@geometry_option
+@geometry_option_no_plane
 @click.option("--v", "v", type=float, required=True, help=f"Speed v: {_V_HELP}.")
 @click.option(
     "--alpha",
@@ -420,7 +420,7 @@ _FIGURE_FORMATS = ("png", "pdf", "svg")
     help="Poisson number(s): two-dimensional for a disk (default 0.33 0.9), three-dimensional "
     "for a sphere (required).",
 )
-@geometry_option
+@geometry_option_no_plane
 @click.option(
     "--v",
     "velocities",
@@ -454,7 +454,7 @@ _FIGURE_FORMATS = ("png", "pdf", "svg")
     is_flag=True,
     help="With --production: compute even when the estimate exceeds the bound of one run (1 h).",
 )
-@partner_options
+@partner_options(plane=False)
 @_executor_options
 @click.pass_context
 def curve(

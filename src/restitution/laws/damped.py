@@ -41,6 +41,7 @@ from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.estimate import Estimate
 from restitution.laws.si_law import SILaw
+from restitution.limits.run_options import Progress, progress_of
 from restitution.status import Status
 
 __all__ = [
@@ -116,19 +117,22 @@ def viscous_max_speed(si: SILaw) -> float:
     return float(law.max_speed() if mass is None else law.max_speed(mass))
 
 
-def _viscous(si: SILaw, v, tau: float):
-    """The quasistatic viscous collision of the law's body at reduced speeds ``v``."""
+def _viscous(si: SILaw, v, tau: float, advance=None):
+    """The quasistatic viscous collision of the law's body at reduced speeds ``v``
+    (``advance(1)`` after each speed, when given)."""
     from restitution.quasistatic.viscoelastic import viscous_collision
 
     law, mass = _contact(si)
-    return viscous_collision(law, np.atleast_1d(np.asarray(v, dtype=float)), tau, mass=mass)
+    v = np.atleast_1d(np.asarray(v, dtype=float))
+    return viscous_collision(law, v, tau, mass=mass, advance=advance)
 
 
-def viscous_epsilon(si: SILaw, v, tau: float) -> np.ndarray:
+def viscous_epsilon(si: SILaw, v, tau: float, *, advance=None) -> np.ndarray:
     """epsilon of the viscous force alone at the law's reduced speeds ``v`` (``c``) for the
     reduced relaxation time ``tau`` (``R / c``): the quasistatic collision of the law's body
-    (disk or sphere on a wall, identical grains as the wall at ``v``, two sizes as the pair)."""
-    return _viscous(si, v, tau).epsilon
+    (disk or sphere on a wall, identical grains as the wall at ``v``, two sizes as the pair).
+    ``advance``: called with 1 after each speed (a progress meter)."""
+    return _viscous(si, v, tau, advance).epsilon
 
 
 @dataclass(frozen=True)
@@ -230,15 +234,16 @@ class DampedLaw:
                                    status=p.status, note=p.note))  # fmt: skip
         return tuple(out)
 
-    def _parts(self, v, eps_el, err_el) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _parts(self, v, eps_el, err_el, advance=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(epsilon_viscous, epsilon, error)`` at reduced speeds ``v`` with the elastic law's
         ``eps_el +- err_el`` there (``eps_el`` may be ``None``: then only the first is
         finite). The error adds in quadrature the elastic law's error carried through the sum,
         the spread of an inferred ``tau``, the product of the two losses (what the sum leaves
         out), and the measured difference of the modal body's viscous loss from the quasistatic
         one: for a sphere the size of its contact beyond Hertz's half-space
-        (:data:`SPHERE_SIZE_COEFFICIENT`), for a disk :data:`DISK_VISCOUS_SPREAD`."""
-        col = _viscous(self.si, v, self.tau)
+        (:data:`SPHERE_SIZE_COEFFICIENT`), for a disk :data:`DISK_VISCOUS_SPREAD`.
+        ``advance(1)`` follows each viscous collision (a progress meter)."""
+        col = _viscous(self.si, v, self.tau, advance)
         eps_v = col.epsilon
         if eps_el is None:
             nan = np.full(eps_v.shape, np.nan)
@@ -248,8 +253,8 @@ class DampedLaw:
         eps = _combine(eps_el, eps_v)
         err = eps_el * err_el / np.maximum(eps, 1e-300)
         if self.tau_err > 0.0:
-            lo = viscous_epsilon(self.si, v, max(self.tau - self.tau_err, 0.0))
-            hi = viscous_epsilon(self.si, v, self.tau + self.tau_err)
+            lo = viscous_epsilon(self.si, v, max(self.tau - self.tau_err, 0.0), advance=advance)
+            hi = viscous_epsilon(self.si, v, self.tau + self.tau_err, advance=advance)
             err = np.hypot(err, 0.5 * np.abs(_combine(eps_el, lo) - _combine(eps_el, hi)))
         # What the sum leaves out: the product of the two losses (docs/damping.md).
         left_out = (1.0 - eps_el**2) * (1.0 - eps_v**2) / (2.0 * np.maximum(eps, 1e-300))
@@ -259,23 +264,40 @@ class DampedLaw:
         err = np.hypot(err, np.abs(_combine(eps_el, bigger) - eps))
         return eps_v, eps, err
 
-    def as_si_law(self) -> SILaw:
+    def _served(self) -> np.ndarray:
+        """Which computed speeds of the elastic law the quasistatic viscous law takes."""
+        return np.asarray(self.si.law.v, dtype=float) <= viscous_max_speed(self.si)
+
+    def table_collisions(self) -> int:
+        """How many quasistatic viscous collisions :meth:`as_si_law` integrates: one at each of
+        the elastic law's computed speeds it tabulates, three with an inferred ``tau`` (its
+        error's two ends too)."""
+        return int(np.sum(self._served())) * (3 if self.tau_err > 0.0 else 1)
+
+    def as_si_law(self, progress: Progress | bool | None = False) -> SILaw:
         """The damped law as an :class:`SILaw` of its own: the sum at every computed speed of
         the elastic law (errors as in :meth:`points`), so that tables, closed forms, constants
         and snippets (:mod:`restitution.laws.exports`) serve it as they serve an elastic law.
-        Points of the low-speed theory keep their route."""
+        Points of the low-speed theory keep their route.
+
+        It integrates :meth:`table_collisions` viscous collisions (one per computed speed of
+        the elastic law, over a hundred for a disk's, over four hundred for a sphere's; three
+        each with an inferred ``tau``); ``progress``
+        (:class:`~restitution.limits.run_options.Progress` or its shorthand) draws a bar over
+        them on stderr."""
         from restitution.laws.law import QUASISTATIC_ROUTE, EpsilonLaw
 
         law = self.si.law
-        v = np.asarray(law.v, dtype=float)
-        served = v <= viscous_max_speed(self.si)
+        served = self._served()
         if served.sum() < 2:
             raise InputError(
                 "the quasistatic viscous law serves fewer than two of the elastic law's speeds; "
                 "no damped law can be tabulated"
             )
-        v = v[served]
-        _, eps, err = self._parts(v, law.epsilon(v), law.epsilon_err(v))
+        v = np.asarray(law.v, dtype=float)[served]
+        total = self.table_collisions()
+        with progress_of(progress).bar(total, "damped law: viscous collisions") as meter:
+            _, eps, err = self._parts(v, law.epsilon(v), law.epsilon_err(v), advance=meter)
         quasi = np.asarray(getattr(law, "quasistatic", np.zeros(served.size, bool)), bool)[served]
         records = [
             {"v": float(x), **({"route": QUASISTATIC_ROUTE} if q else {})}
@@ -324,8 +346,11 @@ def _positive(name: str, value, unit: str) -> float:
     return value
 
 
-def _infer_tau(si: SILaw, eps_m: float, speed: float) -> tuple[float, float]:
-    """``tau c / R`` for which the sum gives ``eps_m`` at ``speed`` (m/s), and its error."""
+def _infer_tau(
+    si: SILaw, eps_m: float, speed: float, progress: Progress | bool | None = False
+) -> tuple[float, float]:
+    """``tau c / R`` for which the sum gives ``eps_m`` at ``speed`` (m/s), and its error: three
+    root searches of a dozen or more viscous collisions each (``progress``: a bar over them)."""
     (p,) = si.points([speed])
     if p.epsilon is None:
         raise InputError(
@@ -360,8 +385,13 @@ def _infer_tau(si: SILaw, eps_m: float, speed: float) -> tuple[float, float]:
             "vibrations alone, which no damping explains; check the measurement and the "
             "material constants"
         )
-    tau = solve(p.epsilon)
-    spread = [solve(min(p.epsilon + s * p.epsilon_err, 1.0)) for s in (-1.0, 1.0)]
+    with progress_of(progress).bar(3, "relaxation time: root searches") as meter:
+        tau = solve(p.epsilon)
+        meter(1)
+        spread = []
+        for s in (-1.0, 1.0):
+            spread.append(solve(min(p.epsilon + s * p.epsilon_err, 1.0)))
+            meter(1)
     return tau, 0.5 * abs(spread[1] - spread[0])
 
 
@@ -372,6 +402,7 @@ def damped_law(
     radius_m: float | None = None,
     measured_epsilon: float | None = None,
     measured_speed_m_s: float | None = None,
+    progress: Progress | bool | None = False,
 ) -> DampedLaw:
     """The law of ``si``'s grain made of a material that damps.
 
@@ -385,6 +416,9 @@ def damped_law(
     measured_epsilon, measured_speed_m_s : float, optional
         Instead: one measured coefficient of restitution and the impact speed (m/s, the same
         meaning as the law's speeds) it was measured at.
+    progress : Progress or bool or None
+        A bar on stderr over the root searches that infer ``tau`` from the measurement
+        (:func:`restitution.limits.run_options.progress_of`); default none.
 
     Examples
     --------
@@ -419,5 +453,5 @@ def damped_law(
         raise InputError(f"measured_epsilon must lie in (0, 1), got {eps_m!r}")
     speed = _positive("measured_speed_m_s", measured_speed_m_s, "m/s")
     radius = None if radius_m is None else _positive("radius_m", radius_m, "m")
-    tau, tau_err = _infer_tau(si, eps_m, speed)
+    tau, tau_err = _infer_tau(si, eps_m, speed, progress)
     return DampedLaw(si, tau, tau_err, radius, (eps_m, speed))

@@ -29,6 +29,7 @@ from restitution.laws import exports
 from restitution.laws.damped import DampedLaw, damped_law
 from restitution.laws.request import LawRequest
 from restitution.laws.si_law import SI_UNITS, SILaw, law_target, overall_status, si_law
+from restitution.limits.run_options import Progress
 
 __all__ = ["LawAnswer", "serve"]
 
@@ -100,7 +101,9 @@ def serve(
         Called with one line for each note (the estimate of a computation, a closed form that
         could not be fitted); default: none.
     progress : bool
-        Show a progress bar of a computation on stderr.
+        Show a progress bar of a computation on stderr (``compute``), and, on a terminal, of
+        a damped law's viscous collisions (inferring its relaxation time; tabulating it for
+        the exports or constants, which a note announces with their number).
 
     Raises
     ------
@@ -119,7 +122,8 @@ def serve(
         _refuse_uncomputed(r)
     s = si_law(r.E, r.nu, r.rho, r.shape, r.against, path=served,
                radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
-    damped = _damped(r, s)
+    bars = Progress(None if progress else False)  # the damped law's: on a terminal only
+    damped = _damped(r, s, bars)
     if damped is not None and s.law.partner is not None and r.constants:
         raise InputError(
             "constants per type pair of damping grains are not computed (tau c / R differs for "
@@ -129,7 +133,12 @@ def serve(
     status, advice = overall_status(points)
     if damped is not None and (r.constants or r.export_dir is not None):
         # Constants, tables and snippets of the damped law: the sum at every computed speed.
-        s = damped.as_si_law()
+        what = "exports" if r.export_dir is not None else "constant"
+        note(
+            f"note: the damped law for the {what}: {damped.table_collisions()} viscous "
+            "collisions at the elastic law's computed speeds"
+        )
+        s = damped.as_si_law(progress=bars)
     constant, pairs = _constants(r, s)
     written: tuple = ()
     if r.export_dir is not None:
@@ -178,7 +187,7 @@ def _identical(E, nu, rho, geometry, path, option) -> SILaw:
         ) from None
 
 
-def _damped(r: LawRequest, s: SILaw) -> DampedLaw | None:
+def _damped(r: LawRequest, s: SILaw, progress: Progress) -> DampedLaw | None:
     """The damped law the request asks for, or ``None`` without damping options."""
     if not r.damped:
         if r.radius is not None:
@@ -201,6 +210,7 @@ def _damped(r: LawRequest, s: SILaw) -> DampedLaw | None:
         radius_m=r.radius,
         measured_epsilon=r.measured_epsilon,
         measured_speed_m_s=r.measured_speed,
+        progress=progress,
     )
 
 

@@ -105,6 +105,7 @@ to leading order. The perturbation series of ``"compression"`` runs in integer p
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -413,6 +414,7 @@ def viscous_collision(
     mass: float | None = None,
     separation: str = "force",
     rtol: float = 1e-10,
+    advance: Callable[[int], None] | None = None,
 ) -> ViscousCollision:
     """``m xi'' = -F_el(xi) - tau xi' F_el'(xi)``, ``xi(0) = 0``, ``xi'(0) = v``, with DOP853.
 
@@ -438,6 +440,9 @@ def viscous_collision(
         End of contact (module docs); ``"force"``, the contact that cannot pull, by default.
     rtol : float
         Relative tolerance of DOP853 (``atol = 1e-3 rtol`` on the scaled variables of size 1).
+    advance : callable, optional
+        Called with 1 after each speed's collision (a progress meter, such as
+        :class:`restitution.limits.run_options.Meter`).
 
     Returns
     -------
@@ -456,10 +461,11 @@ def viscous_collision(
     separation = _check_separation(separation)
     rtol = _positive("rtol", rtol)
     v, dmax, t_el = _elastic(law, v, mass)
-    rows = [
-        _collide_one(law, float(vi), tau, mass, float(di), separation, rtol)
-        for vi, di in zip(v, dmax, strict=True)
-    ]
+    rows = []
+    for vi, di in zip(v, dmax, strict=True):
+        rows.append(_collide_one(law, float(vi), tau, mass, float(di), separation, rtol))
+        if advance is not None:
+            advance(1)
     cols = [np.array(c, dtype=float) for c in zip(*rows, strict=True)]
     return ViscousCollision(
         v=v,

@@ -21,7 +21,8 @@ source and the package version. One module per form:
   the maximum deviation from the law in its error bars.
 * :mod:`~restitution.laws.exports.constants`: :func:`constant_at` (epsilon at a reference
   speed) and :func:`maxwell_constant` (averaged over the impact speeds of a gas at a granular
-  temperature): one number for codes that take a constant per pair.
+  temperature; :func:`maxwell_temperatures` the temperatures a law averages): one number for
+  codes that take a constant per pair.
 * :mod:`~restitution.laws.exports.type_pairs`: :func:`type_pair_constants`: the constants of a
   bidisperse packing of one material (type 1 the small grain, type 2 the large): 1-1 and 2-2
   from the law of identical grains, 1-2 from the pair's law, each at the same reference speed or
@@ -48,6 +49,7 @@ from restitution.laws.exports.constants import (
     constant_at,
     distribution_constant,
     maxwell_constant,
+    maxwell_temperatures,
 )
 from restitution.laws.exports.dem import DEM_TARGETS, DemTarget, register_dem_target
 from restitution.laws.exports.dem.lammps import lammps_snippet
@@ -83,6 +85,7 @@ __all__ = [
     "liggghts_snippet",
     "lammps_snippet",
     "maxwell_constant",
+    "maxwell_temperatures",
     "mercurydpm_snippet",
     "pchip_table",
     "register_dem_target",

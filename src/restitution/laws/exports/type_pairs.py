@@ -217,12 +217,14 @@ def type_pair_constants(
             "temperature (m^2/s^2), not both and not neither"
         )
     _check_type_pair_laws(pair, identical, identical2)
+    laws = tuple(x for x in (pair, identical, identical2) if x is not None)
 
     def one(s: SILaw, name: str) -> Constant:
         try:
             if speed_m_s is not None:
                 return constant_at(s, speed_m_s)
-            return maxwell_constant(s, temperature_m2_s2)
+            others = tuple(x for x in laws if x is not s)
+            return maxwell_constant(s, temperature_m2_s2, together=others)
         except InputError as exc:
             raise InputError(f"type pair {name}: {exc}") from None
 
