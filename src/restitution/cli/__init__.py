@@ -3,7 +3,8 @@
 Every command lives in its own module of this package; this file only assembles the group and
 turns the package's own errors into one line on stderr with exit status 2.
 
-Exit status: 0 success; 1 some collisions of a sweep failed (``epsilon``, ``curve``); 2 an
+Exit status: 0 success; 1 some collisions of a sweep failed (``epsilon``, ``curve``) or some
+requested speeds got no value (``law``); 2 an
 error (one line on stderr); 3 with ``--strict``, a result that is not asymptotic or not
 converged; 130 interrupted.
 """
@@ -40,7 +41,8 @@ def cli() -> None:
     identical bodies approaching at +-v collide the same way, at relative speed 2v); with a
     second body v is the relative speed, in c of the first.
 
-    Exit status: 0 success; 1 some collisions of a sweep failed; 2 an error; 3 a result that is
+    Exit status: 0 success; 1 some collisions of a sweep failed, or some speeds of `law` got
+    no value; 2 an error; 3 a result that is
     not asymptotic or not converged, with `epsilon --strict` (likewise curve, collide,
     compare-fem).
     """

@@ -7,7 +7,7 @@ neighbouring points (the same sweep, store and extrapolation as the law's own po
 speeds between the computed ones, and compares: the served value and its stated error against
 the direct value and its own.
 
-``python -m restitution.laws.between --geometry sphere --nu 0.3 --per-interval 2 --out F``
+``python -m restitution.laws.between --geometry <kind> --nu 0.3 --per-interval 2 --out F``
 writes the comparison (JSON, whole or not at all); ``tests/test_between.py`` reads the stored
 comparisons and checks the served errors' coverage, ``-m slow`` recomputes a sample.
 
@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from restitution.bodies.kinds import geometries
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw, law
 from restitution.laws.production import production_groups
@@ -145,7 +146,7 @@ def main(argv=None) -> None:
     parser = argparse.ArgumentParser(
         prog="python -m restitution.laws.between", description=__doc__.split("\n\n")[0]
     )
-    parser.add_argument("--geometry", default="sphere")
+    parser.add_argument("--geometry", required=True, choices=geometries())
     parser.add_argument("--nu", type=float, required=True)
     parser.add_argument("--speeds", type=float, nargs="*", help="speeds (c); else --per-interval")
     parser.add_argument("--per-interval", type=int, default=1)
