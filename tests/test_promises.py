@@ -101,3 +101,21 @@ def test_the_advice_below_a_law_works_when_followed():
 
     records, _ = eval(call.group(1), {"restitution": restitution, "v": 1e-7})  # noqa: S307
     assert records[0]["v"] == 1e-7 and 1.0 - records[0]["epsilon"] < 1e-7
+
+
+@pytest.mark.parametrize(
+    ("shape", "nu"), [("sphere", 0.49), ("sphere", 0.17), ("cylinder", 0.49)]
+)  # a rubber-like sphere, fused silica, a rubber-like cylinder (nu_2d = 0.96)
+def test_a_law_refused_off_the_grid_states_the_time_to_compute_it(cli, shape, nu):
+    """Issue 45: the refusal names the collisions and the time of the computation it
+    advises (the estimate of `law --compute`, laws.compute.plan)."""
+    from restitution.laws.compute import plan
+    from restitution.laws.si_law import Grain
+
+    code, out, err = cli("law", "--E", "1e9", "--nu", str(nu), "--rho", "1000", "--shape",
+                         shape, "--against", "wall", "--speed", "1")  # fmt: skip
+    assert code == 2 and err.count("\n") == 1, err
+    grain = Grain(E=1e9, nu=nu, rho=1000.0, shape=shape)
+    p = plan(grain.law_nu, grain.kind.geometry, reuse=False)
+    assert f"({p.collisions} collisions, about " in err and "on one core)" in err
+    assert p.collisions > 0 and p.seconds > 0

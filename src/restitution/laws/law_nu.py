@@ -260,12 +260,26 @@ def _refusal(
 ) -> InputError:
     name = law_filename(nu, geometry, partner)
     pair = "" if partner is None else f" and the pair R2/R1 = {partner.radius_ratio:g}"
+    cost = _cost(nu, geometry, partner)
     return InputError(
         f"no law for {_what(nu, geometry)}{pair}: {why} (grid: "
-        f"{', '.join(f'{x:g}' for x in shipped) or 'none'}); compute it with "
-        f"`{_curve_command(geometry, nu, partner)}` and pass the file DIR/{name} "
+        f"{', '.join(f'{x:g}' for x in shipped) or 'none'}); compute it{cost}"
+        f" with `{_curve_command(geometry, nu, partner)}` and pass the file DIR/{name} "
         "(--law-file, or path= from Python), or add --compute to `restitution law`"
     )
+
+
+def _cost(nu: float, geometry: str, partner) -> str:
+    """`` (N collisions, about T on one core)``: the plan of computing the law; empty when
+    no plan can be made (the refusal's other words say why)."""
+    from restitution import budget
+    from restitution.laws.compute import plan
+
+    try:
+        p = plan(nu, geometry, partner, reuse=False)
+    except InputError:
+        return ""
+    return f" ({p.collisions} collisions, about {budget.format_duration(p.seconds)} on one core)"
 
 
 def law_for(
