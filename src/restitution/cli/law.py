@@ -13,10 +13,17 @@ from pathlib import Path
 
 import click
 
-from restitution.cli._common import EXIT_FAILED_POINTS, note, quiet, quiet_option
+from restitution.cli._common import (
+    EXIT_FAILED_POINTS,
+    check_figure_file,
+    note,
+    quiet,
+    quiet_option,
+)
 from restitution.cli.epsilon import _ListCommand
 from restitution.cli.law_text import status_notes, text_lines
 from restitution.cli.report import Report, emit, format_options, output_format
+from restitution.errors import InputError
 from restitution.laws.request import LawRequest
 
 _TYPES = {
@@ -49,9 +56,18 @@ class _LawCommand(_ListCommand):
 
 @click.command(cls=_LawCommand)
 @_request_options
+@click.option(
+    "--plot",
+    "plot_file",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    help="Also draw epsilon(w) over the law's range with its error band, the speeds computed "
+    "by collisions and the asked speeds, to this file (format from its suffix: .png, .pdf, "
+    ".svg, ...).",
+)
 @format_options
 @quiet_option
-def law(fmt, as_json, **options):
+def law(fmt, as_json, plot_file, **options):
     """Coefficient of restitution of a real material at impact speeds in m/s.
 
     Every speed comes with v/c, epsilon, its error and a status saying where the number comes
@@ -85,8 +101,19 @@ def law(fmt, as_json, **options):
     from restitution.laws.serve import serve
 
     fmt = output_format(fmt, as_json)
-    answer = serve(LawRequest(**options), note=note, progress=not quiet())
+    request = LawRequest(**options)
+    if plot_file is not None:
+        if request.damped:
+            raise InputError(
+                "--plot draws an elastic law; for a damping grain leave out --plot and read "
+                "the rows (--format csv), or plot the elastic law without the damping options"
+            )
+        check_figure_file(plot_file, "--plot")  # before anything is computed
+    answer = serve(request, note=note, progress=not quiet())
     r = answer.request
+    if plot_file is not None:
+        answer.law.plot(plot_file, marks=answer.points)
+        note(f"wrote {plot_file}")
     emit(Report("law", r.inputs(), answer.to_dict(), answer.status, answer.advice,
                 answer.units, lambda: "\n".join(text_lines(answer)),
                 lambda: [p.to_dict() for p in answer.points]), fmt)  # fmt: skip

@@ -451,6 +451,34 @@ class SILaw:
             out.append(SIPoint(float(w), v, eps, err, status, text))
         return tuple(out)
 
+    # -- views for a notebook (restitution.laws.views) ------------------------------------
+
+    def rows(self, speeds_m_s=None) -> list[dict]:
+        """The points as one dict a speed (default: 301 speeds over the law's range)."""
+        from restitution.laws import views
+
+        return views.rows(self, speeds_m_s)
+
+    def to_csv(self, path, speeds_m_s=None):
+        """The points as a CSV file, written whole or not at all; returns its path."""
+        from restitution.laws import views
+
+        return views.to_csv(self, path, speeds_m_s)
+
+    def to_frame(self, speeds_m_s=None):
+        """The points as a pandas DataFrame (pandas is optional: only this needs it)."""
+        from restitution.laws import views
+
+        return views.to_frame(self, speeds_m_s)
+
+    def plot(self, path=None, speeds_m_s=None, *, ax=None, marks=()):
+        """epsilon(w) with its error band, the speeds computed by collisions and ``marks``
+        (points to show with their error bars); saved to ``path`` when given; returns the
+        Matplotlib Axes."""
+        from restitution.laws import views
+
+        return views.plot(self, path, speeds_m_s, ax=ax, marks=marks)
+
     def to_dict(self, speeds_m_s) -> dict:
         """The JSON of ``restitution law``: constants, partner, and the points.
 
