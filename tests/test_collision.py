@@ -64,6 +64,7 @@ def test_epsilon_converges_at_least_at_declared_order(small):
         assert np.log2(d[0] / d[1]) > INTEGRATORS[name].order - 0.3, (name, d)
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_rk4_agrees_with_dop853(small):
     # Measured at energy_tol = 1e-9 (N = 24, v = 0.1, alpha = 500): |eps - eps_DOP853| =
     # 6.2e-11 (rk4; split4, the production integrator, 5.6e-10: tests/test_every_body.py);

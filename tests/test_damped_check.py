@@ -103,6 +103,7 @@ def test_reference_point_is_reproduced(reference, tmp_path):
     assert limit.epsilon == pytest.approx(p["epsilon"], abs=0.1 * p["epsilon_err"])
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_trajectory_diagnostic_at_a_small_disk():
     """``trajectory_check`` (docs/damping.md) on a small disk, v = 0.02, N = 400, alpha = 869.
     Regression values of this package (measured once, not from an independent route): the damped

@@ -96,6 +96,7 @@ def test_step_error_of_a_damped_collision_is_honest(small):
     assert fine.energy_drift < coarse.energy_drift / 100
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_more_viscous_material_loses_more(small):
     kw = dict(integrator="split", energy_tol=1e-9)
     loss = [

@@ -216,6 +216,7 @@ def test_energy_is_conserved_to_second_order_and_momentum_balances():
     assert_allclose(np.trapezoid(h.force, h.t), MASS * V * (1 + coarse.epsilon), rtol=1e-5)
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_rigid_sphere_limit_in_the_exponential_wall():
     """A soft wall far from the sphere's elastic scale: the rigid sphere's closed form.
 

@@ -52,6 +52,7 @@ def test_compiled_and_numpy_agree_on_a_vibrating_disk(modes):
     np.testing.assert_allclose(a.mode_energy_after, b.mode_energy_after, rtol=1e-9, atol=1e-13)
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_energy_balance_of_excited_collisions(modes):
     v = np.array([0.1, 0.1, 0.05])
     states = [_random_state(modes, 0.1, e, seed=k) for k, e in enumerate((0.2, 2.0, 5.0))]

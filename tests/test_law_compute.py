@@ -43,6 +43,7 @@ def tiny(monkeypatch, tmp_path):
     return tmp_path
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_computes_the_exact_nu_once_then_serves_the_file(cli, tiny, monkeypatch):
     args = ("law", *STEEL, "--speed", "1000", "--compute", "--store", str(tiny / "s.sqlite"))
     code, out, err = cli(*args, "--json")

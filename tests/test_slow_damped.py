@@ -62,6 +62,7 @@ def test_it_reproduces_the_damped_modal_disk(modes):
     assert 0.85 < modal_viscous / quasistatic < 0.95
 
 
+@pytest.mark.slow  # 8-18 s of the default run (issue 45: the default run under 10 min)
 def test_slower_it_tends_to_the_quasistatic_viscous_law(modes):
     """The quasistatic viscous law is the v -> 0 limit of the disk's viscous loss, approached
     logarithmically: at v = 1e-6 (tau = 0.01) the model's viscous loss is within 2 % of it
