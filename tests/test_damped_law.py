@@ -174,6 +174,7 @@ def test_cli_law_damping_refusals_are_one_line(cli):
     one_line_error(code, err, "--relaxation-time")
 
 
+@pytest.mark.slow  # 6-7 s of the default run (issue 45: the default run under 10 min)
 def test_damping_figure_draws_the_law_and_its_parts(tmp_path):
     """The figure's curves are the damped law's points: elastic, viscous and both."""
     from restitution.reproduction.figures import damping

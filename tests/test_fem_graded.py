@@ -253,6 +253,7 @@ def test_fem_agrees_with_the_modal_route_at_low_speed():
     assert abs(fem.epsilon - modal) < 2.0 * combined, (fem.epsilon, modal, combined)
 
 
+@pytest.mark.slow  # 6-7 s of the default run (issue 45: the default run under 10 min)
 def test_fem_epsilon_json_has_the_modal_keys(tmp_path):
     from click.testing import CliRunner
 

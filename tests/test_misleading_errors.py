@@ -9,6 +9,7 @@ import json
 
 import pytest
 from _cli_checks import one_line_error
+from _sampling import representatives
 
 from restitution import get_modes
 from restitution.cli import _common
@@ -93,7 +94,7 @@ def test_one_mode_count_gives_no_error_bar_in_text_or_json(cli, tmp_path):
     assert d["epsilon"] is not None and d["status"] == Status.NOT_ASYMPTOTIC
 
 
-@pytest.mark.parametrize("quiet", [(), ("-q",)])
+@pytest.mark.parametrize("quiet", representatives([(), ("-q",)], {()}))  # -q: with -m slow
 def test_beyond_the_model_range_is_a_status_not_only_a_warning(cli, quiet):
     """v = 0.99 once reported status ok with a compression of 0.9 R, the warning on stderr
     only (and -q hid it): the JSON's status says it."""

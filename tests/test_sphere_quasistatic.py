@@ -249,6 +249,7 @@ def _deviations(modes, v, Ns, products):
     return coef[0], dmax
 
 
+@pytest.mark.slow  # 6-7 s of the default run (issue 45: the default run under 10 min)
 def test_modal_collision_approaches_hertz(modes):
     # At fixed alpha delta_max = 80 and N = 1600 the deviations stall near -10 %: the soft
     # wall's offset (~ ln(1/p0) / alpha) and the truncation (~ 1 / (l_max a)) grow as the contact
