@@ -102,6 +102,56 @@ def test_sphere_low_speed_limit_is_the_published_viscoelastic_law(sphere):
         assert abs(p.epsilon - with_series) < 0.3 * q**2.5 + 2 * q**3
 
 
+def test_a_strongly_damped_soft_sphere_says_where_the_model_stops_being_informative():
+    """Issue 45 item 5: a soft sphere (E = 10 MPa, nu = 0.45) with epsilon = 0.5 at 1 m/s got
+    0.32 +- 0.33 at 10 m/s without a word. The error is almost all the finite sphere's
+    stiffer contact (its size coefficient, measured for weak damping only) counted at full
+    size; the answer now says so, gives the interval and the viscous part alone; a steel
+    sphere's weakly damped answer stays informative."""
+    from restitution.laws.damped import UNINFORMATIVE
+
+    soft = si_law(E=10e6, nu=0.45, rho=1100.0, geometry="sphere", against="wall")
+    d = damped_law(soft, measured_epsilon=0.5, measured_speed_m_s=1.0)
+    slow, fast = d.points([0.1, 10.0])
+    assert slow.informative and slow.epsilon_err <= UNINFORMATIVE * slow.epsilon
+    assert not fast.informative and fast.epsilon_err > UNINFORMATIVE * fast.epsilon
+    assert "not informative here" in fast.note and "stiffer contact" in fast.note
+    assert f"{fast.epsilon_viscous:.4g}" in fast.note
+    lo = max(fast.epsilon - fast.epsilon_err, 0.0)
+    assert f"[{lo:.3g}, " in fast.note
+    # The viscous part is the quasistatic collision computed directly (not the error's terms).
+    direct = viscous_collision(sphere_contact_law(0.45), fast.v_over_c, d.tau).epsilon[0]
+    assert fast.epsilon_viscous == pytest.approx(direct, rel=1e-12)
+    steel = damped_law(
+        si_law(**STEEL, geometry="sphere", against="wall"), measured_epsilon=0.9,
+        measured_speed_m_s=1.0,
+    )  # fmt: skip
+    assert all(p.informative for p in steel.points([0.1, 1.0, 3.0]))
+
+
+def test_losses_that_add_up_to_all_the_energy_give_no_value(tmp_path):
+    """Issue 47: a strongly damped grain got epsilon 0.000000 +- 1e+298 with a normal status
+    where its two losses added up past the kinetic energy. Such a speed now has no value, its
+    note gives the bound each loss alone sets, and an export's table stops below it."""
+    soft = si_law(E=10e6, nu=0.45, rho=1100.0, geometry="sphere", against="wall")
+    d = damped_law(soft, measured_epsilon=0.1, measured_speed_m_s=1.0)
+    fast, slow = d.points([10.0])[0], d.points([0.5])[0]
+    assert fast.epsilon is None and fast.epsilon_err is None and not fast.informative
+    assert fast.epsilon_elastic**2 + fast.epsilon_viscous**2 <= 1.0  # the losses add up past 1
+    assert "no value: the losses" in fast.note
+    assert f"below {min(fast.epsilon_elastic, fast.epsilon_viscous):.4g}" in fast.note
+    assert slow.epsilon > 0 and math.isfinite(slow.epsilon_err)
+    table = d.as_si_law()
+    top = table.law.v[-1]
+    assert "above, the losses add up to all the kinetic energy" in table.law.metadata["source"]
+    assert np.all(np.isfinite(table.law.epsilon_err_points))
+    assert np.all(table.law.epsilon_points > 0)
+    # The next computed speed of the elastic law is where the sum passes the energy.
+    nxt = soft.law.v[np.searchsorted(soft.law.v, top) + 1]
+    (beyond,) = d.points([nxt * soft.speed_scale_m_s])
+    assert beyond.epsilon is None
+
+
 def test_inferred_tau_error_from_the_elastic_error(cylinder):
     d = damped_law(cylinder, measured_epsilon=0.95, measured_speed_m_s=2.0)
     assert d.tau_err > 0.0

@@ -112,15 +112,17 @@ def test_compute_with_a_law_file_is_refused(cli, tiny):
 
 
 def test_plan_counts_the_production_collisions():
-    """Without the tiny group: the production sweeps' collisions (disk 264, sphere 312, a pair
-    228), as counted from the shipped laws' groups."""
+    """Without the tiny group: the production sweeps' collisions (disk 22 speeds, sphere 26, a
+    pair 19, each on 3 walls x 4 windows), as counted from the shipped laws' groups, and at
+    most one refining point in each interval between their speeds (21, 25, 18 x 12)."""
     from restitution.bodies.pair.partner import Partner
 
-    assert compute.plan(0.4, "disk").collisions == 264
-    assert compute.plan(0.27, "sphere").collisions == 312
-    assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4)).collisions == 228
+    assert compute.plan(0.4, "disk").collisions == 264 + 252
+    assert compute.plan(0.27, "sphere").collisions == 312 + 300
+    assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4)).collisions == 228 + 216
     # Two materials take the same sweeps (issue 27), their windows scaled with the partner's.
-    assert compute.plan(0.4, "disk", Partner(radius_ratio=1.4, modulus_ratio=2.0)).collisions == 228
+    two = Partner(radius_ratio=1.4, modulus_ratio=2.0)
+    assert compute.plan(0.4, "disk", two).collisions == 228 + 216
     with pytest.raises(Exception, match="two spheres are not computed on demand"):
         compute.plan(0.27, "sphere", Partner(radius_ratio=1.4))
 

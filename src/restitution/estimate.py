@@ -21,7 +21,8 @@ __all__ = ["ERROR_MEANING", "Estimate", "estimate_of"]
 
 ERROR_MEANING = (
     "one standard deviation of the estimate as its route states it: for a modal extrapolation "
-    "the fits' error plus the spread between the two orders of the limits and between checks; "
+    "the fits' error plus the spread between the two orders of the limits and between checks "
+    "and the shift of a quadratic in 1/alpha (the wall's curvature, a bias estimate); "
     "for the FEM the Richardson and fit errors; for the low-speed theories their model band "
     "plus what PCHIP between neighbouring low-speed points strays; between a law's points the "
     "neighbouring errors (interpolated) joined in quadrature with the interpolation's "

@@ -115,4 +115,15 @@ def status_notes(a) -> list[str]:
             lo, hi = s.computed_range_m_s
             text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
         out.append(f"note: {status}: {text}")
+    for p in a.points:
+        if not getattr(p, "informative", True):
+            out.append(f"note: at {p.speed_m_s:.4g} m/s: {_uninformative_part(p.note)}")
     return out
+
+
+def _uninformative_part(note: str) -> str:
+    """The damped model's 'not informative here: ...' or 'no value: ...' of a point's note."""
+    for head in ("not informative here", "no value: the losses"):
+        if head in note:
+            return note[note.index(head) :]
+    return note

@@ -20,7 +20,6 @@ import argparse
 import datetime
 import json
 import os
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -28,43 +27,10 @@ import numpy as np
 from restitution.bodies.kinds import geometries
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw, law
-from restitution.laws.production import production_groups
+from restitution.laws.refine import neighbour_settings
 from restitution.limits.run_options import Progress, progress_of
-from restitution.limits.sweep import SweepSettings
 
-__all__ = ["between_speeds", "compare", "coverage", "direct_points", "group_of", "main"]
-
-
-def _group_at(geometry: str, v: float) -> SweepSettings | None:
-    """The production group that computed the speed ``v`` (to rounding), or ``None``."""
-    for group in production_groups(geometry):
-        if np.any(np.isclose(group.velocities, v, rtol=1e-9, atol=0.0)):
-            return group
-    return None
-
-
-def group_of(geometry: str, v: float, points) -> SweepSettings:
-    """The production sweep for a speed ``v`` between two of the computed speeds ``points``:
-    the group of the neighbour with the larger mode window (the groups' windows grow towards
-    slow speeds, where fewer modes are not yet asymptotic), at the single speed ``v``.
-
-    Raises
-    ------
-    InputError
-        When ``v`` is not strictly between two of ``points`` computed by production groups.
-    """
-    pts = np.asarray(points, dtype=float)
-    j = int(np.searchsorted(pts, v))
-    if not (0 < j < pts.size) or v in pts:
-        raise InputError(
-            f"v = {v:g} c is not strictly between two computed speeds of the {geometry} law "
-            f"({pts[0]:g} ... {pts[-1]:g}); choose a speed between two of them"
-        )
-    groups = [g for g in (_group_at(geometry, pts[j - 1]), _group_at(geometry, pts[j])) if g]
-    if not groups:
-        raise InputError(f"no production group computed the neighbours of v = {v:g} c")
-    group = max(groups, key=lambda g: max(g.n_modes))
-    return replace(group, velocities=(float(v),))
+__all__ = ["between_speeds", "compare", "coverage", "direct_points", "main"]
 
 
 def between_speeds(law_: EpsilonLaw, per_interval: int, lo: float = 0.0, hi: float = 1.0):
@@ -82,17 +48,16 @@ def between_speeds(law_: EpsilonLaw, per_interval: int, lo: float = 0.0, hi: flo
 
 
 def direct_points(geometry, nu, speeds, *, store=None, progress: Progress | bool = False):
-    """epsilon at each speed by the production route (both limits, the settings of
-    :func:`group_of` against the shipped law's modal speeds), one
+    """epsilon at each speed by the production route (both limits, the settings of the
+    neighbouring point: :func:`restitution.laws.refine.neighbour_settings`), one
     :class:`~restitution.limits.curves.PointEpsilon` a speed."""
     from restitution.limits.curves import epsilon_at
 
     shipped = law(nu, geometry=geometry)
-    points = shipped.v[~shipped.quasistatic]
     meter = progress_of(progress)
     out = []
     for v in meter.track(list(speeds), f"direct points, {geometry} nu = {nu:g}"):
-        settings = group_of(geometry, v, points)
+        settings = neighbour_settings(shipped, v)
         out.append(epsilon_at(nu, v, settings=settings, store=store))
     return out
 

@@ -153,6 +153,9 @@ class DampedPoint:
     status : str
         The elastic law's status at this speed (:class:`restitution.status.Status`).
     note : str
+    informative : bool
+        False where the error exceeds :data:`UNINFORMATIVE` times epsilon: the note then says
+        which approximation of the damped model the error comes from.
     """
 
     speed_m_s: float
@@ -164,6 +167,7 @@ class DampedPoint:
     epsilon_viscous: float | None
     status: str
     note: str = ""
+    informative: bool = True
 
     def to_dict(self) -> dict:
         return dict(self.__dict__)
@@ -172,6 +176,44 @@ class DampedPoint:
     def estimate(self) -> Estimate:
         """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
         return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
+
+
+UNINFORMATIVE = 0.25
+"""A damped answer whose error exceeds this fraction of its epsilon gets a note saying that the
+model stops being informative there and which of its approximations the error comes from."""
+
+_TERMS = {
+    "elastic": "the elastic law's own error",
+    "tau": "the spread of the inferred relaxation time",
+    "sum": "the product of the two losses, which their sum leaves out (both losses are large)",
+    SPHERE.name: "the finite sphere's stiffer contact (SPHERE_SIZE_COEFFICIENT: measured only "
+    "for weak damping up to v = 0.0131 c, here counted at its full size)",
+    DISK.name: "how far the modal disk's viscous loss strays from the quasistatic one "
+    "(DISK_VISCOUS_SPREAD)",
+}
+"""The error terms of a damped answer (:meth:`DampedLaw._terms`; ``size`` by the body), in
+words."""
+
+
+def _overspent(eps_el: float, eps_v: float) -> str:
+    """The note of a speed where the two losses add up to all the kinetic energy or more."""
+    return (
+        f"no value: the losses to vibrations ({1.0 - eps_el**2:.3g} of the kinetic energy) and "
+        f"to viscosity ({1.0 - eps_v**2:.3g}) add up to all of it, where the model of two added "
+        f"small losses does not hold; epsilon is below {min(eps_el, eps_v):.4g} (each loss "
+        "alone)"
+    )
+
+
+def _uninformative(eps: float, err: float, terms: dict, eps_v: float, body: str) -> str:
+    """The note of a damped answer whose error is large against epsilon."""
+    big = max(terms, key=lambda k: terms[k])
+    what = _TERMS.get(body if big == "size" else big, big)
+    return (
+        f"not informative here: epsilon lies in [{max(eps - err, 0.0):.3g}, "
+        f"{min(eps + err, 1.0):.3g}]; the error {err:.2g} is mostly {what}; the viscous part "
+        f"alone (the quasistatic Kelvin-Voigt collision) gives {eps_v:.4g}"
+    )
 
 
 def _combine(eps_el, eps_v):
@@ -220,21 +262,38 @@ class DampedLaw:
             head = {"speed_m_s": p.speed_m_s, "v_over_c": p.v_over_c}
             elastic = {"epsilon_elastic": p.epsilon, "epsilon_elastic_err": p.epsilon_err}
             try:
-                eps_v, eps, err = (float(x[0]) for x in self._parts(p.v_over_c, p.epsilon,
-                                                                     p.epsilon_err))  # fmt: skip
+                eps_v, eps, terms = self._terms(p.v_over_c, p.epsilon, p.epsilon_err)
             except InputError as exc:
                 out.append(DampedPoint(**head, epsilon=None, epsilon_err=None, **elastic,
                                        epsilon_viscous=None, status=Status.OUTSIDE,
                                        note=f"viscous part: {exc}"))  # fmt: skip
                 continue
-            both = {"epsilon": None, "epsilon_err": None}
-            if p.epsilon is not None:
-                both = {"epsilon": eps, "epsilon_err": err}
-            out.append(DampedPoint(**head, **both, **elastic, epsilon_viscous=eps_v,
-                                   status=p.status, note=p.note))  # fmt: skip
+            both, note, informative = {"epsilon": None, "epsilon_err": None}, p.note, True
+            if p.epsilon is not None and not float(eps[0]) > 0.0:
+                informative = False
+                why = _overspent(p.epsilon, float(eps_v[0]))
+                note = f"{note}; {why}" if note else why
+            elif p.epsilon is not None:
+                parts = {k: float(t[0]) for k, t in terms.items()}
+                eps1, err = float(eps[0]), math.sqrt(sum(t**2 for t in parts.values()))
+                both = {"epsilon": eps1, "epsilon_err": err}
+                informative = err <= UNINFORMATIVE * eps1
+                if not informative:
+                    why = _uninformative(eps1, err, parts, float(eps_v[0]), self.si.grain.body)
+                    note = f"{note}; {why}" if note else why
+            out.append(DampedPoint(**head, **both, **elastic, epsilon_viscous=float(eps_v[0]),
+                                   status=p.status, note=note,
+                                   informative=informative))  # fmt: skip
         return tuple(out)
 
     def _parts(self, v, eps_el, err_el, advance=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(epsilon_viscous, epsilon, error)``: :meth:`_terms` with the error's terms added
+        in quadrature."""
+        eps_v, eps, terms = self._terms(v, eps_el, err_el, advance)
+        err = np.sqrt(sum(t**2 for t in terms.values())) if terms else np.full(eps.shape, np.nan)
+        return eps_v, eps, err
+
+    def _terms(self, v, eps_el, err_el, advance=None) -> tuple[np.ndarray, np.ndarray, dict]:
         """``(epsilon_viscous, epsilon, error)`` at reduced speeds ``v`` with the elastic law's
         ``eps_el +- err_el`` there (``eps_el`` may be ``None``: then only the first is
         finite). The error adds in quadrature the elastic law's error carried through the sum,
@@ -246,23 +305,23 @@ class DampedLaw:
         col = _viscous(self.si, v, self.tau, advance)
         eps_v = col.epsilon
         if eps_el is None:
-            nan = np.full(eps_v.shape, np.nan)
-            return eps_v, nan, nan
+            return eps_v, np.full(eps_v.shape, np.nan), {}
         eps_el = np.asarray(eps_el, dtype=float)
         err_el = np.asarray(err_el, dtype=float)
         eps = _combine(eps_el, eps_v)
-        err = eps_el * err_el / np.maximum(eps, 1e-300)
+        # Where the losses add up to all the energy (eps = 0) the terms are undefined: nan.
+        positive = np.where(eps > 0.0, eps, np.nan)
+        terms = {"elastic": eps_el * err_el / positive}
         if self.tau_err > 0.0:
             lo = viscous_epsilon(self.si, v, max(self.tau - self.tau_err, 0.0), advance=advance)
             hi = viscous_epsilon(self.si, v, self.tau + self.tau_err, advance=advance)
-            err = np.hypot(err, 0.5 * np.abs(_combine(eps_el, lo) - _combine(eps_el, hi)))
+            terms["tau"] = 0.5 * np.abs(_combine(eps_el, lo) - _combine(eps_el, hi))
         # What the sum leaves out: the product of the two losses (docs/damping.md).
-        left_out = (1.0 - eps_el**2) * (1.0 - eps_v**2) / (2.0 * np.maximum(eps, 1e-300))
-        err = np.hypot(err, left_out)
+        terms["sum"] = (1.0 - eps_el**2) * (1.0 - eps_v**2) / (2.0 * positive)
         grow = _modal_viscous_factor(self.si, col.elastic_max_compression)
         bigger = np.sqrt(np.maximum(1.0 - (1.0 - eps_v**2) * grow, 0.0))
-        err = np.hypot(err, np.abs(_combine(eps_el, bigger) - eps))
-        return eps_v, eps, err
+        terms["size"] = np.abs(_combine(eps_el, bigger) - eps)
+        return eps_v, eps, terms
 
     def _served(self) -> np.ndarray:
         """Which computed speeds of the elastic law the quasistatic viscous law takes."""
@@ -298,12 +357,34 @@ class DampedLaw:
         total = self.table_collisions()
         with progress_of(progress).bar(total, "damped law: viscous collisions") as meter:
             _, eps, err = self._parts(v, law.epsilon(v), law.epsilon_err(v), advance=meter)
+        # Where the two losses add up to all the kinetic energy the sum means nothing: the
+        # table stops below the first such speed (issue 47: it served 0 +- 1e298 as ok).
+        spent = np.flatnonzero(~(eps > 0.0))
+        if spent.size:
+            stop = int(spent[0])
+            if stop < 2:
+                raise InputError(
+                    f"the losses to vibrations and to viscosity add up to all the kinetic energy "
+                    f"from {v[stop] * self.si.speed_scale_m_s:.3g} m/s on; "
+                    "no damped law can be tabulated (a smaller relaxation time or a larger "
+                    "measured epsilon damps less)"
+                )
+            served[np.flatnonzero(served)[stop:]] = False
+            v, eps, err = v[:stop], eps[:stop], err[:stop]
+            limit = (
+                f"; served up to {v[-1] * self.si.speed_scale_m_s:.4g} m/s: above, the losses "
+                "add up to all the kinetic energy"
+            )
+        else:
+            limit = ""
         quasi = np.asarray(getattr(law, "quasistatic", np.zeros(served.size, bool)), bool)[served]
         records = [
             {"v": float(x), **({"route": QUASISTATIC_ROUTE} if q else {})}
             for x, q in zip(v, quasi, strict=True)
         ]
-        source = f"{self.si.law_source}, damped: tau c/R = {self.tau:.6g} +- {self.tau_err:.2g}"
+        source = (
+            f"{self.si.law_source}, damped: tau c/R = {self.tau:.6g} +- {self.tau_err:.2g}{limit}"
+        )
         damped = EpsilonLaw.from_points(
             float(law.nu),
             v,

@@ -77,6 +77,7 @@ __all__ = [
     "law",
     "law_filename",
     "law_units",
+    "point_record",
 ]
 
 QUASISTATIC_ROUTE = "quasistatic"
@@ -297,6 +298,34 @@ def leave_one_out(v, loss) -> np.ndarray:
         out[j] = abs(float(PchipInterpolator(v[rest], loss[rest])(v[j])) - loss[j])
     out[0], out[-1] = out[1], out[-2]
     return out
+
+
+def point_record(v: float, limit, settings) -> dict:
+    """One computed point as a law's ``metadata["points"]`` holds it: the speed ``v`` (``c``),
+    its extrapolation ``limit`` (a :class:`restitution.limits.extrapolate.CombinedLimit`) and
+    the sweep ``settings`` it was computed with."""
+    return {
+        "v": float(v),
+        "epsilon": limit.epsilon,
+        "epsilon_err": limit.epsilon_err,
+        "energy_loss": limit.limit,
+        "energy_loss_err": limit.limit_err,
+        "asymptotic_ok": bool(limit.asymptotic_ok),
+        "status": Status.OK if limit.asymptotic_ok else Status.NOT_ASYMPTOTIC,
+        "message": limit.message,
+        "settings": settings.to_dict(),
+        "extrapolation": limit.to_dict(),
+    }
+
+
+@dataclass(frozen=True)
+class _Recorded:
+    """Sweep settings as a point's record stores them (for :func:`point_record`)."""
+
+    settings: dict
+
+    def to_dict(self) -> dict:
+        return dict(self.settings)
 
 
 @dataclass(frozen=True)
@@ -624,21 +653,7 @@ class EpsilonLaw:
         vs = np.array([v for v, _, _ in kept])
         if np.any(np.diff(vs) <= 0):
             raise InputError("two curves computed the same speed; give each speed once")
-        points = [
-            {
-                "v": v,
-                "epsilon": c.epsilon,
-                "epsilon_err": c.epsilon_err,
-                "energy_loss": c.limit,
-                "energy_loss_err": c.limit_err,
-                "asymptotic_ok": bool(c.asymptotic_ok),
-                "status": Status.OK if c.asymptotic_ok else Status.NOT_ASYMPTOTIC,
-                "message": c.message,
-                "settings": settings.to_dict(),
-                "extrapolation": c.to_dict(),
-            }
-            for v, c, settings in kept
-        ]
+        points = [point_record(v, c, settings) for v, c, settings in kept]
         groups = []
         for curve in curves:
             d = curve.settings.to_dict()
@@ -728,6 +743,44 @@ class EpsilonLaw:
         return EpsilonLaw(
             nu=self.nu,
             v=vs,
+            epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
+            epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
+            asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),
+            metadata=metadata,
+        )
+
+    def reextrapolated(self) -> EpsilonLaw:
+        """This law with every modal point's extrapolation redone by the current code from the
+        loss grid its record stores (no collision is run): what a change of the extrapolation's
+        error rules (:mod:`restitution.limits.extrapolation`) does to a computed law. The
+        low-speed points stay as they are."""
+        from restitution.limits.extrapolation import combined_limit
+
+        records = self._records() if self.metadata.get("points") else []
+        if not records or not any("extrapolation" in r for r in records):
+            raise InputError(
+                "this law's points store no loss grids; only laws computed by this package "
+                "can be extrapolated again"
+            )
+        merged = []
+        for r in records:
+            ex = r.get("extrapolation")
+            if r.get("route") == QUASISTATIC_ROUTE or ex is None:
+                merged.append(r)
+                continue
+            grid = np.array(
+                [[np.nan if x is None else x for x in row] for row in ex["energy_loss_grid"]]
+            )
+            limit = combined_limit(
+                ex["alpha"], ex["n_modes"], grid, order=ex["order"], **ex.get("settings", {})
+            )
+            fresh = point_record(r["v"], limit, _Recorded(r["settings"]))
+            merged.append({**r, **fresh})
+        metadata = dict(self.metadata)
+        metadata["points"] = merged
+        return EpsilonLaw(
+            nu=self.nu,
+            v=np.array([float(r["v"]) for r in merged]),
             epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
             epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
             asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),

@@ -33,7 +33,7 @@ from pathlib import Path
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
 from restitution.laws.law import leave_one_out
-from restitution.limits.run_options import Executor, Progress, progress_of
+from restitution.limits.run_options import Executor, Progress, executor_of, progress_of
 from restitution.limits.sweep import SweepSettings, pair_settings, planned
 
 __all__ = [
@@ -46,6 +46,7 @@ __all__ = [
     "build",
     "low_speed_points",
     "rejoin_low_speeds",
+    "reextrapolate",
     "low_speeds_of",
     "leave_one_out",
     "DISK_LOW_SPEEDS",
@@ -361,6 +362,7 @@ def build(
     progress: Progress | bool | None = None,
     low_speeds=None,
     workers: int | None = None,
+    refine_rounds: int = 1,
 ) -> list[Path]:
     """Compute the laws for ``nus`` and write them into ``out_dir``.
 
@@ -384,6 +386,10 @@ def build(
     low_speeds : iterable of float, optional
         Speeds of the low-speed points joined to each law (:func:`low_speed_points`); default
         the body's production speeds (:func:`low_speeds_of`), ``()`` for none.
+    refine_rounds : int
+        Rounds of :func:`restitution.laws.refine.refine`: a point computed, with its
+        neighbour's settings, wherever epsilon(v) turns unresolved between the groups' speeds
+        (``0``: the groups' speeds only).
 
     Returns
     -------
@@ -391,6 +397,7 @@ def build(
         The files written.
     """
     from restitution.laws.law import EpsilonLaw, law_filename
+    from restitution.laws.refine import refine
     from restitution.limits.curves import compute_curves
 
     groups = tuple(groups)
@@ -418,6 +425,10 @@ def build(
     written = []
     for nu in nus:
         law = EpsilonLaw.from_curves([curves[nu] for curves in per_group])
+        law = refine(
+            law, rounds=refine_rounds, store=store,
+            executor=executor_of(executor, workers=workers), progress=progress_of(progress),
+        )  # fmt: skip
         if low:
             records, parameters = low_speed_points(
                 nu, low, geometry=geometry, partner=partner, progress=progress
@@ -451,6 +462,15 @@ def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: Progress | boo
     return law.joined(records, key="low_speed", parameters=parameters).to_json(path)
 
 
+def reextrapolate(path: str | Path) -> Path:
+    """Redo the extrapolation of every modal point of the law file ``path`` from its stored
+    loss grid with the current code (:meth:`restitution.laws.law.EpsilonLaw.reextrapolated`),
+    writing the file in place."""
+    from restitution.laws.law import EpsilonLaw
+
+    return EpsilonLaw.from_json(path).reextrapolated().to_json(path)
+
+
 def _count(groups, nus) -> int:
     return sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups) * len(nus)
 
@@ -474,7 +494,17 @@ def main(argv=None) -> None:
         help="recompute only the low-speed points of the laws in --out and join them to their "
         "modal points",
     )
+    parser.add_argument(
+        "--reextrapolate-only",
+        action="store_true",
+        help="redo every law's extrapolations in --out from their stored loss grids (no "
+        "collisions): after a change of the extrapolation's error rules",
+    )
     args = parser.parse_args(argv)
+    if args.reextrapolate_only:
+        for path in sorted(Path(args.out).glob("law_*.json")):
+            print(f"wrote {reextrapolate(path)}", flush=True)
+        return
     if args.low_speeds_only:
         from restitution.bodies.pair.partner import Partner
         from restitution.laws.law import law_filename

@@ -88,7 +88,8 @@ class SweepSettings:
     Attributes
     ----------
     velocities : tuple of float
-        Speeds towards the wall, units of ``c``.
+        Speeds towards the wall, units of ``c`` (kept in increasing order, whatever the order
+        given).
     alphas : tuple of float
         Wall hardness values for the ``alpha -> infinity`` extrapolation: ``alpha`` in ``1/R``
         (``alpha_scale="absolute"``) or the products ``alpha * delta_max(v)``
@@ -174,7 +175,9 @@ class SweepSettings:
             values = getattr(self, name)
             if len(values) == 0:
                 raise InputError(f"{name} must not be empty")
-        object.__setattr__(self, "velocities", tuple(float(v) for v in self.velocities))
+        # Speeds in increasing order whatever order they came in: curves and laws interpolate
+        # in v (issue 47: `curve --v 0.1 0.05` computed the grid, then failed to write it).
+        object.__setattr__(self, "velocities", tuple(sorted(float(v) for v in self.velocities)))
         object.__setattr__(self, "alphas", tuple(float(a) for a in self.alphas))
         object.__setattr__(self, "n_modes", tuple(int(n) for n in self.n_modes))
         for name in ("velocities", "alphas", "n_modes"):

@@ -108,7 +108,10 @@ _SIGMA_FLOOR = 1e-12
 
 
 def _fit(v: np.ndarray, eps: np.ndarray, sigma: np.ndarray, p0) -> np.ndarray:
-    popt, _ = curve_fit(_form, v, eps, p0=p0, sigma=sigma, absolute_sigma=True, maxfev=20000)
+    # The optimiser tries parameters where the form overflows; those trials lose, and the fit
+    # found is judged against every point afterwards (no warning for the user to act on).
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        popt, _ = curve_fit(_form, v, eps, p0=p0, sigma=sigma, absolute_sigma=True, maxfev=20000)
     return popt
 
 
