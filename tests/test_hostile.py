@@ -679,3 +679,37 @@ def test_speeds_in_any_order_are_computed_and_written(cli, tmp_path):
     assert "Traceback" not in err
     written = json.loads((out / "law_nu0.33.json").read_text())
     assert [p["v"] for p in written["metadata"]["points"]] == [0.05, 0.1]
+
+
+@pytest.mark.parametrize(
+    ("args", "match"),
+    [
+        (("modes", "--nu", "0.33", "--omega-max", "1e300"), "more than the feasible"),
+        (("modes", "--nu", "0.33", "--omega-max", "1e-300"), "no mode of the disk"),
+        (("modes", "--nu", "0.33", "--omega-max", "1.0"), "no mode of the disk"),
+        (("modes", "--geometry", "sphere", "--nu", "0.3", "--omega-max", "1e-300"),
+         "no mode of the sphere"),
+        (("collide", "--nu", "0.33", "--v", "0.1", "--modes", "20", "--density-ratio", "1e-300"),
+         "outside 1e-06 ... 1e"),
+        (("collide", "--nu", "0.33", "--v", "0.1", "--modes", "20", "--radius-ratio", "100"),
+         "use about 11959 modes"),
+        (("collide", "--nu", "0.33", "--v", "0.1", "--modes", "20", "--radius-ratio", "1e-6"),
+         "collide with the wall instead"),
+    ],
+)  # fmt: skip
+def test_frequencies_and_ratios_beyond_the_body_are_refused(cli, args, match):
+    """Issue 47: OverflowError, an empty concatenate, ZeroDivisionError in the kernel, and a
+    pair in which one body gets no modes answering epsilon = 1 with status ok."""
+    code, _, err = cli(*args)
+    one_line_error(code, err, match)
+
+
+def test_epsilon_beyond_the_linear_range_is_not_ok(cli, tmp_path):
+    """Issue 47: `epsilon --v 0.9999` said ok where `collide` said large-deformation; both now
+    judge the speed alike (v > 0.3 c: linear elasticity stretched)."""
+    store = str(tmp_path / "s.sqlite")
+    code, out, _ = cli("epsilon", "--nu", "0.33", "--v", "0.5", "--modes", "40", "80", "160",
+                       "--alpha", "100", "--json", "--store", store)  # fmt: skip
+    assert code == 0
+    d = json.loads(out)
+    assert d["status"] == "large-deformation" and "use v <= 0.3" in d["advice"]

@@ -102,15 +102,34 @@ def check_mode_request(
             f"omega_max must be a positive number (c/R), got {describe(omega_max)}; pass a "
             "finite float > 0, e.g. omega_max=40.0"
         )
-    if omega_max is not None and math.isfinite(omega_max) and omega_max > 0:
-        expected = kind.weyl_count(float(omega_max), nu)
+    if omega_max is not None and not (math.isfinite(omega_max) and omega_max > 0):
+        raise InputError(
+            f"omega_max must be a positive finite number (c/R), got {omega_max!r}; pass e.g. "
+            "omega_max=40.0"
+        )
+    if omega_max is not None:
+        # Compared as frequencies first: Weyl's count of 1e300 overflows (issue 47).
+        top = kind.omega_for(limit, nu)
+        expected = kind.weyl_count(float(omega_max), nu) if omega_max <= top else math.inf
         if expected > limit:
+            about = f"about {expected:.3g}" if math.isfinite(expected) else "unboundedly many"
             raise InputError(
-                f"omega_max = {omega_max:g} c/R means about {expected:.3g} modes of the "
+                f"omega_max = {omega_max:g} c/R means {about} modes of the "
                 f"{geometry} (Weyl's law), more than the feasible {limit}; use omega_max below "
                 f"{kind.omega_for(limit, nu):.0f}"
             )
     return count
+
+
+def _computed(kind: BodyKind, nu: float, count: int | None, omega_max: float | None):
+    """The kind's modes; a request below the lowest mode is refused (not an empty set)."""
+    modes = kind.compute(nu, count=count, omega_max=omega_max)
+    if len(modes.omega) == 0:
+        raise InputError(
+            f"no mode of the {kind.geometry} (nu = {nu:g}) lies below omega_max = {omega_max:g} "
+            f"c/R; its lowest lie near {kind.omega_for(1, nu):.3g} c/R: use a larger omega_max"
+        )
+    return modes
 
 
 def _key(kind: BodyKind, nu: float, count: int | None, omega_max: float | None) -> str:
@@ -196,19 +215,19 @@ def get_modes(
             "to bypass the cache"
         )
     if not use_cache:
-        return kind.compute(nu, count=count, omega_max=omega_max)
+        return _computed(kind, nu, count, omega_max)
     key = _key(kind, nu, count, omega_max)
     try:
         directory = cache_dir()
     except CacheError as exc:
         warnings.warn(f"{exc}; computing without the cache", stacklevel=2)
-        return kind.compute(nu, count=count, omega_max=omega_max)
+        return _computed(kind, nu, count, omega_max)
     path = directory / f"modes-{hashlib.sha256(key.encode()).hexdigest()[:24]}.npz"
     if path.exists():
         cached = _load(path, key, kind)
-        if cached is not None:
+        if cached is not None and len(cached.omega):  # an empty set is refused, not served
             return cached
-    modes = kind.compute(nu, count=count, omega_max=omega_max)
+    modes = _computed(kind, nu, count, omega_max)
     try:
         _save(path, key, modes, kind)
     except OSError:

@@ -316,3 +316,22 @@ def dumps(obj) -> str:
     """Strict JSON (``NaN`` and infinities become ``null``), numpy values included."""
     plain = json.loads(json.dumps(obj, default=json_default, allow_nan=True))
     return json.dumps(finite_tree(plain), indent=2, allow_nan=False)
+
+
+LINEAR_SPEED = 0.3
+"""Fastest impact on a wall (``c``) within the model's range: beyond it a collision's status is
+``large-deformation`` (linear elasticity stretched; the laws stop there too)."""
+
+
+def stretched(status, advice, v: float, fastest: float, result):
+    """``(status, advice)`` of a collision, ``large-deformation`` when ``v`` exceeds
+    ``fastest`` and the collision is otherwise ``ok`` (a worse status is kept)."""
+    if v <= fastest or status != Status.OK:
+        return status, advice
+    compression = getattr(result, "max_compression", None)
+    shown = "" if compression is None else f" (largest compression {compression:.2g} R)"
+    return Status.LARGE_DEFORMATION, (
+        f"v = {v:g} c is beyond {fastest:g} c, where the model's linear elasticity is "
+        f"stretched{shown}: the number is the linear model's, not a real body's; use v <= "
+        f"{fastest:g}"
+    )

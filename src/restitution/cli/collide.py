@@ -16,6 +16,7 @@ from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
+    LINEAR_SPEED,
     body_nu,
     force_option,
     geometry_option,
@@ -30,6 +31,7 @@ from restitution.cli._common import (
     quiet,
     quiet_option,
     refuse_ignored,
+    stretched,
     strict_option,
 )
 from restitution.cli.report import (
@@ -383,7 +385,7 @@ def collide(
                 result = run(ms, v, alpha, integrator=integrator, energy_tol=energy_tol,
                              step_judge=step_check)  # fmt: skip
     wall = time.perf_counter() - start
-    status, advice = _stretched(result.status, result.advice, v, LINEAR_SPEED, result)
+    status, advice = stretched(result.status, result.advice, v, LINEAR_SPEED, result)
     inputs = {"geometry": geometry, **nu_inputs(nu, plane, geometry), "v": v, "alpha": alpha,
               "method": method}  # fmt: skip
     if method == "fem":
@@ -407,25 +409,6 @@ def collide(
             note(f"warning: status {status}: {advice}")
         if strict:
             sys.exit(EXIT_NOT_CONVERGED)
-
-
-LINEAR_SPEED = 0.3
-"""Fastest impact on a wall (``c``) within the model's range: beyond it a collision's status is
-``large-deformation`` (linear elasticity stretched; the laws stop there too)."""
-
-
-def _stretched(status, advice, v: float, fastest: float, result):
-    """``(status, advice)`` of a collision, ``large-deformation`` when ``v`` exceeds
-    ``fastest`` and the collision is otherwise ``ok`` (a worse status is kept)."""
-    if v <= fastest or status != Status.OK:
-        return status, advice
-    compression = getattr(result, "max_compression", None)
-    shown = "" if compression is None else f" (largest compression {compression:.2g} R)"
-    return Status.LARGE_DEFORMATION, (
-        f"v = {v:g} c is beyond {fastest:g} c, where the model's linear elasticity is "
-        f"stretched{shown}: the number is the linear model's, not a real body's; use v <= "
-        f"{fastest:g}"
-    )
 
 
 def _check_fem(material, v: float, alpha: float, refine: int, geometry: str, force: bool):
@@ -470,7 +453,7 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
                      step_judge=step_check)  # fmt: skip
     first, second = pair.member_energies(result.mode_energy_after)
     # Two identical bodies at relative speed 2v are the wall problem at v.
-    status, advice = _stretched(result.status, result.advice, v, 2 * LINEAR_SPEED, result)
+    status, advice = stretched(result.status, result.advice, v, 2 * LINEAR_SPEED, result)
     counts = [int(c) for c in np.bincount(pair.member, minlength=2)]
     detail = {
         "geometry": pair.geometry,

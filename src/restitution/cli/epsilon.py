@@ -17,6 +17,7 @@ from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
+    LINEAR_SPEED,
     body_nu,
     check_output_dir,
     force_option,
@@ -27,6 +28,7 @@ from restitution.cli._common import (
     quiet,
     quiet_option,
     refuse_ignored,
+    stretched,
     strict_option,
     writing,
 )
@@ -257,6 +259,7 @@ def epsilon(
     result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
     failed = len(result.failures) + len(report.lost)
     status, advice = _status(result.asymptotic_ok, result.message, failed)
+    status, advice = stretched(status, advice, v, LINEAR_SPEED, None)
     inputs = {
         "geometry": geometry,
         "nu": nu,
@@ -365,6 +368,7 @@ def _fem_epsilon(
     status, advice = _status(result.asymptotic_ok, result.message, 0)
     if status != Status.OK:
         advice = f"{result.message}; refine the meshes or add harder walls (--alphas)"
+    status, advice = stretched(status, advice, v, LINEAR_SPEED, None)
     inputs = {"geometry": geometry, "nu": nu, "v": v, "alpha": alpha, "method": "fem",
               "alphas": list(alphas) or None, "alpha_scale": alpha_scale}  # fmt: skip
     body = result.to_dict()

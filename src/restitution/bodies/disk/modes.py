@@ -324,6 +324,8 @@ def _all_roots(nu: float, omega_max: float) -> tuple[np.ndarray, np.ndarray]:
         if rn.size == 0:
             break
         start += _BLOCK
+    if not ns:  # no order has a root below omega_max
+        return np.zeros(0, int), np.zeros(0)
     n = np.concatenate(ns).astype(int)
     w = np.concatenate(ws)
     keep = w < omega_max

@@ -35,12 +35,24 @@ _MARGIN = 1.1
 checked against the pair's ``N``-th frequency, and all ``N`` taken where it falls short)."""
 
 
+RATIO_RANGE = (1e-6, 1e6)
+"""The partner's ratios (radius, modulus, density) the pair takes: beyond, one body is a wall to
+the other within the package's numbers (a density ratio of 1e-300 divided by zero in the
+kernel, issue 47); collide with the wall instead."""
+
+
 def _positive(name: str, value) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
         raise InputError(f"the partner's {name} must be a positive number, got {value!r}")
     value = float(value)
     if not (math.isfinite(value) and value > 0):
         raise InputError(f"the partner's {name} must be a positive number, got {value!r}")
+    lo, hi = RATIO_RANGE
+    if not lo <= value <= hi:
+        raise InputError(
+            f"the partner's {name} {value:g} is outside {lo:g} ... {hi:g}: to one body the other "
+            "is then a rigid wall; collide with the wall instead (no partner)"
+        )
     return value
 
 
@@ -184,6 +196,33 @@ class Partner:
                 if counts[i] < n_modes and float(whole.omega[whole.member == i].max()) <= cutoff
             ]
             if not short:
+                _both_vibrate(pair, whole, n_modes, self, geometry)
                 return pair
             for i in short:
                 counts[i] = n_modes
+
+
+def _both_vibrate(pair, whole, n_modes: int, partner: Partner, geometry: str) -> None:
+    """Refuse a pair whose ``n_modes`` lowest modes all belong to one body: the other would
+    be rigid, and epsilon would come out near 1 with nothing flagged (issue 47: a radius ratio
+    of 1e-6 or 100 with 20 modes)."""
+    for i, name in enumerate(("first", "second")):
+        if np.any(pair.member == i):
+            continue
+        lowest = float(whole.omega[whole.member == i].min())
+        cutoff = float(pair.omega.max())
+        dimension = 3 if geometry == "sphere" else 2
+        most = body_kind(geometry).max_modes
+        need = int(math.ceil(n_modes * (lowest / cutoff) ** dimension)) + 1
+        advice = (
+            f"use about {need} modes or more"
+            if need <= most
+            else f"it would need about {need:.2g} modes, more than the {most} a body "
+            "takes: to the other body it is a rigid wall; collide with the wall instead"
+        )
+        raise InputError(
+            f"the {n_modes} lowest modes of the pair (R2/R1 = {partner.radius_ratio:g}) all "
+            f"belong to one body: the {name} body's lowest mode (omega = {lowest:.4g}) lies above "
+            f"them (up to {cutoff:.4g}), so it would not vibrate; {advice}"
+        )
+

@@ -210,6 +210,8 @@ def _roots(nu: float, omega_max: float) -> tuple[np.ndarray, np.ndarray]:
     orders = np.arange(0, int(omega_max / (_FLOOR_FRACTION * rayleigh_speed(nu))) + 2)
     floor = _floor(orders, nu)
     orders, floor = orders[floor < omega_max], floor[floor < omega_max]
+    if orders.size == 0:  # omega_max below every order's floor: no root
+        return np.zeros(0, int), np.zeros(0)
     n_pts = int(np.ceil((omega_max - floor.min()) / _SCAN_STEP)) + 2
     w = floor.min() + np.arange(n_pts) * _SCAN_STEP
     grid = np.broadcast_to(w[None, :], (orders.size, n_pts))
