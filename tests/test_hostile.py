@@ -713,3 +713,50 @@ def test_epsilon_beyond_the_linear_range_is_not_ok(cli, tmp_path):
     assert code == 0
     d = json.loads(out)
     assert d["status"] == "large-deformation" and "use v <= 0.3" in d["advice"]
+
+
+@pytest.mark.parametrize("kind", ["deep", "device"])
+def test_law_files_that_are_not_law_files_are_refused_before_reading(cli, tmp_path, kind):
+    """Issue 47: a deeply nested JSON file raised RecursionError; --law-file /dev/zero grew
+    without bound and ignored Ctrl-C."""
+    if kind == "deep":
+        path = tmp_path / "deep.json"
+        path.write_text("[" * 100_000 + "]" * 100_000)
+        match = "nested too deeply"
+    else:
+        path = "/dev/zero"
+        if not os.path.exists(path):
+            pytest.skip("no /dev/zero here")
+        match = "not a regular file"
+    steel = ("--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape", "cylinder")
+    code, _, err = cli("law", *steel, "--against", "wall", "--speed", "1", "--law-file", str(path))
+    one_line_error(code, err, match)
+
+
+def test_stored_rows_are_range_checked_when_read(tmp_path):
+    """Issue 47: a store row that is not JSON gave a traceback, and values read back from a
+    store were not range-checked the way law files are. A damaged row is now a failed point
+    that says why and what to do; a row whose inputs are unreadable is one clear error."""
+    from restitution.dynamics.collision import collide as run
+
+    path = tmp_path / "s.sqlite"
+    good, bad, broken = (PointSpec(0.33, v, 500.0, 10) for v in (0.1, 0.2, 0.3))
+    modes = get_modes(0.33, count=10)
+    with Store(path) as db:
+        for spec in (good, bad, broken):
+            db.put(spec, run(modes, spec.v, spec.alpha))
+    with sqlite3.connect(path) as conn:
+        conn.execute("UPDATE collisions SET epsilon = 1.7 WHERE key = ?", (bad.key(),))
+        conn.execute("UPDATE collisions SET result = '{not json' WHERE key = ?", (broken.key(),))
+    with Store(path) as db:
+        assert db.get(good).status == "ok"
+        for spec, why in ((bad, "outside [0, 1]"), (broken, "not JSON")):
+            p = db.get(spec)
+            assert p.status == "failed" and why in p.error and "fresh store" in p.error
+            assert np.isnan(p.epsilon)
+    with sqlite3.connect(path) as conn:
+        conn.execute("UPDATE collisions SET inputs = '{' WHERE key = ?", (good.key(),))
+    with Store(path) as db:
+        assert "not JSON" in db.get(good).error
+        with pytest.raises(StoreError, match="inputs are not JSON"):
+            db.points(all_versions=True)

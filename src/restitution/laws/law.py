@@ -138,6 +138,10 @@ def _model(geometry: str, partner=None) -> str:
     return kind.law_model if partner is None else PAIR_MODEL.format(kind=kind.geometry)
 
 
+MAX_LAW_BYTES = 64_000_000
+"""The largest law file read (the shipped ones hold 0.2-0.9 MB): a device such as /dev/zero or
+a runaway file is refused before it is read (issue 47: it grew without bound)."""
+
 NU_MATCH = 1e-4
 """Largest ``|nu - nu_law|`` for which a law serves ``nu`` as it is."""
 
@@ -817,10 +821,18 @@ class EpsilonLaw:
         _check_path(path)
         path = Path(path)
         try:
+            if path.exists() and not path.is_file():
+                raise ValueError("not a regular file")
+            size = path.stat().st_size
+            if size > MAX_LAW_BYTES:
+                raise ValueError(
+                    f"{size / 1e6:.0f} MB, more than a law file's {MAX_LAW_BYTES / 1e6:.0f} MB"
+                )
             d = json.loads(path.read_text())
-        except (OSError, ValueError) as exc:
+        except (OSError, ValueError, RecursionError) as exc:
+            why = "nested too deeply" if isinstance(exc, RecursionError) else exc
             raise InputError(
-                f"cannot read law file {path}: {exc}; give the path of a law JSON file"
+                f"cannot read law file {path}: {why}; give the path of a law JSON file"
             ) from None
         return cls._from_dict(d, str(path))
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 import sqlite3
 import time
 from collections.abc import Iterable, Iterator
@@ -554,7 +555,7 @@ class Store:
         """The stored row of ``spec`` (this code version), or None."""
         row = self._read(f"SELECT {_ROW} FROM collisions WHERE key = ?", (spec.key(),))
         row = row[0] if row else None
-        return None if row is None else _row_to_point(row)
+        return None if row is None else _row_to_point(row, spec)
 
     def status(self, specs: Iterable[PointSpec]) -> dict[str, str]:
         """Map key -> status for those of ``specs`` that are stored."""
@@ -629,10 +630,45 @@ def _partner(stored: dict | None, num) -> Partner | None:
     return Partner.from_key({k: None if v is None else num(v) for k, v in stored.items()})
 
 
-def _row_to_point(row: tuple) -> StoredPoint:
+_DAMAGED = (
+    "it is not used; compute into a fresh store (--store another file, or store= another path)"
+)
+
+
+def _damaged(values: dict, blob) -> str | None:
+    """Why an ``ok`` row's values cannot be a collision's (unreadable result, epsilon or loss
+    outside [0, 1], a non-finite drift), or ``None`` (issue 47: rows were not range-checked the
+    way law files are)."""
+    eps, loss, drift = values["epsilon"], values["energy_loss"], values["energy_drift"]
+    if not all(isinstance(x, int | float) and math.isfinite(x) for x in (eps, loss, drift)):
+        return "its epsilon, energy loss or drift is not a finite number"
+    if not (0.0 <= eps <= 1.0 + 1e-9 and -1e-9 <= loss <= 1.0):
+        return f"its epsilon {eps:.6g} or energy loss {loss:.6g} lies outside [0, 1]"
+    if blob is not None:
+        try:
+            json.loads(blob)
+        except (ValueError, TypeError, RecursionError):
+            return "its stored result is not JSON"
+    return None
+
+
+def _row_to_point(row: tuple, spec: PointSpec | None = None) -> StoredPoint:
     inputs, status, error, *rest = row
     scalars, (blob, version, created) = rest[: len(_SCALARS)], rest[len(_SCALARS) :]
-    d = json.loads(inputs)
+    values = dict(zip(_SCALARS, scalars, strict=True))
+    if status == Status.OK:
+        why = _damaged(values, blob)
+        if why is not None:
+            status, error, blob = Status.FAILED, f"damaged stored row: {why}; {_DAMAGED}", None
+            values = dict.fromkeys(values)
+    try:
+        d = json.loads(inputs)
+    except (ValueError, TypeError, RecursionError):
+        if spec is None:
+            raise StoreError(
+                f"a row of the result store is damaged (its inputs are not JSON); {_DAMAGED}"
+            ) from None
+        return _failed(spec, "damaged stored row: its inputs are not JSON; " + _DAMAGED)
 
     def num(v):
         return float.fromhex(v) if isinstance(v, str) else v
@@ -656,7 +692,6 @@ def _row_to_point(row: tuple) -> StoredPoint:
         relaxation_time=num(d.get("relaxation_time", 0.0)),
         contact_law=_law_of(d.get("contact_law")),
     )
-    values = dict(zip(_SCALARS, scalars, strict=True))
     nan = float("nan")
     return StoredPoint(
         spec=spec,
@@ -675,6 +710,15 @@ def _row_to_point(row: tuple) -> StoredPoint:
         code_version=version,
         created_at=created,
     )
+
+
+def _failed(spec: PointSpec, message: str) -> StoredPoint:
+    """A failed point of ``spec`` with ``message`` (no values)."""
+    nan = float("nan")
+    return StoredPoint(spec=spec, status=Status.FAILED, error=message, epsilon=nan,
+                       energy_loss=nan, energy_drift=nan, contact_time=nan, max_compression=nan,
+                       max_force=nan, n_steps=0, dt=nan, wall_time_s=nan, result=None,
+                       code_version="", created_at="")  # fmt: skip
 
 
 class _Transaction:
