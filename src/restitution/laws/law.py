@@ -465,7 +465,7 @@ class EpsilonLaw:
         records = self.metadata.get("points") or []
         return records if len(records) == self.v.size else [{} for _ in self.v]
 
-    @property
+    @cached_property
     def quasistatic(self) -> np.ndarray:
         """Whether each point comes from the low-speed theory (``route == "quasistatic"`` in its
         record, :mod:`restitution.quasistatic.low_speed`) rather than from collisions, shape
@@ -501,7 +501,21 @@ class EpsilonLaw:
         return bool(np.all(np.diff(self.epsilon_points) <= 0))
 
     def _interpolant(self, values: np.ndarray) -> PchipInterpolator:
+        # The points' two interpolants are built once (issue 47: 1e5 speeds one at a time
+        # built 2e5 of them).
+        if values is self.epsilon_points:
+            return self._epsilon_interpolant
+        if values is self.epsilon_err_points:
+            return self._err_interpolant
         return PchipInterpolator(self.v, values, extrapolate=False)
+
+    @cached_property
+    def _epsilon_interpolant(self) -> PchipInterpolator:
+        return PchipInterpolator(self.v, self.epsilon_points, extrapolate=False)
+
+    @cached_property
+    def _err_interpolant(self) -> PchipInterpolator:
+        return PchipInterpolator(self.v, self.epsilon_err_points, extrapolate=False)
 
     def _check(self, v: np.ndarray, outside: str) -> np.ndarray:
         if not (isinstance(outside, str) and outside in ("raise", "warn", "nan")):
