@@ -760,3 +760,21 @@ def test_stored_rows_are_range_checked_when_read(tmp_path):
         assert "not JSON" in db.get(good).error
         with pytest.raises(StoreError, match="inputs are not JSON"):
             db.points(all_versions=True)
+
+
+@pytest.mark.parametrize(
+    ("args", "match"),
+    [
+        (("curve", "--out", ""), "'--out': is empty"),
+        (("law", "--export", " "), "'--export': is empty"),
+        (("collide", "--bogus"), "No such option '--bogus'"),
+    ],
+)
+def test_usage_errors_are_one_line_and_an_empty_path_is_refused(cli, tmp_path, args, match,
+                                                                monkeypatch):  # fmt: skip
+    """Issue 47: `--out ''` wrote into the working directory; click's usage errors took four
+    lines."""
+    monkeypatch.chdir(tmp_path)
+    code, _, err = cli(*args)
+    one_line_error(code, err, match)
+    assert list(tmp_path.iterdir()) == []

@@ -43,6 +43,16 @@ plane_option = click.option(
 )
 
 
+class PathOption(click.Path):
+    """``click.Path`` that refuses an empty path (issue 47: ``--out ''`` wrote into the working
+    directory); ``.`` names the working directory."""
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, str) and not value.strip():
+            self.fail("is empty; give a path (. for the working directory)", param, ctx)
+        return super().convert(value, param, ctx)
+
+
 def _geometry_help(plane: bool = True) -> str:
     """Each kind in one clause: what --nu is for it (``plane``: the command has --plane)."""
     clauses = []

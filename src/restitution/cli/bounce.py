@@ -10,6 +10,7 @@ import click
 
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.cli._common import (
+    PathOption,
     check_figure_file,
     material_from,
     note,
@@ -39,7 +40,7 @@ from restitution.errors import InputError
               help="Distance between two facing walls, R (> 2).")  # fmt: skip
 @click.option("--energy-tol", type=float, default=1e-6, show_default=True,
               help="Largest accepted relative energy drift of each collision.")  # fmt: skip
-@click.option("--plot", type=click.Path(dir_okay=False, path_type=Path), default=None,
+@click.option("--plot", type=PathOption(dir_okay=False, path_type=Path), default=None,
               help="Draw the impact speeds against a constant-eps disk to this file.")  # fmt: skip
 @format_options
 @click.option("--force", is_flag=True,

@@ -17,6 +17,7 @@ from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
     LINEAR_SPEED,
+    PathOption,
     body_nu,
     force_option,
     geometry_option,
@@ -251,7 +252,7 @@ def _vibrating() -> str:
 )
 @click.option(
     "--plot",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=PathOption(dir_okay=False, path_type=Path),
     default=None,
     help="--excite thermal: draw the histogram of epsilon to this file.",
 )

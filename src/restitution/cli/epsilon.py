@@ -18,6 +18,7 @@ from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
     LINEAR_SPEED,
+    PathOption,
     body_nu,
     check_output_dir,
     force_option,
@@ -137,7 +138,7 @@ def _executor_options(f):
     )(f)
     f = click.option(
         "--store",
-        type=click.Path(dir_okay=False, path_type=Path),
+        type=PathOption(dir_okay=False, path_type=Path),
         default=None,
         help="Result store (SQLite); default: results.sqlite in the user cache directory.",
     )(f)
@@ -434,7 +435,7 @@ _FIGURE_FORMATS = ("png", "pdf", "svg")
 )
 @click.option(
     "--out",
-    type=click.Path(file_okay=False, path_type=Path),
+    type=PathOption(file_okay=False, path_type=Path),
     default=Path("restitution-curve"),
     show_default=True,
     help="Directory for figures and exports.",

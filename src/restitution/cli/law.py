@@ -15,6 +15,7 @@ import click
 
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
+    PathOption,
     check_figure_file,
     note,
     quiet,
@@ -29,9 +30,9 @@ from restitution.laws.request import LawRequest
 _TYPES = {
     "float": dict(type=float, default=None),
     "floats": dict(type=float, multiple=True),
-    "file": dict(type=click.Path(dir_okay=False, exists=True, path_type=Path), default=None),
-    "path": dict(type=click.Path(dir_okay=False, path_type=Path), default=None),
-    "dir": dict(type=click.Path(file_okay=False, path_type=Path), default=None),
+    "file": dict(type=PathOption(dir_okay=False, exists=True, path_type=Path), default=None),
+    "path": dict(type=PathOption(dir_okay=False, path_type=Path), default=None),
+    "dir": dict(type=PathOption(file_okay=False, path_type=Path), default=None),
     "flag": dict(is_flag=True),
 }
 
@@ -59,7 +60,7 @@ class _LawCommand(_ListCommand):
 @click.option(
     "--plot",
     "plot_file",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=PathOption(dir_okay=False, path_type=Path),
     default=None,
     help="Also draw epsilon(w) over the law's range with its error band, the speeds computed "
     "by collisions and the asked speeds, to this file (format from its suffix: .png, .pdf, "

@@ -10,6 +10,7 @@ import click
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.cli._common import (
+    PathOption,
     body_nu,
     check_figure_file,
     check_output_file,
@@ -50,19 +51,19 @@ def _table(records: list[dict], geometry: str) -> str:
 @format_options(also=("table",), also_help=" CSV: one row per mode. table: the old name of text.")
 @click.option(
     "--output",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=PathOption(dir_okay=False, path_type=Path),
     default=None,
     help="Write the listing to FILE instead of standard output.",
 )
 @click.option(
     "--plot-spectrum",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=PathOption(dir_okay=False, path_type=Path),
     default=None,
     help="Draw Fig. 3 (omega against n, radial and tangential type apart) to FILE.",
 )
 @click.option(
     "--plot-shapes",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=PathOption(dir_okay=False, path_type=Path),
     default=None,
     help="Draw Fig. 2 (deformed polar grid of low modes) to FILE.",
 )

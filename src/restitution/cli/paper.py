@@ -10,6 +10,7 @@ from pathlib import Path
 
 import click
 
+from restitution.cli._common import PathOption
 from restitution.cli.report import (
     Report,
     emit,
@@ -90,14 +91,14 @@ class _StageProgress:
 )
 @click.option(
     "--out",
-    type=click.Path(file_okay=False, path_type=Path),
+    type=PathOption(file_okay=False, path_type=Path),
     default=Path("paper-output"),
     show_default=True,
     help="Folder for the figures, Table 1 and report.html / report.md.",
 )
 @click.option(
     "--store",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=PathOption(dir_okay=False, path_type=Path),
     default=None,
     help="Result store of the sweep (SQLite), shared with `restitution curve`; default: "
     "results.sqlite in the user cache directory. A second run reuses every stored collision.",
