@@ -778,3 +778,23 @@ def test_usage_errors_are_one_line_and_an_empty_path_is_refused(cli, tmp_path, a
     code, _, err = cli(*args)
     one_line_error(code, err, match)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_store_that_fills_during_a_sweep_reports_the_full_disk(tmp_path, monkeypatch):
+    """Issue 47: the clear error of a store whose disk filled during a sweep was masked by a
+    traceback from releasing the sweep's claims on that same full disk."""
+    from restitution.limits.claims import Claims
+    from restitution.limits.sweep import SweepSettings, grid, run_sweep
+
+    def full(self, spec, result):
+        raise StoreError("the result store's disk is full; free space or use another --store")
+
+    def release(self):
+        raise sqlite3.OperationalError("database or disk is full")
+
+    monkeypatch.setattr(Store, "put", full)
+    monkeypatch.setattr(Claims, "release", release)
+    settings = SweepSettings(velocities=(0.1,), n_modes=(10,), alphas=(40.0,))
+    with pytest.raises(StoreError, match="disk is full; free space"):
+        run_sweep(grid([0.33], settings), store=tmp_path / "s.sqlite", workers=1,
+                  progress=False)  # fmt: skip

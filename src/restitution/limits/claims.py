@@ -120,9 +120,14 @@ class Claims:
         self._conn.execute("DELETE FROM claims WHERE owner = ?", (self.owner,))
 
     def close(self) -> None:
-        """Release the claims and close the connection."""
+        """Release the claims and close the connection. A release that fails (a full disk, a
+        locked store) is let go: the claims' heartbeat stops, so other sweeps take them over,
+        and the error that ended the sweep is the one reported (issue 47: a full disk's clear
+        error was masked by a traceback from here)."""
         try:
             self.release()
+        except sqlite3.Error:
+            pass
         finally:
             self._conn.close()
 
