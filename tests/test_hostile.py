@@ -798,3 +798,21 @@ def test_a_store_that_fills_during_a_sweep_reports_the_full_disk(tmp_path, monke
     with pytest.raises(StoreError, match="disk is full; free space"):
         run_sweep(grid([0.33], settings), store=tmp_path / "s.sqlite", workers=1,
                   progress=False)  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("fields", "match"),
+    [
+        ({"velocities": 0.1}, "velocities must be a sequence of numbers"),
+        ({"n_modes": [[10]]}, "n_modes must be a sequence of numbers"),
+        ({"n_modes": [10.5]}, "n_modes must be whole numbers"),
+        ({"alphas": "40"}, r"alphas=\(40, 80, 160\)"),
+    ],
+)
+def test_sweep_settings_of_the_wrong_shape_are_one_clear_error(fields, match):
+    """Issue 47: API settings given as a bare number or a nested list raised TypeError."""
+    from restitution.limits.sweep import SweepSettings
+
+    with pytest.raises(InputError, match=match):
+        SweepSettings(**fields)
+    assert SweepSettings(n_modes=np.array([10, 20])).n_modes == (10, 20)

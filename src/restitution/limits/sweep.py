@@ -35,7 +35,7 @@ from restitution.bodies.kinds import DEFAULT_GEOMETRY, SweepPlan, body_kind
 from restitution.bodies.pair.partner import Partner
 from restitution.bodies.viscoelastic import Viscoelastic
 from restitution.dynamics.contact import EXPONENTIAL_WALL, ContactLaw, law_from_key
-from restitution.errors import InputError
+from restitution.errors import InputError, describe, is_real_array
 from restitution.limits.claims import POLL_S, Claims
 from restitution.limits.defaults import (
     ALPHA_PRODUCTS,
@@ -173,8 +173,17 @@ class SweepSettings:
             object.__setattr__(self, "integrator", "split")
         for name in ("velocities", "alphas", "n_modes"):
             values = getattr(self, name)
+            # One flat sequence of numbers (issue 47: a bare float or a nested list raised a
+            # TypeError deep inside).
+            if not (is_real_array(values) and np.ndim(values) == 1):
+                raise InputError(
+                    f"{name} must be a sequence of numbers, got {describe(values)}; pass e.g. "
+                    f"{name}={_EXAMPLES[name]}"
+                )
             if len(values) == 0:
                 raise InputError(f"{name} must not be empty")
+        if not all(float(n).is_integer() for n in self.n_modes):
+            raise InputError(f"n_modes must be whole numbers, got {describe(self.n_modes)}")
         # Speeds in increasing order whatever order they came in: curves and laws interpolate
         # in v (issue 47: `curve --v 0.1 0.05` computed the grid, then failed to write it).
         object.__setattr__(self, "velocities", tuple(sorted(float(v) for v in self.velocities)))
@@ -261,6 +270,10 @@ class SweepSettings:
 # Not part of a stored point's key: the integrator is keyed separately, histories are not
 # stored, and the two backends give the same numbers to round-off (tests/test_kernel.py).
 _NOT_KEYED = ("integrator", "record", "record_interval", "backend")
+
+
+_EXAMPLES = {"velocities": "(0.1, 0.2)", "alphas": "(40, 80, 160)", "n_modes": "(100, 200)"}
+"""An example of each sequence of :class:`SweepSettings`, for its refusal."""
 
 
 def _solver_settings(integrator: str | None, options: Any) -> tuple[str, tuple]:
