@@ -816,3 +816,19 @@ def test_sweep_settings_of_the_wrong_shape_are_one_clear_error(fields, match):
     with pytest.raises(InputError, match=match):
         SweepSettings(**fields)
     assert SweepSettings(n_modes=np.array([10, 20])).n_modes == (10, 20)
+
+
+def test_an_unwritable_cache_sends_numba_to_a_temporary_folder(tmp_path):
+    """Issue 47: with a cache directory that cannot be made, numba wrote its kernels next to
+    the package's sources; it now gets a folder of this user in the temporary directory."""
+    import sys
+    import tempfile
+
+    blocker = tmp_path / "a-file"
+    blocker.write_text("")
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env["RESTITUTION_CACHE_DIR"] = str(blocker / "cache")
+    code = "import os, restitution; print(os.environ['NUMBA_CACHE_DIR'])"
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                         check=True).stdout.strip()  # fmt: skip
+    assert out.startswith(tempfile.gettempdir()) and "restitution-numba-" in out

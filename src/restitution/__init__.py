@@ -15,9 +15,9 @@ import os as _os
 # them to the package's cache instead, so an installed package's tree is never written. numba
 # reads NUMBA_CACHE_DIR once, when it is first imported (by the imports below).
 if "NUMBA_CACHE_DIR" not in _os.environ:
-    from restitution._paths import cache_root as _cache_root
+    from restitution._paths import numba_cache_dir as _numba_cache_dir
 
-    _os.environ["NUMBA_CACHE_DIR"] = str(_cache_root() / "numba")
+    _os.environ["NUMBA_CACHE_DIR"] = str(_numba_cache_dir())
 
 from restitution._version import __version__  # noqa: E402
 from restitution.bodies.cache import CacheError, get_modes
