@@ -832,3 +832,14 @@ def test_an_unwritable_cache_sends_numba_to_a_temporary_folder(tmp_path):
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
                          check=True).stdout.strip()  # fmt: skip
     assert out.startswith(tempfile.gettempdir()) and "restitution-numba-" in out
+
+
+def test_a_refused_step_count_names_step_safety_and_max_steps():
+    """Issue 47: a tiny step_safety or max_steps was blamed on alpha alone."""
+    modes = get_modes(0.33, count=20)
+    with pytest.raises(InputError, match="step_safety = 1e-06 shrinks every step"):
+        collide(modes, 0.1, 100.0, CollisionSettings(step_safety=1e-6))
+    with pytest.raises(InputError, match=r"raise max_steps \(now 10\)"):
+        collide(modes, 0.1, 100.0, CollisionSettings(max_steps=10))
+    # Following the advice works: the default step_safety and max_steps run it.
+    assert 0 < collide(modes, 0.1, 100.0).epsilon <= 1

@@ -177,6 +177,15 @@ def check_work(
             "tolerance": f"energy_tol = {settings.energy_tol:.3g} asks for that step: raise "
             f"energy_tol (default {DEFAULT_ENERGY_TOL:g}) or max_steps",
         }[est.limit]
+        if est.limit != "fixed" and settings.step_safety < 1.0:
+            # The step the limit asks for is scaled by step_safety: name it (issue 47: a tiny
+            # step_safety was blamed on alpha).
+            advice = (
+                f"step_safety = {settings.step_safety:.3g} shrinks every step that much: raise "
+                f"it towards 1; else {advice}"
+            )
+        if "max_steps" not in advice:
+            advice += f", or raise max_steps (now {settings.max_steps})"
         raise InputError(
             f"this collision would need about {est.steps:.2g} time steps (simulated time "
             f"{est.t_end:.3g} R/c at dt = {est.dt:.3g} R/c), more than max_steps = "
