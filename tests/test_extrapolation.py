@@ -283,8 +283,8 @@ def test_a_bent_wall_dependence_is_covered_by_the_curvature_term():
 
 
 def test_harder_walls_stay_within_the_sphere_points_error():
-    """The shipped sphere point at v = 0.0993 (nu = 0.3, walls alpha delta_max = 40-160) and the
-    same point computed on harder walls (80-320 and 160-640; tests/data, regression values of
+    """The shipped sphere point at v = 0.0993 (nu = 0.3, walls alpha delta_max = 80-320) and the
+    same point computed on harder walls (160-640 and 320-1280; tests/data, regression values of
     this package): epsilon moved by 5.8e-5 and 7.0e-5, more than the 5.0e-5 stated before the
     curvature term, within the error stated now."""
     from importlib import resources

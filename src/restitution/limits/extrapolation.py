@@ -654,8 +654,8 @@ def alpha_curvature_shift(fit: LinearLimit) -> float:
     ``1/alpha``; 0 with fewer than three points.
 
     Measured on the sphere (``nu = 0.3``, ``v = 0.0993``): its production walls (``alpha
-    delta_max = 40, 80, 160``) gave epsilon = 0.9914089 with an error of 5.0e-5 before this
-    term; the walls ``80-320`` and ``160-640`` gave 0.9913508 and 0.9913394, 5.8e-5 and
+    delta_max = 80, 160, 320``) gave epsilon = 0.9914089 with an error of 5.0e-5 before this
+    term; the walls ``160-640`` and ``320-1280`` gave 0.9913508 and 0.9913394, 5.8e-5 and
     7.0e-5 away; this shift is 6.3e-5 of epsilon there (docs/numerics.md)."""
     if fit.y.size < MIN_POINTS or not math.isfinite(fit.limit):
         return 0.0
