@@ -166,7 +166,8 @@ def test_first_grid_interpolation_coverage_over_all_direct_laws():
         diff = np.abs(served.epsilon(v) - direct.epsilon(v))
         sigmas += list(diff / np.hypot(served.epsilon_err(v), direct.epsilon_err(v)))
     sigmas = np.array(sigmas)
-    assert sigmas.size == 88
+    # 22 production speeds of each direct law and its refined points (3, 3, 5, 3; issue 45).
+    assert sigmas.size == 88 + 14
     assert np.mean(sigmas <= 1.0) >= 0.9 and np.all(sigmas <= 2.0)
 
 

@@ -205,12 +205,14 @@ class NuInterpolatedLaw:
 
     @property
     def v(self) -> np.ndarray:
-        """Speeds computed for every grid law (inside the common range), increasing."""
-        common = set(np.round(self.nodes[0].v, 12))
-        for n in self.nodes[1:]:
-            common &= set(np.round(n.v, 12))
-        hi = self.valid_range[1]
-        return np.array(sorted(x for x in common if x <= hi))
+        """Speeds computed for any grid law inside the range they all cover, increasing: each
+        law's own points where epsilon(v) turns (:mod:`restitution.laws.refine`) are kept, so
+        that what is tabulated from these points follows :meth:`epsilon` between them."""
+        lo, hi = self.valid_range
+        every = set()
+        for n in self.nodes:
+            every |= set(np.round(n.v, 12))
+        return np.array(sorted(x for x in every if lo <= x <= hi))
 
     @property
     def epsilon_points(self) -> np.ndarray:
@@ -222,20 +224,23 @@ class NuInterpolatedLaw:
 
     @property
     def asymptotic_ok(self) -> np.ndarray:
-        """A point is asymptotic when it is in every grid law."""
+        """A point is asymptotic when every grid law's points around it passed their checks
+        (:meth:`EpsilonLaw.checked`: the point itself where a law computed it)."""
         ok = np.ones(self.v.size, bool)
         for n in self.nodes:
-            idx = np.searchsorted(n.v, self.v)
-            ok &= np.asarray(n.asymptotic_ok)[np.clip(idx, 0, n.v.size - 1)]
+            ok &= np.atleast_1d(n.checked(self.v))
         return ok
 
     @property
     def quasistatic(self) -> np.ndarray:
-        """A point is from the low-speed theory when it is in any grid law."""
+        """A point is from the low-speed theory when, in any grid law, it is such a point or
+        lies between two of them."""
         out = np.zeros(self.v.size, bool)
         for n in self.nodes:
-            idx = np.searchsorted(n.v, self.v)
-            out |= np.asarray(n.quasistatic)[np.clip(idx, 0, n.v.size - 1)]
+            q = np.asarray(n.quasistatic)
+            hi = np.clip(np.searchsorted(n.v, self.v, side="left"), 0, n.v.size - 1)
+            lo = np.clip(np.searchsorted(n.v, self.v, side="right") - 1, 0, n.v.size - 1)
+            out |= q[lo] & q[hi]
         return out
 
     @property
