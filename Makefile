@@ -22,7 +22,8 @@ paper-quick: $(STAMP)
 	$(BIN)/restitution paper --quick --out $(OUT)
 
 # Recompute the shipped epsilon(v) laws (src/restitution/laws/data) with the current code
-# (collisions, then the low-speed points of the slow-impact model: about 4 minutes a law),
+# (collisions, 2-5 points a law where epsilon(v) turns, then the low-speed points of the
+# slow-impact model: about 4 minutes a law),
 # then draw their slow-point figures into docs/figures.
 law: $(STAMP)
 	$(BIN)/python -m restitution.laws.production
@@ -30,8 +31,9 @@ law: $(STAMP)
 	$(BIN)/python -m restitution.reproduction.figures.disk_low_speed --figures docs/figures
 
 # The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline (about 40 minutes from
-# a cold store, then 10 minutes of low-speed points), then their figures in docs/figures (beside
-# cylinders; the slow losses of three routes).
+# a cold store, 46 more for the points where epsilon(v) turns (restitution.laws.refine), then 10
+# minutes of low-speed points), then their figures in docs/figures (beside cylinders; the slow
+# losses of three routes).
 law-sphere: $(STAMP)
 	$(BIN)/python -m restitution.laws.production --geometry sphere
 	$(BIN)/python -m restitution.reproduction.figures.sphere_cylinder --figures docs/figures
