@@ -35,7 +35,7 @@ _MARGIN = 1.1
 checked against the pair's ``N``-th frequency, and all ``N`` taken where it falls short)."""
 
 
-RATIO_RANGE = (1e-6, 1e6)
+RATIO_RANGE = (1e-12, 1e12)
 """The partner's ratios (radius, modulus, density) the pair takes: beyond, one body is a wall to
 the other within the package's numbers (a density ratio of 1e-300 divided by zero in the
 kernel, issue 47); collide with the wall instead."""
