@@ -33,4 +33,3 @@ def numba_cache_dir() -> Path:
         pass
     uid = os.getuid() if hasattr(os, "getuid") else "user"
     return Path(tempfile.gettempdir()) / f"restitution-numba-{uid}"
-

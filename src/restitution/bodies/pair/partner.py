@@ -225,4 +225,3 @@ def _both_vibrate(pair, whole, n_modes: int, partner: Partner, geometry: str) ->
             f"belong to one body: the {name} body's lowest mode (omega = {lowest:.4g}) lies above "
             f"them (up to {cutoff:.4g}), so it would not vibrate; {advice}"
         )
-
