@@ -48,7 +48,9 @@ def test_computes_the_exact_nu_once_then_serves_the_file(cli, tiny, monkeypatch)
     args = ("law", *STEEL, "--speed", "1000", "--compute", "--store", str(tiny / "s.sqlite"))
     code, out, err = cli(*args, "--json")
     assert code == 0, err
-    assert "27 collisions" in err and "into" in err  # the estimate, before the work
+    # The estimate, before the work: 27 collisions and at most one refining point in each of
+    # the 2 intervals (3 x 3 grids; restitution.laws.refine).
+    assert "45 collisions" in err and "into" in err
     d = json.loads(out)
     path = tiny / "cache" / "laws" / "law_nu0.369863.json"
     assert path.is_file()
@@ -85,8 +87,8 @@ def test_a_computation_beyond_the_time_bound_is_refused_unless_forced(cli, tiny,
     monkeypatch.setitem(KINDS, "disk", replace(disk, production=slow))
     args = ("law", *STEEL, "--speed", "1000", "--compute")
     code, out, err = cli(*args)
-    # 27 collisions of 1e4 s and two low-speed points of 2.05 s: 270004 s
-    one_line_error(code, err, "27 collisions", "3.13 days", "1 h bound", "--force")
+    # 27 + 2 x 9 collisions (refinement bound) of 1e4 s and two low-speed points of 2.05 s
+    one_line_error(code, err, "45 collisions", "5.21 days", "1 h bound", "--force")
     assert not (tiny / "cache" / "laws").exists()
     code, out, err = cli(*args, "--force", "--store", str(tiny / "s.sqlite"))
     assert code == 0, err
@@ -139,7 +141,7 @@ def test_curve_production_writes_the_law_with_the_production_groups(cli, tiny, m
             str(tiny / "s.sqlite"), "--no-progress")  # fmt: skip
     code, stdout, err = cli(*args)
     assert code == 0, err
-    assert "27 collisions" in err
+    assert "45 collisions" in err  # 27 and the refinement's bound (3 speeds: none refined)
     law = EpsilonLaw.from_json(out / "law_nu0.41.json")
     assert list(law.v) == [*TINY_LOW, 0.1, 0.2, 0.3]
     assert law.quasistatic.tolist() == [True, True, False, False, False]
