@@ -19,11 +19,11 @@ from __future__ import annotations
 import argparse
 import datetime
 import json
-import os
 from pathlib import Path
 
 import numpy as np
 
+from restitution import atomic
 from restitution.bodies.kinds import geometries
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw, law
@@ -102,9 +102,7 @@ def coverage(rows, key: str = "z") -> dict:
 
 def _write(path: Path, data: dict) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(path.suffix + ".tmp")
-    tmp.write_text(json.dumps(data, indent=1) + "\n")
-    os.replace(tmp, path)
+    atomic.write_text(path, json.dumps(data, indent=1) + "\n")
 
 
 def main(argv=None) -> None:
