@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick law law-sphere law-pair damping-figure sphere-figures test test-slow lint bench clean
+.PHONY: setup paper paper-quick law law-sphere law-pair law-sphere-pair damping-figure sphere-figures test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -45,6 +45,13 @@ law-sphere: $(STAMP)
 law-pair: $(STAMP)
 	$(BIN)/python -m restitution.laws.production --geometry pair
 	$(BIN)/python -m restitution.reproduction.figures.pair_epsilon --figures docs/figures
+
+# The laws of two spheres (law_sphere_pair_*.json: radius ratios 1.5, 2 and 4 at nu = 0.3, steel
+# on glass of one size), by their low-speed route alone up to its reach (about 4 minutes a law;
+# docs/spheres.md, section "Two spheres").
+law-sphere-pair: $(STAMP)
+	$(BIN)/python -m restitution.laws.production --geometry sphere-pair
+	$(BIN)/python -m restitution.reproduction.figures.sphere_pairs --figures docs/figures
 
 # epsilon(w) of damping steel grains (docs/damping.md): the elastic laws and the viscous loss.
 damping-figure: $(STAMP)

@@ -125,8 +125,10 @@ def test_plan_counts_the_production_collisions():
     # Two materials take the same sweeps (issue 27), their windows scaled with the partner's.
     two = Partner(radius_ratio=1.4, modulus_ratio=2.0)
     assert compute.plan(0.4, "disk", two).collisions == 228 + 216
-    with pytest.raises(Exception, match="two spheres are not computed on demand"):
-        compute.plan(0.27, "sphere", Partner(radius_ratio=1.4))
+    # Two spheres: their low-speed route up to its reach, no collisions (issue 41).
+    spheres = compute.plan(0.27, "sphere", Partner(radius_ratio=1.4))
+    assert spheres.collisions == 0 and 300 < spheres.low_points < 487
+    assert "low-speed route" in spheres.words()
 
 
 @pytest.mark.slow  # 14-67 s of the default run (issue 45: the default run under 10 min)

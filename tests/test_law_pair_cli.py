@@ -303,15 +303,19 @@ def test_refusals_are_one_line(laws, capsys, extra, message):
     one_line_error(exc.value.code, capsys.readouterr().err, message)
 
 
-def test_a_sphere_pair_is_refused_in_one_line_without_traceback():
+def test_a_sphere_pairs_exports_are_refused_in_one_line_without_traceback(tmp_path):
+    """Two spheres of different sizes are served at the asked speeds by their low-speed route
+    (tests/test_sphere_pair.py); exports need their law at every speed, which only --compute
+    makes: one line saying so, and no folder."""
     run_ = subprocess.run(
         [str(Path(sys.executable).with_name("restitution")), *BASE[:-1], "sphere",
-         "--against", "grain", "--partner-radius-ratio", "2"],
+         "--against", "grain", "--partner-radius-ratio", "3", "--export", str(tmp_path / "x")],
         capture_output=True, text=True,
     )  # fmt: skip
     assert run_.returncode == 2
     assert run_.stderr.count("\n") == 1 and "Traceback" not in run_.stderr
-    assert "laws of two spheres of different sizes are not computed yet" in run_.stderr
+    assert "needs the pair's law at every speed" in run_.stderr and "--compute" in run_.stderr
+    assert not (tmp_path / "x").exists()
 
 
 def test_help_shows_a_partner_of_another_material(capsys):

@@ -10,12 +10,15 @@ run for an unequal pair in tests/test_every_body.py.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
 from restitution import get_modes
 from restitution.bodies.base import ModalBody
+from restitution.bodies.kinds import KINDS
 from restitution.bodies.pair import BodyPair, pair_of
 from restitution.dynamics.collision import collide
 from restitution.errors import InputError
@@ -97,12 +100,14 @@ def test_lowest_is_a_common_frequency_cutoff(disk):
     assert isinstance(low, BodyPair) and low.take([0]).omega[0] == low.omega[0]
 
 
-def test_pair_refuses_what_it_cannot_be(disk):
+def test_pair_refuses_what_it_cannot_be(disk, monkeypatch):
     sphere = get_modes(0.3, count=10, geometry="sphere")
     with pytest.raises(InputError, match="two bodies of one kind"):
         pair_of(disk, sphere)
     with pytest.raises(InputError, match="radius_ratio must be a positive number"):
         pair_of(disk, radius_ratio=-1.0)
+    # A kind without a surface basis at arbitrary angles pairs only bodies of one radius.
+    monkeypatch.setitem(KINDS, "sphere", replace(KINDS["sphere"], basis_at=None))
     with pytest.raises(InputError, match="different radii are not implemented"):
         pair_of(sphere, radius_ratio=1.4).surface_quadrature(64)
     with pytest.raises(InputError, match="only 120"):

@@ -205,9 +205,10 @@ class BodyKind:
         ``basis_at(orders, angle)``: the surface basis of the orders at any angles, shape
         (M, 2K) (what a pair of two radii needs); ``None``: not available.
     pair_compression : callable or None
-        ``pair_compression(w, radius_ratio, modulus_ratio, density_ratio)``: the quasistatic
-        largest approach of two such bodies' centres at relative speed ``w`` (``c1``), ``R1``;
-        ``None``: pairs of this kind are not sized yet.
+        ``pair_compression(w, radius_ratio, modulus_ratio, density_ratio, nu1, nu2)``: the
+        quasistatic largest approach of two such bodies' centres at relative speed ``w``
+        (``c1``), ``R1`` (``nu1``, ``nu2`` their own Poisson numbers, which a kind with
+        :attr:`scales_need_nu` needs); ``None``: pairs of this kind are not sized yet.
     production : ProductionPlan or None
         How its shipped laws on the wall are computed.
     pair_production : PairPlan or None

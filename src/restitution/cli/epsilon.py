@@ -691,13 +691,14 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
     for p in plans:
         check_plan(p, force)
     check_output_dir(out, "--out")  # before the sweep, not after it
-    low = low_speeds_of(geometry, partner)
     written, lines, laws, rows = [], [], [], []
     for nu, p in zip(nus, plans, strict=True):
         note(f"note: nu = {nu:g}: {p.words()}")
+        low = low_speeds_of(geometry, partner, nu)
         with writing(out, "--out"):
             (path,) = build(out, [nu], groups, store=store, workers=workers,
-                            progress=False if quiet() else progress, low_speeds=low)  # fmt: skip
+                            progress=False if quiet() else progress, low_speeds=low,
+                            geometry=geometry, partner=partner)  # fmt: skip
             law = EpsilonLaw.from_json(path)
             files = [path, law.to_csv(path.with_suffix(".csv")),
                      law.to_table(path.with_suffix(".txt"))]  # fmt: skip

@@ -71,10 +71,15 @@ def _eps(p) -> tuple[str, str]:
 
 def _rows(a) -> list[str]:
     """The elastic law's rows."""
-    lines = ["  speed [m/s]        v/c       epsilon      error   status"]
+    split = any(getattr(p, "loss_shares", None) for p in a.points)
+    head = "  speed [m/s]        v/c       epsilon      error   status"
+    lines = [head + ("        loss in grain 1 / 2" if split else "")]
     for p in a.points:
         eps, err = _eps(p)
-        lines.append(f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}")
+        line = f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}"
+        if split and p.loss_shares is not None:
+            line = f"{line:<70}{100 * p.loss_shares[0]:5.1f} % / {100 * p.loss_shares[1]:5.1f} %"
+        lines.append(line.rstrip())
     return lines
 
 
@@ -111,7 +116,9 @@ def status_notes(a) -> list[str]:
     s = a.damped.si if a.damped is not None else a.law
     out = []
     for status, text in notes.items():
-        if status == Status.OUTSIDE:
+        if status == Status.OUTSIDE and getattr(s.law, "at_points_only", False):
+            text = next(p.note for p in a.points if p.status == Status.OUTSIDE)
+        elif status == Status.OUTSIDE:
             lo, hi = s.computed_range_m_s
             text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
         out.append(f"note: {status}: {text}")

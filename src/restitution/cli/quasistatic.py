@@ -40,6 +40,7 @@ from restitution.quasistatic.hertz_pair import (
 from restitution.quasistatic.hertz_sphere import (
     CONTACT_TIME_CONSTANT,
     sphere_contact_law,
+    sphere_pair_contact_law,
     sphere_quasistatic_collision,
 )
 
@@ -166,8 +167,9 @@ def quasistatic(
     Reports the maximal compression, the contact time (and for the disk the eq. (61)
     estimates), and the fraction of the kinetic energy left in the modes when the quasistatic
     force drives them at the contact point (paper section 5). With --radius-ratio (or another
-    partner option) two disks meet at relative speed V: their 2D Hertz law with a common
-    contact width (docs/two-disks.md), without Rayleigh's estimate.
+    partner option) two bodies meet at relative speed V: two disks by their 2D Hertz law with a
+    common contact width (docs/two-disks.md), without Rayleigh's estimate; two spheres by the
+    pair's 3D Hertz law, with Rayleigh's estimate of each sphere's loss (docs/spheres.md).
     """
     fmt = output_format(fmt, as_json)
     if geometry != DISK.geometry:
@@ -181,6 +183,9 @@ def quasistatic(
         raise InputError(f"--modes must be at least 1, got {n_modes}")
     body = body_nu(nu, plane, geometry)
     partner = partner_from(ctx, nu, plane, geometry)
+    if partner is not None and geometry == SPHERE.geometry:
+        _sphere_pair(ctx, body, partner, v, n_modes, fmt)
+        return
     if partner is not None:
         _pair(ctx, body, partner, geometry, v, law, fmt)
         return
@@ -311,6 +316,84 @@ def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, fmt: str) 
         f"{out['wall_scale_compression']:.6g})\n"
         f"  contact time     {out['contact_time']:.6g} R1/c1\n"
         f"  max force        {out['max_force']:.6g} E1 R1"
+    )
+    _emit(inputs, out, text, fmt)
+
+
+def sphere_pair_summary(nu: float, partner, w: float, n_modes: int) -> dict:
+    """What the command reports for two spheres at relative speed ``w`` (``c1``): their Hertz
+    law, the quasistatic collision with the reduced mass, and the route's estimate of the loss
+    (:func:`restitution.quasistatic.low_speed.low_speed_loss` of the pair: both spheres' modes
+    below one frequency, each driven at its own pole) with its error and each sphere's share."""
+    from restitution.quasistatic.low_speed import low_speed_loss, reach
+
+    pair = partner.pair(nu, n_modes, SPHERE.geometry)
+    r = low_speed_loss(pair, w)
+    law = sphere_pair_contact_law(
+        nu, partner.nu2(nu), radius_ratio=partner.radius_ratio,
+        modulus_ratio=partner.modulus_ratio,
+    )  # fmt: skip
+    q = sphere_quasistatic_collision(law, w, mass=pair.mass)
+    return {
+        "geometry": "sphere-pair",
+        "nu": nu,
+        "partner": partner.to_dict(),
+        "partner_nu": partner.nu2(nu),
+        "v": w,
+        "E_star": law.E_star,
+        "R_eff": law.R,
+        "reduced_mass": pair.mass,
+        "max_compression": float(q.max_compression[0]),
+        "contact_radius": float(q.contact_radius[0]),
+        "max_force": float(q.max_force[0]),
+        "contact_time": float(q.contact_time[0]),
+        "energy_loss": r.energy_loss,
+        "energy_loss_err": r.energy_loss_err,
+        "epsilon": r.epsilon,
+        "epsilon_err": r.epsilon_err,
+        "shares": list(r.shares),
+        "n_modes": len(pair),
+        "reach": reach(nu, partner),
+        "units": {
+            "system": "E1 = rho1 = R1 = 1: the first sphere's 3D constants",
+            "speed": "c1 = sqrt(E1/rho1) (v: the relative normal speed of the two centres)",
+            "length": "R1 (compressions: approach of the two centres)",
+            "time": "R1/c1",
+            "force": "E1 R1^2",
+            "mass": "rho1 R1^3",
+            "energy": "fraction of (mu/2) v^2, mu the reduced mass",
+        },
+    }
+
+
+def _sphere_pair(ctx, nu: float, partner, w: float, n_modes: int, fmt: str) -> None:
+    """``quasistatic --geometry sphere --radius-ratio ...``: two spheres (docs/spheres.md)."""
+    from restitution.quasistatic.low_speed import PAIR_LOW_SPEED_MODES
+
+    if not given(ctx, "n_modes"):
+        n_modes = PAIR_LOW_SPEED_MODES
+    out = sphere_pair_summary(nu, partner, w, n_modes)
+    inputs = {"geometry": SPHERE.geometry, "nu": nu, "partner_nu": out["partner_nu"], "v": w,
+              "modes": n_modes, "radius_ratio": partner.radius_ratio,
+              "modulus_ratio": partner.modulus_ratio,
+              "density_ratio": partner.density_ratio}  # fmt: skip
+    first, second = out["shares"]
+    beyond = "" if w <= out["reach"] else " (above the route's reach: not served by `law`)"
+    text = (
+        f"quasistatic collision of two spheres, nu = {nu:g} and {out['partner_nu']:g}, R2/R1 = "
+        f"{partner.radius_ratio:g}, E2/E1 = {partner.modulus_ratio:g}, rho2/rho1 = "
+        f"{partner.density_ratio:g}; relative speed v = {w:g} c1\n"
+        f"  E* = {out['E_star']:.6g} E1, R_eff = {out['R_eff']:.6g} R1, reduced mass "
+        f"{out['reduced_mass']:.6g} rho1 R1^3\n"
+        f"  max approach of the centres  {out['max_compression']:.6g} R1 (contact radius "
+        f"{out['contact_radius']:.6g} R1)\n"
+        f"  contact time     {out['contact_time']:.6g} R1/c1\n"
+        f"  max force        {out['max_force']:.6g} E1 R1^2\n"
+        f"  Rayleigh: energy left in {out['n_modes']} modes of both = "
+        f"{out['energy_loss']:.6g} +- {out['energy_loss_err']:.2g} of (mu/2) v^2 "
+        f"({first:.4g} in the first sphere, {second:.4g} in the second); epsilon = "
+        f"{out['epsilon']:.9g} +- {out['epsilon_err']:.2g}\n"
+        f"  the route's reach: v = {out['reach']:.4g} c1{beyond}"
     )
     _emit(inputs, out, text, fmt)
 

@@ -66,7 +66,7 @@ def seconds_per_collision(geometry: str, partner=None) -> float:
     if partner is None:
         return own
     pairs = kind.pair_production
-    scale = window_scale(partner)
+    scale = window_scale(partner, geometry)
     return max(own, pairs.seconds_at_5 * (scale / 5.0) ** pairs.cost_power)
 
 
@@ -79,21 +79,24 @@ def seconds_per_low_point(geometry: str, partner=None) -> float:
 
 def check_modes(nu: float, groups, partner=None) -> None:
     """Refuse (one line, with the numbers) a pair whose largest mode window needs more modes of
-    one disk than the mode cache holds (:data:`restitution.bodies.cache.MAX_MODES`): a partner
-    much softer, denser or larger than the first disk."""
-    if partner is None:
+    one body than its kind computes (:attr:`~restitution.bodies.kinds.BodyKind.max_modes`): a
+    partner much softer, denser or larger than the first body."""
+    groups = tuple(groups)
+    if partner is None or not groups:
         return
-    from restitution.bodies.cache import MAX_MODES
-
+    geometry = groups[0].geometry
+    kind = body_kind(geometry)
     largest = max(max(g.n_modes) for g in groups)
-    counts = partner.counts(largest, nu)
-    if max(counts) > MAX_MODES:
+    counts = partner.counts(largest, nu, geometry)
+    if max(counts) > kind.max_modes:
+        name = kind.geometry
         raise InputError(
-            f"the pair's largest mode window, {largest} modes of both disks, needs {max(counts)} "
-            f"modes of one disk (the mode cache holds {MAX_MODES}): the partner has "
-            f"{window_scale(partner) - 1:.3g} times the first disk's modes below one frequency "
-            "(r^2 rho2/E2); laws of such pairs are not computed, collide single points with "
-            "`restitution collide --radius-ratio ...`"
+            f"the pair's largest mode window, {largest} modes of both {name}s, needs "
+            f"{max(counts)} modes of one {name} (at most {kind.max_modes} are computed): the "
+            f"partner has {window_scale(partner, geometry) - 1:.3g} times the first {name}'s "
+            "modes below one frequency; laws of such pairs are not computed, collide single "
+            f"points with `restitution collide{(' ' + kind.option) if kind.option else ''} "
+            "--radius-ratio ...`"
         )
 
 
@@ -111,15 +114,26 @@ class ComputePlan:
         of their speeds (stored ones are reused, so this is an upper bound).
     seconds : float
         Estimated wall time on one core.
+    low_points : int
+        Speeds computed by the low-speed route.
     """
 
-    def __init__(self, path: Path, exists: bool, collisions: int, seconds: float):
+    def __init__(
+        self, path: Path, exists: bool, collisions: int, seconds: float, low_points: int = 0
+    ):
         self.path, self.exists, self.collisions, self.seconds = path, exists, collisions, seconds
+        self.low_points = low_points
 
     def words(self) -> str:
         """One line for the user: what is computed and how long it takes."""
         if self.exists:
             return f"using the law computed before, {self.path}"
+        if not self.collisions:
+            return (
+                f"computing the law by its low-speed route ({self.low_points} speeds, no "
+                f"collisions): about {budget.format_duration(self.seconds)} on one core, into "
+                f"{self.path}"
+            )
         return (
             f"computing the law with the production settings: {self.collisions} collisions, "
             f"about {budget.format_duration(self.seconds)} on one core (stored collisions are "
@@ -148,12 +162,12 @@ def plan(
     # At most one refining point per interval of the groups' speeds (restitution.laws.refine,
     # one round), each with a group's grid: an upper bound (the sphere's laws took 14-18 of 25).
     speeds = sum(len(g.velocities) for g in groups)
-    count += max(speeds - 1, 0) * max(len(g.alphas) * len(g.n_modes) for g in groups)
+    count += max(speeds - 1, 0) * max((len(g.alphas) * len(g.n_modes) for g in groups), default=0)
     seconds = count * seconds_per_collision(geometry, partner)
-    low = low_speeds_of(geometry, partner)
+    low = low_speeds_of(geometry, partner, nu)
     if low:
         seconds += len(low) * seconds_per_low_point(geometry, partner)
-    return ComputePlan(path, reuse and _usable(path), count, seconds)
+    return ComputePlan(path, reuse and _usable(path), count, seconds, len(low))
 
 
 def check_plan(p: ComputePlan, force: bool = False) -> None:
@@ -220,5 +234,6 @@ def computed_law(
     groups = production_groups(geometry, partner)
     (written,) = build(p.path.parent, [nu], groups, store=store, executor=executor,
                        workers=workers, progress=progress,
-                       low_speeds=low_speeds_of(geometry, partner))  # fmt: skip
+                       low_speeds=low_speeds_of(geometry, partner, nu),
+                       geometry=geometry, partner=partner)  # fmt: skip
     return written

@@ -737,6 +737,43 @@ class EpsilonLaw:
             metadata,
         )
 
+    @classmethod
+    def from_records(
+        cls,
+        nu: float,
+        records: list[dict],
+        *,
+        key: str,
+        parameters: Mapping,
+        geometry: str = DEFAULT_GEOMETRY,
+        partner=None,
+        at_points_only: bool = False,
+    ) -> EpsilonLaw:
+        """A law of one route's points alone (the low-speed route of two spheres), records as
+        :meth:`joined` takes them; ``at_points_only``: the law serves its speeds and nothing
+        between them (:attr:`at_points_only`)."""
+        _check_partner(partner)
+        records = sorted(records, key=lambda r: float(r["v"]))
+        metadata = _metadata(nu, {}, geometry, partner)
+        metadata["points"] = records
+        metadata[key] = dict(parameters)
+        if at_points_only:
+            metadata["interpolant"] = "none: served at its computed speeds only"
+        return cls(
+            nu=float(nu),
+            v=np.array([float(r["v"]) for r in records]),
+            epsilon_points=np.array([float(r["epsilon"]) for r in records]),
+            epsilon_err_points=np.array([float(r["epsilon_err"]) for r in records]),
+            asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in records]),
+            metadata=metadata,
+        )
+
+    @property
+    def at_points_only(self) -> bool:
+        """Whether the law serves its computed speeds only (a law computed at the speeds a user
+        asked for, :func:`restitution.laws.route_law.route_law`): between them it is outside."""
+        return str(self.metadata.get("interpolant", "")).startswith("none")
+
     def joined(self, records: list[dict], *, key: str, parameters: Mapping) -> EpsilonLaw:
         """This law with further points from another route, e.g. the sphere's low-speed points.
 

@@ -53,6 +53,7 @@ __all__ = [
     "PAIR_LOW_SPEEDS",
     "pair_groups",
     "PAIR_TWO_MATERIALS",
+    "route_pair_laws",
     "low_speed_route",
     "production",
     "production_groups",
@@ -115,21 +116,45 @@ PAIR_WALL_GROUPS = tuple(planned(DEFAULT_GEOMETRY, g) for g in _DISK.pair_produc
 (the disk's kind says why)."""
 
 
-def _steel_glass():
+def _steel_glass(shape: str, radius_ratio: float):
+    """``(law nu, Partner)`` of a steel grain of ``shape`` with a glass one ``radius_ratio``
+    times as large."""
     from restitution.laws.si_law import pair_partner
     from restitution.laws.units import Grain
 
-    steel = Grain(E=210e9, nu=0.3, rho=7850.0, shape="cylinder")
-    glass = Grain(E=63e9, nu=0.2481, rho=2500.0, shape="cylinder")
-    return steel.law_nu, pair_partner(steel, glass, 1.4)
+    steel = Grain(E=210e9, nu=0.3, rho=7850.0, shape=shape)
+    glass = Grain(E=63e9, nu=0.2481, rho=2500.0, shape=shape)
+    return steel.law_nu, pair_partner(steel, glass, radius_ratio)
 
 
-PAIR_TWO_MATERIALS = (_steel_glass(),)
+PAIR_TWO_MATERIALS = (_steel_glass("cylinder", 1.4),)
 """``(nu_2d, Partner)`` of the shipped laws of two disks of two materials: a steel cylinder
 (``E = 210 GPa``, ``nu = 0.3``, ``rho = 7850 kg/m^3``) with a glass cylinder (``63 GPa``,
 ``0.2481``, ``2500 kg/m^3``) 1.4 times as large, in the steel's plane-strain units
 (:func:`restitution.laws.si_law.pair_partner`). Other pairs of materials are computed on
 demand (:func:`restitution.laws.compute.computed_law`, ``restitution law ... --compute``)."""
+
+
+def _routed_pairs():
+    """The kinds whose pairs' laws are their low-speed route alone (no modal groups: the
+    sphere)."""
+    return [k for k in kinds().values() if k.pair_production and not k.pair_production.groups]
+
+
+def route_pair_laws() -> list[tuple[str, float, object]]:
+    """``(geometry, nu, Partner)`` of every shipped law of a pair made by its low-speed route
+    alone (``make law-sphere-pair``): each such kind's pair plan (for the sphere radius ratios
+    1.5, 2 and 4 at ``nu = 0.3``) and a steel grain of the kind with a glass one of its size
+    (the constants of :data:`PAIR_TWO_MATERIALS`, the kind's own)."""
+    from restitution.bodies.pair.partner import Partner
+
+    out = []
+    for kind in _routed_pairs():
+        plan = kind.pair_production
+        out += [(kind.geometry, nu, Partner(radius_ratio=r))
+                for r in plan.radius_ratios for nu in plan.nus]  # fmt: skip
+        out.append((kind.geometry, *_steel_glass(next(iter(kind.shapes)), 1.0)))
+    return out
 
 
 def pair_groups(
@@ -163,6 +188,11 @@ def _paired():
     return [kind for kind in kinds().values() if kind.pair_production is not None]
 
 
+def _collided():
+    """The kinds whose pairs' laws are made of collisions (``--geometry pair``: the disk)."""
+    return [kind for kind in _paired() if kind.pair_production.groups]
+
+
 DISK_LOW_SPEEDS = _DISK.production.low_speeds
 """Speeds of the disk's low-speed points (:func:`low_speed_points`,
 :mod:`restitution.quasistatic.slow_disk`), ``c``: from ``1e-7`` (0.5 mm/s for a steel cylinder)
@@ -183,16 +213,29 @@ def low_speed_route(geometry: str, partner=None) -> str | None:
     return kind.low_speed_route if partner is None else kind.pair_low_speed_route
 
 
-def low_speeds_of(geometry: str, partner=None) -> tuple[float, ...]:
+def low_speeds_of(geometry: str, partner=None, nu: float | None = None) -> tuple[float, ...]:
     """The speeds of the low-speed points joined to the production law of a body on a wall
     (its kind's :attr:`~restitution.bodies.kinds.ProductionPlan.low_speeds`; the disk's are
     :data:`DISK_LOW_SPEEDS`) or of two bodies (:data:`PAIR_LOW_SPEEDS` for disks); none where
-    the kind has no route or no plan."""
+    the kind has no route or no plan. With ``nu``, only those within the route's reach
+    (:func:`route_reach`; without it all, an upper bound for estimates)."""
     kind = body_kind(geometry)
     plan = kind.production if partner is None else kind.pair_production
     if plan is None or low_speed_route(geometry, partner) is None:
         return ()
-    return plan.low_speeds
+    top = None if nu is None else route_reach(geometry, nu, partner)
+    return tuple(v for v in plan.low_speeds if top is None or v <= top * (1.0 + 1e-12))
+
+
+def route_reach(geometry: str, nu: float, partner=None) -> float | None:
+    """The fastest speed (``c``; a pair's relative speed) the low-speed route of ``geometry``
+    (with ``partner``) serves, or ``None`` where its plan's speeds are its reach: for two
+    spheres :func:`restitution.quasistatic.low_speed.reach`, which depends on the partner."""
+    if low_speed_route(geometry, partner) != "rayleigh" or partner is None:
+        return None
+    from restitution.quasistatic.low_speed import reach
+
+    return reach(float(nu), partner)
 
 
 def _track(speeds, nu: float, progress: Progress):
@@ -207,21 +250,30 @@ def _rayleigh_points(
     from restitution.quasistatic.low_speed import (
         CONTACT_TIME_SPREAD,
         LOW_SPEED_MODES,
+        PAIR_LOW_SPEED_MODES,
         interpolation_error,
         low_speed_loss,
     )
 
-    modes = get_modes(nu, LOW_SPEED_MODES, geometry=geometry)
+    if partner is None:
+        modes = get_modes(nu, LOW_SPEED_MODES, geometry=geometry)
+        count = LOW_SPEED_MODES
+    else:  # both spheres' modes below one frequency, each driven at its own pole
+        count = PAIR_LOW_SPEED_MODES
+        modes = partner.pair(nu, count, geometry)
     # What PCHIP between neighbouring points may miss joins each point's error.
     between = interpolation_error(modes, speeds) if len(speeds) > 1 else [0.0]
     out = []
     steps = _track(speeds, nu, progress)
     for v, gap in zip(steps, between, strict=True):
         r = low_speed_loss(modes, v)
-        out.append((r, float(gap), {"band": list(r.band)}))
+        details = {"band": list(r.band)}
+        if partner is not None:
+            details["shares"] = list(r.shares)
+        out.append((r, float(gap), details))
     parameters = {
         "route": "Rayleigh's estimate on Hertz's force pulse (restitution.quasistatic.low_speed)",
-        "n_modes": LOW_SPEED_MODES,
+        "n_modes": count,
         "contact_time_spread": CONTACT_TIME_SPREAD,
     }
     return out, parameters
@@ -304,7 +356,9 @@ def low_speed_points(
             f"{', '.join(_routed())} have one"
         )
     route = _LOW_SPEED_ROUTES[name]
-    speeds = [float(v) for v in (low_speeds_of(geometry, partner) if speeds is None else speeds)]
+    speeds = [
+        float(v) for v in (low_speeds_of(geometry, partner, nu) if speeds is None else speeds)
+    ]
     results, parameters = route(geometry, float(nu), speeds, progress_of(progress), partner)
     records = []
     for v, (r, gap, details) in zip(speeds, results, strict=True):
@@ -363,6 +417,8 @@ def build(
     low_speeds=None,
     workers: int | None = None,
     refine_rounds: int = 1,
+    geometry: str | None = None,
+    partner=None,
 ) -> list[Path]:
     """Compute the laws for ``nus`` and write them into ``out_dir``.
 
@@ -390,6 +446,9 @@ def build(
         Rounds of :func:`restitution.laws.refine.refine`: a point computed, with its
         neighbour's settings, wherever epsilon(v) turns unresolved between the groups' speeds
         (``0``: the groups' speeds only).
+    geometry, partner
+        The body of a law without collisions (no ``groups``: the low-speed route alone, as for
+        two spheres); with groups they are the groups'.
 
     Returns
     -------
@@ -401,19 +460,27 @@ def build(
     from restitution.limits.curves import compute_curves
 
     groups = tuple(groups)
-    bodies = {g.geometry for g in groups}
-    if len(bodies) != 1:
-        raise InputError(f"the groups of one law need one body, got {', '.join(sorted(bodies))}")
-    geometry = bodies.pop()
-    partners = {g.partner for g in groups}
-    if len(partners) != 1:
-        raise InputError("the groups of one law need one partner (one pair, or all on the wall)")
-    partner = partners.pop()
+    if groups:
+        bodies = {g.geometry for g in groups}
+        if len(bodies) != 1:
+            raise InputError(
+                f"the groups of one law need one body, got {', '.join(sorted(bodies))}"
+            )
+        geometry = bodies.pop()
+        partners = {g.partner for g in groups}
+        if len(partners) != 1:
+            raise InputError(
+                "the groups of one law need one partner (one pair, or all on the wall)"
+            )
+        partner = partners.pop()
+    elif geometry is None:
+        raise InputError("a law without collisions (no groups) needs its geometry")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     nus = [float(nu) for nu in nus]
-    low = tuple(low_speeds_of(geometry, partner) if low_speeds is None else low_speeds)
-    if low and low_speed_route(geometry, partner) is None:
+    if low_speed_route(geometry, partner) is None and (
+        not groups or (low_speeds is not None and tuple(low_speeds))
+    ):
         raise InputError(
             f"low-speed points are derived for {', '.join(_routed())}, not for the "
             f"{geometry}{' pair' if partner is not None else ''}"
@@ -424,6 +491,17 @@ def build(
     ]
     written = []
     for nu in nus:
+        low = tuple(low_speeds_of(geometry, partner, nu) if low_speeds is None else low_speeds)
+        if not groups:  # a law of the low-speed route alone (two spheres)
+            records, parameters = low_speed_points(
+                nu, low, geometry=geometry, partner=partner, progress=progress
+            )
+            law = EpsilonLaw.from_records(
+                nu, records, key="low_speed", parameters=parameters, geometry=geometry,
+                partner=partner,
+            )  # fmt: skip
+            written.append(law.to_json(out / law_filename(nu, geometry, partner)))
+            continue
         law = EpsilonLaw.from_curves([curves[nu] for curves in per_group])
         law = refine(
             law, rounds=refine_rounds, store=store,
@@ -455,7 +533,7 @@ def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: Progress | boo
 
     law = EpsilonLaw.from_json(path).modal_part()
     geometry, partner = law.geometry, law.partner
-    low = low_speeds_of(geometry, partner) if speeds is None else tuple(map(float, speeds))
+    low = low_speeds_of(geometry, partner, law.nu) if speeds is None else tuple(map(float, speeds))
     records, parameters = low_speed_points(
         law.nu, low, geometry=geometry, partner=partner, progress=progress
     )
@@ -480,11 +558,12 @@ def main(argv=None) -> None:
     parser.add_argument("--out", default=str(Path(__file__).parent / "data"))
     parser.add_argument(
         "--geometry",
-        choices=(*_produced(), "pair"),
+        choices=(*_produced(), "pair", "sphere-pair"),
         default=DEFAULT_GEOMETRY,
-        help="the body: disk (law_nu<nu>.json), sphere (law_sphere_nu<nu>.json) or pair (two "
+        help="the body: disk (law_nu<nu>.json), sphere (law_sphere_nu<nu>.json), pair (two "
         "disks of one material, law_pair_r<R2/R1>_nu<nu>.json for PAIR_RADIUS_RATIOS, and the "
-        "steel-glass pair of PAIR_TWO_MATERIALS)",
+        "steel-glass pair of PAIR_TWO_MATERIALS) or sphere-pair (two spheres by their "
+        "low-speed route: route_pair_laws())",
     )
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--store", default=None, help="result store (default: user cache)")
@@ -505,6 +584,14 @@ def main(argv=None) -> None:
         for path in sorted(Path(args.out).glob("law_*.json")):
             print(f"wrote {reextrapolate(path)}", flush=True)
         return
+    if args.geometry == "sphere-pair":
+        start = time.perf_counter()
+        for geometry, nu, partner in route_pair_laws():
+            (path,) = build(args.out, [nu], (), geometry=geometry, partner=partner,
+                            progress=True)  # fmt: skip
+            print(f"wrote {path}", flush=True)
+        print(f"{len(route_pair_laws())} laws in {time.perf_counter() - start:.0f} s")
+        return
     if args.low_speeds_only:
         from restitution.bodies.pair.partner import Partner
         from restitution.laws.law import law_filename
@@ -512,7 +599,7 @@ def main(argv=None) -> None:
         start = time.perf_counter()
         if args.geometry == "pair":
             names = [law_filename(nu, kind.geometry, Partner(radius_ratio=r))
-                     for kind in _paired() for r in kind.pair_production.radius_ratios
+                     for kind in _collided() for r in kind.pair_production.radius_ratios
                      for nu in kind.pair_production.nus]  # fmt: skip
             names += [law_filename(nu, DEFAULT_GEOMETRY, p) for nu, p in PAIR_TWO_MATERIALS]
         else:
@@ -523,7 +610,7 @@ def main(argv=None) -> None:
         return
     if args.geometry == "pair":
         runs = [(kind.pair_production.nus, pair_groups(r, geometry=kind.geometry))
-                for kind in _paired() for r in kind.pair_production.radius_ratios]  # fmt: skip
+                for kind in _collided() for r in kind.pair_production.radius_ratios]  # fmt: skip
         runs += [((nu,), pair_groups(p)) for nu, p in PAIR_TWO_MATERIALS]
     else:
         runs = [production(args.geometry)]

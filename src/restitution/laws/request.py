@@ -83,8 +83,9 @@ class LawRequest:
             "material (either way round; 1 = identical grains). Served by the law of the pair "
             "(law_pair_r<R>_nu<nu_2d>.json, or --law-file from `restitution curve --nu NU_2D "
             "--radius-ratio R`); w is the relative normal speed. With a constant, the exports "
-            "give type pairs 1-1 and 2-2 (identical grains) and 1-2 (the pair). Cylinders and "
-            "thin disks only.",
+            "give type pairs 1-1 and 2-2 (identical grains) and 1-2 (the pair). Two spheres: "
+            "law_sphere_pair_r<R>_nu<nu>.json where shipped, else each speed computed now by "
+            "their low-speed route (up to its reach, about 15 m/s for steel).",
         ),
     )
     partner_E: float | None = field(
@@ -94,9 +95,10 @@ class LawRequest:
             "With --against grain: Young modulus of the partner grain's 3D material, Pa [this "
             "grain's]. A partner of another material (--partner-E, --partner-nu, "
             "--partner-rho): one pair is shipped (steel E = 210e9, nu = 0.3, rho = 7850 with "
-            "glass 63e9, 0.2481, 2500, 1.4 times as large, cylinders); any other is computed "
-            "with --compute (the estimate is stated first) or read from --law-file. Cylinders "
-            "and thin disks only; the partner has this grain's geometry.",
+            "glass 63e9, 0.2481, 2500, 1.4 times as large, cylinders; the same of one size, "
+            "spheres); any other pair of cylinders is computed with --compute (the estimate is "
+            "stated first) or read from --law-file, any other pair of spheres at the asked "
+            "speeds by their low-speed route. The partner has this grain's geometry.",
         ),
     )
     partner_nu: float | None = field(

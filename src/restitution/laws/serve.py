@@ -29,6 +29,7 @@ from restitution.laws import exports
 from restitution.laws.damped import DampedLaw, damped_law
 from restitution.laws.request import LawRequest
 from restitution.laws.si_law import SI_UNITS, SILaw, law_target, overall_status, si_law
+from restitution.laws.units import Grain
 from restitution.limits.run_options import Progress
 
 __all__ = ["LawAnswer", "serve"]
@@ -112,16 +113,22 @@ def serve(
         with the command or option that makes one.
     """
     r = request
+    # A pair's law at the asked speeds (refused, before any folder is made, where a law at
+    # every speed is needed).
+    route = None if r.compute or r.law_file is not None else _route(r, note)
     if r.export_dir is not None:
         check_output_dir(r.export_dir, "--export")  # before anything is computed
     other = r.partner_grain
     served = r.law_file
     if r.compute:
         served = _computed(r, note, progress)
-    elif other is not None and r.law_file is None:
+    elif other is not None and r.law_file is None and route is None:
         _refuse_uncomputed(r)
-    s = si_law(r.E, r.nu, r.rho, r.shape, r.against, path=served,
-               radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
+    if route is not None:
+        s = SILaw(Grain(r.E, r.nu, r.rho, r.shape), r.against, route, partner_grain=other)
+    else:
+        s = si_law(r.E, r.nu, r.rho, r.shape, r.against, path=served,
+                   radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
     bars = Progress(None if progress else False)  # the damped law's: on a terminal only
     damped = _damped(r, s, bars)
     if damped is not None and s.law.partner is not None and r.constants:
@@ -216,6 +223,44 @@ def _damped(r: LawRequest, s: SILaw, progress: Progress) -> DampedLaw | None:
 
 def _target(r: LawRequest):
     return law_target(r.E, r.nu, r.rho, r.shape, r.against, r.radius_ratio, r.partner_grain)
+
+
+def _route(r: LawRequest, note):
+    """The pair's law at the asked speeds by its low-speed route
+    (:func:`restitution.laws.route_law.route_law`), when no shipped law serves the pair and
+    its route has a reach (two spheres); ``None`` otherwise. Refused, with what to do, where a
+    law at every speed is needed (exports, constants, damping)."""
+    from restitution.laws.law_nu import shipped_match
+    from restitution.laws.route_law import route_law, route_serves
+
+    law_nu, body, partner = _target(r)
+    if not route_serves(body, law_nu, partner) or shipped_match(law_nu, body, partner):
+        return None
+    needs = [
+        what
+        for what, asked in (
+            ("--export", r.export_dir is not None),
+            ("--reference-speed/--maxwell-temperature", r.constants),
+            ("damping", r.damped),
+        )
+        if asked
+    ]
+    if needs:
+        from restitution.laws.compute import plan
+
+        p = plan(law_nu, body, partner)
+        verb = "needs" if len(needs) == 1 else "need"
+        raise InputError(
+            f"{' and '.join(needs)} {verb} the pair's law at every speed, which is not shipped: "
+            f"add --compute ({p.words()})"
+        )
+    grain = Grain(r.E, r.nu, r.rho, r.shape)
+    vs = [float(grain.v_over_c(w, "wall")) for w in r.speeds]
+    note(
+        f"note: two {body}s of this pair have no shipped law: each speed is computed now by "
+        "their low-speed route (about a second a speed)"
+    )
+    return route_law(law_nu, body, partner, vs)
 
 
 def _refuse_uncomputed(r: LawRequest) -> None:

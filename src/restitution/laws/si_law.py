@@ -18,6 +18,7 @@ Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2
 from __future__ import annotations
 
 import functools
+import math
 import os
 from dataclasses import dataclass
 
@@ -69,6 +70,14 @@ DISK_QUASISTATIC_NOTE = (
 )
 """What ``quasistatic`` means for a disk's law (:data:`STATUSES` says it for the sphere's)."""
 
+SPHERE_PAIR_QUASISTATIC_NOTE = (
+    "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left in "
+    "both spheres' modes by the pair's Hertz force pulse, each sphere driven at its own pole, "
+    "with an error band for the uncertain contact time (two spheres up to the route's reach; "
+    "docs/spheres.md, section 'Two spheres')"
+)
+"""What ``quasistatic`` means for a law of two spheres."""
+
 _ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
 """What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
 kind's :attr:`~restitution.bodies.kinds.BodyKind.low_speed_route`, the routes of
@@ -112,6 +121,11 @@ class SIPoint:
         One of :data:`STATUSES`.
     note : str
         Why, when the status is not ``"computed"``.
+    loss_shares : tuple of float or None
+        For two grains whose law holds the split (two spheres' low-speed route): the fractions
+        of the lost energy left in the first and in the second grain (they add up to 1; of the
+        central value, without an error of their own; between computed speeds linear in
+        ``ln v``). ``None`` elsewhere.
     """
 
     speed_m_s: float
@@ -120,6 +134,7 @@ class SIPoint:
     epsilon_err: float | None
     status: str
     note: str = ""
+    loss_shares: tuple[float, float] | None = None
 
     @property
     def epsilon_range(self) -> tuple[float, float] | None:
@@ -143,6 +158,7 @@ class SIPoint:
             "epsilon_max": None if rng is None else rng[1],
             "status": self.status,
             "note": self.note,
+            "loss_shares": None if self.loss_shares is None else list(self.loss_shares),
         }
 
     @property
@@ -163,13 +179,16 @@ route; beyond it they stay ``outside`` (ask for fewer speeds)."""
 
 
 @functools.lru_cache(maxsize=4096)
-def _low_speed_at(geometry: str, nu: float, partner, v: float) -> tuple[float, float]:
-    """epsilon and its error at ``v`` (``c``) by the low-speed route of ``geometry`` (with
-    ``partner``), one speed alone (so without an interpolation term); remembered."""
+def _low_speed_at(geometry: str, nu: float, partner, v: float):
+    """epsilon, its error and the two bodies' shares of the loss (``None`` where the route does
+    not split it) at ``v`` (``c``) by the low-speed route of ``geometry`` (with ``partner``),
+    one speed alone (so without an interpolation term); remembered."""
     from restitution.laws.production import low_speed_points
 
     (record,), _ = low_speed_points(nu, [v], geometry=geometry, partner=partner)
-    return float(record["epsilon"]), float(record["epsilon_err"])
+    first = _first_share(record)
+    shares = None if first is None else (first, 1.0 - first)
+    return float(record["epsilon"]), float(record["epsilon_err"]), shares
 
 
 def _cut(note: str, eps: float, err: float) -> str:
@@ -182,7 +201,39 @@ def _quasistatic_note(law) -> str:
     its pair): the disk's slow-impact model or the sphere's Rayleigh estimate."""
     kind = body_kind(law.geometry)
     route = kind.low_speed_route if law.partner is None else kind.pair_low_speed_route
+    if law.partner is not None and route == "rayleigh":
+        return SPHERE_PAIR_QUASISTATIC_NOTE
     return _ROUTE_NOTES.get(route, STATUSES[Status.QUASISTATIC])
+
+
+def _first_share(record: dict) -> float | None:
+    """The first grain's fraction of the loss in a law point's record, if it holds the split."""
+    shares = record.get("shares")
+    if not shares or len(shares) != 2 or not sum(shares) > 0:
+        return None
+    return float(shares[0]) / float(sum(shares))
+
+
+def _shares(law, v: float) -> tuple[float, float] | None:
+    """Each grain's fraction of the loss at ``v``: at a computed speed of ``law`` whose record
+    holds the split (``shares``) that split, between two such speeds the fraction linear in
+    ``ln v`` between theirs; ``None`` elsewhere."""
+    if not isinstance(law, EpsilonLaw) or law.partner is None:
+        return None
+    pts = np.asarray(law.v, dtype=float)
+    j = int(np.searchsorted(pts, v))
+    records = law._records()
+    if j < pts.size and abs(pts[j] - v) <= _SAME * pts[j]:
+        first = _first_share(records[j])
+    elif 0 < j < pts.size and not law.at_points_only:
+        a, b = _first_share(records[j - 1]), _first_share(records[j])
+        if a is None or b is None:
+            return None
+        t = math.log(v / pts[j - 1]) / math.log(pts[j] / pts[j - 1])
+        first = a + t * (b - a)
+    else:
+        first = None
+    return None if first is None else (first, 1.0 - first)
 
 
 def _status(law, v: float) -> tuple[str, str]:
@@ -196,6 +247,17 @@ def _status(law, v: float) -> tuple[str, str]:
         if ok[at[0]]:
             return Status.COMPUTED, ""
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
+    if getattr(law, "at_points_only", False):
+        if v > pts[-1]:
+            return Status.OUTSIDE, (
+                f"v = {v:.3g} c is above the reach {pts[-1]:.4g} c of the pair's low-speed route, "
+                "and faster collisions of this pair are not computed"
+            )
+        return Status.OUTSIDE, (
+            f"v = {v:.3g} c: this law was computed at the asked speeds only (by the pair's "
+            "low-speed route); ask for this speed, or compute the law at every speed with "
+            "--compute"
+        )
     if v < pts[0]:
         return Status.OUTSIDE, f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
     j = int(np.searchsorted(pts, v))
@@ -392,7 +454,7 @@ class SILaw:
         nu = float(self.law.nu) if partner is not None else float(self.grain.law_nu)
         return name, nu, partner
 
-    def _below(self, speeds: list[float], note) -> dict[float, tuple[float, float]]:
+    def _below(self, speeds: list[float], note) -> dict[float, tuple]:
         """epsilon and its error at speeds (``c``) below the law's slowest point, each computed
         now by the law's low-speed route (the model the law's slowest points come from; one
         speed at a time, so no interpolation). Skipped (``{}``) beyond :data:`BELOW_BUDGET_S`."""
@@ -429,13 +491,13 @@ class SILaw:
             status, text = _status(self.law, v)
             eps = err = None
             if v in below:
-                eps, err = below[v]
+                eps, err, shares = below[v]
                 status = Status.QUASISTATIC
                 text = (
                     _quasistatic_note(self.law) + "; computed at this speed by the route of "
                     "the law's slowest points (below them)"
                 )
-                out.append(SIPoint(float(w), v, eps, err, status, _cut(text, eps, err)))
+                out.append(SIPoint(float(w), v, eps, err, status, _cut(text, eps, err), shares))
                 continue
             if status != Status.OUTSIDE:
                 try:
@@ -445,10 +507,13 @@ class SILaw:
                     status, text = Status.OUTSIDE, str(exc)
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
-                text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
+                if getattr(self.law, "at_points_only", False):
+                    text += f"; the route reaches w = {hi:.4g} m/s"
+                else:
+                    text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
             else:
                 text = _cut(text, eps, err)
-            out.append(SIPoint(float(w), v, eps, err, status, text))
+            out.append(SIPoint(float(w), v, eps, err, status, text, _shares(self.law, v)))
         return tuple(out)
 
     # -- views for a notebook (restitution.laws.views) ------------------------------------
@@ -643,19 +708,20 @@ def _six(x: float) -> float:
 
 
 def pair_partner(grain: Grain, other: Grain, radius_ratio: float = 1.0):
-    """The :class:`~restitution.bodies.pair.partner.Partner` of a disk-shaped grain of the
-    material ``other`` (same geometry), ``radius_ratio`` times as large as ``grain``, in the
-    units of ``grain`` (2D constants): ``E2_2d / E1_2d``, ``rho2 / rho1`` and the partner's
-    ``nu_2d`` (``None`` when it is this grain's), each rounded to six significant digits, so
-    that law files computed for the same two materials carry the same name and key."""
+    """The :class:`~restitution.bodies.pair.partner.Partner` of a grain of the material
+    ``other`` (same geometry), ``radius_ratio`` times as large as ``grain``, in the units of
+    ``grain``'s law (2D constants for disks, 3D for spheres): ``E2 / E1``, ``rho2 / rho1`` and
+    the partner's law Poisson number (``None`` when it is this grain's), each rounded to six
+    significant digits, so that law files computed for the same two materials carry the same
+    name and key."""
     from restitution.bodies.pair.partner import Partner
 
-    nu2 = _six(other.nu_2d)
+    nu2 = _six(other.law_nu)
     return Partner(
         radius_ratio=_six(radius_ratio),
-        modulus_ratio=_six(other.E_2d / grain.E_2d),
+        modulus_ratio=_six(other.law_E / grain.law_E),
         density_ratio=_six(other.rho / grain.rho),
-        nu=None if nu2 == _six(grain.nu_2d) else nu2,
+        nu=None if nu2 == _six(grain.law_nu) else nu2,
     )
 
 

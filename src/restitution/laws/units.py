@@ -222,6 +222,12 @@ class Grain:
         return self.nu_2d if self.kind.planar else float(self.nu)
 
     @property
+    def law_E(self) -> float:
+        """The Young modulus of the law's reduced units, Pa: ``E_2d`` for a disk, ``E`` itself
+        for a sphere (what a partner's modulus ratio is made of)."""
+        return self.E_2d if self.kind.planar else float(self.E)
+
+    @property
     def law_nu_name(self) -> str:
         """What :attr:`law_nu` is called: ``"nu_2d"`` (disk) or ``"nu"`` (sphere), the kind's
         :attr:`~restitution.bodies.kinds.BodyKind.nu_name`."""

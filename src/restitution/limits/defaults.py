@@ -91,7 +91,7 @@ def walls_at(
     if alpha_scale == "absolute":
         return values
     if partner is not None:
-        delta = partner.max_compression(float(v), geometry)
+        delta = partner.max_compression(float(v), geometry, nu)
     else:
         kind = body_kind(geometry)
         if nu is None and kind.scales_need_nu:

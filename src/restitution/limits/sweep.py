@@ -320,12 +320,16 @@ def planned(geometry: str, plan: SweepPlan) -> SweepSettings:
     return replace(defaults_for(geometry), **plan.fields())
 
 
-def window_scale(partner: Partner) -> float:
-    """``1 + r^2 rho2 / E2``: how many times the modes of the first disk alone a pair has below
-    one frequency (``r = R2 / R1``, constants in the first disk's units; a disk of radius ``R``
-    and wave speed ``c`` has ``~ (R / c)^2`` times as many modes below a frequency). A pair's
-    mode windows are the wall's times this (:func:`pair_settings`)."""
-    return 1.0 + partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
+def window_scale(partner: Partner, geometry: str = DEFAULT_GEOMETRY) -> float:
+    """``1 + (r c1 / c2)^d``: how many times the modes of the first body alone a pair has below
+    one frequency (``r = R2 / R1``, ``c2 / c1 = sqrt(E2 / rho2)`` in the first body's units,
+    ``d`` the kind's dimension: a body of radius ``R`` and wave speed ``c`` has
+    ``~ (R / c)^d`` times as many modes below a frequency; for disks ``1 + r^2 rho2 / E2``). A
+    pair's mode windows are the wall's times this (:func:`pair_settings`)."""
+    d = body_kind(geometry).dimension
+    if d == 2:  # the disks' form, as their shipped pair laws were computed
+        return 1.0 + partner.radius_ratio**2 * partner.density_ratio / partner.modulus_ratio
+    return 1.0 + (partner.radius_ratio / partner.speed_ratio) ** d
 
 
 def pair_settings(settings: SweepSettings, partner: Partner) -> SweepSettings:
@@ -338,7 +342,7 @@ def pair_settings(settings: SweepSettings, partner: Partner) -> SweepSettings:
     of both bodies below the frequency of the wall's ``N`` lowest: in two dimensions a body
     has ``~ R^2 / c^2`` times as many modes below one frequency. At ``r = 1`` every point is
     the wall's point at half the speed with twice the modes (the same frequency cutoff)."""
-    scale = window_scale(partner)
+    scale = window_scale(partner, settings.geometry)
     return replace(
         settings,
         velocities=tuple(2.0 * v for v in settings.velocities),

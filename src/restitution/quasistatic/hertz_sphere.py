@@ -60,6 +60,7 @@ __all__ = [
     "SphereQuasistaticTrajectory",
     "drive_asymptote",
     "sphere_contact_law",
+    "sphere_pair_contact_law",
     "sphere_quasistatic_collision",
     "sphere_quasistatic_trajectory",
 ]
@@ -87,18 +88,26 @@ class SphereHertzLaw:
         Radius, default 1.
     name : str
         ``"hertz"``.
+    effective_modulus : float or None
+        ``E*`` of two elastic spheres, ``1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2``
+        (:func:`sphere_pair_contact_law`; ``R`` is then their ``R_eff``); ``None``: the
+        sphere on the rigid wall.
     """
 
     nu: float
     E: float = 1.0
     R: float = 1.0
     name: str = "hertz"
+    effective_modulus: float | None = None
 
     geometry: ClassVar[str] = SPHERE.geometry
 
     @property
     def E_star(self) -> float:
-        """``E* = E / (1 - nu^2)``, in ``E``."""
+        """``E* = E / (1 - nu^2)`` on the rigid wall, or the :attr:`effective_modulus` of two
+        elastic bodies (:func:`sphere_pair_contact_law`), in ``E``."""
+        if self.effective_modulus is not None:
+            return self.effective_modulus
         return self.E / (1.0 - self.nu**2)
 
     @property
@@ -166,6 +175,32 @@ def sphere_contact_law(nu: float, *, E: float = 1.0, R: float = 1.0) -> SphereHe
         if not (math.isfinite(value) and value > 0.0):
             raise InputError(f"{name} must be a positive number, got {value}")
     return SphereHertzLaw(nu=nu, E=float(E), R=float(R))
+
+
+def sphere_pair_contact_law(
+    nu1: float, nu2: float | None = None, *, radius_ratio: float = 1.0, modulus_ratio: float = 1.0
+) -> SphereHertzLaw:
+    """Hertz's law of two spheres pressed together, in the first sphere's units.
+
+    ``P = (4/3) E* sqrt(R_eff) delta^(3/2)``, ``delta`` the approach of the centres, with
+    ``1/E* = (1 - nu1^2) + (1 - nu2^2) / E2`` and ``R_eff = R2 / (1 + R2)`` (``E2 =
+    modulus_ratio``, ``R2 = radius_ratio``; Johnson, Contact Mechanics, section 4.2). Two
+    identical spheres have ``E* = E / (2 (1 - nu^2))`` and ``R_eff = 1/2``: at the same force
+    their approach is twice a sphere's on the rigid wall. The law's ``nu`` is ``nu1``.
+    """
+    nu1 = SPHERE.check_nu(nu1)
+    nu2 = nu1 if nu2 is None else SPHERE.check_nu(nu2)
+    for name, value in (("radius_ratio", radius_ratio), ("modulus_ratio", modulus_ratio)):
+        if not (math.isfinite(value) and value > 0.0):
+            raise InputError(f"{name} must be a positive number, got {value}")
+    e_star = 1.0 / ((1.0 - nu1**2) + (1.0 - nu2**2) / float(modulus_ratio))
+    r2 = float(radius_ratio)
+    return SphereHertzLaw(
+        nu=nu1,
+        R=r2 / (1.0 + r2),
+        name=f"hertz (two spheres, R2/R1 = {r2:g}, E2/E1 = {float(modulus_ratio):g})",
+        effective_modulus=e_star,
+    )
 
 
 # ============================================================================================

@@ -32,6 +32,19 @@ whole (docs/spheres.md).
 The estimate is for the sphere only: the disk's pulse starts like ``v t / ln(1/(v t))``, its
 Rayleigh estimate carries no power of ``v`` and does not become exact at slow speeds in this
 way (the paper's section 5).
+
+**Two spheres** (a :class:`~restitution.bodies.pair.BodyPair` of spheres, any radii and
+materials; ``v`` is then the relative speed ``w`` in ``c1``, energies fractions of
+``(mu/2) w^2``). The pulse is Hertz's of the pair (:func:`~restitution.quasistatic.
+hertz_sphere.sphere_pair_contact_law`: ``E*`` of both, ``R_eff``, the reduced mass ``mu``), and
+each sphere's modes are driven by it at its own pole: the pair body holds both mode sets with
+amplitudes rescaled to ``mu``, so the formulas above hold term by term with ``m = mu`` and
+``R = R_eff``. Two identical spheres at ``w`` give the sphere on the wall at ``w/2``. The band's
+width is ``kappa a / R_min`` with ``a = sqrt(R_eff delta_max)`` the contact radius and
+``R_min`` the smaller radius: on the wall ``a / R = sqrt(delta_max)``, for two identical spheres
+the same number; for two radii the smaller sphere's, the one on which the contact is widest (a
+choice, judged against modal collisions of the pair in tests/test_sphere_pair.py). Each
+sphere's share of the loss is in :attr:`LowSpeedLoss.shares`.
 """
 
 from __future__ import annotations
@@ -48,9 +61,11 @@ from restitution.errors import InputError
 from restitution.estimate import Estimate
 from restitution.jsonable import finite_tree
 from restitution.quasistatic.hertz_sphere import (
+    SPHERE_MASS,
     SphereHertzLaw,
     drive_asymptote,
     sphere_contact_law,
+    sphere_pair_contact_law,
     sphere_quasistatic_collision,
 )
 from restitution.quasistatic.rayleigh import rayleigh_energy
@@ -59,10 +74,12 @@ from restitution.status import Status
 __all__ = [
     "CONTACT_TIME_SPREAD",
     "LOW_SPEED_MODES",
+    "PAIR_LOW_SPEED_MODES",
     "LowSpeedLoss",
     "asymptotic_loss",
     "interpolation_error",
     "low_speed_loss",
+    "reach",
 ]
 
 CONTACT_TIME_SPREAD = 0.335
@@ -73,6 +90,10 @@ docs/spheres.md, section "The quasistatic limit")."""
 
 LOW_SPEED_MODES = 1600
 """Modes summed by default: the tail beyond them is below 0.05 % of the loss at ``nu = 0.3``."""
+
+PAIR_LOW_SPEED_MODES = 3200
+"""Modes of both spheres summed by default for a pair (one common frequency cutoff): the
+sphere's 1600 twice, so that two identical spheres sum each sphere's 1600 lowest."""
 
 _SAMPLES = 81  # contact times sampled across the band (the quadrupole's phase moves <= 1.2 rad)
 
@@ -101,6 +122,10 @@ class LowSpeedLoss:
         Hertz's ``tau`` (``R / c``) and ``delta_max`` (``R``).
     spread : float
         ``kappa`` of the band.
+    shares : tuple of float
+        The loss left in each body's modes: ``(energy_loss,)`` on the wall, ``(first,
+        second)`` for two spheres (fractions of ``(mu/2) w^2``; they add up to
+        ``energy_loss``).
     """
 
     v: float
@@ -115,6 +140,7 @@ class LowSpeedLoss:
     contact_time: float
     max_compression: float
     spread: float
+    shares: tuple[float, ...] = ()
 
     def to_dict(self) -> dict:
         return finite_tree(asdict(self))
@@ -159,7 +185,7 @@ def low_speed_loss(
     -------
     LowSpeedLoss
     """
-    if modes.geometry != SPHERE.geometry:
+    if getattr(modes, "kind", modes.geometry) != SPHERE.geometry:
         raise InputError(
             f"the low-speed estimate is derived for the sphere, not for the {modes.geometry} "
             "(a disk's slow impacts: restitution.quasistatic.slow_disk)"
@@ -168,19 +194,26 @@ def low_speed_loss(
         raise InputError(f"{len(modes)} modes are too few for the tail estimate; use >= 16")
     if not (math.isfinite(v) and v > 0) or not (math.isfinite(spread) and spread >= 0):
         raise InputError(f"need v > 0 and spread >= 0, got v = {v!r}, spread = {spread!r}")
-    law = sphere_contact_law(modes.nu)
+    law, smallest = _law_of(modes)
     ray = rayleigh_energy(modes, v, law)
     dmax = ray.max_compression
-    width = spread * math.sqrt(dmax)
+    width = spread * float(law.contact_radius(dmax)) / smallest
     stretch = np.linspace(1.0 - width, 1.0 + width, _SAMPLES)
     shifted = _asymptotic_sum(law, modes, v, stretch)
     at_tau = float(_asymptotic_sum(law, modes, v, np.array([1.0]))[0])
     low = ray.energy_fraction + float(shifted.min()) - at_tau
     high = ray.energy_fraction + float(shifted.max()) - at_tau
-    # The mean of each mode over its phase, summed from N/2 to N: the tail beyond N is about as
-    # large (it falls like 1/N); twice it bounds the cos^2 factor.
-    mean = v * 2.0 * math.pi * law.E_star**2 / modes.mass**2 * modes.C**2 / modes.omega**5
-    tail = 2.0 * float(mean[len(modes) // 2 :].sum())
+    # The mean of each mode over its phase, summed from N/2 to N (the modes sorted by
+    # frequency; a pair's by one common cutoff): the tail beyond N is about as large (it falls
+    # like 1/N); twice it bounds the cos^2 factor.
+    order = np.argsort(modes.omega, kind="stable")
+    mean = v * 2.0 * math.pi * law.E_star**2 * law.R / modes.mass**2 * modes.C**2 / modes.omega**5
+    tail = 2.0 * float(mean[order[len(modes) // 2 :]].sum())
+    member = getattr(modes, "member", None)
+    if member is None:
+        shares = (float(ray.energy_fraction),)
+    else:
+        shares = tuple(float(ray.mode_energy[member == i].sum()) for i in (0, 1))
     loss = ray.energy_fraction
     err = max(high - loss, loss - low) + tail
     eps = math.sqrt(1.0 - loss)
@@ -197,14 +230,27 @@ def low_speed_loss(
         contact_time=float(ray.contact_time),
         max_compression=float(dmax),
         spread=float(spread),
+        shares=shares,
     )
+
+
+def _law_of(modes: ModalBody) -> tuple[SphereHertzLaw, float]:
+    """Hertz's law of the sphere on the wall, or of the two spheres of a pair, and the smaller
+    radius (``R1`` units; module docs)."""
+    member = getattr(modes, "member", None)
+    if member is None:
+        return sphere_contact_law(modes.nu), 1.0
+    law = sphere_pair_contact_law(
+        modes.nu, modes.nu2, radius_ratio=modes.radius_ratio, modulus_ratio=modes.modulus_ratio
+    )
+    return law, min(modes.radii)
 
 
 def asymptotic_loss(modes: ModalBody, v) -> np.ndarray:
     """The estimate from the two-term closed form of each mode's drive
     (:func:`restitution.quasistatic.hertz_sphere.drive_asymptote`) at speeds ``v``, shape (K,):
     cheap, and within ``2e-4`` of the Duhamel value below ``v = 3e-3`` (relative)."""
-    law = sphere_contact_law(modes.nu)
+    law, _ = _law_of(modes)
     out = []
     for x in np.atleast_1d(np.asarray(v, dtype=float)):
         drive = drive_asymptote(law, float(x), modes.omega, mass=modes.mass)
@@ -236,3 +282,62 @@ def interpolation_error(modes: ModalBody, speeds, *, interior: int = 3) -> np.nd
     out[:-1] = gap
     out[1:] = np.maximum(out[1:], gap)
     return out
+
+
+REACH_WALL_SPEED = SPHERE.production.groups[0].velocities[0]
+"""The fastest speed (``c``) at which the sphere's law on the wall is served by this route: its
+modal points begin there (0.003; up to 0.02 the modal points lie within the route's band,
+tests/test_sphere_low_speed.py)."""
+
+SLOWEST_PHASE = 11.5
+"""The least ``omega_1 tau`` (the lowest mode of either sphere times the contact time) at which
+the route serves two spheres. The band and the tail are drawn from the asymptote of the drive,
+which holds for ``omega tau >> 1``; the sphere on the wall has ``omega_1 tau >= 41`` within its
+reach. Source: the modal pairs of ``tests/data/sphere_pair_judge_*.json`` met the route within
+one error down to ``omega_1 tau = 11.6`` (``R2/R1 = 2``, ``w = 0.024``); the next point
+(``9.99``, ``w = 0.05``) did not."""
+
+
+def _lowest_omega(nu: float, partner) -> float:
+    """The lowest frequency of either sphere, ``c1 / R1``."""
+    from restitution.bodies.cache import get_modes
+
+    own = float(get_modes(nu, 8, geometry=SPHERE.geometry).omega.min())
+    if partner is None:
+        return own
+    nu2 = partner.nu2(nu)
+    other = float(get_modes(nu2, 8, geometry=SPHERE.geometry).omega.min())
+    return min(own, other * partner.speed_ratio / partner.radius_ratio)
+
+
+def reach(nu: float, partner=None) -> float:
+    """The fastest speed the route serves, ``c`` (for two spheres the relative speed ``w``, in
+    ``c1``): the lower of two bounds.
+
+    * The contact's width: where the contact, relative to the smaller sphere, is as wide as the
+      sphere's on the wall at :data:`REACH_WALL_SPEED` (``a / R_min`` fixes the band's width,
+      module docs). Two identical spheres reach twice the wall's speed; a small sphere on a
+      large one reaches less (its contact widens faster), a sphere on a softer partner less,
+      on a stiffer one more.
+    * The slowest mode: where ``omega_1 tau`` falls to :data:`SLOWEST_PHASE` (``tau ~
+      w^(-1/5)``, so the bound is ``w (omega_1 tau(w) / SLOWEST_PHASE)^5``). It binds for a
+      partner much larger or softer than the first sphere, whose lowest modes are slow against
+      the contact: a large enough partner is an elastic half-space, not a body that rings.
+    """
+    a_max = math.sqrt(float(SPHERE.max_compression(REACH_WALL_SPEED, nu)))
+    if partner is None:
+        law, smallest, mass = sphere_contact_law(nu), 1.0, SPHERE_MASS
+        width = float(REACH_WALL_SPEED)
+    else:
+        r = partner.radius_ratio
+        law = sphere_pair_contact_law(
+            nu, partner.nu2(nu), radius_ratio=r, modulus_ratio=partner.modulus_ratio
+        )
+        smallest = min(1.0, r)
+        m2 = SPHERE_MASS * partner.density_ratio * r**3
+        mass = SPHERE_MASS * m2 / (SPHERE_MASS + m2)
+        delta = (a_max * smallest) ** 2 / law.R
+        width = math.sqrt(2.0 * float(law.potential(delta)) / mass)
+    tau = float(sphere_quasistatic_collision(law, width, mass=mass).contact_time[0])
+    phase = _lowest_omega(nu, partner) * tau
+    return width * min(1.0, (phase / SLOWEST_PHASE) ** 5)

@@ -228,7 +228,8 @@ def rayleigh_energy(
     -------
     RayleighResult
     """
-    law = contact_law_for(modes.geometry, modes.nu, law)
+    # A pair of bodies of one kind is driven by the pair's law of that kind's theory.
+    law = contact_law_for(getattr(modes, "kind", modes.geometry), modes.nu, law)
     m = modes.mass
     if method == "duhamel":
         I, tau, dmax = drive_integrals(law, v, modes.omega, mass=m)

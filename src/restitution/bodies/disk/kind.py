@@ -146,7 +146,8 @@ KIND = register(
         # paper's eq. (57) as printed (its theory's default, which the slow routes take).
         quasistatic_law="centre",
         basis_at=edge_basis,
-        pair_compression=contact.pair_max_compression,
+        # Eq. (61) of the pair does not depend on the Poisson numbers.
+        pair_compression=lambda w, r, e, rho, nu1, nu2: contact.pair_max_compression(w, r, e, rho),
         production=PRODUCTION,
         pair_production=PAIR_PRODUCTION,
         # The paper's two Poisson numbers (Fig. 1).

@@ -286,6 +286,15 @@ class BodyPair:
                     )
                 orders, own_column = np.unique(member.order, return_inverse=True)
                 basis, own_C, own_S = basis_at(orders, angle), member.C, member.S
+                # The stop test and the active-node bound take basis values of magnitude <= 1:
+                # a tangential column beyond it (the sphere's dP_l/dtheta grows like l) is
+                # divided by its largest magnitude and that order's S multiplied by it, so
+                # S * basis is unchanged (a disk's columns never exceed 1 and stay as they are).
+                k = basis.shape[1] // 2
+                top = np.max(np.abs(basis[:, k:]), axis=0, initial=0.0)
+                top = np.where(top > 1.0, top, 1.0)
+                basis = np.hstack([basis[:, :k], basis[:, k:] / top])
+                own_S = own_S * top[own_column]
             k = basis.shape[1] // 2
             normal.append(basis[:, :k])
             tangential.append(basis[:, k:])

@@ -117,19 +117,27 @@ class Partner:
 
     # -- quasistatic scales (disks) -----------------------------------------------------------
 
-    def max_compression(self, w, geometry: str = DEFAULT_GEOMETRY):
+    def max_compression(self, w, geometry: str = DEFAULT_GEOMETRY, nu1: float | None = None):
         """The pair's quasistatic largest approach of the centres at relative speed ``w``
         (``c1``), ``R1``: the kind's :attr:`~restitution.bodies.kinds.BodyKind.pair_compression`
         (for disks eq. (61) of the disk on a wall written for the pair, the pair's 2D Hertz law:
-        :func:`restitution.bodies.disk.contact.pair_max_compression`). The sweeps scale the
-        pair's walls with it, as a body's on the wall with its own compression."""
-        compression = body_kind(geometry).pair_compression
+        :func:`restitution.bodies.disk.contact.pair_max_compression`; for spheres Hertz's 3D
+        law of the pair, :func:`restitution.bodies.sphere.surface.pair_max_compression`, which
+        needs the first body's Poisson number ``nu1``). The sweeps scale the pair's walls with
+        it, as a body's on the wall with its own compression."""
+        kind = body_kind(geometry)
+        compression = kind.pair_compression
         if compression is None:
             raise InputError(
                 f"the compression of a pair of {geometry}s is not implemented; pairs of "
                 f"different bodies are computed for {', '.join(_sized())}"
             )
-        return compression(w, self.radius_ratio, self.modulus_ratio, self.density_ratio)
+        if nu1 is None and kind.scales_need_nu:
+            raise InputError(f"the compression of two {geometry}s needs the first one's nu")
+        nu1 = 0.0 if nu1 is None else float(nu1)
+        return compression(
+            w, self.radius_ratio, self.modulus_ratio, self.density_ratio, nu1, self.nu2(nu1)
+        )
 
     # -- modes ----------------------------------------------------------------------------------
 

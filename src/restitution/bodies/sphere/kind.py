@@ -14,7 +14,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from restitution.bodies.kinds import BodyKind, ProductionPlan, SweepPlan, register, units_table
+from restitution.bodies.kinds import (
+    BodyKind,
+    PairPlan,
+    ProductionPlan,
+    SweepPlan,
+    register,
+    units_table,
+)
 from restitution.bodies.sphere import surface
 from restitution.bodies.sphere.modes import (
     _ALGORITHM_VERSION,
@@ -47,6 +54,21 @@ PRODUCTION = ProductionPlan(
     seconds_per_collision=1.0,
     # 404 points for six laws took about 10 minutes (docs/spheres.md).
     seconds_per_low_point=0.25,
+)
+
+# Two spheres: their low-speed route up to its reach (restitution.quasistatic.low_speed.reach,
+# which depends on the pair: twice the wall's 0.003 for two identical spheres) on the sphere's
+# spacing, a factor 1.02, from 2e-6 (twice the wall's lowest speed). No modal groups: a pair's
+# windows would need the wall's times 1 + (R2 c1 / (R1 c2))^3 modes (nine times at R2/R1 = 2,
+# above the 20000 a sphere's mode scan computes; docs/spheres.md).
+PAIR_PRODUCTION = PairPlan(
+    # The shipped laws of one material (make law-sphere-pair): steel, aluminium.
+    radius_ratios=(1.5, 2.0, 4.0),
+    nus=(0.3,),
+    groups=(),
+    low_speeds=tuple(float(f"{w:.4g}") for w in np.geomspace(2e-6, 0.03, 487)),
+    # 376 points of R2/R1 = 2 took 213 s (another computation on the second core).
+    seconds_per_low_point=0.57,
 )
 
 KIND = register(
@@ -108,7 +130,13 @@ KIND = register(
             "-v_after / v_before of the centre of mass."
         ),
         low_speed_route="rayleigh",
+        # Two spheres: Rayleigh's estimate on the pair's Hertz pulse, each sphere's modes
+        # driven at its own pole (restitution.quasistatic.low_speed).
+        pair_low_speed_route="rayleigh",
+        basis_at=surface.surface_basis,
+        pair_compression=surface.pair_max_compression,
         production=PRODUCTION,
+        pair_production=PAIR_PRODUCTION,
         ball=True,
     )
 )

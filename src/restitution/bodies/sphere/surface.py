@@ -43,7 +43,9 @@ __all__ = [
     "depth_transform",
     "legendre_and_theta_derivative",
     "max_compression_estimate",
+    "pair_max_compression",
     "sphere_quadrature",
+    "surface_basis",
 ]
 
 
@@ -74,6 +76,20 @@ def _nodes(n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
     mu = 0.5 * (t + 1.0)
     order = np.argsort(-mu)
     return np.arccos(mu[order]), math.pi * w[order]
+
+
+def surface_basis(orders: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    """The basis of every order at polar angles ``theta``, unscaled (module docs):
+    ``[P_l(cos theta) cos(theta) | -dP_l/dtheta sin(theta)]``, shape (M, 2K).
+
+    What a pair of two radii needs of the sphere that does not carry the quadrature (the
+    larger one): its surface at the angles that pair with the other's nodes
+    (:class:`restitution.bodies.pair.BodyPair`). Its tangential columns grow like ``l``; the
+    pair scales them as :func:`sphere_quadrature` does.
+    """
+    theta = np.asarray(theta, dtype=float)
+    P, dP = legendre_and_theta_derivative(np.asarray(orders)[None, :], theta[:, None])
+    return np.hstack([P * np.cos(theta)[:, None], -dP * np.sin(theta)[:, None]])
 
 
 def sphere_quadrature(modes: SphereModes, n_nodes: int) -> SurfaceQuadrature:
@@ -134,4 +150,30 @@ def contact_time_estimate(v, nu: float):
     """Hertz contact time ``kappa delta_max / v`` (:data:`CONTACT_TIME_CONSTANT`, 2.9433)
     against a rigid wall, ``R / c``."""
     out = CONTACT_TIME_CONSTANT * max_compression_estimate(v, nu) / np.asarray(v, dtype=float)
+    return float(out) if np.ndim(out) == 0 else out
+
+
+def pair_max_compression(
+    w,
+    radius_ratio: float,
+    modulus_ratio: float,
+    density_ratio: float,
+    nu1: float,
+    nu2: float,
+):
+    """Two spheres' Hertz largest approach of the centres at relative speed ``w`` (``c1``),
+    ``R1`` (the second sphere's constants in the first's units).
+
+    ``(mu/2) w^2 = (8/15) E* sqrt(R_eff) delta^(5/2)`` with the reduced mass
+    ``mu = m1 m2 / (m1 + m2)``, ``1/E* = (1 - nu1^2) + (1 - nu2^2) / E2`` and
+    ``R_eff = R2 / (1 + R2)``. Two identical spheres give ``2 delta_wall(w / 2)``; a rigid,
+    infinitely heavy and large partner gives the wall's ``delta_wall(w)``.
+    """
+    r2, e2 = float(radius_ratio), float(modulus_ratio)
+    m1 = 4.0 * math.pi / 3.0
+    m2 = m1 * float(density_ratio) * r2**3
+    mu = m1 * m2 / (m1 + m2)
+    e_star = 1.0 / ((1.0 - nu1**2) + (1.0 - nu2**2) / e2)
+    r_eff = r2 / (1.0 + r2)
+    out = (15.0 * mu * np.asarray(w, dtype=float) ** 2 / (16.0 * e_star * math.sqrt(r_eff))) ** 0.4
     return float(out) if np.ndim(out) == 0 else out
