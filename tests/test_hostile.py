@@ -843,3 +843,26 @@ def test_a_refused_step_count_names_step_safety_and_max_steps():
         collide(modes, 0.1, 100.0, CollisionSettings(max_steps=10))
     # Following the advice works: the default step_safety and max_steps run it.
     assert 0 < collide(modes, 0.1, 100.0).epsilon <= 1
+
+
+def test_a_curve_that_cannot_finish_writing_leaves_the_folder_as_it_was(cli, tmp_path, monkeypatch):
+    """Issue 47 (a folder mixing two runs): the disk fills while `curve` writes its last file;
+    the run's figures and law files appear together or not at all, the earlier file stays,
+    and the error is one line."""
+    import errno
+
+    from restitution.laws.law import EpsilonLaw
+
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "law_nu0.33.json").write_text("an earlier run's law")
+
+    def full(self, path, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(EpsilonLaw, "to_table", full)
+    code, _, err = cli("curve", "--nu", "0.33", "--v", "0.1", "0.2", *GRID, "--store",
+                       str(tmp_path / "s.sqlite"), "--no-progress", "--out", str(out))  # fmt: skip
+    one_line_error(code, err, "No space left")
+    assert sorted(p.name for p in out.iterdir()) == ["law_nu0.33.json"]
+    assert (out / "law_nu0.33.json").read_text() == "an earlier run's law"

@@ -481,3 +481,21 @@ def test_curve_production_writes_a_pairs_route_law(short_grid, tmp_path, capsys)
     speeds = [p["v"] for p in data["metadata"]["points"]]
     assert speeds == list(short_grid)
     assert all(p["route"] == "quasistatic" for p in data["metadata"]["points"])
+
+
+def test_type_pair_constants_and_exports_of_two_sphere_sizes(capsys, tmp_path):
+    """Issue 41, item 5: a shipped pair law gives the constants per pair of particle types, as
+    for cylinders: 1-2 from the pair's law at the reference speed, 1-1 and 2-2 from identical
+    spheres (the sphere's law at w/2), and the DEM exports are written."""
+    out, code = _law(capsys, "--partner-radius-ratio", "2", "--speed", "1",
+                     "--reference-speed", "1", "--export", str(tmp_path / "x"))  # fmt: skip
+    assert code in (None, 0)
+    pairs = out["type_pairs"]
+    one_two = out["points"][0]
+    assert pairs["1-2"]["epsilon"] == pytest.approx(one_two["epsilon"], rel=1e-12)
+    from restitution.laws.si_law import si_law
+
+    same = si_law(210e9, 0.3, 7850, "sphere", "grain").points([1.0])[0]
+    assert pairs["1-1"]["epsilon"] == pytest.approx(same.epsilon, rel=1e-12)
+    assert pairs["2-2"]["epsilon"] == pairs["1-1"]["epsilon"]
+    assert (tmp_path / "x" / "epsilon_lammps.in").is_file()

@@ -17,7 +17,14 @@ from pathlib import Path
 
 from restitution.errors import OutputError
 
-__all__ = ["check_output_dir", "check_output_file", "replacing", "write_text", "writing"]
+__all__ = [
+    "check_output_dir",
+    "check_output_file",
+    "file_set",
+    "replacing",
+    "write_text",
+    "writing",
+]
 
 # The permissions a plain open() would give a new file (mkstemp makes it 0600).
 _UMASK = os.umask(0)
@@ -62,6 +69,38 @@ def write_text(path: str | os.PathLike, text: str, *, newline: str | None = None
     """Write ``text`` to ``path`` whole or not at all (see :func:`replacing`)."""
     with replacing(path) as tmp, open(tmp, "w", newline=newline) as fh:
         fh.write(text)
+
+
+@contextlib.contextmanager
+def file_set(folder: str | os.PathLike, family: tuple[str, ...] = ()) -> Iterator[Path]:
+    """Write a set of files into ``folder`` as one unit: yield a staging folder inside it to
+    write every file of the set into (by its final name); on success each staged file is
+    renamed into ``folder`` and the files of ``folder`` that match a ``family`` glob but are
+    not in the set (left by an earlier run: a closed form this run could not fit, the snippets
+    of a run with a constant) are removed, so the folder never mixes two runs.
+
+    A full disk, an error or Ctrl-C while the set is written leaves the folder as it was (the
+    staging folder is removed); the renames that follow need no space. The staging folder is
+    named ``.restitution-staging-*``, on the folder's file system.
+    """
+    out = Path(folder)
+    out.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=".restitution-staging-", dir=out))
+    try:
+        yield stage
+        names = sorted(p.name for p in stage.iterdir() if p.is_file())
+        stale = {p for pattern in family for p in out.glob(pattern) if p.is_file()}
+        for name in names:
+            os.replace(stage / name, out / name)
+        for path in sorted(stale - {out / name for name in names}):
+            with contextlib.suppress(FileNotFoundError):
+                path.unlink()
+    finally:
+        for leftover in stage.iterdir() if stage.exists() else ():
+            with contextlib.suppress(OSError):
+                leftover.unlink()
+        with contextlib.suppress(OSError):
+            stage.rmdir()
 
 
 # -- checks before anything is computed ----------------------------------------------------

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import click
 
+from restitution.atomic import file_set
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
@@ -561,49 +562,50 @@ def curve(
         errors = db.errors(points)
     failed_specs = [s for s in points if s.key() in errors]
     failures = [(s.alpha, s.n_modes, errors[s.key()]) for s in failed_specs]
-    with writing(out, "--out"):
+    lines, rows, laws = [], [], []
+    # The run's figures and laws appear together or not at all (issue 47: a folder mixing two
+    # runs' files after a full disk).
+    with writing(out, "--out"), file_set(out) as stage:
         written = [
             fig01_epsilon.plot(
                 fig01_epsilon.compute(nus, curves=curves),
-                out / f"fig01_epsilon{tag}.{figure_fmt}",
+                stage / f"fig01_epsilon{tag}.{figure_fmt}",
                 note=body_note,
             )
         ]
-    lines, rows, laws = [], [], []
-    for nu in nus:
-        c = curves[nu]
-        with writing(out, "--out"):
+        for nu in nus:
+            c = curves[nu]
             written.append(
                 fig07_alpha.plot(
                     fig07_alpha.compute(nu, curve=c),
-                    out / f"fig07_alpha{tag}_nu{nu:g}.{figure_fmt}",
+                    stage / f"fig07_alpha{tag}_nu{nu:g}.{figure_fmt}",
                     note=body_note,
                 )
             )
             written.append(
                 fig08_modes.plot(
                     fig08_modes.compute(nu, curve=c),
-                    out / f"fig08_modes{tag}_nu{nu:g}.{figure_fmt}",
+                    stage / f"fig08_modes{tag}_nu{nu:g}.{figure_fmt}",
                     note=body_note,
                 )
             )
-        lines += _curve_lines(c, geometry, settings)
-        rows += _curve_rows(c, settings)
-        try:
-            law = EpsilonLaw.from_curve(c)
-        except Exception as exc:  # noqa: BLE001 - report and go on with the other nu
-            note(f"warning: no {geometry} law for nu = {nu:g}: {exc}")
-            laws.append({"nu": nu, "files": [], "error": str(exc)})
-            continue
-        stem = Path(law_filename(nu, geometry, partner)).stem
-        with writing(out, "--out"):
+            lines += _curve_lines(c, geometry, settings)
+            rows += _curve_rows(c, settings)
+            try:
+                law = EpsilonLaw.from_curve(c)
+            except Exception as exc:  # noqa: BLE001 - report and go on with the other nu
+                note(f"warning: no {geometry} law for nu = {nu:g}: {exc}")
+                laws.append({"nu": nu, "files": [], "error": str(exc)})
+                continue
+            stem = Path(law_filename(nu, geometry, partner)).stem
             files = [
-                law.to_json(out / f"{stem}.json"),
-                law.to_csv(out / f"{stem}.csv"),
-                law.to_table(out / f"{stem}.txt"),
+                law.to_json(stage / f"{stem}.json"),
+                law.to_csv(stage / f"{stem}.csv"),
+                law.to_table(stage / f"{stem}.txt"),
             ]
-        written += files
-        laws.append({"nu": nu, "files": [str(p) for p in files], "error": None})
+            written += files
+            laws.append({"nu": nu, "files": [str(out / p.name) for p in files], "error": None})
+    written = [out / Path(p).name for p in written]
     lines.append("wrote " + ", ".join(str(p) for p in written))
     asymptotic = all(row["asymptotic_ok"] for row in rows)
     failed = len(failures) + len(report.lost)
@@ -695,13 +697,15 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
     for nu, p in zip(nus, plans, strict=True):
         note(f"note: nu = {nu:g}: {p.words()}")
         low = low_speeds_of(geometry, partner, nu)
-        with writing(out, "--out"):
-            (path,) = build(out, [nu], groups, store=store, workers=workers,
+        # The law's three files appear together or not at all (issue 47).
+        with writing(out, "--out"), file_set(out) as stage:
+            (path,) = build(stage, [nu], groups, store=store, workers=workers,
                             progress=False if quiet() else progress, low_speeds=low,
                             geometry=geometry, partner=partner)  # fmt: skip
             law = EpsilonLaw.from_json(path)
-            files = [path, law.to_csv(path.with_suffix(".csv")),
-                     law.to_table(path.with_suffix(".txt"))]  # fmt: skip
+            law.to_csv(path.with_suffix(".csv"))
+            law.to_table(path.with_suffix(".txt"))
+        files = [out / path.name, out / f"{path.stem}.csv", out / f"{path.stem}.txt"]
         written += files
         ok = [bool(x) for x in law.asymptotic_ok]
         lines.append(f"nu = {nu:g}: {sum(ok)} of {len(ok)} speeds pass every check; {path.name}")

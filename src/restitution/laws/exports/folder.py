@@ -49,9 +49,10 @@ class ExportFolder:
 def write_folder(s: SILaw, constant: Constant | TypePairs | None, out: Path) -> ExportFolder:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``), a snippet per registered DEM target into the folder ``out``
-    (created if missing)."""
+    (created if missing), as one set (:func:`restitution.atomic.file_set`): a failure leaves
+    the folder as it was, and files of an earlier export this one does not write (a closed
+    form, snippets) are removed, so the folder holds one law's files only."""
     out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
     # The three-parameter form exists only where it follows the points within their errors;
     # the C and Fortran evaluate the law's table either way.
     refusal = None
@@ -61,22 +62,18 @@ def write_folder(s: SILaw, constant: Constant | TypePairs | None, out: Path) -> 
         fit = None
         refusal = str(exc)
     stem = "epsilon"
-    written = [
-        write_table(s, out / f"{stem}_table.txt"),
-        write_csv(s, out / f"{stem}.csv"),
-    ]
-    if fit is not None:
-        fit_path = out / f"{stem}_closed_form.json"
-        atomic.write_text(fit_path, json.dumps(fit.to_dict(), indent=1) + "\n")
-        written.append(fit_path)
-    header = out / f"{stem}.h"
-    atomic.write_text(header, c_header(s, fit))
-    fortran = out / f"{stem}.f90"
-    atomic.write_text(fortran, fortran_include(s, fit))
-    written += [header, fortran]
-    if constant is not None:
-        for target in DEM_TARGETS.values():
-            path = out / f"{stem}_{target.file_name}"
-            atomic.write_text(path, target.snippet(s, constant))
-            written.append(path)
-    return ExportFolder(tuple(written), fit, refusal)
+    names = [f"{stem}_table.txt", f"{stem}.csv"]
+    with atomic.file_set(out, family=(f"{stem}_*", f"{stem}.*")) as stage:
+        write_table(s, stage / names[0])
+        write_csv(s, stage / names[1])
+        if fit is not None:
+            names.append(f"{stem}_closed_form.json")
+            atomic.write_text(stage / names[-1], json.dumps(fit.to_dict(), indent=1) + "\n")
+        names += [f"{stem}.h", f"{stem}.f90"]
+        atomic.write_text(stage / names[-2], c_header(s, fit))
+        atomic.write_text(stage / names[-1], fortran_include(s, fit))
+        if constant is not None:
+            for target in DEM_TARGETS.values():
+                names.append(f"{stem}_{target.file_name}")
+                atomic.write_text(stage / names[-1], target.snippet(s, constant))
+    return ExportFolder(tuple(out / name for name in names), fit, refusal)
