@@ -1,11 +1,13 @@
-"""Benchmark: serving many speeds of an SI law (``SILaw.points``), against building the law's
-PCHIP interpolants at every call (the code before issue 47's fix).
+"""Benchmark: serving many speeds of an SI law (``SILaw.points``), against the code before issue
+47's fixes: every speed evaluated alone, building the law's PCHIP interpolants at every call.
 
 Baseline: the same law with its two cached interpolants bypassed, so that every evaluation
-builds ``scipy.interpolate.PchipInterpolator`` anew, as ``EpsilonLaw._interpolant`` did. Both
-serve the same 2000 speeds of a steel sphere against a wall; runs alternate (baseline, project,
-...) and the script prints min / median / max of the per-speed times and of their ratio, the
-served values' largest difference (they must agree exactly), and the load average.
+builds ``scipy.interpolate.PchipInterpolator`` anew, as ``EpsilonLaw._interpolant`` did, and the
+speeds served one at a time, as ``SILaw.points`` did. Project: one call, the interpolants cached
+and the served speeds evaluated as one array. Both serve the same 2000 speeds of a steel sphere
+against a wall; runs alternate (baseline, project, ...) and the script prints min / median / max
+of the per-speed times and of their ratio, the served values' largest difference (they must
+agree exactly), and the load average.
 
 Run: python benchmarks/bench_si_points.py [--speeds N] [--repeats K]
 """
@@ -39,7 +41,10 @@ def _serve(speeds, cached: bool):
         EpsilonLaw._interpolant = _uncached
     try:
         start = time.perf_counter()
-        points = law.points(speeds)
+        if cached:
+            points = law.points(speeds)
+        else:
+            points = [law.points([w])[0] for w in speeds]
         elapsed = time.perf_counter() - start
     finally:
         EpsilonLaw._interpolant = original

@@ -866,3 +866,16 @@ def test_a_curve_that_cannot_finish_writing_leaves_the_folder_as_it_was(cli, tmp
     one_line_error(code, err, "No space left")
     assert sorted(p.name for p in out.iterdir()) == ["law_nu0.33.json"]
     assert (out / "law_nu0.33.json").read_text() == "an earlier run's law"
+
+
+def test_a_radius_ratio_given_to_seven_digits_is_the_shipped_pairs(cli):
+    """Issue 47 (a self-contradicting refusal): --partner-radius-ratio 1.4000001 found the law
+    file of 1.4 and refused it as another pair; ratios are read to six significant digits, as
+    the files name them, so it is served by that law."""
+    base = ("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape", "cylinder",
+            "--against", "grain", "--speed", "1", "--json")  # fmt: skip
+    code, out, err = cli(*base, "--partner-radius-ratio", "1.4000001")
+    assert code == 0, err
+    code, same, err = cli(*base, "--partner-radius-ratio", "1.4")
+    first, second = json.loads(out), json.loads(same)
+    assert first["points"][0]["epsilon"] == second["points"][0]["epsilon"]

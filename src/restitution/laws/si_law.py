@@ -483,12 +483,13 @@ class SILaw:
         law of collisions alone, it is ``outside``.
         """
         ws = np.atleast_1d(real_array(speeds_m_s, "speeds_m_s", "(m/s)"))
-        vs = [float(self._reduced(float(w))) for w in ws]
+        vs = [float(v) for v in np.atleast_1d(self._reduced(ws))]
         lowest = float(self.law.v[0])
         below = self._below(sorted({v for v in vs if v < lowest * (1.0 - _SAME)}), note)
+        statuses = [_status(self.law, v) for v in vs]
+        served = self._served_all(vs, statuses, below)
         out = []
-        for w, v in zip(ws, vs, strict=True):
-            status, text = _status(self.law, v)
+        for w, v, (status, text) in zip(ws, vs, statuses, strict=True):
             eps = err = None
             if v in below:
                 eps, err, shares = below[v]
@@ -500,11 +501,11 @@ class SILaw:
                 out.append(SIPoint(float(w), v, eps, err, status, _cut(text, eps, err), shares))
                 continue
             if status != Status.OUTSIDE:
-                try:
-                    eps = float(self.law.epsilon(self._served_v(v)))
-                    err = float(self.law.epsilon_err(self._served_v(v)))
-                except InputError as exc:  # e.g. a nu-interpolated law with a narrower range
-                    status, text = Status.OUTSIDE, str(exc)
+                found = served.get(v)
+                if isinstance(found, InputError):  # a nu-interpolated law's narrower range
+                    status, text = Status.OUTSIDE, str(found)
+                else:
+                    eps, err = found
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
                 if getattr(self.law, "at_points_only", False):
@@ -515,6 +516,30 @@ class SILaw:
                 text = _cut(text, eps, err)
             out.append(SIPoint(float(w), v, eps, err, status, text, _shares(self.law, v)))
         return tuple(out)
+
+    def _served_all(self, vs, statuses, below) -> dict:
+        """epsilon and its error at every speed of ``vs`` the law serves (not outside, not
+        computed below it), evaluated as one array (issue 47: 1e5 speeds took minutes one at a
+        time); where the array call is refused (a nu-interpolated law's narrower range), speed
+        by speed, the refusal kept for the speeds it concerns."""
+        inside = sorted({v for v, (st, _) in zip(vs, statuses, strict=True)
+                         if st != Status.OUTSIDE and v not in below})  # fmt: skip
+        if not inside:
+            return {}
+        at = self._served_v(np.array(inside))
+        try:
+            eps = np.atleast_1d(self.law.epsilon(at))
+            err = np.atleast_1d(self.law.epsilon_err(at))
+            return {v: (float(e), float(d)) for v, e, d in zip(inside, eps, err, strict=True)}
+        except InputError:
+            out = {}
+            for v in inside:
+                try:
+                    sv = self._served_v(v)
+                    out[v] = (float(self.law.epsilon(sv)), float(self.law.epsilon_err(sv)))
+                except InputError as exc:
+                    out[v] = exc
+            return out
 
     # -- views for a notebook (restitution.laws.views) ------------------------------------
 
@@ -793,7 +818,9 @@ def _partner(radius_ratio, against: str, grain: Grain, partner_grain=None):
         )
     if other is not None:
         return pair_partner(grain, other, r)
-    r = max(r, 1.0 / r)
+    # Six significant digits, as law files name the ratio and as a partner's materials are
+    # rounded (issue 47: 1.4000001 found the file of 1.4 and then refused it as another pair).
+    r = _six(max(r, 1.0 / r))
     if r == 1.0:
         return None
     from restitution.bodies.pair.partner import Partner
