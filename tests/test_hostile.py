@@ -879,3 +879,14 @@ def test_a_radius_ratio_given_to_seven_digits_is_the_shipped_pairs(cli):
     code, same, err = cli(*base, "--partner-radius-ratio", "1.4")
     first, second = json.loads(out), json.loads(same)
     assert first["points"][0]["epsilon"] == second["points"][0]["epsilon"]
+
+
+def test_a_disk_poisson_number_near_minus_one_is_refused_at_once(cli):
+    """Issue 47 (a 10-minute scan; NaN amplitudes served as ok): the disk takes 2D nu above
+    -0.999, where its mode scan was measured (600 modes in 8 s, every amplitude finite); at
+    -0.9999 it took 17 s for 100 modes and their normalisation failed. Refused in one line,
+    before any scan."""
+    code, _, err = cli("modes", "--nu", "-0.9999", "--count", "600")
+    one_line_error(code, err, "(-0.999, 1)")
+    modes = get_modes(-0.998, count=40)
+    assert np.all(np.isfinite(modes.C)) and np.all(np.isfinite(modes.S))

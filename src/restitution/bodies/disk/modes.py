@@ -432,6 +432,13 @@ def _build(n: np.ndarray, omega: np.ndarray, nu: float) -> ModeSet:
     if not np.all(b):
         p = ~b
         A[p], B[p], C[p], S[p] = _flexural(n[p], kappa[p], kappa_p[p], nu)
+    if not (np.all(np.isfinite(C)) and np.all(np.isfinite(S))):
+        # Issue 47: at nu = -0.9999 the normalisation's norm came out negative (round-off in
+        # the near-cancelling terms as nu -> -1) and amplitudes were NaN, served as "ok".
+        raise ModeError(
+            f"the disk's mode normalisation fails at nu = {nu:g} (non-finite amplitudes): the "
+            "frequency equation loses its precision as nu approaches -1; use nu > -0.999"
+        )
     full = ModeSet(nu=nu, n=n, l=l, omega=omega, kappa=kappa, kappa_p=kappa_p, A=A, B=B, C=C, S=S)
     return full.take(np.argsort(omega, kind="stable"))
 
