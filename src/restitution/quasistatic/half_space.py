@@ -1,0 +1,155 @@
+"""Energy radiated into an elastic half-space by a slow impact: Hertz's pulse through Lamb's
+point-force radiation (issue 42, the half-space's low-speed route; not yet served by ``law``).
+
+Units: SI-free, any consistent set; the tests use the ball's ``E = rho = R = 1``. The wall is a
+half-space of density ``rho_w``, shear modulus ``mu_w = E_w / (2 (1 + nu_w))`` and shear speed
+``c_T = sqrt(mu_w / rho_w)``.
+
+**Radiation of a vertical point force** (Lamb 1904; Miller and Pursey 1954-55). A force
+``F cos(omega t)`` normal to the surface puts the time-averaged power ``W = (1/2) F^2 omega
+Im G(omega)`` into the half-space, ``G`` the vertical surface displacement under the force per
+unit force. With ``s = k / k_T`` and ``gamma = c_T / c_L``, Lamb's integral is
+``G = (k_T / (2 pi mu_w)) J``, ``J = int_0^inf a s / D ds``, ``a = sqrt(s^2 - gamma^2)``,
+``b = sqrt(s^2 - 1)``, ``D = (2 s^2 - 1)^2 - 4 s^2 a b`` (the Rayleigh function); its static
+part is Boussinesq's ``(1 - nu) / (2 pi mu r)``. The imaginary part, the radiated power, has
+three parts (:func:`radiation_integrals`):
+
+* ``s < gamma``: compressional and shear waves, ``int_0^gamma p s / D ds`` with
+  ``p = sqrt(gamma^2 - s^2)``, ``q = sqrt(1 - s^2)``, ``D = (2 s^2 - 1)^2 + 4 s^2 p q``;
+* ``gamma < s < 1``: shear waves alone, ``int 4 s^3 a^2 q / |D|^2 ds``;
+* the pole of ``D`` at ``s_R = c_T / c_R``: Rayleigh waves, ``pi a_R s_R / |D'(s_R)|``.
+
+Their sum ``I(nu) = Im J`` gives ``W = I omega^2 F^2 / (4 pi rho_w c_T^3)``: the point force's
+radiation conductance grows like ``omega^2`` and does not depend on the size of the loaded
+area as long as it is small against the wavelengths.
+
+**A pulse** ``P(t)`` (the force between ball and wall) delivers
+``E_rad = (1/pi) int_0^inf |P(omega)|^2 omega Im G d omega`` into the waves, and with
+Parseval's theorem::
+
+    E_rad = I / (2 pi rho_w c_T^3) int (dP/dt)^2 dt
+
+**Hertz's pulse** ``P = K delta^(3/2)`` of a collision at speed ``v`` (mass ``m``, ``K = (4/3) E*
+sqrt(R)``, ``E*`` of ball and wall) is self-similar: with ``x = delta / delta_max`` and
+``v tau = kappa delta_max`` (``kappa = 2.9433``, :mod:`restitution.quasistatic.hertz_sphere`),
+``int (dP/dt)^2 dt = (9/5) B(4/5, 3/2) K^2 delta_max^2 v`` (``B`` Euler's beta function: the
+integral of ``(9/4) x (dx/dt)^2`` over the two halves of the pulse). Divided by ``(m/2) v^2 =
+(2/5) K delta_max^(5/2)``::
+
+    E_rad / E_kin = I / (2 pi rho_w c_T^3) (9/2) B(4/5, 3/2) K v / sqrt(delta_max) ~ v^(3/5)
+
+since ``delta_max ~ v^(4/5)``: the ``(v/c)^(3/5)`` law of Hunter (1957) and Reed (1985), here
+with its constant from Lamb's integral and Hertz's exact pulse. It holds while the radiated
+energy is small (the pulse is Hertz's, unchanged by the loss) and the contact is small against
+the wavelengths the pulse excites (``a << c_T tau``); the ball's own vibrations are a separate
+loss (:mod:`restitution.quasistatic.low_speed`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from scipy.integrate import quad
+from scipy.optimize import brentq
+from scipy.special import beta
+
+from restitution.errors import InputError
+
+__all__ = [
+    "HERTZ_PULSE_FACTOR",
+    "RadiationIntegrals",
+    "radiated_fraction",
+    "radiation_integrals",
+]
+
+HERTZ_PULSE_FACTOR = 1.8 * beta(0.8, 1.5)
+"""``int (dP/dt)^2 dt / (K^2 delta_max^2 v) = (9/5) B(4/5, 3/2)`` for Hertz's pulse (module
+docs)."""
+
+
+@dataclass(frozen=True)
+class RadiationIntegrals:
+    """The three parts of ``Im J`` of a vertical point force (module docs), dimensionless.
+
+    Attributes
+    ----------
+    nu : float
+        The half-space's Poisson number.
+    body_both, body_shear, rayleigh : float
+        Compressional and shear waves (``s < gamma``), shear waves alone (``gamma < s < 1``),
+        Rayleigh waves (the pole).
+    rayleigh_speed : float
+        ``c_R / c_T``.
+    """
+
+    nu: float
+    body_both: float
+    body_shear: float
+    rayleigh: float
+    rayleigh_speed: float
+
+    @property
+    def total(self) -> float:
+        """``I = Im J``: ``W = I omega^2 F^2 / (4 pi rho c_T^3)``."""
+        return self.body_both + self.body_shear + self.rayleigh
+
+    @property
+    def rayleigh_share(self) -> float:
+        """The Rayleigh waves' share of the radiated power."""
+        return self.rayleigh / self.total
+
+
+def radiation_integrals(nu: float) -> RadiationIntegrals:
+    """Lamb's radiation integrals of a half-space of Poisson number ``nu`` (module docs)."""
+    if not (isinstance(nu, int | float) and -1.0 < nu < 0.5):
+        raise InputError(f"the half-space's Poisson number must lie in (-1, 0.5), got {nu!r}")
+    g = math.sqrt((1.0 - 2.0 * nu) / (2.0 * (1.0 - nu)))
+
+    def both(s):
+        p, q = math.sqrt(g * g - s * s), math.sqrt(1.0 - s * s)
+        return p * s / ((2.0 * s * s - 1.0) ** 2 + 4.0 * s * s * p * q)
+
+    def shear(s):
+        a2, q = s * s - g * g, math.sqrt(1.0 - s * s)
+        re, im = (2.0 * s * s - 1.0) ** 2, 4.0 * s * s * math.sqrt(a2) * q
+        return 4.0 * s**3 * a2 * q / (re * re + im * im)
+
+    def rayleigh_function(s):
+        return (2.0 * s * s - 1.0) ** 2 - 4.0 * s * s * math.sqrt(s * s - g * g) * math.sqrt(
+            s * s - 1.0
+        )
+
+    def slope(s):  # dD/ds, analytic
+        a, b = math.sqrt(s * s - g * g), math.sqrt(s * s - 1.0)
+        return 8.0 * s * (2.0 * s * s - 1.0) - 8.0 * s * a * b - 4.0 * s**3 * (b / a + a / b)
+
+    first = quad(both, 0.0, g, epsabs=0.0, epsrel=1e-12, limit=200)[0]
+    second = quad(shear, g, 1.0, epsabs=0.0, epsrel=1e-12, limit=200)[0]
+    s_r = brentq(rayleigh_function, 1.0 + 1e-12, 10.0, xtol=1e-15, rtol=1e-15)
+    pole = math.pi * math.sqrt(s_r * s_r - g * g) * s_r / abs(slope(s_r))
+    return RadiationIntegrals(float(nu), first, second, pole, 1.0 / s_r)
+
+
+def radiated_fraction(
+    v: float,
+    *,
+    mass: float,
+    radius: float,
+    e_star: float,
+    wall_density: float,
+    wall_shear_speed: float,
+    wall_nu: float,
+) -> float:
+    """``E_rad / E_kin`` of a ball of ``mass`` and ``radius`` hitting the half-space at ``v``
+    (module docs); ``e_star`` is Hertz's ``1/E* = (1 - nu^2)/E + (1 - nu_w^2)/E_w``."""
+    given = {"v": v, "mass": mass, "radius": radius, "e_star": e_star,
+             "wall_density": wall_density, "wall_shear_speed": wall_shear_speed}  # fmt: skip
+    for name, x in given.items():
+        if not (math.isfinite(x) and x > 0):
+            raise InputError(f"{name} must be a positive number, got {x!r}")
+    k = 4.0 / 3.0 * e_star * math.sqrt(radius)
+    delta = (1.25 * mass * v * v / k) ** 0.4
+    integral = radiation_integrals(wall_nu).total
+    conductance = integral / (2.0 * math.pi * wall_density * wall_shear_speed**3)
+    return conductance * 4.5 * beta(0.8, 1.5) * k * v / math.sqrt(delta)
