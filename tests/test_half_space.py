@@ -95,3 +95,74 @@ def test_the_fraction_grows_like_the_three_fifths_power_of_the_speed():
     assert a / 1e-5**0.6 == pytest.approx(1.1318, rel=1e-4)
     # a 5 mm steel ball at 1 m/s: about a hundred times its own vibrations' 5e-5
     assert 100 < radiated_fraction(1.0 / 5172.19, **STEEL_ON_STEEL) / 5e-5 < 150
+
+
+# -- a sphere on an elastic half-space: the ball's vibrations and the wall's waves ----------------
+
+
+def test_a_rigid_heavy_wall_is_the_rigid_wall():
+    """E_w, rho_w -> infinity (c_T fixed): the waves vanish and the ball's part is its loss on
+    the rigid wall (E* -> E / (1 - nu^2); measured 4e-10 relative at 1e12)."""
+    from restitution import get_modes
+    from restitution.bodies.wall import HalfSpace
+    from restitution.quasistatic.half_space import half_space_loss
+    from restitution.quasistatic.low_speed import LOW_SPEED_MODES, low_speed_loss
+
+    modes = get_modes(NU, LOW_SPEED_MODES, geometry="sphere")
+    rigid = low_speed_loss(modes, 1e-4)
+    hard = half_space_loss(modes, 1e-4, HalfSpace(1e12, 1e12, 0.3))
+    assert hard.shares[1] < 1e-12  # 1 / (rho_w c_T^3): 1e-12 times the steel block's
+    assert hard.energy_loss == pytest.approx(rigid.energy_loss, rel=1e-9)
+    soft = half_space_loss(modes, 1e-4, HalfSpace(0.3, 0.32, 0.25))
+    assert sum(soft.shares) == pytest.approx(soft.energy_loss, rel=1e-12)
+    assert soft.shares[1] > 100 * soft.shares[0]  # the block takes far more than the ball
+
+
+def test_a_steel_ball_on_a_glass_block(cli):
+    """Issue 42's question at 0.1 and 1 m/s: one command, a value, its error, a status and the
+    split; 10 m/s lies above the route's reach (7.4 m/s) and is outside, saying so."""
+    import json
+
+    code, out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                         "sphere", "--against", "wall", "--wall-E", "63e9", "--wall-nu",
+                         "0.2481", "--wall-rho", "2500", "--speed", "0.1", "1", "10",
+                         "--json")  # fmt: skip
+    points = json.loads(out)["points"]
+    for p in points[:2]:
+        assert p["status"] == "quasistatic" and 0.99 < p["epsilon"] < 1.0
+        ball, wall = p["loss_shares"]
+        assert wall > 0.99 and ball + wall == pytest.approx(1.0)
+    # glass takes more than steel would (softer and lighter), and the loss grows with the speed
+    assert points[1]["epsilon"] < points[0]["epsilon"]
+    assert points[2]["status"] == "outside" and "elastic wall" in points[2]["note"]
+
+
+@pytest.mark.parametrize(
+    "extra, message",
+    [
+        (("--against", "grain", "--wall-E", "63e9", "--wall-nu", "0.25", "--wall-rho", "2500"),
+         "with --against wall"),
+        (("--against", "wall", "--wall-E", "63e9"), "give all three"),
+        (("--against", "wall", "--wall-E", "-1", "--wall-nu", "0.25", "--wall-rho", "2500"),
+         "--wall-E must be a positive number"),
+        (("--against", "wall", "--wall-E", "63e9", "--wall-nu", "0.6", "--wall-rho", "2500"),
+         "Poisson number must lie in (-1, 0.5)"),
+        (("--against", "wall", "--wall-E", "63e9", "--wall-nu", "0.25", "--wall-rho", "2500",
+          "--reference-speed", "1"), "not available yet"),
+    ],
+)  # fmt: skip
+def test_elastic_wall_options_are_refused_in_one_line(cli, extra, message):
+    from _cli_checks import one_line_error
+
+    code, _, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                       "sphere", *extra)  # fmt: skip
+    one_line_error(code, err, message)
+
+
+def test_a_cylinder_on_an_elastic_wall_is_refused(cli):
+    from _cli_checks import one_line_error
+
+    code, _, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                       "cylinder", "--against", "wall", "--wall-E", "63e9", "--wall-nu", "0.25",
+                       "--wall-rho", "2500")  # fmt: skip
+    one_line_error(code, err, "computed for spheres")

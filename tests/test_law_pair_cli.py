@@ -132,7 +132,8 @@ def _argv(inputs: dict) -> list[str]:
              "maxwell_temperature": "--maxwell-temperature", "export": "--export",
              "measured_epsilon": "--measured-epsilon", "measured_speed_m_s": "--measured-speed",
              "relaxation_time_s": "--relaxation-time", "radius_m": "--radius",
-             "compute": "--compute"}  # fmt: skip
+             "compute": "--compute", "wall_E": "--wall-E", "wall_nu": "--wall-nu",
+             "wall_rho": "--wall-rho"}  # fmt: skip
     argv = ["law", "--json", "--speed", *map(repr, inputs["speeds_m_s"])]
     assert set(inputs) == {*flags, "speeds_m_s"}
     for key, flag in flags.items():

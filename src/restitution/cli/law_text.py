@@ -73,12 +73,15 @@ def _rows(a) -> list[str]:
     """The elastic law's rows."""
     split = any(getattr(p, "loss_shares", None) for p in a.points)
     head = "  speed [m/s]        v/c       epsilon      error   status"
-    lines = [head + ("        loss in grain 1 / 2" if split else "")]
+    wall = "wall" in getattr(a.law.law, "metadata", {})
+    split_head = "        loss in ball / wall" if wall else "        loss in grain 1 / 2"
+    lines = [head + (split_head if split else "")]
     for p in a.points:
         eps, err = _eps(p)
         line = f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}"
         if split and p.loss_shares is not None:
-            line = f"{line:<70}{100 * p.loss_shares[0]:5.1f} % / {100 * p.loss_shares[1]:5.1f} %"
+            first, second = (f"{100 * x:.3g} %" for x in p.loss_shares)
+            line = f"{line:<70}{first:>8} / {second}"
         lines.append(line.rstrip())
     return lines
 

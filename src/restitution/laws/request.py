@@ -117,6 +117,24 @@ class LawRequest:
             "grain's].",
         ),
     )
+    wall_E: float | None = field(
+        default=None,
+        metadata=_option(
+            "--wall-E",
+            "With --against wall: the wall is an elastic half-space (a thick block) of this "
+            "Young modulus, Pa, instead of rigid; give --wall-nu and --wall-rho too. Spheres "
+            "only; each speed computed by the low-speed route, the loss split into the ball's "
+            "vibrations and the waves radiated into the block (docs/walls.md).",
+        ),
+    )
+    wall_nu: float | None = field(
+        default=None,
+        metadata=_option("--wall-nu", "With --wall-E: the wall's Poisson number."),
+    )
+    wall_rho: float | None = field(
+        default=None,
+        metadata=_option("--wall-rho", "With --wall-E: the wall's density, kg/m^3."),
+    )
     law_file: Path | None = field(
         default=None,
         metadata=_option(
@@ -251,6 +269,8 @@ class LawRequest:
             )
         if self.identical_law_file is not None or self.partner_identical_law_file is not None:
             self._check_identical_law_files()
+        if self.elastic_wall is not None:
+            self._check_elastic_wall()
         if self.compute and self.law_file is not None:
             raise InputError("give --law-file or --compute, not both")
         if not self.compute and (self.store is not None or self.force):
@@ -305,6 +325,50 @@ class LawRequest:
             raise InputError(f"the partner's material: {exc}") from None
 
     @property
+    def elastic_wall(self):
+        """The elastic half-space of the wall options (:class:`restitution.bodies.wall.
+        HalfSpace`, in this grain's units), ``None`` without them (a rigid wall)."""
+        given = (self.wall_E, self.wall_nu, self.wall_rho)
+        if given == (None, None, None):
+            return None
+        if None in given:
+            raise InputError(
+                "--wall-E, --wall-nu and --wall-rho describe an elastic wall together; give all "
+                "three (or none for a rigid wall)"
+            )
+        from restitution.bodies.wall import HalfSpace
+
+        for name, value in zip(("--wall-E", "--wall-rho"), (self.wall_E, self.wall_rho),
+                               strict=True):  # fmt: skip
+            if not (math.isfinite(value) and value > 0):
+                raise InputError(f"{name} must be a positive number, got {value:g}")
+        try:
+            return HalfSpace(self.wall_E / self.E, self.wall_rho / self.rho, self.wall_nu)
+        except InputError as exc:
+            raise InputError(f"the wall: {exc}") from None
+
+    def _check_elastic_wall(self) -> None:
+        if self.against != "wall":
+            raise InputError(
+                "--wall-E, --wall-nu and --wall-rho describe an elastic wall: give them with "
+                "--against wall"
+            )
+        if body_kind(BODIES[self.shape]).planar:
+            raise InputError(
+                "an elastic wall is computed for spheres (a sphere on a half-space); use --shape "
+                "sphere, or leave out the wall options (a rigid wall)"
+            )
+        needs = [what for what, asked in (("--export", self.export_dir is not None),
+                 ("--reference-speed/--maxwell-temperature", self.constants),
+                 ("damping", self.damped), ("--law-file", self.law_file is not None),
+                 ("--compute", self.compute)) if asked]  # fmt: skip
+        if needs:
+            raise InputError(
+                f"{' and '.join(needs)} with an elastic wall: not available yet (the wall's law "
+                "is computed at the asked speeds only); leave them out"
+            )
+
+    @property
     def damped(self) -> bool:
         """Whether a damping option is given."""
         return (self.measured_epsilon, self.measured_speed, self.relaxation_time) != (None,) * 3
@@ -330,6 +394,7 @@ class LawRequest:
             "measured_epsilon": self.measured_epsilon,
             "measured_speed_m_s": self.measured_speed,
             "relaxation_time_s": self.relaxation_time, "radius_m": self.radius,
+            "wall_E": self.wall_E, "wall_nu": self.wall_nu, "wall_rho": self.wall_rho,
             "compute": self.compute,
         }  # fmt: skip
 

@@ -19,7 +19,7 @@ from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.production import low_speed_points, route_reach
 
-__all__ = ["route_law", "route_serves"]
+__all__ = ["route_law", "route_serves", "wall_law"]
 
 
 def route_serves(geometry: str, nu: float, partner) -> bool:
@@ -61,4 +61,53 @@ def route_law(nu: float, geometry: str, partner, speeds) -> EpsilonLaw:
         at_points_only=True,
     )
     law.metadata["source"] = "computed now at the asked speeds by the pair's low-speed route"
+    return law
+
+
+def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
+    """The law of a sphere on an elastic half-space ``wall``
+    (:class:`restitution.bodies.wall.HalfSpace`) at ``speeds`` (``c``) within its route's reach
+    (:func:`restitution.quasistatic.half_space.half_space_reach`) and at the reach: each speed
+    alone (:func:`restitution.quasistatic.half_space.half_space_loss`, the ball's vibrations and
+    the waves radiated into the wall, ``shares`` in that order), served at its points only
+    (speeds above the reach are ``outside``)."""
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.laws.law import QUASISTATIC_ROUTE
+    from restitution.provenance import quasistatic_code_version
+    from restitution.quasistatic.half_space import half_space_loss, half_space_reach
+    from restitution.quasistatic.low_speed import CONTACT_TIME_SPREAD, LOW_SPEED_MODES
+    from restitution.status import Status
+
+    top = float(half_space_reach(nu, wall))
+    inside = sorted({float(v) for v in speeds if 0.0 < float(v) < top})
+    points = [*(inside or [0.5 * top]), top]
+    modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
+    records = []
+    for v in points:
+        r = half_space_loss(modes, v, wall)
+        records.append(
+            {
+                "v": v, "epsilon": r.epsilon, "epsilon_err": r.epsilon_err,
+                "energy_loss": r.energy_loss, "energy_loss_err": r.energy_loss_err,
+                "estimate_err": r.energy_loss_err, "interpolation_err": 0.0,
+                "shares": list(r.shares), "band": list(r.band), "asymptotic_ok": False,
+                "status": Status.QUASISTATIC, "route": QUASISTATIC_ROUTE, "message": "",
+            }
+        )  # fmt: skip
+    parameters = {
+        "route": "the ball's modes driven by Hertz's pulse on the elastic half-space (Rayleigh's "
+        "estimate) and the waves radiated into it (Lamb's point-force radiation; "
+        "restitution.quasistatic.half_space)",
+        "n_modes": LOW_SPEED_MODES,
+        "contact_time_spread": CONTACT_TIME_SPREAD,
+        "reach": top,
+        "code_version": quasistatic_code_version(SPHERE.geometry, "rayleigh"),
+    }
+    law = EpsilonLaw.from_records(
+        nu, records, key="low_speed", parameters=parameters, geometry=SPHERE.geometry,
+        at_points_only=True,
+    )  # fmt: skip
+    law.metadata["wall"] = wall.to_dict()
+    law.metadata["source"] = "computed now at the asked speeds: a sphere on an elastic half-space"
     return law

@@ -116,6 +116,20 @@ def serve(
     # A pair's law at the asked speeds (refused, before any folder is made, where a law at
     # every speed is needed).
     route = None if r.compute or r.law_file is not None else _route(r, note)
+    wall = r.elastic_wall
+    if wall is not None:  # a sphere on an elastic half-space, at the asked speeds
+        from restitution.laws.route_law import wall_law
+
+        grain = r.grain
+        note(
+            "note: an elastic wall: each speed is computed now (the ball's vibrations and the "
+            "waves radiated into the wall; about a second a speed)"
+        )
+        vs = [float(grain.v_over_c(w, "wall")) for w in r.speeds]
+        s = SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
+        points = s.points(list(r.speeds), note=note)
+        status, advice = overall_status(points)
+        return LawAnswer(r, s, None, points, status, advice)
     if r.export_dir is not None:
         check_output_dir(r.export_dir, "--export")  # before anything is computed
     other = r.partner_grain

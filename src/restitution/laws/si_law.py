@@ -78,6 +78,14 @@ SPHERE_PAIR_QUASISTATIC_NOTE = (
 )
 """What ``quasistatic`` means for a law of two spheres."""
 
+ELASTIC_WALL_QUASISTATIC_NOTE = (
+    "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left in "
+    "the ball's modes by Hertz's pulse on the elastic wall, plus the energy radiated into the "
+    "wall as elastic waves (Lamb's point-force radiation of the same pulse), each with its "
+    "error (docs/walls.md)"
+)
+"""What ``quasistatic`` means for a sphere on an elastic half-space."""
+
 _ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
 """What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
 kind's :attr:`~restitution.bodies.kinds.BodyKind.low_speed_route`, the routes of
@@ -201,6 +209,8 @@ def _quasistatic_note(law) -> str:
     its pair): the disk's slow-impact model or the sphere's Rayleigh estimate."""
     kind = body_kind(law.geometry)
     route = kind.low_speed_route if law.partner is None else kind.pair_low_speed_route
+    if isinstance(law, EpsilonLaw) and "wall" in law.metadata:
+        return ELASTIC_WALL_QUASISTATIC_NOTE
     if law.partner is not None and route == "rayleigh":
         return SPHERE_PAIR_QUASISTATIC_NOTE
     return _ROUTE_NOTES.get(route, STATUSES[Status.QUASISTATIC])
@@ -215,10 +225,10 @@ def _first_share(record: dict) -> float | None:
 
 
 def _shares(law, v: float) -> tuple[float, float] | None:
-    """Each grain's fraction of the loss at ``v``: at a computed speed of ``law`` whose record
-    holds the split (``shares``) that split, between two such speeds the fraction linear in
-    ``ln v`` between theirs; ``None`` elsewhere."""
-    if not isinstance(law, EpsilonLaw) or law.partner is None:
+    """Each grain's (or the ball's and the elastic wall's) fraction of the loss at ``v``: at a
+    computed speed of ``law`` whose record holds the split (``shares``) that split, between two
+    such speeds the fraction linear in ``ln v`` between theirs; ``None`` elsewhere."""
+    if not isinstance(law, EpsilonLaw) or (law.partner is None and "wall" not in law.metadata):
         return None
     pts = np.asarray(law.v, dtype=float)
     j = int(np.searchsorted(pts, v))
@@ -248,15 +258,15 @@ def _status(law, v: float) -> tuple[str, str]:
             return Status.COMPUTED, ""
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
     if getattr(law, "at_points_only", False):
+        what = "elastic wall" if "wall" in law.metadata else "pair"
         if v > pts[-1]:
             return Status.OUTSIDE, (
-                f"v = {v:.3g} c is above the reach {pts[-1]:.4g} c of the pair's low-speed route, "
-                "and faster collisions of this pair are not computed"
+                f"v = {v:.3g} c is above the reach {pts[-1]:.4g} c of the {what}'s low-speed "
+                f"route, and faster collisions of this {what} are not computed"
             )
         return Status.OUTSIDE, (
-            f"v = {v:.3g} c: this law was computed at the asked speeds only (by the pair's "
-            "low-speed route); ask for this speed, or compute the law at every speed with "
-            "--compute"
+            f"v = {v:.3g} c: this law was computed at the asked speeds only (by the {what}'s "
+            "low-speed route); ask for this speed"
         )
     if v < pts[0]:
         return Status.OUTSIDE, f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
@@ -351,6 +361,12 @@ class SILaw:
         """What the SI speed ``w`` is: towards the wall, or the relative speed of two grains
         (identical ones, or of the same material and the law's radius ratio)."""
         pair = self.law.partner
+        wall = self.law.metadata.get("wall") if isinstance(self.law, EpsilonLaw) else None
+        if wall is not None:
+            return (
+                f"an elastic half-space (E_w/E = {wall['modulus_ratio']:.4g}, rho_w/rho = "
+                f"{wall['density_ratio']:.4g}, nu_w = {wall['nu']:g}) hit at speed w (v = w / c)"
+            )
         if pair is None:
             return PARTNERS[self.against]
         if self.partner_grain is not None:

@@ -59,6 +59,8 @@ from restitution.errors import InputError
 __all__ = [
     "HERTZ_PULSE_FACTOR",
     "RadiationIntegrals",
+    "half_space_loss",
+    "half_space_reach",
     "radiated_fraction",
     "radiation_integrals",
 ]
@@ -153,3 +155,70 @@ def radiated_fraction(
     integral = radiation_integrals(wall_nu).total
     conductance = integral / (2.0 * math.pi * wall_density * wall_shear_speed**3)
     return conductance * 4.5 * beta(0.8, 1.5) * k * v / math.sqrt(delta)
+
+
+def half_space_loss(modes, v: float, wall):
+    """A sphere's loss on an elastic half-space at speed ``v`` (``c``), split into its own
+    vibrations and the wall's waves, each from the same Hertz pulse (``E*`` of ball and wall).
+
+    The ball's part is Rayleigh's estimate of its modes with its band
+    (:func:`restitution.quasistatic.low_speed.low_speed_loss` on the compliant pulse). The
+    wall's part is :func:`radiated_fraction`; its error estimate is the fraction times the
+    band's relative contact-time spread ``0.335 a / R`` (the dynamic pulse differs from Hertz's
+    at that order, and the radiated energy goes like ``int (dP/dt)^2``, so by the same order)
+    plus the fraction itself (the pulse computed without the energy it loses: first order in
+    the loss). Both errors add.
+
+    Parameters
+    ----------
+    modes : ModalBody
+        The sphere's modes (:data:`restitution.quasistatic.low_speed.LOW_SPEED_MODES`).
+    v : float
+        Speed towards the wall, ``c``.
+    wall : restitution.bodies.wall.HalfSpace
+
+    Returns
+    -------
+    LowSpeedLoss
+        With ``shares = (ball, wall)`` (fractions of ``(m/2) v^2``).
+    """
+    from dataclasses import replace
+
+    from restitution.quasistatic.hertz_sphere import sphere_contact_law
+    from restitution.quasistatic.low_speed import CONTACT_TIME_SPREAD, low_speed_loss
+
+    e_star = wall.effective_modulus(modes.nu)
+    law = replace(sphere_contact_law(modes.nu), effective_modulus=e_star,
+                  name="hertz (sphere on an elastic half-space)")  # fmt: skip
+    ball = low_speed_loss(modes, v, law=law)
+    waves = radiated_fraction(
+        v, mass=modes.mass, radius=1.0, e_star=e_star, wall_density=wall.density_ratio,
+        wall_shear_speed=wall.shear_speed, wall_nu=wall.nu,
+    )  # fmt: skip
+    spread = CONTACT_TIME_SPREAD * math.sqrt(ball.max_compression)
+    loss = ball.energy_loss + waves
+    err = ball.energy_loss_err + waves * (spread + waves)
+    eps = math.sqrt(1.0 - loss)
+    return replace(
+        ball,
+        energy_loss=loss,
+        energy_loss_err=err,
+        epsilon=eps,
+        epsilon_err=err / (2.0 * eps),
+        shares=(ball.energy_loss, waves),
+    )
+
+
+def half_space_reach(nu: float, wall) -> float:
+    """The fastest speed (``c``) the half-space route serves: where the contact is as wide, for
+    the ball, as on the rigid wall at the reach of the sphere's own route
+    (:func:`restitution.quasistatic.low_speed.reach`: ``a / R`` fixes the band)."""
+    from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
+    from restitution.quasistatic.low_speed import REACH_WALL_SPEED
+
+    delta = float(SPHERE.max_compression(REACH_WALL_SPEED, nu))  # a^2 / R on the rigid wall
+    from dataclasses import replace
+
+    law = replace(sphere_contact_law(nu), effective_modulus=wall.effective_modulus(nu))
+    return math.sqrt(2.0 * float(law.potential(delta)) / SPHERE_MASS)

@@ -166,7 +166,11 @@ def _asymptotic_sum(law: SphereHertzLaw, modes: ModalBody, v: float, stretch: np
 
 
 def low_speed_loss(
-    modes: ModalBody, v: float, *, spread: float = CONTACT_TIME_SPREAD
+    modes: ModalBody,
+    v: float,
+    *,
+    spread: float = CONTACT_TIME_SPREAD,
+    law: SphereHertzLaw | None = None,
 ) -> LowSpeedLoss:
     """Rayleigh's estimate of a sphere's vibrational loss at speed ``v``, with its error band.
 
@@ -180,6 +184,10 @@ def low_speed_loss(
     spread : float
         ``kappa`` of the contact time's uncertainty ``kappa sqrt(delta_max)``
         (:data:`CONTACT_TIME_SPREAD`).
+    law : SphereHertzLaw, optional
+        The pulse's contact law (default: the rigid wall's, or the two spheres' of a pair); a
+        compliant wall's for a sphere on an elastic half-space
+        (:func:`restitution.quasistatic.half_space.half_space_loss`).
 
     Returns
     -------
@@ -194,7 +202,8 @@ def low_speed_loss(
         raise InputError(f"{len(modes)} modes are too few for the tail estimate; use >= 16")
     if not (math.isfinite(v) and v > 0) or not (math.isfinite(spread) and spread >= 0):
         raise InputError(f"need v > 0 and spread >= 0, got v = {v!r}, spread = {spread!r}")
-    law, smallest = _law_of(modes)
+    default, smallest = _law_of(modes)
+    law = default if law is None else law
     ray = rayleigh_energy(modes, v, law)
     dmax = ray.max_compression
     width = spread * float(law.contact_radius(dmax)) / smallest

@@ -1,0 +1,71 @@
+"""An elastic wall, by its constants: the partner of a ball that is not a rigid wall.
+
+Units: the ball's reduced units, ``E = rho = R = 1`` of its own constants (a sphere's 3D ones);
+speeds in ``c = sqrt(E / rho)``.
+
+A :class:`HalfSpace` is a massive block of another material, so thick and wide that no wave
+returns before the ball leaves: its modulus and density in units of the ball's and its own
+Poisson number. It has no modes; what it takes is the energy radiated away as elastic waves
+(:mod:`restitution.quasistatic.half_space`). Plates (Zener's thin-plate model) are a later
+partner of this kind (issue 42).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from restitution.errors import InputError
+
+__all__ = ["HalfSpace"]
+
+
+@dataclass(frozen=True)
+class HalfSpace:
+    """An elastic half-space wall (module docs).
+
+    Attributes
+    ----------
+    modulus_ratio, density_ratio : float
+        ``E_w / E`` and ``rho_w / rho`` (3D constants).
+    nu : float
+        The wall's Poisson number, in ``(-1, 0.5)``.
+    """
+
+    modulus_ratio: float
+    density_ratio: float
+    nu: float
+
+    def __post_init__(self) -> None:
+        for name in ("modulus_ratio", "density_ratio", "nu"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, int | float):
+                raise InputError(f"the wall's {name.replace('_', ' ')} must be a number")
+            object.__setattr__(self, name, float(value))
+        for name in ("modulus_ratio", "density_ratio"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and 1e-12 <= value <= 1e12):
+                raise InputError(
+                    f"the wall's {name.replace('_', ' ')} must lie in 1e-12 ... 1e12 (the "
+                    f"ball's units), got {value!r}"
+                )
+        if not -1.0 < self.nu < 0.5:
+            raise InputError(f"the wall's Poisson number must lie in (-1, 0.5), got {self.nu!r}")
+
+    @property
+    def shear_speed(self) -> float:
+        """``c_T = sqrt(E_w / (2 (1 + nu_w) rho_w))``, ``c``."""
+        return math.sqrt(self.modulus_ratio / (2.0 * (1.0 + self.nu) * self.density_ratio))
+
+    def effective_modulus(self, nu_ball: float) -> float:
+        """Hertz's ``E*``: ``1 / E* = (1 - nu^2) + (1 - nu_w^2) / E_w``, ``E``."""
+        return 1.0 / ((1.0 - nu_ball**2) + (1.0 - self.nu**2) / self.modulus_ratio)
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary."""
+        return {
+            "kind": "half-space",
+            "modulus_ratio": self.modulus_ratio,
+            "density_ratio": self.density_ratio,
+            "nu": self.nu,
+        }
