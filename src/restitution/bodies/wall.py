@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from restitution.errors import InputError
 
-__all__ = ["HalfSpace"]
+__all__ = ["HalfSpace", "Plate"]
 
 
 @dataclass(frozen=True)
@@ -69,3 +69,42 @@ class HalfSpace:
             "density_ratio": self.density_ratio,
             "nu": self.nu,
         }
+
+
+@dataclass(frozen=True)
+class Plate(HalfSpace):
+    """An infinite elastic plate of ``thickness`` (``R``, the ball's radius): a wall that
+    bends (Zener's thin-plate model, :mod:`restitution.quasistatic.plate`).
+
+    Attributes
+    ----------
+    thickness : float
+        ``h / R``.
+    """
+
+    thickness: float = 1.0
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        h = self.thickness
+        if (
+            isinstance(h, bool)
+            or not isinstance(h, int | float)
+            or not (math.isfinite(h) and 1e-6 <= h <= 1e6)
+        ):
+            raise InputError(f"the plate's thickness must lie in 1e-6 ... 1e6 R, got {h!r}")
+        object.__setattr__(self, "thickness", float(h))
+
+    @property
+    def bending_stiffness(self) -> float:
+        """``D = E_w h^3 / (12 (1 - nu_w^2))``, ``E R^3``."""
+        return self.modulus_ratio * self.thickness**3 / (12.0 * (1.0 - self.nu**2))
+
+    @property
+    def impedance(self) -> float:
+        """The infinite thin plate's point impedance ``Z = 8 sqrt(D rho_w h)`` (force over the
+        velocity of the loaded point, real), ``E R^2 / c``."""
+        return 8.0 * math.sqrt(self.bending_stiffness * self.density_ratio * self.thickness)
+
+    def to_dict(self) -> dict:
+        return {**super().to_dict(), "kind": "plate", "thickness": self.thickness}

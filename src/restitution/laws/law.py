@@ -401,9 +401,10 @@ class EpsilonLaw:
                     "pass a list or array of floats"
                 )
         v = np.asarray(self.v, dtype=float)
+        least = 1 if self.at_points_only else 2  # an interpolant needs two
         if (
             v.ndim != 1
-            or v.size < 2
+            or v.size < least
             or not np.all(np.isfinite(v))
             or np.any(v <= 0)
             or np.any(np.diff(v) <= 0)
@@ -553,8 +554,26 @@ class EpsilonLaw:
     def _evaluate(self, values: np.ndarray, v, outside: str):
         arr = _speeds(v)
         bad = self._check(arr, outside)
+        if self.at_points_only:
+            return self._at_points(values, arr, bad, outside, np.ndim(v) == 0)
         out = np.where(bad, np.nan, self._interpolant(values)(np.where(bad, self.v[0], arr)))
         return float(out) if np.ndim(v) == 0 else out
+
+    def _at_points(self, values, arr, bad, outside: str, scalar: bool):
+        """``values`` at the law's own speeds (within a relative 1e-9), ``nan`` or a refusal
+        between them: a law that serves its points only (:attr:`at_points_only`)."""
+        j = np.clip(np.searchsorted(self.v, arr), 0, self.v.size - 1)
+        k = np.clip(j - 1, 0, self.v.size - 1)
+        near = np.where(np.abs(self.v[j] - arr) <= np.abs(self.v[k] - arr), j, k)
+        at = np.abs(self.v[near] - arr) <= 1e-9 * self.v[near]
+        between = ~at & ~bad
+        if np.any(between) and outside == "raise":
+            raise InputError(
+                f"speed(s) {np.unique(arr[between])[:5].tolist()} are not among the speeds this "
+                "law was computed at (it serves its points only); ask for them"
+            )
+        out = np.where(at & ~bad, values[near], np.nan)
+        return float(out) if scalar else out
 
     def epsilon(self, v, *, outside: str = "raise"):
         """Coefficient of restitution at speed(s) ``v`` towards the wall (units of ``c``).
@@ -604,6 +623,9 @@ class EpsilonLaw:
         """
         arr = _speeds(v)
         bad = self._check(arr, outside)
+        if self.at_points_only:  # served at its points only: nothing between them
+            out = np.where(bad, np.nan, 0.0)
+            return float(out) if np.ndim(v) == 0 else out
         x = np.where(bad, self.v[0], arr)
         j = np.clip(np.searchsorted(self.v, x, side="right") - 1, 0, self.v.size - 2)
         lo, hi = self.v[j], self.v[j + 1]

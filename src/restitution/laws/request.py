@@ -135,6 +135,16 @@ class LawRequest:
         default=None,
         metadata=_option("--wall-rho", "With --wall-E: the wall's density, kg/m^3."),
     )
+    wall_thickness: float | None = field(
+        default=None,
+        metadata=_option(
+            "--wall-thickness",
+            "With --wall-E: the wall is an infinite plate of this thickness, m (Zener's "
+            "thin-plate model, solved as the coupled equation); give the ball's --radius, m. "
+            "Speeds where the model does not hold, or the ball does not rebound, get no value "
+            "and say why.",
+        ),
+    )
     law_file: Path | None = field(
         default=None,
         metadata=_option(
@@ -330,20 +340,34 @@ class LawRequest:
         HalfSpace`, in this grain's units), ``None`` without them (a rigid wall)."""
         given = (self.wall_E, self.wall_nu, self.wall_rho)
         if given == (None, None, None):
+            if self.wall_thickness is not None:
+                raise InputError(
+                    "--wall-thickness describes a plate: give it with --wall-E, --wall-nu and "
+                    "--wall-rho"
+                )
             return None
         if None in given:
             raise InputError(
                 "--wall-E, --wall-nu and --wall-rho describe an elastic wall together; give all "
                 "three (or none for a rigid wall)"
             )
-        from restitution.bodies.wall import HalfSpace
+        from restitution.bodies.wall import HalfSpace, Plate
 
         for name, value in zip(("--wall-E", "--wall-rho"), (self.wall_E, self.wall_rho),
                                strict=True):  # fmt: skip
             if not (math.isfinite(value) and value > 0):
                 raise InputError(f"{name} must be a positive number, got {value:g}")
+        ratios = (self.wall_E / self.E, self.wall_rho / self.rho, self.wall_nu)
         try:
-            return HalfSpace(self.wall_E / self.E, self.wall_rho / self.rho, self.wall_nu)
+            if self.wall_thickness is None:
+                return HalfSpace(*ratios)
+            if self.radius is None:
+                raise InputError("a plate (--wall-thickness) needs the ball's --radius, m")
+            if not (math.isfinite(self.wall_thickness) and self.wall_thickness > 0):
+                raise InputError(
+                    f"--wall-thickness must be a positive number, m, got {self.wall_thickness:g}"
+                )
+            return Plate(*ratios, thickness=self.wall_thickness / self.radius)
         except InputError as exc:
             raise InputError(f"the wall: {exc}") from None
 
@@ -357,6 +381,11 @@ class LawRequest:
             raise InputError(
                 "an elastic wall is computed for spheres (a sphere on a half-space); use --shape "
                 "sphere, or leave out the wall options (a rigid wall)"
+            )
+        if self.radius is not None and self.wall_thickness is None and not self.damped:
+            raise InputError(
+                "--radius goes with --wall-thickness (a plate) or --relaxation-time; a "
+                "half-space needs no radius: leave it out"
             )
         needs = [what for what, asked in (("--export", self.export_dir is not None),
                  ("--reference-speed/--maxwell-temperature", self.constants),
@@ -395,6 +424,7 @@ class LawRequest:
             "measured_speed_m_s": self.measured_speed,
             "relaxation_time_s": self.relaxation_time, "radius_m": self.radius,
             "wall_E": self.wall_E, "wall_nu": self.wall_nu, "wall_rho": self.wall_rho,
+            "wall_thickness_m": self.wall_thickness,
             "compute": self.compute,
         }  # fmt: skip
 

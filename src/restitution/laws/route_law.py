@@ -73,12 +73,15 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     (speeds above the reach are ``outside``)."""
     from restitution.bodies.cache import get_modes
     from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.bodies.wall import Plate
     from restitution.laws.law import QUASISTATIC_ROUTE
     from restitution.provenance import quasistatic_code_version
     from restitution.quasistatic.half_space import half_space_loss, half_space_reach
     from restitution.quasistatic.low_speed import CONTACT_TIME_SPREAD, LOW_SPEED_MODES
     from restitution.status import Status
 
+    if isinstance(wall, Plate):
+        return _plate_law(nu, wall, speeds)
     top = float(half_space_reach(nu, wall))
     inside = sorted({float(v) for v in speeds if 0.0 < float(v) < top})
     points = [*(inside or [0.5 * top]), top]
@@ -110,4 +113,52 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     )  # fmt: skip
     law.metadata["wall"] = wall.to_dict()
     law.metadata["source"] = "computed now at the asked speeds: a sphere on an elastic half-space"
+    return law
+
+
+def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
+    """A sphere on a thin plate at ``speeds`` (``c``), each by Zener's model solved as the
+    coupled equation (:mod:`restitution.quasistatic.plate`); the speeds where the model does
+    not hold, or the ball does not rebound, are left out with the reason
+    (``metadata["refused"]``), served as ``outside``."""
+    from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.errors import InputError
+    from restitution.laws.law import QUASISTATIC_ROUTE
+    from restitution.quasistatic.hertz_sphere import SPHERE_MASS
+    from restitution.quasistatic.plate import model_error, plate_impact, validity
+    from restitution.status import Status
+
+    records, refused = [], {}
+    for v in sorted({float(x) for x in speeds if float(x) > 0}):
+        r = plate_impact(v, plate, nu=nu, mass=SPHERE_MASS)
+        reasons = validity(r, plate)
+        if not r.rebounds:
+            reasons.insert(0, "the ball does not rebound (it stays on the plate)")
+        if reasons:
+            refused[repr(v)] = "; ".join(reasons)
+            continue
+        err = model_error(r, plate)
+        records.append(
+            {
+                "v": v, "epsilon": r.epsilon, "epsilon_err": err / (2.0 * r.epsilon),
+                "energy_loss": 1.0 - r.epsilon**2, "energy_loss_err": err,
+                "estimate_err": err, "interpolation_err": 0.0, "plate_energy": r.plate_energy,
+                "balance": r.balance, "asymptotic_ok": False, "status": Status.QUASISTATIC,
+                "route": QUASISTATIC_ROUTE, "message": "",
+            }
+        )  # fmt: skip
+    if not records:
+        raise InputError(
+            "the thin-plate model serves none of the asked speeds: "
+            + "; ".join(sorted(set(refused.values())))
+        )
+    parameters = {"route": "Zener's thin plate, the coupled equation "
+                  "(restitution.quasistatic.plate)"}  # fmt: skip
+    law = EpsilonLaw.from_records(
+        nu, records, key="low_speed", parameters=parameters, geometry=SPHERE.geometry,
+        at_points_only=True,
+    )  # fmt: skip
+    law.metadata["wall"] = plate.to_dict()
+    law.metadata["refused"] = refused
+    law.metadata["source"] = "computed now at the asked speeds: a sphere on a thin plate"
     return law

@@ -121,10 +121,9 @@ def serve(
         from restitution.laws.route_law import wall_law
 
         grain = r.grain
-        note(
-            "note: an elastic wall: each speed is computed now (the ball's vibrations and the "
-            "waves radiated into the wall; about a second a speed)"
-        )
+        what = ("Zener's thin-plate model" if r.wall_thickness is not None
+                else "the ball's vibrations and the waves radiated into the wall")  # fmt: skip
+        note(f"note: an elastic wall: each speed is computed now ({what}; seconds)")
         vs = [float(grain.v_over_c(w, "wall")) for w in r.speeds]
         s = SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
         points = s.points(list(r.speeds), note=note)

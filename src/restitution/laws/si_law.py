@@ -86,6 +86,14 @@ ELASTIC_WALL_QUASISTATIC_NOTE = (
 )
 """What ``quasistatic`` means for a sphere on an elastic half-space."""
 
+PLATE_QUASISTATIC_NOTE = (
+    "from Zener's thin-plate model, not from collisions: Hertz's contact coupled to the plate's "
+    "point impedance 8 sqrt(D rho h), solved as the coupled equation; the loss is the plate's "
+    "flexural waves (the ball's own vibrations are not included); its error an estimate of the "
+    "model's neglected terms, not yet judged by the finite elements (docs/walls.md)"
+)
+"""What ``quasistatic`` means for a sphere on a thin plate."""
+
 _ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
 """What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
 kind's :attr:`~restitution.bodies.kinds.BodyKind.low_speed_route`, the routes of
@@ -210,6 +218,8 @@ def _quasistatic_note(law) -> str:
     kind = body_kind(law.geometry)
     route = kind.low_speed_route if law.partner is None else kind.pair_low_speed_route
     if isinstance(law, EpsilonLaw) and "wall" in law.metadata:
+        if law.metadata["wall"].get("kind") == "plate":
+            return PLATE_QUASISTATIC_NOTE
         return ELASTIC_WALL_QUASISTATIC_NOTE
     if law.partner is not None and route == "rayleigh":
         return SPHERE_PAIR_QUASISTATIC_NOTE
@@ -259,6 +269,10 @@ def _status(law, v: float) -> tuple[str, str]:
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
     if getattr(law, "at_points_only", False):
         what = "elastic wall" if "wall" in law.metadata else "pair"
+        refused = next((why for at, why in law.metadata.get("refused", {}).items()
+                        if abs(float(at) - v) <= _SAME * v), None)  # fmt: skip
+        if refused:
+            return Status.OUTSIDE, f"v = {v:.3g} c: no value from the plate's model: {refused}"
         if v > pts[-1]:
             return Status.OUTSIDE, (
                 f"v = {v:.3g} c is above the reach {pts[-1]:.4g} c of the {what}'s low-speed "
@@ -363,8 +377,10 @@ class SILaw:
         pair = self.law.partner
         wall = self.law.metadata.get("wall") if isinstance(self.law, EpsilonLaw) else None
         if wall is not None:
+            what = (f"an elastic plate {wall['thickness']:.4g} ball radii thick"
+                    if wall.get("kind") == "plate" else "an elastic half-space")  # fmt: skip
             return (
-                f"an elastic half-space (E_w/E = {wall['modulus_ratio']:.4g}, rho_w/rho = "
+                f"{what} (E_w/E = {wall['modulus_ratio']:.4g}, rho_w/rho = "
                 f"{wall['density_ratio']:.4g}, nu_w = {wall['nu']:g}) hit at speed w (v = w / c)"
             )
         if pair is None:
