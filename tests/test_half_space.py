@@ -1,5 +1,5 @@
 """The energy a slow impact radiates into an elastic half-space (restitution.quasistatic.half_space,
-issue 42's low-speed route; not yet served by `law`).
+issue 42's low-speed route, served by `law --wall-E ...`).
 
 Independent checks: Rayleigh's wave speed against the closed-form root of Rayleigh's equation at
 nu = 1/4; the Rayleigh waves' share of a point force's radiation against Miller and Pursey's

@@ -11,6 +11,10 @@ own speed and nowhere between), and the reach itself, as a law that serves its p
 (:attr:`restitution.laws.law.EpsilonLaw.at_points_only`; a speed between them is ``outside``).
 A law defined at every speed, for exports, constants and plots, is the route's whole grid
 (``restitution law ... --compute``, :func:`restitution.laws.compute.computed_law`).
+
+:func:`wall_law` does the same for a sphere on an elastic wall (issue 42): a half-space (the
+ball's vibrations and the waves radiated into the block, up to the route's reach) or a thin
+plate (Zener's model, speed by speed where it holds; docs/walls.md).
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 """Energy radiated into an elastic half-space by a slow impact: Hertz's pulse through Lamb's
-point-force radiation (issue 42, the half-space's low-speed route; not yet served by ``law``).
+point-force radiation (issue 42, the half-space's low-speed route; ``law --wall-E ...``).
 
 Units: SI-free, any consistent set; the tests use the ball's ``E = rho = R = 1``. The wall is a
 half-space of density ``rho_w``, shear modulus ``mu_w = E_w / (2 (1 + nu_w))`` and shear speed
