@@ -109,3 +109,18 @@ def test_a_plate_needs_the_ball_radius(cli):
 
     code, _, err = _law(cli, "--wall-thickness", "3e-3", "--speed", "1")
     one_line_error(code, err, "needs the ball's --radius")
+
+
+def test_the_plate_thickness_figure_is_drawn(tmp_path):
+    """docs/figures/plate_thickness_steel_glass.png: Zener's epsilon rises with the thickness
+    where the model holds; the block's line lies below the thick plates' (Zener's model has no
+    radiation into the plate's depth: where it stops holding the block answers)."""
+    from restitution.reproduction.figures import plate_thickness
+
+    c = plate_thickness.compute([1.0, 3.0, 10.0, 50.0])
+    ok = c.valid
+    assert ok[1] and ok[2] and not ok[3]
+    assert c.epsilon[0] < c.epsilon[1] < c.epsilon[2] < c.epsilon[3]
+    assert 0.99 < c.half_space < c.epsilon[3]
+    plate_thickness.plot(c, tmp_path / "f.png")
+    assert (tmp_path / "f.png").stat().st_size > 10_000
