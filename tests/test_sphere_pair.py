@@ -463,6 +463,7 @@ def test_the_quasistatic_command_reports_two_spheres(capsys):
           "--radius-ratio", "2", "--json"])  # fmt: skip
     out = json.loads(capsys.readouterr().out)
     assert out["geometry"] == "sphere-pair" and out["status"] == "ok"
+    assert "relative normal speed" in out["units"]["speed"]  # the envelope's: the pair's
     direct = low_speed_loss(
         Partner(radius_ratio=2.0).pair(NU, PAIR_LOW_SPEED_MODES, "sphere"), 1e-3
     )

@@ -246,6 +246,19 @@ def partner_from(ctx: click.Context, nu: float, plane: str | None, geometry: str
     return Partner(nu=second, **ratios)
 
 
+def pair_units(geometry: str) -> dict:
+    """The units of a command's numbers for two bodies of ``geometry``: the first body's
+    reduced units, ``v`` the relative speed of the centres, energies fractions of the kinetic
+    energy in the centre-of-mass frame (the envelope's ``units`` of a pair)."""
+    return {
+        **body_kind(geometry).units,
+        "system": f"E1 = rho1 = R1 = 1: the first {geometry}'s constants",
+        "speed": "c1 = sqrt(E1/rho1) (v: the relative normal speed of the two centres)",
+        "energy": "fraction of the kinetic energy in the centre-of-mass frame (mu/2) v^2, "
+        "mu the reduced mass",
+    }
+
+
 def positive_finite(name: str, value: float) -> float:
     if not (math.isfinite(value) and value > 0):
         raise InputError(f"{name} must be a positive number, got {value}")

@@ -25,6 +25,7 @@ from restitution.cli._common import (
     note,
     nu_inputs,
     nu_option,
+    pair_units,
     partner_from,
     partner_options,
     plane_option,
@@ -471,13 +472,7 @@ def _pair(ctx, body, partner, geometry, v, alpha, n_modes, integrator, energy_to
               "modulus_ratio": partner.modulus_ratio,
               "density_ratio": partner.density_ratio,
               "relaxation_time": relaxation_time}  # fmt: skip
-    units = {
-        **body_kind(geometry).units,
-        "system": f"E1 = rho1 = R1 = 1: the first {geometry}'s constants",
-        "speed": "c1 = sqrt(E1/rho1) (v: the relative normal speed of the two centres)",
-        "energy": "fraction of the kinetic energy in the centre-of-mass frame (mu/2) v^2, "
-        "mu the reduced mass",
-    }
+    units = pair_units(geometry)
     payload = {**result.to_dict(), "wall_time_s": time.perf_counter() - start, "pair": detail}
 
     def text() -> str:

@@ -17,6 +17,7 @@ from restitution.cli._common import (
     note,
     nu_inputs,
     nu_option,
+    pair_units,
     partner_from,
     partner_options,
     plane_option,
@@ -208,10 +209,11 @@ def quasistatic(
     _emit(inputs, out, _disk_text(out, v, law), fmt)
 
 
-def _emit(inputs: dict, out: dict, text: str, fmt: str) -> None:
+def _emit(inputs: dict, out: dict, text: str, fmt: str, units: dict | None = None) -> None:
     """The answer of one quasistatic collision (the CSV: one row), and the note on Rayleigh's
-    validity with the text."""
-    emit(Report("quasistatic", inputs, out, text=lambda: text, rows=lambda: [_row(out)]), fmt)
+    validity with the text; ``units`` the envelope's (default: the body's on the wall)."""
+    emit(Report("quasistatic", inputs, out, units=units, text=lambda: text,
+                rows=lambda: [_row(out)]), fmt)  # fmt: skip
     if fmt == "text" and "rayleigh_energy_fraction" in out:
         _note_validity(out)
 
@@ -317,7 +319,7 @@ def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, fmt: str) 
         f"  contact time     {out['contact_time']:.6g} R1/c1\n"
         f"  max force        {out['max_force']:.6g} E1 R1"
     )
-    _emit(inputs, out, text, fmt)
+    _emit(inputs, out, text, fmt, pair_units(geometry))
 
 
 def sphere_pair_summary(nu: float, partner, w: float, n_modes: int) -> dict:
@@ -395,7 +397,7 @@ def _sphere_pair(ctx, nu: float, partner, w: float, n_modes: int, fmt: str) -> N
         f"{out['epsilon']:.9g} +- {out['epsilon_err']:.2g}\n"
         f"  the route's reach: v = {out['reach']:.4g} c1{beyond}"
     )
-    _emit(inputs, out, text, fmt)
+    _emit(inputs, out, text, fmt, pair_units(SPHERE.geometry))
 
 
 def _sphere(nu: float, v: float, n_modes: int, fmt: str) -> None:
