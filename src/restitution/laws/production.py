@@ -345,9 +345,7 @@ def low_speed_points(
         What they were computed with (the route, its settings, the code version), for
         :meth:`restitution.laws.law.EpsilonLaw.joined`.
     """
-    from restitution.laws.law import QUASISTATIC_ROUTE
     from restitution.provenance import quasistatic_code_version
-    from restitution.status import Status
 
     name = low_speed_route(geometry, partner)
     if name is None:
@@ -360,25 +358,10 @@ def low_speed_points(
         float(v) for v in (low_speeds_of(geometry, partner, nu) if speeds is None else speeds)
     ]
     results, parameters = route(geometry, float(nu), speeds, progress_of(progress), partner)
-    records = []
-    for v, (r, gap, details) in zip(speeds, results, strict=True):
-        err = r.energy_loss_err + gap
-        records.append(
-            {
-                "v": v,
-                "epsilon": r.epsilon,
-                "epsilon_err": err / (2.0 * r.epsilon),
-                "energy_loss": r.energy_loss,
-                "energy_loss_err": err,
-                "estimate_err": r.energy_loss_err,
-                "interpolation_err": gap,
-                **details,
-                "asymptotic_ok": False,
-                "status": Status.QUASISTATIC,
-                "route": QUASISTATIC_ROUTE,
-                "message": "",
-            }
-        )
+    records = [
+        low_speed_record(v, r.epsilon, r.energy_loss, r.energy_loss_err, gap, details)
+        for v, (r, gap, details) in zip(speeds, results, strict=True)
+    ]
     parameters = {
         **parameters,
         "v_min": speeds[0],
@@ -386,6 +369,33 @@ def low_speed_points(
         "code_version": quasistatic_code_version(geometry, name, pair=partner is not None),
     }
     return records, parameters
+
+
+def low_speed_record(
+    v: float, epsilon: float, loss: float, estimate_err: float, gap: float = 0.0, details=None
+) -> dict:
+    """One low-speed point as a law's ``metadata["points"]`` holds it: its error the route's
+    estimate (``estimate_err``, of the loss) plus what PCHIP between its neighbours may miss
+    (``gap``), flagged ``quasistatic`` (no extrapolation to check), with the route's own
+    ``details``. ``epsilon`` is the route's (``sqrt(1 - loss)`` for an elastic loss)."""
+    from restitution.laws.law import QUASISTATIC_ROUTE
+    from restitution.status import Status
+
+    err = estimate_err + gap
+    return {
+        "v": v,
+        "epsilon": epsilon,
+        "epsilon_err": err / (2.0 * epsilon),
+        "energy_loss": loss,
+        "energy_loss_err": err,
+        "estimate_err": estimate_err,
+        "interpolation_err": gap,
+        **(details or {}),
+        "asymptotic_ok": False,
+        "status": Status.QUASISTATIC,
+        "route": QUASISTATIC_ROUTE,
+        "message": "",
+    }
 
 
 def _routed() -> list[str]:

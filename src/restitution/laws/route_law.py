@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.production import low_speed_points, route_reach
+from restitution.laws.production import low_speed_points, low_speed_record, route_reach
 
 __all__ = ["route_law", "route_serves", "wall_law"]
 
@@ -78,11 +78,9 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     from restitution.bodies.cache import get_modes
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.bodies.wall import Plate
-    from restitution.laws.law import QUASISTATIC_ROUTE
     from restitution.provenance import quasistatic_code_version
     from restitution.quasistatic.half_space import half_space_loss, half_space_reach
     from restitution.quasistatic.low_speed import CONTACT_TIME_SPREAD, LOW_SPEED_MODES
-    from restitution.status import Status
 
     if isinstance(wall, Plate):
         return _plate_law(nu, wall, speeds)
@@ -93,15 +91,9 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     records = []
     for v in points:
         r = half_space_loss(modes, v, wall)
-        records.append(
-            {
-                "v": v, "epsilon": r.epsilon, "epsilon_err": r.epsilon_err,
-                "energy_loss": r.energy_loss, "energy_loss_err": r.energy_loss_err,
-                "estimate_err": r.energy_loss_err, "interpolation_err": 0.0,
-                "shares": list(r.shares), "band": list(r.band), "asymptotic_ok": False,
-                "status": Status.QUASISTATIC, "route": QUASISTATIC_ROUTE, "message": "",
-            }
-        )  # fmt: skip
+        records.append(low_speed_record(v, r.epsilon, r.energy_loss, r.energy_loss_err,
+                                        details={"shares": list(r.shares),
+                                                 "band": list(r.band)}))  # fmt: skip
     parameters = {
         "route": "the ball's modes driven by Hertz's pulse on the elastic half-space (Rayleigh's "
         "estimate) and the waves radiated into it (Lamb's point-force radiation; "
@@ -127,10 +119,8 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
     (``metadata["refused"]``), served as ``outside``."""
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.errors import InputError
-    from restitution.laws.law import QUASISTATIC_ROUTE
     from restitution.quasistatic.hertz_sphere import SPHERE_MASS
     from restitution.quasistatic.plate import model_error, plate_impact, validity
-    from restitution.status import Status
 
     records, refused = [], {}
     for v in sorted({float(x) for x in speeds if float(x) > 0}):
@@ -141,16 +131,9 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
         if reasons:
             refused[repr(v)] = "; ".join(reasons)
             continue
-        err = model_error(r, plate)
-        records.append(
-            {
-                "v": v, "epsilon": r.epsilon, "epsilon_err": err / (2.0 * r.epsilon),
-                "energy_loss": 1.0 - r.epsilon**2, "energy_loss_err": err,
-                "estimate_err": err, "interpolation_err": 0.0, "plate_energy": r.plate_energy,
-                "balance": r.balance, "asymptotic_ok": False, "status": Status.QUASISTATIC,
-                "route": QUASISTATIC_ROUTE, "message": "",
-            }
-        )  # fmt: skip
+        records.append(low_speed_record(v, r.epsilon, 1.0 - r.epsilon**2, model_error(r, plate),
+                                        details={"plate_energy": r.plate_energy,
+                                                 "balance": r.balance}))  # fmt: skip
     if not records:
         raise InputError(
             "the thin-plate model serves none of the asked speeds: "

@@ -213,12 +213,10 @@ def half_space_reach(nu: float, wall) -> float:
     """The fastest speed (``c``) the half-space route serves: where the contact is as wide, for
     the ball, as on the rigid wall at the reach of the sphere's own route
     (:func:`restitution.quasistatic.low_speed.reach`: ``a / R`` fixes the band)."""
-    from restitution.bodies.sphere.kind import KIND as SPHERE
-    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
-    from restitution.quasistatic.low_speed import REACH_WALL_SPEED
-
-    delta = float(SPHERE.max_compression(REACH_WALL_SPEED, nu))  # a^2 / R on the rigid wall
     from dataclasses import replace
 
+    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
+    from restitution.quasistatic.low_speed import width_reach
+
     law = replace(sphere_contact_law(nu), effective_modulus=wall.effective_modulus(nu))
-    return math.sqrt(2.0 * float(law.potential(delta)) / SPHERE_MASS)
+    return width_reach(nu, law, 1.0, SPHERE_MASS)

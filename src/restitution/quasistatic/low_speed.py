@@ -80,6 +80,7 @@ __all__ = [
     "interpolation_error",
     "low_speed_loss",
     "reach",
+    "width_reach",
 ]
 
 CONTACT_TIME_SPREAD = 0.335
@@ -319,6 +320,15 @@ def _lowest_omega(nu: float, partner) -> float:
     return min(own, other * partner.speed_ratio / partner.radius_ratio)
 
 
+def width_reach(nu: float, law: SphereHertzLaw, smallest: float, mass: float) -> float:
+    """The speed at which the contact of ``law`` (a body of ``mass``), relative to the smaller
+    radius ``smallest``, is as wide as the sphere's on the rigid wall at
+    :data:`REACH_WALL_SPEED`: ``a / R_min`` fixes the band's width (module docs)."""
+    a_max = math.sqrt(float(SPHERE.max_compression(REACH_WALL_SPEED, nu)))
+    delta = (a_max * smallest) ** 2 / law.R
+    return math.sqrt(2.0 * float(law.potential(delta)) / mass)
+
+
 def reach(nu: float, partner=None) -> float:
     """The fastest speed the route serves, ``c`` (for two spheres the relative speed ``w``, in
     ``c1``): the lower of two bounds.
@@ -333,7 +343,6 @@ def reach(nu: float, partner=None) -> float:
       partner much larger or softer than the first sphere, whose lowest modes are slow against
       the contact: a large enough partner is an elastic half-space, not a body that rings.
     """
-    a_max = math.sqrt(float(SPHERE.max_compression(REACH_WALL_SPEED, nu)))
     if partner is None:
         law, smallest, mass = sphere_contact_law(nu), 1.0, SPHERE_MASS
         width = float(REACH_WALL_SPEED)
@@ -345,8 +354,7 @@ def reach(nu: float, partner=None) -> float:
         smallest = min(1.0, r)
         m2 = SPHERE_MASS * partner.density_ratio * r**3
         mass = SPHERE_MASS * m2 / (SPHERE_MASS + m2)
-        delta = (a_max * smallest) ** 2 / law.R
-        width = math.sqrt(2.0 * float(law.potential(delta)) / mass)
+        width = width_reach(nu, law, smallest, mass)
     tau = float(sphere_quasistatic_collision(law, width, mass=mass).contact_time[0])
     phase = _lowest_omega(nu, partner) * tau
     return width * min(1.0, (phase / SLOWEST_PHASE) ** 5)

@@ -135,28 +135,38 @@ def plate_impact(v: float, plate, *, nu: float, mass: float, rtol: float = 1e-11
     )
 
 
-def validity(impact: PlateImpact, plate) -> list[str]:
-    """What of the thin-plate model fails for ``impact`` (empty: it holds; module docs)."""
+def _neglected(impact: PlateImpact, plate) -> tuple[float, float, float]:
+    """The thin-plate model's three small ratios at ``impact`` (module docs): the contact
+    radius over the thickness, the thickness over the flexural wavelength at ``pi / tau`` and
+    the compressional transit across the thickness over the contact time."""
     h = plate.thickness
     nu_w = plate.nu
-    a = math.sqrt(impact.max_compression)  # the contact radius, R
     c_l = math.sqrt(plate.modulus_ratio * (1 - nu_w) / (plate.density_ratio * (1 + nu_w)
                                                        * (1 - 2 * nu_w)))  # fmt: skip
     omega = math.pi / impact.contact_time
     flexural = 2.0 * math.pi * (plate.bending_stiffness / (plate.density_ratio * h)) ** 0.25
     wavelength = flexural / math.sqrt(omega)
+    return math.sqrt(impact.max_compression) / h, h / wavelength, h / c_l / impact.contact_time
+
+
+def validity(impact: PlateImpact, plate) -> list[str]:
+    """What of the thin-plate model fails for ``impact`` (empty: it holds; module docs)."""
+    h = plate.thickness
+    contact, thickness, transit = _neglected(impact, plate)
     out = []
-    if a > _CONTACT_FRACTION * h:
-        out.append(f"the contact radius {a:.3g} R is not small against the thickness {h:g} R")
-    if h > _WAVELENGTH_FRACTION * wavelength:
+    if contact > _CONTACT_FRACTION:
+        out.append(
+            f"the contact radius {contact * h:.3g} R is not small against the thickness {h:g} R"
+        )
+    if thickness > _WAVELENGTH_FRACTION:
         out.append(
             f"the thickness {h:g} R is not small against the flexural wavelength "
-            f"{wavelength:.3g} R of the pulse"
+            f"{h / thickness:.3g} R of the pulse"
         )
-    if h / c_l > _TRANSIT_FRACTION * impact.contact_time:
+    if transit > _TRANSIT_FRACTION:
         out.append(
-            f"the waves' transit across the thickness ({h / c_l:.3g} R/c) is not short against "
-            f"the contact time ({impact.contact_time:.3g} R/c)"
+            f"the waves' transit across the thickness ({transit * impact.contact_time:.3g} R/c) "
+            f"is not short against the contact time ({impact.contact_time:.3g} R/c)"
         )
     return out
 
@@ -175,13 +185,5 @@ def model_error(impact: PlateImpact, plate) -> float:
     the largest of its neglected ratios (the contact radius over the thickness, the thickness
     over the flexural wavelength squared, the transit time over the contact time). Not yet
     judged by an independent route (the finite elements of the plate, issue 42)."""
-    h = plate.thickness
-    nu_w = plate.nu
-    c_l = math.sqrt(plate.modulus_ratio * (1 - nu_w) / (plate.density_ratio * (1 + nu_w)
-                                                       * (1 - 2 * nu_w)))  # fmt: skip
-    omega = math.pi / impact.contact_time
-    flexural = 2.0 * math.pi * (plate.bending_stiffness / (plate.density_ratio * h)) ** 0.25
-    wavelength = flexural / math.sqrt(omega)
-    ratio = max(math.sqrt(impact.max_compression) / h, (h / wavelength) ** 2,
-                h / (c_l * impact.contact_time))  # fmt: skip
-    return impact.plate_energy * ratio
+    contact, thickness, transit = _neglected(impact, plate)
+    return impact.plate_energy * max(contact, thickness**2, transit)
