@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick law law-sphere law-pair law-sphere-pair damping-figure sphere-figures test test-slow lint bench clean
+.PHONY: setup paper paper-quick law law-sphere law-pair law-sphere-pair damping-figure plastic-figure sphere-figures test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -56,6 +56,10 @@ law-sphere-pair: $(STAMP)
 # epsilon(w) of damping steel grains (docs/damping.md): the elastic laws and the viscous loss.
 damping-figure: $(STAMP)
 	$(BIN)/python -m restitution.reproduction.figures.damping --figures docs/figures
+
+# A steel ball's plastic, viscous and wave losses on one pulse (docs/plasticity.md; a minute).
+plastic-figure: $(STAMP)
+	$(BIN)/python -m restitution.reproduction.figures.plastic_mechanisms --figures docs/figures
 
 # The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
 sphere-figures: $(STAMP)

@@ -133,7 +133,11 @@ def _argv(inputs: dict) -> list[str]:
              "measured_epsilon": "--measured-epsilon", "measured_speed_m_s": "--measured-speed",
              "relaxation_time_s": "--relaxation-time", "radius_m": "--radius",
              "compute": "--compute", "wall_E": "--wall-E", "wall_nu": "--wall-nu",
-             "wall_rho": "--wall-rho", "wall_thickness_m": "--wall-thickness"}  # fmt: skip
+             "wall_rho": "--wall-rho", "wall_thickness_m": "--wall-thickness",
+             "yield_stress_pa": "--yield-stress",
+             "partner_yield_stress_pa": "--partner-yield-stress",
+             "limiting_pressure_pa": "--limiting-pressure",
+             "measured_fixes": "--measured-fixes"}  # fmt: skip
     argv = ["law", "--json", "--speed", *map(repr, inputs["speeds_m_s"])]
     assert set(inputs) == {*flags, "speeds_m_s"}
     for key, flag in flags.items():

@@ -109,10 +109,11 @@ def law(fmt, as_json, plot_file, **options):
     fmt = output_format(fmt, as_json)
     request = LawRequest(**options)
     if plot_file is not None:
-        if request.damped:
+        if request.damped or request.plastic:
             raise InputError(
-                "--plot draws an elastic law; for a damping grain leave out --plot and read "
-                "the rows (--format csv), or plot the elastic law without the damping options"
+                "--plot draws an elastic law; for a damping or yielding grain leave out --plot "
+                "and read the rows (--format csv), or plot the elastic law without the damping "
+                "and plastic options"
             )
         check_figure_file(plot_file, "--plot")  # before anything is computed
     answer = serve(request, note=note, progress=not quiet())

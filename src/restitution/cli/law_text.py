@@ -34,7 +34,18 @@ def text_lines(a) -> list[str]:
             f"the radius ratio {r.partner_radius_ratio:g} is the pair R2/R1 = "
             f"{pair.radius_ratio:g} seen from the large grain: the same collision"
         )
-    lines += _damped_rows(a) if a.damped is not None else _rows(a)
+    lines.append("mechanisms: " + "; ".join(result["mechanisms"]))
+    if result["mechanisms_left_out"]:
+        lines.append("not in these numbers: " + "; ".join(result["mechanisms_left_out"]))
+    if result.get("plastic_flow_expected_from_m_s") is not None:
+        from restitution.laws.mechanisms import elastic_bound
+
+        bound, text = elastic_bound(s)
+        lines.append(f"from {bound:.2g} m/s: {text}")
+    if a.plastic is not None:
+        lines += _plastic_rows(a)
+    else:
+        lines += _damped_rows(a) if a.damped is not None else _rows(a)
     pairs = a.pairs
     if pairs is not None and pairs.two_materials:
         lines.append(
@@ -105,6 +116,34 @@ def _damped_rows(a) -> list[str]:
         lines.append(
             f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}  {el:>9}  {vi:>9}   "
             f"{p.status}"
+        )
+    return lines
+
+
+def _plastic_rows(a) -> list[str]:
+    """Rows of a yielding grain: epsilon on one pulse, its parts and the old sum as a check."""
+    law = a.plastic
+    line = (
+        f"plastic flow: limiting pressure p_y = {law.p_y:.4g} Pa ({law.source}); yield speed "
+        f"{law.yield_speed_m_s():.3g} m/s"
+    )
+    if law.tau > 0:
+        line += f"; damping tau c/R = {law.tau:.6g} +- {law.tau_err:.2g}"
+    lines = [
+        line,
+        "  speed [m/s]        v/c       epsilon      error    elastic  sum-of-parts   "
+        "plastic  viscous    waves   status",
+    ]
+    for p in a.points:
+        eps, err = _eps(p)
+        digits = _places(p.epsilon_elastic_err)
+        el = "-" if p.epsilon_elastic is None else f"{p.epsilon_elastic:.{digits}f}"
+        check = "-" if p.epsilon_sum_of_parts is None else f"{p.epsilon_sum_of_parts:.{digits}f}"
+        parts = [("-" if x is None else f"{100 * x:.3g} %")
+                 for x in (p.loss_plastic, p.loss_viscous, p.loss_waves)]  # fmt: skip
+        lines.append(
+            f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}  {el:>9}  "
+            f"{check:>12}  {parts[0]:>8} {parts[1]:>8} {parts[2]:>8}   {p.status}"
         )
     return lines
 

@@ -27,6 +27,8 @@ from restitution.atomic import check_output_dir, check_output_file
 from restitution.errors import InputError
 from restitution.laws import exports
 from restitution.laws.damped import DampedLaw, damped_law
+from restitution.laws.mechanisms import flag_points
+from restitution.laws.plastic import PlasticLaw
 from restitution.laws.request import LawRequest
 from restitution.laws.si_law import SI_UNITS, SILaw, law_target, overall_status, si_law
 from restitution.laws.units import Grain
@@ -75,11 +77,17 @@ class LawAnswer:
     pairs: object | None = None
     exports: tuple = ()
     units: dict = field(default_factory=lambda: dict(SI_UNITS))
+    plastic: PlasticLaw | None = None
 
     def to_dict(self) -> dict:
-        """The answer as the ``law`` command's JSON gives it (without the envelope)."""
+        """The answer as the ``law`` command's JSON gives it (without the envelope): the law's
+        own (the mechanisms it contains among them), with the answer's points."""
         speeds = list(self.request.speeds)
-        out = (self.damped or self.law).to_dict(speeds)
+        if self.plastic is not None:
+            out = self.plastic.to_dict(speeds, self.points)
+        else:
+            out = (self.damped or self.law).to_dict(speeds)
+            out["points"] = [p.to_dict() for p in self.points]
         if self.constant is not None:
             out["constant"] = self.constant.to_dict()
         if self.pairs is not None:
@@ -126,7 +134,9 @@ def serve(
         note(f"note: an elastic wall: each speed is computed now ({what}; seconds)")
         vs = [float(grain.v_over_c(w, "wall")) for w in r.speeds]
         s = SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
-        points = s.points(list(r.speeds), note=note)
+        if r.plastic:
+            return _plastic_answer(r, s, note)
+        points, _ = flag_points(s, s.points(list(r.speeds), note=note))
         status, advice = overall_status(points)
         return LawAnswer(r, s, None, points, status, advice)
     if r.export_dir is not None:
@@ -142,6 +152,8 @@ def serve(
     else:
         s = si_law(r.E, r.nu, r.rho, r.shape, r.against, path=served,
                    radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
+    if r.plastic:
+        return _plastic_answer(r, s, note)
     bars = Progress(None if progress else False)  # the damped law's: on a terminal only
     damped = _damped(r, s, bars)
     if damped is not None and s.law.partner is not None and r.constants:
@@ -150,6 +162,7 @@ def serve(
             "the two sizes); drop --reference-speed/--maxwell-temperature, or the damping"
         )
     points = damped.points(list(r.speeds)) if damped else s.points(list(r.speeds), note=note)
+    points, _ = flag_points(s, points)
     status, advice = overall_status(points)
     if damped is not None and (r.constants or r.export_dir is not None):
         # Constants, tables and snippets of the damped law: the sum at every computed speed.
@@ -167,6 +180,48 @@ def serve(
             note(f"note: no closed form written: {folder.no_closed_form}")
         written = tuple(folder.paths)
     return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
+
+
+def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
+    """The answer with plastic flow: the limiting pressure given or inferred, the relaxation
+    time given or inferred with the plastic flow on (one measurement fixes one of them)."""
+    from restitution.laws.plastic import infer_relaxation_time, plastic_law
+
+    tau = 0.0
+    if r.relaxation_time is not None:
+        if r.radius is None:
+            raise InputError(
+                "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
+            )
+        tau = r.relaxation_time * s.grain.c_m_s / r.radius
+    elif r.radius is not None and r.wall_thickness is None:
+        raise InputError("--radius goes with --relaxation-time; give both or neither")
+    measured = None not in (r.measured_epsilon, r.measured_speed)
+    if not measured and (r.measured_epsilon, r.measured_speed) != (None, None):
+        raise InputError("--measured-epsilon and --measured-speed go together; give both")
+    if measured and not r.fixes_limiting_pressure and r.relaxation_time is not None:
+        raise InputError(
+            "the measurement fixes the relaxation time, which --relaxation-time gives too: "
+            "leave one out, or add --measured-fixes limiting-pressure"
+        )
+    if measured:
+        what = "limiting pressure" if r.fixes_limiting_pressure else "relaxation time"
+        note(f"note: inferring the {what} from the measurement (root searches of the contact; "
+             "seconds)")  # fmt: skip
+    if r.fixes_limiting_pressure:
+        law = plastic_law(s, tau=tau, measured_epsilon=r.measured_epsilon,
+                          measured_speed_m_s=r.measured_speed)  # fmt: skip
+    else:
+        law = plastic_law(s, yield_stress_pa=r.yield_stress,
+                          partner_yield_stress_pa=r.partner_yield_stress,
+                          limiting_pressure_pa=r.limiting_pressure, tau=tau)  # fmt: skip
+        if measured:
+            law = infer_relaxation_time(law, r.measured_epsilon, r.measured_speed)
+    note("note: plastic flow: each speed is computed now on one force pulse (about a second a "
+         "speed)")  # fmt: skip
+    points = law.points(list(r.speeds))
+    status, advice = overall_status(points)
+    return LawAnswer(r, s, None, points, status, advice, plastic=law)
 
 
 def _constants(r: LawRequest, s: SILaw):

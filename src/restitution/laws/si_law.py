@@ -29,6 +29,7 @@ from restitution.errors import InputError, describe, is_real, real_array
 from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
+from restitution.laws.mechanisms import flag_points, mechanism_fields, wall_of
 from restitution.laws.units import PARTNERS, Grain, partner_factor
 from restitution.status import Status
 
@@ -602,7 +603,9 @@ class SILaw:
         return views.plot(self, path, speeds_m_s, ax=ax, marks=marks)
 
     def to_dict(self, speeds_m_s) -> dict:
-        """The JSON of ``restitution law``: constants, partner, and the points.
+        """The JSON of ``restitution law``: constants, partner, the mechanisms in the numbers,
+        and the points (each above the speed where plastic flow is expected saying so,
+        :func:`restitution.laws.mechanisms.flag_points`).
 
         ``body`` names the law's body and ``law_nu`` its Poisson number; a disk also reports
         ``nu_2d`` (the same number), a sphere has no two-dimensional constants. ``law`` gives
@@ -610,6 +613,7 @@ class SILaw:
         """
         lo, hi = self.computed_range_m_s
         g = self.grain
+        points, bound = flag_points(self, self.points(speeds_m_s))
         head = {"c_m_s": g.c_m_s}
         if g.kind.planar:
             head["nu_2d"] = g.nu_2d
@@ -647,7 +651,9 @@ class SILaw:
                 ),
             },
             "statuses": {**STATUSES, Status.QUASISTATIC: _quasistatic_note(self.law)},
-            "points": [p.to_dict() for p in self.points(speeds_m_s)],
+            **mechanism_fields(["waves", *(["wall"] if wall_of(self.law) else [])]),
+            "plastic_flow_expected_from_m_s": bound,
+            "points": [p.to_dict() for p in points],
         }
 
 

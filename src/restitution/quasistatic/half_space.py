@@ -62,6 +62,7 @@ __all__ = [
     "half_space_loss",
     "half_space_reach",
     "radiated_fraction",
+    "radiation_conductance",
     "radiation_integrals",
 ]
 
@@ -152,9 +153,15 @@ def radiated_fraction(
             raise InputError(f"{name} must be a positive number, got {x!r}")
     k = 4.0 / 3.0 * e_star * math.sqrt(radius)
     delta = (1.25 * mass * v * v / k) ** 0.4
-    integral = radiation_integrals(wall_nu).total
-    conductance = integral / (2.0 * math.pi * wall_density * wall_shear_speed**3)
+    conductance = radiation_conductance(wall_density, wall_shear_speed, wall_nu)
     return conductance * 4.5 * beta(0.8, 1.5) * k * v / math.sqrt(delta)
+
+
+def radiation_conductance(wall_density: float, wall_shear_speed: float, wall_nu: float) -> float:
+    """``I / (2 pi rho_w c_T^3)``: ``E_rad = conductance * int (dP/dt)^2 dt`` for any pulse
+    ``P(t)`` on the half-space (module docs)."""
+    integral = radiation_integrals(wall_nu).total
+    return integral / (2.0 * math.pi * wall_density * wall_shear_speed**3)
 
 
 def half_space_loss(modes, v: float, wall):

@@ -42,7 +42,9 @@ __all__ = [
     "QuasistaticTheory",
     "contact_law_for",
     "force_pulse",
+    "panel_nodes",
     "pulse_drive",
+    "pulse_spectrum",
 ]
 
 ContactLaw = HertzLaw | SphereHertzLaw
@@ -171,11 +173,27 @@ def _nodes(half: float, omega_max: float, per_panel: int = 16) -> tuple[np.ndarr
     period of ``omega_max`` (and at most ``half/64``), the first one split geometrically
     towards ``t = 0``, where the pulse is not smooth (``t / ln(1/t)`` for the disk,
     ``t^(3/2)`` for the sphere)."""
-    width = min(2.0 * math.pi / (3.0 * max(omega_max, 1e-12)), half / 64.0)
-    n_panels = int(math.ceil(half / width))
-    edges = np.linspace(0.0, half, n_panels + 1)
-    first = edges[1] * np.geomspace(1e-12, 1.0, 24)
-    edges = np.concatenate([[0.0], first, edges[2:]])
+    return panel_nodes(0.0, half, omega_max, start=True, per_panel=per_panel)
+
+
+def panel_nodes(
+    a: float, b: float, omega_max: float, *, start: bool = False, end: bool = False,
+    per_panel: int = 16,
+) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
+    """Gauss-Legendre nodes and weights on ``[a, b]``: uniform panels of at most a third of a
+    period of ``omega_max`` (and at most ``(b - a)/64``); the first panel split geometrically
+    towards ``a`` when ``start``, the last towards ``b`` when ``end`` (where a pulse is not
+    smooth)."""
+    span = b - a
+    width = min(2.0 * math.pi / (3.0 * max(omega_max, 1e-12)), span / 64.0)
+    n_panels = int(math.ceil(span / width))
+    edges = np.linspace(a, b, n_panels + 1)
+    if start:
+        first = a + (edges[1] - a) * np.geomspace(1e-12, 1.0, 24)
+        edges = np.concatenate([[a], first, edges[2:]])
+    if end:
+        last = b - (b - edges[-2]) * np.geomspace(1e-12, 1.0, 24)
+        edges = np.concatenate([edges[:-2], last[::-1], [b]])
     x, w = np.polynomial.legendre.leggauss(per_panel)
     a, b = edges[:-1, None], edges[1:, None]
     t = 0.5 * (b - a) * x[None, :] + 0.5 * (a + b)
@@ -210,4 +228,34 @@ def pulse_drive(pulse: ForcePulse, omega: np.ndarray) -> np.ndarray:
     out = np.empty(omega.shape)
     for i in range(0, omega.size, rows):
         out[i : i + rows] = np.cos(np.outer(omega[i : i + rows], lag)) @ wP
+    return out
+
+
+def pulse_spectrum(forces, nodes, omega) -> np.ndarray:
+    """``F(omega_k) = int P(t) e^{-i omega_k t} dt`` of pulses sampled on one quadrature.
+
+    Parameters
+    ----------
+    forces : numpy.ndarray, shape (J,) or (J, M)
+        The pulse (or ``M`` pulses) at the quadrature's nodes.
+    nodes : tuple of numpy.ndarray
+        ``(t, w)``, shape (J,) each, e.g. :func:`panel_nodes` on each smooth piece of the
+        pulse, joined.
+    omega : numpy.ndarray, shape (N,)
+
+    Returns
+    -------
+    numpy.ndarray of complex, shape (N,) or (N, M)
+
+    The drive of a pulse that is not symmetric (an elastic-plastic one); for a symmetric pulse
+    ``|F| = 2 |I|`` of :func:`pulse_drive`. Built in blocks of modes as :func:`pulse_drive`.
+    """
+    t, w = nodes
+    wP = w.reshape((-1,) + (1,) * (np.ndim(forces) - 1)) * np.asarray(forces, dtype=float)
+    omega = np.asarray(omega, dtype=float)
+    rows = max(1, _BLOCK // max(t.size, 1))
+    out = np.empty(omega.shape + wP.shape[1:], dtype=complex)
+    for i in range(0, omega.size, rows):
+        phase = np.outer(omega[i : i + rows], t)
+        out[i : i + rows] = np.cos(phase) @ wP - 1j * (np.sin(phase) @ wP)
     return out

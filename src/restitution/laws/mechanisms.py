@@ -1,0 +1,144 @@
+"""Which loss mechanisms an answer contains, and from which speed an elastic answer is a bound.
+
+Units: SI at the edge (m/s); the contact's scales in the law's reduced units.
+
+Every answer of the SI law names the mechanisms in its numbers (:data:`MECHANISMS`:
+``mechanisms`` and ``mechanisms_left_out`` of its JSON, :func:`mechanism_fields`). An elastic or
+damped sphere's answer without a yield stress is an upper bound above the speed where plastic
+flow starts; that speed is not known without the yield stress, but for the material class the
+grain's constants suggest (:mod:`restitution.laws.material_classes`) it lies in a range:
+:func:`elastic_bound` gives its lowest end and the sentence every such speed's note carries
+(:func:`flag_points`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from restitution.bodies.sphere.kind import KIND as SPHERE
+from restitution.errors import InputError
+from restitution.laws.material_classes import material_class
+from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
+
+__all__ = [
+    "MECHANISMS",
+    "contact_scales",
+    "elastic_bound",
+    "flag_points",
+    "mechanism_fields",
+    "wall_of",
+]
+
+MECHANISMS = {
+    "waves": "elastic waves and vibrations of the bodies (the elastic law)",
+    "wall": "elastic waves radiated into the wall",
+    "viscous": "viscous loss of the material (Kelvin-Voigt)",
+    "plastic": "plastic flow (Thornton's elastic-perfectly-plastic contact)",
+}
+"""Every mechanism an answer may contain, in words."""
+
+
+def wall_of(law) -> dict | None:
+    """The elastic wall of a law (its ``metadata["wall"]``), ``None`` for a rigid one."""
+    metadata = getattr(law, "metadata", None)
+    return None if metadata is None else metadata.get("wall")
+
+
+def mechanism_fields(names) -> dict:
+    """``{"mechanisms": [...], "mechanisms_left_out": [...]}`` in words, for the mechanism
+    ``names`` an answer contains (keys of :data:`MECHANISMS`)."""
+    names = list(names)
+    left = [m for m in ("viscous", "plastic") if m not in names]
+    return {
+        "mechanisms": [MECHANISMS[m] for m in names],
+        "mechanisms_left_out": [MECHANISMS[m] for m in left],
+    }
+
+
+def contact_scales(si):
+    """``(Hertz's law, mass)`` of the collision of ``si`` (an :class:`~restitution.laws.si_law.
+    SILaw` of spheres) in its reduced units: on a rigid wall, on an elastic half-space (``E*``
+    of both), or two spheres (their ``E*``, ``R_eff`` and reduced mass; identical spheres are
+    served as the wall at ``w/2``). :class:`InputError` for another body or a plate."""
+    from restitution.quasistatic.hertz_sphere import (
+        SPHERE_MASS,
+        sphere_contact_law,
+        sphere_pair_contact_law,
+    )
+
+    if si.grain.body != SPHERE.name:
+        raise InputError(
+            f"plastic flow is computed for spheres (Thornton's contact is built on Hertz's 3D "
+            f"pressure); no comparable law of {si.grain.geometry}s is derived here "
+            "(docs/plasticity.md): leave out the plastic options"
+        )
+    nu = float(si.law.nu)
+    pair = si.law.partner
+    if pair is not None:
+        law = sphere_pair_contact_law(nu, pair.nu2(nu), radius_ratio=pair.radius_ratio,
+                                      modulus_ratio=pair.modulus_ratio)  # fmt: skip
+        m2 = SPHERE_MASS * pair.density_ratio * pair.radius_ratio**3
+        return law, SPHERE_MASS * m2 / (SPHERE_MASS + m2)
+    wall = wall_of(si.law)
+    if wall is None:
+        return sphere_contact_law(nu), SPHERE_MASS
+    if wall.get("kind") == "plate":
+        raise InputError(
+            "plastic flow on a thin plate is not modelled (Zener's plate model is elastic); use "
+            "a half-space or a rigid wall, or leave out the plastic options"
+        )
+    from restitution.bodies.wall import HalfSpace
+
+    hs = HalfSpace(wall["modulus_ratio"], wall["density_ratio"], wall["nu"])
+    return replace(sphere_contact_law(nu), effective_modulus=hs.effective_modulus(nu)), SPHERE_MASS
+
+
+def elastic_bound(si) -> tuple[float | None, str]:
+    """``(speed from which plastic flow is expected, m/s, or None; the sentence)`` for an
+    elastic answer of ``si``: the yield speed of the lowest typical yield stress of the material
+    class of the grain (and of a partner of another material), :mod:`restitution.laws.
+    material_classes`. ``(None, "")`` for bodies other than spheres and for plates; ``(None,
+    what the class does instead)`` for a brittle or polymer class."""
+    try:
+        law, mass = contact_scales(si)
+    except InputError:
+        return None, ""
+    bodies = [(si.grain, "grain")]
+    if getattr(si, "partner_grain", None) is not None:
+        bodies.append((si.partner_grain, "partner"))
+    lowest, named = None, []
+    for g, who in bodies:
+        cls = material_class(g.E, g.rho, g.nu)
+        if cls is None or cls.yield_stress is None:
+            if cls is not None:
+                named.append(f"{who}: {cls.name} ({cls.remark})")
+            continue
+        speeds = [yield_speed(law.E_star, law.R, onset_pressure_ratio(g.nu) * y / si.grain.E,
+                              mass) * si.speed_scale_m_s for y in cls.yield_stress]  # fmt: skip
+        named.append(
+            f"{who}: {cls.name}, yield stress {cls.yield_stress[0] / 1e6:.0f}-"
+            f"{cls.yield_stress[1] / 1e6:.0f} MPa, plastic flow from {speeds[0]:.2g}-"
+            f"{speeds[1]:.2g} m/s"
+        )
+        lowest = speeds[0] if lowest is None else min(lowest, speeds[0])
+    if lowest is None:
+        return None, "; ".join(named)
+    return lowest, (
+        "elastic upper bound: plastic flow is not in this answer and is expected for typical "
+        f"materials of its class ({'; '.join(named)}); give --yield-stress (or "
+        "--limiting-pressure) for the plastic loss"
+    )
+
+
+def flag_points(si, points) -> tuple[tuple, float | None]:
+    """``points`` (with a ``speed_m_s`` and a ``note``) with :func:`elastic_bound`'s sentence
+    added to the note of every speed at or above its speed, and that speed (``None``: none)."""
+    bound, text = elastic_bound(si)
+    if bound is None:
+        return tuple(points), None
+    out = []
+    for p in points:
+        if p.speed_m_s >= bound:
+            p = replace(p, note=f"{p.note}; {text}" if p.note else text)
+        out.append(p)
+    return tuple(out), bound

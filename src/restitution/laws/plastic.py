@@ -1,0 +1,510 @@
+"""epsilon(w) of a grain that yields: plastic flow, viscous loss and elastic waves on one pulse.
+
+Units: SI at the edge (speeds m/s, pressures Pa, the relaxation time in the law's ``R / c``);
+inside, the law's reduced units (``v`` in ``c``, pressures in the grain's ``E``; for two spheres
+the first one's).
+
+A metal grain loses far more to plastic flow above its yield speed than to its vibrations
+(issue 43). :class:`PlasticLaw` computes, at every asked speed, one force pulse of the contact
+with all its mechanisms (:mod:`restitution.quasistatic.plastic_collision`: Thornton's
+elastic-perfectly-plastic force, the Kelvin-Voigt viscous force when the material damps) and the
+elastic waves that pulse leaves:
+
+* ``loss_plastic``, ``loss_viscous``, ``loss_stored``: fractions of the kinetic energy the
+  contact keeps (plastic work, viscous work, elastic energy still in the contact at separation);
+* ``loss_waves``: the elastic law's loss (its modal or low-speed value at this speed, with its
+  split between the bodies or into an elastic wall), each part scaled by how much more or less
+  the actual pulse drives it than Hertz's pulse at the same speed: the ratio of the two
+  Rayleigh estimates of the body's modes, and of ``int (dF/dt)^2 dt`` for the waves radiated
+  into a wall;
+* ``epsilon = sqrt(epsilon_contact^2 - loss_waves)``.
+
+The old sum of parts, ``1 - eps^2 = (1 - eps_elastic^2) + (1 - eps_viscous^2) + (1 -
+eps_Thornton^2)`` (each mechanism on its own pulse), is reported beside it as a check
+(``epsilon_sum_of_parts``); where all losses are small the two agree (the tests), and
+docs/plasticity.md shows where they part.
+
+The error (one number per speed, the terms added in quadrature as for the damped law): the
+elastic law's error scaled with the waves; the change of the wave loss by the pulse, counted at
+its full size (the ratio of two Rayleigh estimates is not judged against modal collisions); the
+viscous force's share of the waves' drive (a point force's ``t^(1/2)`` front, module docs of
+:mod:`~restitution.quasistatic.plastic_collision`); the product of the wave loss and the
+contact's loss (the pulse is computed without the wave loss); the finite sphere's stiffer
+contact on the viscous loss (:data:`restitution.laws.damped.SPHERE_SIZE_COEFFICIENT`); and, for
+an inferred parameter, its spread. The error does not cover Thornton's idealisation itself
+(perfect plasticity without hardening or rate dependence, the limiting pressure as one number):
+it is the model's value within its stated approximations.
+
+Where the limiting pressure comes from: a yield stress ``Y`` of each body (``p_y`` the onset
+pressure of the softer body, :func:`restitution.quasistatic.plastic.onset_pressure_ratio`), the
+limiting pressure itself, or one measured coefficient of restitution at one speed (then it is
+the one that fixes ``p_y``; the relaxation time, if the grain damps, must be given: one
+measurement fixes one parameter).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy.optimize import brentq
+
+from restitution.bodies.sphere.kind import KIND as SPHERE
+from restitution.errors import InputError
+from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT
+from restitution.laws.mechanisms import contact_scales, mechanism_fields, wall_of
+from restitution.laws.si_law import SILaw
+from restitution.quasistatic.hertz import QuasistaticError
+from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
+
+__all__ = [
+    "PlasticLaw",
+    "PlasticPoint",
+    "infer_relaxation_time",
+    "limiting_pressure",
+    "plastic_law",
+]
+
+
+@dataclass(frozen=True)
+class _Contact:
+    """The contact of a law's collision in its reduced units: Hertz's law (``E*``, ``R``), the
+    mass, the modes the pulse drives, and an elastic wall's radiation conductance."""
+
+    law: object
+    mass: float
+    modes: object
+    conductance: float | None = None
+
+
+def _contact(si: SILaw) -> _Contact:
+    """The contact of ``si``'s collision (:func:`restitution.laws.mechanisms.contact_scales`)
+    with the modes its pulse drives (the sphere's, or both spheres' of a pair) and an elastic
+    half-space's radiation conductance."""
+    from restitution.bodies.cache import get_modes
+    from restitution.quasistatic.low_speed import LOW_SPEED_MODES, PAIR_LOW_SPEED_MODES
+
+    law, mass = contact_scales(si)
+    nu = float(si.law.nu)
+    pair = si.law.partner
+    if pair is not None:
+        return _Contact(law, mass, pair.pair(nu, PAIR_LOW_SPEED_MODES, SPHERE.geometry))
+    modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
+    wall = wall_of(si.law)
+    if wall is None:
+        return _Contact(law, mass, modes)
+    from restitution.bodies.wall import HalfSpace
+    from restitution.quasistatic.half_space import radiation_conductance
+
+    hs = HalfSpace(wall["modulus_ratio"], wall["density_ratio"], wall["nu"])
+    return _Contact(law, mass, modes,
+                    radiation_conductance(hs.density_ratio, hs.shear_speed, hs.nu))  # fmt: skip
+
+
+def limiting_pressure(
+    si: SILaw,
+    *,
+    yield_stress_pa: float | None = None,
+    partner_yield_stress_pa: float | None = None,
+    limiting_pressure_pa: float | None = None,
+) -> tuple[float, str]:
+    """``(p_y in Pa, where it comes from)``: the limiting pressure given, or the onset pressure
+    of the softer of the bodies whose yield stress is given (module docs). Identical grains
+    share the grain's yield stress; a partner of another material or an elastic wall without its
+    own stays elastic."""
+    given = [x for x in (yield_stress_pa, partner_yield_stress_pa) if x is not None]
+    if limiting_pressure_pa is not None:
+        if given:
+            raise InputError(
+                "give the limiting pressure or yield stresses, not both (the limiting pressure "
+                "is what the yield stresses are turned into)"
+            )
+        return _positive("limiting pressure", limiting_pressure_pa), "given"
+    if not given:
+        raise InputError("a plastic law needs a yield stress or the limiting pressure")
+    wall = wall_of(si.law)
+    two = si.law.partner is not None and not si.law.partner.same_material
+    if partner_yield_stress_pa is not None and not (two or wall is not None):
+        raise InputError(
+            "--partner-yield-stress is the yield stress of a partner of another material or of "
+            "an elastic wall; identical grains share --yield-stress, a rigid wall never yields"
+        )
+    options = []
+    if yield_stress_pa is not None:
+        y = _positive("yield stress", yield_stress_pa)
+        ratio = onset_pressure_ratio(si.grain.nu)
+        options.append((ratio * y, f"onset of yield: {ratio:.4f} x the grain's yield stress "
+                        f"{y:.4g} Pa"))  # fmt: skip
+    if partner_yield_stress_pa is not None:
+        y = _positive("partner's yield stress", partner_yield_stress_pa)
+        nu2 = wall["nu"] if wall is not None else si.law.partner.nu2(si.grain.law_nu)
+        ratio = onset_pressure_ratio(nu2)
+        who = "wall's" if wall is not None else "partner's"
+        options.append((ratio * y, f"onset of yield: {ratio:.4f} x the {who} yield stress "
+                        f"{y:.4g} Pa"))  # fmt: skip
+    return min(options)
+
+
+def _positive(name: str, value, unit: str = "Pa") -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+        raise InputError(f"the {name} must be a number ({unit}), got {value!r}")
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(f"the {name} must be a finite number > 0 ({unit}), got {value!r}")
+    return value
+
+
+@dataclass(frozen=True)
+class PlasticPoint:
+    """epsilon of a yielding (and possibly damping) grain at one SI speed, with its parts.
+
+    Attributes
+    ----------
+    speed_m_s, v_over_c : float
+    epsilon, epsilon_err : float or None
+        All mechanisms on one pulse (module docs); the error adds the terms in quadrature (one
+        standard deviation where the elastic law's is one; a bound for the counted terms).
+    epsilon_elastic, epsilon_elastic_err : float or None
+        The elastic law alone.
+    epsilon_contact : float
+        The contact alone (plastic, viscous, stored energy; no waves).
+    epsilon_sum_of_parts : float or None
+        The check: the three mechanisms each on its own pulse, their losses added.
+    loss_plastic, loss_viscous, loss_stored, loss_waves, loss_wall : float or None
+        Fractions of the kinetic energy (``loss_wall`` for an elastic wall only).
+    yielded : bool
+    status, note : str
+    """
+
+    speed_m_s: float
+    v_over_c: float
+    epsilon: float | None
+    epsilon_err: float | None
+    epsilon_elastic: float | None
+    epsilon_elastic_err: float | None
+    epsilon_contact: float | None
+    epsilon_sum_of_parts: float | None
+    loss_plastic: float | None
+    loss_viscous: float | None
+    loss_stored: float | None
+    loss_waves: float | None
+    loss_wall: float | None
+    yielded: bool
+    status: str
+    note: str = ""
+
+    def to_dict(self) -> dict:
+        return dict(self.__dict__)
+
+
+@dataclass(frozen=True, eq=False)
+class PlasticLaw:
+    """epsilon(w) of a grain with plastic flow (module docs).
+
+    Attributes
+    ----------
+    si : SILaw
+        The elastic law of the grain against its partner.
+    p_y : float
+        Limiting contact pressure, Pa.
+    source : str
+        Where ``p_y`` comes from.
+    tau, tau_err : float
+        Kelvin-Voigt constant in the law's units ``tau c / R`` (0: no damping) and its error.
+    p_y_err : float
+        Error of an inferred ``p_y``, Pa.
+    """
+
+    si: SILaw
+    p_y: float
+    source: str
+    tau: float = 0.0
+    tau_err: float = 0.0
+    p_y_err: float = 0.0
+
+    @property
+    def reduced_p_y(self) -> float:
+        """``p_y`` in the grain's ``E``."""
+        return self.p_y / self.si.grain.E
+
+    def yield_speed_m_s(self) -> float:
+        """The speed ``w`` from which the contact yields, m/s."""
+        c = _contact(self.si)
+        v = yield_speed(c.law.E_star, c.law.R, self.reduced_p_y, c.mass)
+        return v * self.si.speed_scale_m_s
+
+    @property
+    def mechanisms(self) -> list[str]:
+        """The mechanisms this law's answers contain (:data:`restitution.laws.mechanisms.
+        MECHANISMS`)."""
+        names = ["waves"]
+        if wall_of(self.si.law) is not None:
+            names.append("wall")
+        if self.tau > 0:
+            names.append("viscous")
+        return [*names, "plastic"]
+
+    def points(self, speeds_m_s) -> tuple[PlasticPoint, ...]:
+        """epsilon and its parts at every speed (m/s); never raises for range."""
+        contact = _contact(self.si)
+        return tuple(self._point(p, contact) for p in self.si.points(speeds_m_s))
+
+    def _point(self, p, contact: _Contact, p_y: float | None = None, tau: float | None = None,
+               ratios: tuple[float, float, float] | None = None) -> PlasticPoint:  # fmt: skip
+        """The point of the elastic law's point ``p`` (reduced ``p_y`` and ``tau`` as given,
+        else the law's). ``ratios``: the waves' ratios (:func:`_ratios`) taken as given instead
+        of computed (the root searches of an inferred parameter), and then no spread."""
+        from restitution.quasistatic.plastic import ThorntonContact
+        from restitution.quasistatic.plastic_collision import pulse_collision
+
+        probing = ratios is not None
+        p_y = self.reduced_p_y if p_y is None else p_y
+        tau = self.tau if tau is None else tau
+        v = p.v_over_c
+        head = {"speed_m_s": p.speed_m_s, "v_over_c": v, "epsilon_elastic": p.epsilon,
+                "epsilon_elastic_err": p.epsilon_err, "status": p.status}  # fmt: skip
+        empty = {"epsilon": None, "epsilon_err": None, "epsilon_contact": None,
+                 "epsilon_sum_of_parts": None, "loss_plastic": None, "loss_viscous": None,
+                 "loss_stored": None, "loss_waves": None, "loss_wall": None,
+                 "yielded": False}  # fmt: skip
+        if p.epsilon is None:
+            return PlasticPoint(**head, **empty, note=p.note)
+        law, mass = contact.law, contact.mass
+        try:
+            actual = pulse_collision(law, v, p_y=p_y, tau=tau, mass=mass)
+            if not probing:
+                hertz = pulse_collision(law, v, mass=mass)
+                ratios = _ratios(actual, hertz, contact, tau)
+        except (InputError, QuasistaticError) as exc:
+            return PlasticPoint(**{**head, "status": "outside"}, **empty, note=f"contact: {exc}")
+        ratio, ratio_bare, wall_ratio = ratios
+        base = 1.0 - p.epsilon**2
+        base_err = 2.0 * p.epsilon * p.epsilon_err
+        wall_part = None
+        if contact.conductance is not None and p.loss_shares is not None:
+            ball, wall = (base * share for share in p.loss_shares)  # shares of the loss
+            wall_part = wall * wall_ratio
+            waves = ball * ratio + wall_part
+            moved = abs(ball * (ratio - 1.0)) + abs(wall * (wall_ratio - 1.0))
+        else:
+            waves = base * ratio
+            moved = base * abs(ratio - 1.0)
+        eps2 = actual.epsilon**2 - waves
+        sum_of_parts = None
+        if not probing:
+            viscous = pulse_collision(law, v, tau=tau, mass=mass).epsilon if tau > 0 else 1.0
+            th = ThorntonContact(law.E_star, law.R, p_y, mass)
+            parts = base + (1.0 - viscous**2) + float(th.plastic_loss(v))
+            sum_of_parts = math.sqrt(max(1.0 - parts, 0.0))
+        common = {"epsilon_contact": actual.epsilon, "epsilon_sum_of_parts": sum_of_parts,
+                  "loss_plastic": actual.plastic_work, "loss_viscous": actual.viscous_work,
+                  "loss_stored": actual.stored_energy, "loss_waves": waves,
+                  "loss_wall": wall_part, "yielded": actual.yielded}  # fmt: skip
+        if not eps2 > 0.0:
+            return PlasticPoint(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
+                                **common, note="no rebound: the losses take all the kinetic "
+                                "energy")  # fmt: skip
+        eps = math.sqrt(eps2)
+        terms = [ratio * base_err, moved, base * abs(ratio - ratio_bare),
+                 waves * (1.0 - actual.epsilon**2),
+                 actual.viscous_work * SPHERE_SIZE_COEFFICIENT
+                 * math.sqrt(actual.max_compression / law.R)]  # fmt: skip
+        err = math.sqrt(sum(t * t for t in terms)) / (2.0 * eps)
+        if not probing:
+            err = math.hypot(err, self._spread(contact, v))
+        return PlasticPoint(**head, epsilon=eps, epsilon_err=err, **common, note=p.note)
+
+    def _spread(self, contact: _Contact, v: float) -> float:
+        """How far the contact's epsilon moves over an inferred parameter's error (half the
+        difference of its two ends), 0 for given parameters."""
+        from restitution.quasistatic.plastic_collision import pulse_collision
+
+        law, mass = contact.law, contact.mass
+        ends = []
+        if self.p_y_err > 0:
+            for s in (-1.0, 1.0):
+                p_y = max(self.p_y + s * self.p_y_err, 1e-6 * self.p_y) / self.si.grain.E
+                ends.append(pulse_collision(law, v, p_y=p_y, tau=self.tau, mass=mass).epsilon)
+        if self.tau_err > 0:
+            for s in (-1.0, 1.0):
+                tau = max(self.tau + s * self.tau_err, 0.0)
+                ends.append(pulse_collision(law, v, p_y=self.reduced_p_y, tau=tau,
+                                            mass=mass).epsilon)  # fmt: skip
+        return 0.5 * (max(ends) - min(ends)) if ends else 0.0
+
+    def to_dict(self, speeds_m_s, points=None) -> dict:
+        """JSON of ``restitution law`` with plastic flow: the elastic law's, with the contact's
+        parameters and, per point, every part beside epsilon (``points``: these, computed
+        before, instead of computing them again)."""
+        d = self.si.to_dict(speeds_m_s)
+        d["plasticity"] = {
+            "model": "Thornton's elastic-perfectly-plastic sphere (J. Appl. Mech. 64, 383 "
+            "(1997)) with Kelvin-Voigt damping, on one force pulse; elastic waves on that pulse "
+            "(docs/plasticity.md)",
+            "limiting_pressure_pa": self.p_y,
+            "limiting_pressure_err_pa": self.p_y_err,
+            "limiting_pressure_source": self.source,
+            "yield_speed_m_s": self.yield_speed_m_s(),
+            "tau_c_over_R": self.tau,
+            "tau_c_over_R_err": self.tau_err,
+            "error_covers": "the elastic law's error, the wave loss's change by the pulse, the "
+            "viscous drive of the waves, the coupling of wave and contact losses, the finite "
+            "sphere's viscous excess and an inferred parameter's spread; not Thornton's "
+            "idealisation (no hardening, no rate dependence)",
+        }
+        d.update(mechanism_fields(self.mechanisms))
+        d.pop("plastic_flow_expected_from_m_s", None)
+        points = self.points(speeds_m_s) if points is None else points
+        d["points"] = [p.to_dict() for p in points]
+        return d
+
+
+def _ratios(actual, hertz, contact: _Contact, tau: float) -> tuple[float, float, float]:
+    """How much more the ``actual`` pulse drives the waves than Hertz's at the same speed:
+    ``(modes, modes without the viscous force, wall radiation)``, ratios of the Rayleigh sums
+    of ``contact.modes`` and of ``int (dF_ep/dt)^2 dt``."""
+    on_hertz = float(hertz.mode_energy(contact.modes).sum())
+    if tau > 0:
+        with_viscous, bare = actual.mode_energy(contact.modes, viscous="both").sum(axis=0)
+        ratio, ratio_bare = float(with_viscous) / on_hertz, float(bare) / on_hertz
+    else:
+        ratio = ratio_bare = float(actual.mode_energy(contact.modes).sum()) / on_hertz
+    return ratio, ratio_bare, actual.force_rate_integral / hertz.force_rate_integral
+
+
+_RANGES = {"p_y": (1e-7, 1e3), "tau": (1e-9, 1e3)}
+"""Where the root searches of an inferred parameter look (reduced units: ``E``, ``R / c``)."""
+
+
+def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[float, float]:
+    """``(value, error)`` in reduced units of the parameter ``which`` (``"p_y"`` or ``"tau"``)
+    for which ``law`` gives ``eps_m`` at ``speed`` (m/s), the other parameter as ``law`` has it;
+    the error from the elastic law's error there (half the spread of its two ends)."""
+    si = law.si
+    (p,) = si.points([speed])
+    if p.epsilon is None:
+        raise InputError(
+            f"the elastic law has no value at the measured speed {speed:g} m/s ({p.note}); "
+            "measure at a speed the law serves"
+        )
+    contact = _contact(si)
+    lo, hi = (math.log(x) for x in _RANGES[which])
+    # The end of the range where epsilon is largest: no plastic flow, no damping.
+    weakest = hi if which == "p_y" else lo
+
+    ratios = (1.0, 1.0, 1.0)
+
+    def at(q, log_x: float) -> float:
+        kw = {"p_y": math.exp(log_x)} if which == "p_y" else {"tau": math.exp(log_x)}
+        got = law._point(q, contact, ratios=ratios, **kw).epsilon
+        return 0.0 if got is None else got
+
+    def solve(shift: float) -> float:
+        q = replace(p, epsilon=min(p.epsilon + shift, 1.0))
+        top = at(q, weakest)
+        if eps_m >= top:
+            what = "plastic flow" if which == "p_y" else "damping"
+            raise InputError(
+                f"the measured epsilon {eps_m:.6g} at {speed:g} m/s is not below {top:.6g}, the "
+                f"value there without {what}: no {what} explains it; check the measurement"
+            )
+        strongest = lo if which == "p_y" else hi
+        if at(q, strongest) > eps_m:
+            raise InputError(
+                f"the measured epsilon {eps_m:.6g} at {speed:g} m/s is below what the model "
+                f"reaches with {which} = {math.exp(strongest):.3g} (reduced units); check the "
+                "measurement"
+            )
+        return math.exp(brentq(lambda x: at(q, x) - eps_m, lo, hi, xtol=1e-10, rtol=1e-8))
+
+    # Two rounds: the waves' ratios frozen at 1 (the waves are small), then at the first
+    # root's, where the root moves by the ratios' change over it (second order).
+    value = solve(0.0)
+    kw = {which: value}
+    v = p.v_over_c
+    from restitution.quasistatic.plastic_collision import pulse_collision
+
+    pulse = pulse_collision(contact.law, v, mass=contact.mass,
+                            **{"p_y": law.reduced_p_y, "tau": law.tau, **kw})  # fmt: skip
+    ratios = _ratios(pulse, pulse_collision(contact.law, v, mass=contact.mass), contact,
+                     kw.get("tau", law.tau))  # fmt: skip
+    value = solve(0.0)
+    ends = [solve(s * p.epsilon_err) for s in (-1.0, 1.0)]
+    return value, 0.5 * abs(ends[1] - ends[0])
+
+
+def plastic_law(
+    si: SILaw,
+    *,
+    yield_stress_pa: float | None = None,
+    partner_yield_stress_pa: float | None = None,
+    limiting_pressure_pa: float | None = None,
+    tau: float = 0.0,
+    tau_err: float = 0.0,
+    measured_epsilon: float | None = None,
+    measured_speed_m_s: float | None = None,
+) -> PlasticLaw:
+    """The law of ``si``'s grain with plastic flow.
+
+    Parameters
+    ----------
+    si : SILaw
+        The elastic law (a sphere's: on a rigid wall or a half-space, or two spheres).
+    yield_stress_pa, partner_yield_stress_pa, limiting_pressure_pa : float, optional
+        The yield stress of the grain and of a partner of another material or of an elastic
+        wall, or the limiting pressure itself (:func:`limiting_pressure`).
+    tau, tau_err : float
+        Kelvin-Voigt constant ``tau c / R`` and its error (0: elastic material).
+    measured_epsilon, measured_speed_m_s : float, optional
+        Instead of a yield stress: one measured coefficient of restitution at one speed fixes
+        the limiting pressure.
+
+    Examples
+    --------
+    >>> from restitution.laws.si_law import si_law
+    >>> steel = si_law(210e9, 0.3, 7850, "sphere", "wall")
+    >>> law = plastic_law(steel, yield_stress_pa=1e9)
+    >>> round(law.yield_speed_m_s(), 4)
+    0.0329
+    """
+    if not isinstance(si, SILaw):
+        raise InputError(f"si must be an SILaw (see si_law), got {type(si).__name__}")
+    _contact(si)  # refuses disks and plates first
+    measured = (measured_epsilon, measured_speed_m_s) != (None, None)
+    if measured:
+        if None in (measured_epsilon, measured_speed_m_s):
+            raise InputError("a measurement needs both the epsilon and the speed")
+        if (yield_stress_pa, partner_yield_stress_pa, limiting_pressure_pa) != (None,) * 3:
+            raise InputError(
+                "one measurement fixes one parameter: give the yield stress or let the "
+                "measurement fix the limiting pressure, not both"
+            )
+        eps_m = float(measured_epsilon)
+        if not 0.0 < eps_m < 1.0:
+            raise InputError(f"the measured epsilon must lie in (0, 1), got {eps_m!r}")
+        speed = _positive("measured speed", measured_speed_m_s, "m/s")
+        probe = PlasticLaw(si, si.grain.E, "probe", tau)
+        p_y, p_err = _infer(probe, eps_m, speed, "p_y")
+        E = si.grain.E
+        return PlasticLaw(si, p_y * E, f"inferred from epsilon = {eps_m:g} at {speed:g} m/s",
+                          tau, tau_err, p_err * E)  # fmt: skip
+    p_y, source = limiting_pressure(
+        si,
+        yield_stress_pa=yield_stress_pa,
+        partner_yield_stress_pa=partner_yield_stress_pa,
+        limiting_pressure_pa=limiting_pressure_pa,
+    )
+    return PlasticLaw(si, p_y, source, tau, tau_err)
+
+
+def infer_relaxation_time(law: PlasticLaw, eps_m: float, speed_m_s: float) -> PlasticLaw:
+    """``law`` with the relaxation time (``tau c / R``) for which it gives ``eps_m`` at
+    ``speed_m_s`` (m/s), and its error: the damping inferred with the plastic flow on the same
+    pulse (the measurement fixes the relaxation time; the limiting pressure is ``law``'s)."""
+    eps_m = float(eps_m)
+    if not 0.0 < eps_m < 1.0:
+        raise InputError(f"the measured epsilon must lie in (0, 1), got {eps_m!r}")
+    speed = _positive("measured speed", speed_m_s, "m/s")
+    tau, tau_err = _infer(replace(law, tau=0.0, tau_err=0.0), eps_m, speed, "tau")
+    return replace(law, tau=tau, tau_err=tau_err)
