@@ -137,7 +137,9 @@ def _argv(inputs: dict) -> list[str]:
              "yield_stress_pa": "--yield-stress",
              "partner_yield_stress_pa": "--partner-yield-stress",
              "limiting_pressure_pa": "--limiting-pressure",
-             "measured_fixes": "--measured-fixes"}  # fmt: skip
+             "measured_fixes": "--measured-fixes",
+             "second_measured_epsilon": "--second-measured-epsilon",
+             "second_measured_speed_m_s": "--second-measured-speed"}  # fmt: skip
     argv = ["law", "--json", "--speed", *map(repr, inputs["speeds_m_s"])]
     assert set(inputs) == {*flags, "speeds_m_s"}
     for key, flag in flags.items():

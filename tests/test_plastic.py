@@ -348,6 +348,16 @@ def test_elastic_law_command_flags_plastic_speeds(capsys):
         (["--against", "wall", "--partner-yield-stress", "1e9"], "rigid wall never yields"),
         (["--against", "wall", "--yield-stress", "1e9", "--measured-epsilon", "0.8",
           "--measured-speed", "1", "--measured-fixes", "limiting-pressure"], "one parameter"),
+        (["--against", "wall", "--measured-epsilon", "0.8", "--measured-speed", "1",
+          "--second-measured-epsilon", "0.7"], "--second-measured-speed"),
+        (["--against", "wall", "--measured-epsilon", "0.8", "--measured-speed", "1",
+          "--second-measured-epsilon", "0.7", "--second-measured-speed", "3",
+          "--yield-stress", "1e9"], "leave out --yield-stress"),
+        (["--against", "wall", "--measured-epsilon", "0.8", "--measured-speed", "1",
+          "--second-measured-epsilon", "0.7", "--second-measured-speed", "3",
+          "--measured-fixes", "relaxation-time"], "not only the relaxation-time"),
+        (["--against", "wall", "--measured-epsilon", "0.8", "--measured-speed", "1",
+          "--measured-fixes", "both"], "--second-measured-epsilon"),
     ],
 )  # fmt: skip
 def test_plastic_refusals_are_one_line(args, match, capsys):
@@ -383,3 +393,77 @@ def test_the_mechanisms_figure_is_drawn(tmp_path):
     assert np.all(c.waves > 0)
     plastic_mechanisms.plot(c, tmp_path / "f.png")
     assert (tmp_path / "f.png").stat().st_size > 10_000
+
+
+def test_docstring_examples():
+    import doctest
+    import importlib
+
+    for name in ("restitution.quasistatic.plastic_collision", "restitution.laws.plastic"):
+        result = doctest.testmod(importlib.import_module(name))
+        assert result.attempted > 0 and result.failed == 0
+
+
+@pytest.mark.slow
+def test_two_measurements_fix_both_parameters(steel, capsys):
+    """Two measured epsilons at two speeds (from a known law) give back its relaxation time and
+    limiting pressure (about half a minute of nested root searches)."""
+    from restitution.laws.plastic import fit_two_measurements, plastic_law
+
+    truth = plastic_law(steel, limiting_pressure_pa=2.5e9, tau=0.05)
+    slow, fast = truth.points([0.01, 2.0])
+    fit = fit_two_measurements(steel, (fast.epsilon, 2.0), (slow.epsilon, 0.01))
+    assert fit.p_y == pytest.approx(2.5e9, rel=1e-5)
+    assert fit.tau == pytest.approx(0.05, rel=1e-5)
+    assert fit.p_y_err > 0 and fit.tau_err > 0
+    # The command gives the same, with both parts in the rows.
+    code, out, err = _law(capsys, "--against", "wall", "--speed", "1", "--json",
+                          "--measured-epsilon", repr(slow.epsilon), "--measured-speed", "0.01",
+                          "--second-measured-epsilon", repr(fast.epsilon),
+                          "--second-measured-speed", "2")  # fmt: skip
+    assert code == 0, err
+    d = json.loads(out)
+    assert d["plasticity"]["limiting_pressure_pa"] == pytest.approx(2.5e9, rel=1e-5)
+    (p,) = d["points"]
+    assert p["loss_viscous"] > 0 and p["loss_plastic"] > 0
+
+
+def test_two_measurements_that_no_pair_of_values_fits_are_refused(steel):
+    from restitution.laws.plastic import fit_two_measurements
+
+    # A slower impact that loses more than a faster one: no damping and plastic flow do that.
+    with pytest.raises(InputError, match="no relaxation time and limiting pressure"):
+        fit_two_measurements(steel, (0.5, 0.01), (0.9, 1.0))
+
+
+def test_line_contact_onset_matches_johnson():
+    from restitution.quasistatic.plastic import line_onset_pressure_ratio
+
+    # Johnson, Contact Mechanics, section 6.2: plane strain, von Mises, p0 = 1.79 Y at z = 0.70 b;
+    # a thin disk (plane stress) yields at its surface, where both stresses are -p0.
+    assert line_onset_pressure_ratio(0.3, "strain") == pytest.approx(1.79, abs=0.01)
+    assert line_onset_pressure_ratio(0.3, "stress") == pytest.approx(1.0, abs=1e-9)
+
+
+def test_line_yield_speed_reaches_the_yield_force():
+    # Independent route: the 2D quasistatic collision at that speed peaks at P = pi R p0^2 / E.
+    from restitution.quasistatic.hertz import contact_law, quasistatic_collision
+    from restitution.quasistatic.plastic import line_yield_speed
+
+    law = contact_law(0.428571)
+    p0 = 2e-3
+    v = line_yield_speed(law, p0, math.pi)
+    peak = quasistatic_collision(law, [v], mass=math.pi).max_force[0]
+    assert peak == pytest.approx(math.pi * p0**2, rel=1e-9)
+
+
+def test_cylinder_answers_are_flagged_too():
+    from restitution.laws.mechanisms import elastic_bound
+    from restitution.laws.si_law import si_law
+
+    cylinder = si_law(210e9, 0.3, 7850, "cylinder", "wall")
+    bound, text = elastic_bound(cylinder)
+    assert 0.03 < bound < 0.15 and "plane strain" in text
+    disks = si_law(210e9, 0.3, 7850, "thin-disk", "grain")
+    bound2, text2 = elastic_bound(disks)
+    assert bound2 is not None and "plane stress" in text2

@@ -97,8 +97,11 @@ def elastic_bound(si) -> tuple[float | None, str]:
     """``(speed from which plastic flow is expected, m/s, or None; the sentence)`` for an
     elastic answer of ``si``: the yield speed of the lowest typical yield stress of the material
     class of the grain (and of a partner of another material), :mod:`restitution.laws.
-    material_classes`. ``(None, "")`` for bodies other than spheres and for plates; ``(None,
-    what the class does instead)`` for a brittle or polymer class."""
+    material_classes`; for disks and cylinders where their line contact first yields. ``(None,
+    "")`` for plates and pairs of disks of two sizes or materials; ``(None, what the class does
+    instead)`` for a brittle or polymer class."""
+    if si.grain.kind.planar:
+        return _line_bound(si)
     try:
         law, mass = contact_scales(si)
     except InputError:
@@ -127,6 +130,41 @@ def elastic_bound(si) -> tuple[float | None, str]:
         "elastic upper bound: plastic flow is not in this answer and is expected for typical "
         f"materials of its class ({'; '.join(named)}); give --yield-stress (or "
         "--limiting-pressure) for the plastic loss"
+    )
+
+
+def _line_bound(si) -> tuple[float | None, str]:
+    """:func:`elastic_bound` of a disk or cylinder on a wall (or two identical ones): where its
+    2D Hertz contact first yields (:func:`restitution.quasistatic.plastic.
+    line_onset_pressure_ratio`, :func:`~restitution.quasistatic.plastic.line_yield_speed`).
+    ``(None, "")`` for two disks of different sizes or materials (their pair law's ``R`` is not
+    a radius of curvature)."""
+    from restitution.quasistatic.plastic import line_onset_pressure_ratio, line_yield_speed
+    from restitution.quasistatic.pulse import THEORIES, contact_law_for
+
+    if si.law.partner is not None:
+        return None, ""
+    g = si.grain
+    cls = material_class(g.E, g.rho, g.nu)
+    if cls is None:
+        return None, ""
+    if cls.yield_stress is None:
+        return None, f"grain: {cls.name} ({cls.remark})"
+    kind = g.kind
+    law = contact_law_for(kind.geometry, g.law_nu, kind.quasistatic_law)
+    ratio = line_onset_pressure_ratio(g.nu, g.plane)
+    mass = THEORIES[kind.geometry].mass
+    speeds = [line_yield_speed(law, ratio * y / g.E_2d, mass) * si.speed_scale_m_s
+              for y in cls.yield_stress]  # fmt: skip
+    named = (
+        f"grain: {cls.name}, yield stress {cls.yield_stress[0] / 1e6:.0f}-"
+        f"{cls.yield_stress[1] / 1e6:.0f} MPa, plastic flow from {speeds[0]:.2g}-{speeds[1]:.2g} "
+        f"m/s (first yield of the line contact in plane {g.plane})"
+    )
+    return speeds[0], (
+        f"elastic upper bound: plastic flow is not in this answer and is expected for typical "
+        f"materials of its class ({named}); no plastic law of two-dimensional contacts is "
+        "derived (docs/plasticity.md)"
     )
 
 

@@ -61,6 +61,7 @@ from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
 __all__ = [
     "PlasticLaw",
     "PlasticPoint",
+    "fit_two_measurements",
     "infer_relaxation_time",
     "limiting_pressure",
     "plastic_law",
@@ -466,7 +467,7 @@ def plastic_law(
     >>> steel = si_law(210e9, 0.3, 7850, "sphere", "wall")
     >>> law = plastic_law(steel, yield_stress_pa=1e9)
     >>> round(law.yield_speed_m_s(), 4)
-    0.0329
+    0.0345
     """
     if not isinstance(si, SILaw):
         raise InputError(f"si must be an SILaw (see si_law), got {type(si).__name__}")
@@ -508,3 +509,127 @@ def infer_relaxation_time(law: PlasticLaw, eps_m: float, speed_m_s: float) -> Pl
     speed = _positive("measured speed", speed_m_s, "m/s")
     tau, tau_err = _infer(replace(law, tau=0.0, tau_err=0.0), eps_m, speed, "tau")
     return replace(law, tau=tau, tau_err=tau_err)
+
+
+def _measured_point(si: SILaw, speed: float):
+    """The elastic law's point at a measured ``speed`` (m/s); refused without a value."""
+    (p,) = si.points([speed])
+    if p.epsilon is None:
+        raise InputError(
+            f"the elastic law has no value at the measured speed {speed:g} m/s ({p.note}); "
+            "measure at a speed the law serves"
+        )
+    return p
+
+
+def fit_two_measurements(si: SILaw, first, second) -> PlasticLaw:
+    """The law whose relaxation time and limiting pressure give both measured coefficients
+    ``first = (epsilon, speed_m_s)`` and ``second``: two measurements fix two parameters.
+
+    The limiting pressure is solved from the faster measurement for each relaxation time, and
+    the relaxation time so that the slower one holds too (nested root searches on the contact,
+    the waves' ratios frozen, then refined once at the root, as for one measurement). The errors
+    carry each measured point's elastic-law error through the two equations' Jacobian.
+    Refused when no pair of values fits both, or when the two measurements do not fix both
+    (their Jacobian is singular: both below the yield speed, or the same speed).
+    """
+    from restitution.quasistatic.plastic_collision import pulse_collision
+
+    (e_s, w_s), (e_f, w_f) = sorted(
+        ((float(e), _positive("measured speed", w, "m/s")) for e, w in (first, second)),
+        key=lambda m: m[1],
+    )
+    for e in (e_s, e_f):
+        if not 0.0 < e < 1.0:
+            raise InputError(f"a measured epsilon must lie in (0, 1), got {e!r}")
+    if w_f <= w_s * (1.0 + 1e-9):
+        raise InputError(
+            "two measurements at one speed cannot fix two parameters: measure at two speeds"
+        )
+    slow, fast = _measured_point(si, w_s), _measured_point(si, w_f)
+    contact = _contact(si)
+    probe = PlasticLaw(si, si.grain.E, "probe")
+    ratios = {id(slow): (1.0, 1.0, 1.0), id(fast): (1.0, 1.0, 1.0)}
+    (p_lo, p_hi), (t_lo, t_hi) = _RANGES["p_y"], _RANGES["tau"]
+
+    def eps(point, tau: float, p_y: float) -> float:
+        got = probe._point(point, contact, p_y=p_y, tau=tau, ratios=ratios[id(point)]).epsilon
+        return 0.0 if got is None else got
+
+    def p_y_of(tau: float) -> float | None:
+        """The limiting pressure that gives the faster measurement with ``tau``; ``None`` where
+        the damping alone already loses more."""
+        if eps(fast, tau, p_hi) <= e_f:
+            return None
+        if eps(fast, tau, p_lo) >= e_f:
+            raise InputError(
+                f"the measured epsilon {e_f:.6g} at {w_f:g} m/s is below what any limiting "
+                "pressure gives: check the measurement"
+            )
+        return math.exp(brentq(lambda x: eps(fast, tau, math.exp(x)) - e_f, math.log(p_lo),
+                               math.log(p_hi), xtol=1e-9, rtol=1e-7))  # fmt: skip
+
+    def gap(log_tau: float) -> float:
+        p_y = p_y_of(math.exp(log_tau))
+        return (eps(slow, math.exp(log_tau), p_hi if p_y is None else p_y)) - e_s
+
+    def solve() -> tuple[float, float]:
+        if eps(fast, t_lo, p_hi) <= e_f:
+            raise InputError(
+                f"the measured epsilon {e_f:.6g} at {w_f:g} m/s is not below the elastic value "
+                "there: neither damping nor plastic flow explains it; check the measurement"
+            )
+        # The largest relaxation time: where the damping alone gives the faster measurement.
+        top = math.log(t_hi)
+        if eps(fast, t_hi, p_hi) < e_f:
+            top = brentq(lambda x: eps(fast, math.exp(x), p_hi) - e_f, math.log(t_lo), top,
+                         xtol=1e-9, rtol=1e-7)  # fmt: skip
+        lo, hi = math.log(t_lo), top - 1e-7
+        g_lo, g_hi = gap(lo), gap(hi)
+        if g_lo * g_hi > 0:
+            raise InputError(
+                f"no relaxation time and limiting pressure give both measurements: with the "
+                f"faster one ({e_f:g} at {w_f:g} m/s) fitted, the slower one ({w_s:g} m/s) lies "
+                f"between {min(g_lo, g_hi) + e_s:.6g} and {max(g_lo, g_hi) + e_s:.6g}, not "
+                f"{e_s:g}; check the measurements or fit one parameter (--measured-fixes)"
+            )
+        tau = math.exp(brentq(gap, lo, hi, xtol=1e-9, rtol=1e-7))
+        return tau, p_y_of(tau)
+
+    tau, p_y = solve()
+    for point in (slow, fast):  # the waves' ratios at the first root, then once more
+        v = point.v_over_c
+        pulse = pulse_collision(contact.law, v, p_y=p_y, tau=tau, mass=contact.mass)
+        hertz = pulse_collision(contact.law, v, mass=contact.mass)
+        ratios[id(point)] = _ratios(pulse, hertz, contact, tau)
+    tau, p_y = solve()
+    # Errors: each point's elastic error through the Jacobian in (ln tau, ln p_y).
+    h = 1e-4
+    base = np.array([eps(slow, tau, p_y), eps(fast, tau, p_y)])
+    jac = np.empty((2, 2))
+    for j, (dt, dp) in enumerate(((math.exp(h), 1.0), (1.0, math.exp(h)))):
+        jac[:, j] = (np.array([eps(slow, tau * dt, p_y * dp), eps(fast, tau * dt, p_y * dp)])
+                     - base) / h  # fmt: skip
+    if not np.isfinite(np.linalg.cond(jac)) or np.linalg.cond(jac) > 1e8:
+        raise InputError(
+            "the two measurements do not fix both parameters (is the slower one below the yield "
+            "speed and the faster one dominated by one loss?); give one parameter instead"
+        )
+    shifts = []
+    for i, point in enumerate((slow, fast)):
+        moved = replace(point, epsilon=min(point.epsilon + point.epsilon_err, 1.0))
+        ratios[id(moved)] = ratios[id(point)]
+        delta = np.zeros(2)
+        delta[i] = eps(moved, tau, p_y) - base[i]
+        shifts.append(np.linalg.solve(jac, -delta))
+    err_log = np.sqrt(np.sum(np.square(shifts), axis=0))
+    E = si.grain.E
+    return PlasticLaw(
+        si,
+        p_y * E,
+        f"inferred with the relaxation time from epsilon = {e_s:g} at {w_s:g} m/s and {e_f:g} "
+        f"at {w_f:g} m/s",
+        tau,
+        tau * float(err_log[0]),
+        p_y * E * float(err_log[1]),
+    )

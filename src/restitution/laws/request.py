@@ -28,7 +28,7 @@ __all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields"
 DEFAULT_SPEEDS_M_S: tuple[float, ...] = (0.1, 0.5, 1.0, 5.0, 10.0)
 """Impact speeds (m/s) of a request that names none."""
 
-MEASURED_FIXES = ("relaxation-time", "limiting-pressure")
+MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 """What one measured epsilon may fix (``--measured-fixes``)."""
 
 
@@ -264,9 +264,24 @@ class LawRequest:
             "--measured-fixes",
             "Which parameter --measured-epsilon fixes: the relaxation time (default; damping) "
             "or the limiting pressure (plastic flow; the damping, if any, from "
-            "--relaxation-time). One measurement fixes one parameter.",
+            "--relaxation-time). One measurement fixes one parameter; 'both' (the default with "
+            "a second measurement) fixes the two from two measurements.",
             "choice",
             choices=lambda: list(MEASURED_FIXES),
+        ),
+    )
+    second_measured_epsilon: float | None = field(
+        default=None,
+        metadata=_option(
+            "--second-measured-epsilon",
+            "A second measured coefficient of restitution, at --second-measured-speed: with "
+            "the first, it fixes both the relaxation time and the limiting pressure (spheres).",
+        ),
+    )
+    second_measured_speed: float | None = field(
+        default=None,
+        metadata=_option(
+            "--second-measured-speed", "Impact speed of --second-measured-epsilon, m/s."
         ),
     )
     compute: bool = field(
@@ -321,7 +336,7 @@ class LawRequest:
             self._check_identical_law_files()
         if self.elastic_wall is not None:
             self._check_elastic_wall()
-        if self.plastic or self.measured_fixes is not None:
+        if self.plastic or self.measured_fixes is not None or self.fixes_both:
             self._check_plastic()
         if self.compute and self.law_file is not None:
             raise InputError("give --law-file or --compute, not both")
@@ -442,6 +457,8 @@ class LawRequest:
     @property
     def damped(self) -> bool:
         """Whether damping is asked: a relaxation time, or a measurement that fixes it."""
+        if self.fixes_both:
+            return True
         if self.fixes_limiting_pressure:
             return self.relaxation_time is not None
         return (self.measured_epsilon, self.measured_speed, self.relaxation_time) != (None,) * 3
@@ -452,19 +469,58 @@ class LawRequest:
         return self.measured_fixes == "limiting-pressure"
 
     @property
+    def measured_speeds(self) -> tuple[float, ...]:
+        """The measured speeds a plastic answer computes the elastic law at besides the asked
+        ones (a law computed at the asked speeds only: a pair's route, an elastic wall)."""
+        if not self.plastic:
+            return ()
+        given = (self.measured_speed, self.second_measured_speed)
+        return tuple(w for w in given if w is not None)
+
+    @property
+    def fixes_both(self) -> bool:
+        """Whether two measurements fix the relaxation time and the limiting pressure."""
+        return (
+            self.measured_fixes == "both"
+            or self.second_measured_epsilon is not None
+            or (self.second_measured_speed is not None)
+        )
+
+    @property
     def plastic(self) -> bool:
         """Whether plastic flow is asked: a yield stress, a limiting pressure, or a measurement
         that fixes it."""
         given = (self.yield_stress, self.partner_yield_stress, self.limiting_pressure)
-        return given != (None,) * 3 or self.fixes_limiting_pressure
+        return given != (None,) * 3 or self.fixes_limiting_pressure or self.fixes_both
 
     def _check_plastic(self) -> None:
-        if self.measured_fixes is not None and None in (self.measured_epsilon,
-                                                        self.measured_speed):  # fmt: skip
+        asked = self.measured_fixes is not None or self.fixes_both
+        if asked and None in (self.measured_epsilon, self.measured_speed):
             raise InputError(
                 "--measured-fixes says what --measured-epsilon fixes: give it with "
                 "--measured-epsilon and --measured-speed"
             )
+        if self.fixes_both:
+            second = (self.second_measured_epsilon, self.second_measured_speed)
+            if None in second:
+                raise InputError(
+                    "two measurements fix both parameters: give --second-measured-epsilon and "
+                    "--second-measured-speed with the first measurement"
+                )
+            if self.measured_fixes not in (None, "both"):
+                raise InputError(
+                    f"two measurements fix both parameters, not only the {self.measured_fixes}: "
+                    "leave out --measured-fixes or the second measurement"
+                )
+            given = [name for name, value in (("--yield-stress", self.yield_stress),
+                     ("--partner-yield-stress", self.partner_yield_stress),
+                     ("--limiting-pressure", self.limiting_pressure),
+                     ("--relaxation-time", self.relaxation_time)) if value is not None]  # fmt: skip
+            if given:
+                raise InputError(
+                    f"two measurements fix the relaxation time and the limiting pressure: leave "
+                    f"out {', '.join(given)}"
+                )
         if not self.plastic:
             return
         if self.shape in BODIES and body_kind(BODIES[self.shape]).planar:
@@ -520,6 +576,8 @@ class LawRequest:
             "partner_yield_stress_pa": self.partner_yield_stress,
             "limiting_pressure_pa": self.limiting_pressure,
             "measured_fixes": self.measured_fixes,
+            "second_measured_epsilon": self.second_measured_epsilon,
+            "second_measured_speed_m_s": self.second_measured_speed,
             "compute": self.compute,
         }  # fmt: skip
 

@@ -132,7 +132,7 @@ def serve(
         what = ("Zener's thin-plate model" if r.wall_thickness is not None
                 else "the ball's vibrations and the waves radiated into the wall")  # fmt: skip
         note(f"note: an elastic wall: each speed is computed now ({what}; seconds)")
-        vs = [float(grain.v_over_c(w, "wall")) for w in r.speeds]
+        vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
         s = SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
         if r.plastic:
             return _plastic_answer(r, s, note)
@@ -185,7 +185,11 @@ def serve(
 def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
     """The answer with plastic flow: the limiting pressure given or inferred, the relaxation
     time given or inferred with the plastic flow on (one measurement fixes one of them)."""
-    from restitution.laws.plastic import infer_relaxation_time, plastic_law
+    from restitution.laws.plastic import (
+        fit_two_measurements,
+        infer_relaxation_time,
+        plastic_law,
+    )
 
     tau = 0.0
     if r.relaxation_time is not None:
@@ -204,11 +208,17 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
             "the measurement fixes the relaxation time, which --relaxation-time gives too: "
             "leave one out, or add --measured-fixes limiting-pressure"
         )
-    if measured:
-        what = "limiting pressure" if r.fixes_limiting_pressure else "relaxation time"
-        note(f"note: inferring the {what} from the measurement (root searches of the contact; "
-             "seconds)")  # fmt: skip
-    if r.fixes_limiting_pressure:
+    if r.fixes_both:
+        note("note: fitting the relaxation time and the limiting pressure to the two "
+             "measurements (nested root searches of the contact; half a minute)")  # fmt: skip
+        law = fit_two_measurements(
+            s,
+            (r.measured_epsilon, r.measured_speed),
+            (r.second_measured_epsilon, r.second_measured_speed),
+        )
+    elif r.fixes_limiting_pressure:
+        note("note: inferring the limiting pressure from the measurement (root searches of the "
+             "contact; seconds)")  # fmt: skip
         law = plastic_law(s, tau=tau, measured_epsilon=r.measured_epsilon,
                           measured_speed_m_s=r.measured_speed)  # fmt: skip
     else:
@@ -216,6 +226,8 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
                           partner_yield_stress_pa=r.partner_yield_stress,
                           limiting_pressure_pa=r.limiting_pressure, tau=tau)  # fmt: skip
         if measured:
+            note("note: inferring the relaxation time from the measurement with the plastic "
+                 "flow on (root searches of the contact; seconds)")  # fmt: skip
             law = infer_relaxation_time(law, r.measured_epsilon, r.measured_speed)
     note("note: plastic flow: each speed is computed now on one force pulse (about a second a "
          "speed)")  # fmt: skip
@@ -309,7 +321,7 @@ def _route(r: LawRequest, note):
         for what, asked in (
             ("--export", r.export_dir is not None),
             ("--reference-speed/--maxwell-temperature", r.constants),
-            ("damping", r.damped),
+            ("damping", r.damped and not r.plastic),
         )
         if asked
     ]
@@ -323,7 +335,7 @@ def _route(r: LawRequest, note):
             f"add --compute ({p.words()})"
         )
     grain = Grain(r.E, r.nu, r.rho, r.shape)
-    vs = [float(grain.v_over_c(w, "wall")) for w in r.speeds]
+    vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
     note(
         f"note: two {body}s of this pair have no shipped law: each speed is computed now by "
         "their low-speed route (about a second a speed)"

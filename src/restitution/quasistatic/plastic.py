@@ -59,7 +59,16 @@ pressure`` gives ``p_y`` directly).
 
 **Cylinders.** Two-dimensional contacts have no comparable closed form here: Thornton's model is
 built on Hertz's 3D pressure and its contact radius; no 2D law is derived or invented
-(:func:`restitution.laws.plastic` refuses disks and cylinders).
+(:func:`restitution.laws.plastic` refuses disks and cylinders). Where plastic flow *starts* is
+derived all the same, so that an elastic answer can say from which speed it is an upper bound.
+A line contact of half-width ``b`` carries Hertz's pressure ``p0 = 2 P / (pi b)``, ``b^2 = 4 P R /
+(pi E*)``, so ``P = pi R p0^2 / E*`` (Johnson, eq. 4.45); on the axis (Johnson, eq. 4.49)
+``sigma_x / p0 = -((1 + 2 zeta^2) / sqrt(1 + zeta^2) - 2 zeta)``, ``sigma_z / p0 = -1 / sqrt(1 +
+zeta^2)``, ``zeta = z / b``, and ``sigma_y = nu (sigma_x + sigma_z)`` in plane strain (a long
+cylinder), 0 in plane stress (a thin disk). Von Mises's stress is largest at ``z = 0.70 b`` in
+plane strain, where yield begins at ``p0 = 1.794 Y`` (``nu = 0.3``; Johnson quotes 1.79 Y), and
+at the surface in plane stress, ``p0 = Y`` (:func:`line_onset_pressure_ratio`). The speed that
+reaches it is the 2D law's (:func:`line_yield_speed`).
 """
 
 from __future__ import annotations
@@ -76,6 +85,8 @@ __all__ = [
     "HIGH_SPEED_CONSTANT",
     "YIELD_SPEED_CONSTANT",
     "ThorntonContact",
+    "line_onset_pressure_ratio",
+    "line_yield_speed",
     "onset_pressure_ratio",
     "thornton_epsilon",
     "yield_speed",
@@ -210,3 +221,34 @@ def onset_pressure_ratio(nu: float) -> float:
     best = minimize_scalar(minus_difference, bounds=(1e-6, 5.0), method="bounded",
                            options={"xatol": 1e-10})  # fmt: skip
     return 1.0 / -float(best.fun)
+
+
+def line_onset_pressure_ratio(nu: float, plane: str) -> float:
+    """``p0 / Y`` at first yield (von Mises) of a line contact of 3D Poisson number ``nu`` in
+    ``plane`` ``"strain"`` (a long cylinder) or ``"stress"`` (a thin disk) (module docs): 1.794
+    and 1 at ``nu = 0.3``."""
+    if plane not in ("strain", "stress"):
+        raise InputError(f"plane must be 'strain' or 'stress', got {plane!r}")
+    nu = float(nu)
+    if not -1.0 < nu <= 0.5:
+        raise InputError(f"the 3D Poisson number must lie in (-1, 0.5], got {nu}")
+
+    def minus_mises(zeta: float) -> float:
+        root = math.sqrt(1.0 + zeta * zeta)
+        sx = -((1.0 + 2.0 * zeta * zeta) / root - 2.0 * zeta)
+        sz = -1.0 / root
+        sy = nu * (sx + sz) if plane == "strain" else 0.0
+        return -math.sqrt(0.5 * ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2))
+
+    best = minimize_scalar(minus_mises, bounds=(0.0, 5.0), method="bounded",
+                           options={"xatol": 1e-10})  # fmt: skip
+    return 1.0 / -float(min(best.fun, minus_mises(0.0)))
+
+
+def line_yield_speed(law, p0: float, mass: float) -> float:
+    """The speed whose quasistatic collision on the 2D contact ``law``
+    (:class:`restitution.quasistatic.hertz.HertzLaw`, ``E`` its 2D modulus and ``E*`` of a disk
+    on a rigid wall, ``R`` its radius) just reaches the largest pressure ``p0`` (module docs):
+    ``(m/2) v^2 = V(P)``, ``P = pi R p0^2 / E``; per unit thickness, in the law's units."""
+    force = math.pi * law.R * _positive("p0", p0) ** 2 / law.E
+    return math.sqrt(2.0 * float(law.potential_of_force(force)) / _positive("mass", mass))
