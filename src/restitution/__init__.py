@@ -33,6 +33,7 @@ from restitution.dynamics.results import UNITS, CollisionResult
 from restitution.errors import InputError, RestitutionError
 from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.plastic import PlasticLaw, plastic_law
 from restitution.laws.request import LawRequest
 from restitution.laws.serve import LawAnswer, serve
 from restitution.laws.si_law import SILaw, si_law
@@ -57,6 +58,7 @@ __all__ = [
     "MaterialError",
     "ModeError",
     "ModeSet",
+    "PlasticLaw",
     "PointEpsilon",
     "RestitutionError",
     "SILaw",
@@ -67,6 +69,7 @@ __all__ = [
     "epsilon_at",
     "get_modes",
     "law",
+    "plastic_law",
     "serve",
     "si_law",
     "weyl_count",
