@@ -291,11 +291,10 @@ def test_elastic_answers_say_they_are_an_upper_bound(steel):
     bound, text = elastic_bound(steel)
     # Steel, 250-1600 MPa: plastic flow from about 1 mm/s (mild steel) to 0.1 m/s.
     assert 5e-4 < bound < 3e-3
-    assert "elastic upper bound" in text and "steel" in text
+    assert "upper bound (no plastic flow)" in text and "steel" in text
     glass = si_law(63e9, 0.2481, 2500, "sphere", "wall")
-    assert elastic_bound(glass)[0] is None
-    cylinder = si_law(210e9, 0.3, 7850, "cylinder", "wall")
-    assert elastic_bound(cylinder) == (None, "")
+    bound, text = elastic_bound(glass)
+    assert bound is None and "brittle" in text
 
 
 # -- the command -------------------------------------------------------------------------------
@@ -330,8 +329,8 @@ def test_elastic_law_command_flags_plastic_speeds(capsys):
     assert code == 0, err
     d = json.loads(out)
     slow, fast = d["points"]
-    assert "elastic upper bound" not in slow["note"]
-    assert "elastic upper bound" in fast["note"]
+    assert "upper bound (no plastic flow)" not in slow["note"]
+    assert "upper bound (no plastic flow)" in fast["note"]
     assert d["plastic_flow_expected_from_m_s"] == pytest.approx(0.0011, rel=0.05)
     assert d["mechanisms_left_out"]
 
@@ -467,3 +466,18 @@ def test_cylinder_answers_are_flagged_too():
     disks = si_law(210e9, 0.3, 7850, "thin-disk", "grain")
     bound2, text2 = elastic_bound(disks)
     assert bound2 is not None and "plane stress" in text2
+
+
+def test_exports_name_their_mechanisms(steel):
+    from restitution.laws.exports._heading import _header
+    from restitution.laws.law import EpsilonLaw
+    from restitution.laws.mechanisms import law_mechanisms
+
+    lines = _header(steel)
+    assert any(x.startswith("mechanisms: elastic waves") for x in lines)
+    assert any(x.startswith("not in these numbers: viscous") for x in lines)
+    assert any("upper bound (no plastic flow)" in x for x in lines)
+    damped = EpsilonLaw.from_points(0.3, [1e-4, 1e-3], [0.99, 0.98], [1e-3, 1e-3],
+                                    parameters={"relaxation_time_c_over_R": 0.1},
+                                    geometry="sphere")  # fmt: skip
+    assert law_mechanisms(damped) == ["waves", "viscous"]

@@ -40,7 +40,7 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.estimate import Estimate
-from restitution.laws.mechanisms import flag_points, mechanism_fields, wall_of
+from restitution.laws.mechanisms import flag_points, law_mechanisms, mechanism_fields
 from restitution.laws.si_law import SILaw
 from restitution.limits.run_options import Progress, progress_of
 from restitution.status import Status
@@ -416,8 +416,7 @@ class DampedLaw:
             else {"epsilon": self.measured[0], "speed_m_s": self.measured[1]},
         }
         points, bound = flag_points(self.si, self.points(speeds_m_s))
-        names = ["waves", *(["wall"] if wall_of(self.si.law) else []), "viscous"]
-        d.update(mechanism_fields(names))
+        d.update(mechanism_fields([*law_mechanisms(self.si.law), "viscous"]))
         d["plastic_flow_expected_from_m_s"] = bound
         d["points"] = [p.to_dict() for p in points]
         return d

@@ -25,6 +25,7 @@ __all__ = [
     "contact_scales",
     "elastic_bound",
     "flag_points",
+    "law_mechanisms",
     "mechanism_fields",
     "wall_of",
 ]
@@ -53,6 +54,19 @@ def mechanism_fields(names) -> dict:
         "mechanisms": [MECHANISMS[m] for m in names],
         "mechanisms_left_out": [MECHANISMS[m] for m in left],
     }
+
+
+def law_mechanisms(law) -> list[str]:
+    """The mechanisms (keys of :data:`MECHANISMS`) in a law's tabulated numbers: the waves,
+    an elastic wall's radiation, and the viscous loss of a damped law's table (its parameters
+    carry the relaxation time)."""
+    names = ["waves"]
+    if wall_of(law) is not None:
+        names.append("wall")
+    parameters = (getattr(law, "metadata", None) or {}).get("parameters", {})
+    if "relaxation_time_c_over_R" in parameters:
+        names.append("viscous")
+    return names
 
 
 def contact_scales(si):
@@ -127,8 +141,8 @@ def elastic_bound(si) -> tuple[float | None, str]:
     if lowest is None:
         return None, "; ".join(named)
     return lowest, (
-        "elastic upper bound: plastic flow is not in this answer and is expected for typical "
-        f"materials of its class ({'; '.join(named)}); give --yield-stress (or "
+        "upper bound (no plastic flow): plastic flow is not in this answer and is expected for "
+        f"typical materials of its class ({'; '.join(named)}); give --yield-stress (or "
         "--limiting-pressure) for the plastic loss"
     )
 
@@ -162,8 +176,8 @@ def _line_bound(si) -> tuple[float | None, str]:
         f"m/s (first yield of the line contact in plane {g.plane})"
     )
     return speeds[0], (
-        f"elastic upper bound: plastic flow is not in this answer and is expected for typical "
-        f"materials of its class ({named}); no plastic law of two-dimensional contacts is "
+        "upper bound (no plastic flow): plastic flow is not in this answer and is expected for "
+        f"typical materials of its class ({named}); no plastic law of two-dimensional contacts is "
         "derived (docs/plasticity.md)"
     )
 

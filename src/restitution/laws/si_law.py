@@ -29,7 +29,7 @@ from restitution.errors import InputError, describe, is_real, real_array
 from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
-from restitution.laws.mechanisms import flag_points, mechanism_fields, wall_of
+from restitution.laws.mechanisms import flag_points, law_mechanisms, mechanism_fields
 from restitution.laws.units import PARTNERS, Grain, partner_factor
 from restitution.status import Status
 
@@ -651,7 +651,7 @@ class SILaw:
                 ),
             },
             "statuses": {**STATUSES, Status.QUASISTATIC: _quasistatic_note(self.law)},
-            **mechanism_fields(["waves", *(["wall"] if wall_of(self.law) else [])]),
+            **mechanism_fields(law_mechanisms(self.law)),
             "plastic_flow_expected_from_m_s": bound,
             "points": [p.to_dict() for p in points],
         }

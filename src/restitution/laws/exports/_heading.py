@@ -4,7 +4,8 @@ Every file and snippet of :mod:`restitution.laws.exports` carries them: the pack
 the time of writing, the grain (geometry and body of the law: a cylinder or thin disk is served
 by the disk's law, a sphere by the sphere's), its material (and the partner's), what the speed
 ``w`` means (a wall, or two grains' relative normal speed) with the speed unit ``k c`` in m/s,
-which law serves it and where it is from, and the computed speeds in m/s.
+which law serves it and where it is from, the computed speeds in m/s, and the loss mechanisms
+in the numbers (and from which speed they are an upper bound without plastic flow).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import datetime
 
 from restitution._version import __version__
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
+from restitution.laws.mechanisms import elastic_bound, law_mechanisms, mechanism_fields
 from restitution.laws.si_law import SILaw
 
 
@@ -48,4 +50,18 @@ def _header(s: SILaw) -> list[str]:
         f"partner: {s.against}: {s.against_meaning}; speed unit k c = {s.speed_scale_m_s:.6g} m/s",
         _law_line(s),
         f"computed speeds: {lo:.6g} ... {hi:.6g} m/s; the law serves nothing outside them",
+        *_mechanism_lines(s),
     ]
+
+
+def _mechanism_lines(s: SILaw) -> list[str]:
+    """``mechanisms: ...``, what the numbers leave out, and from which speed they are an
+    upper bound without plastic flow (:mod:`restitution.laws.mechanisms`)."""
+    fields = mechanism_fields(law_mechanisms(s.law))
+    lines = [f"mechanisms: {'; '.join(fields['mechanisms'])}"]
+    if fields["mechanisms_left_out"]:
+        lines.append(f"not in these numbers: {'; '.join(fields['mechanisms_left_out'])}")
+    bound, text = elastic_bound(s)
+    if bound is not None:
+        lines.append(f"from {bound:.2g} m/s: {text}")
+    return lines
