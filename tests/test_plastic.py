@@ -249,7 +249,7 @@ def test_sum_of_parts_without_plastic_flow_is_the_damped_law(steel):
     from restitution.laws.plastic import plastic_law
 
     tau = 0.01
-    law = plastic_law(steel, limiting_pressure_pa=1e12, tau=tau)  # never yields here
+    law = plastic_law(steel, limiting_pressure_pa=1e11, tau=tau)  # yields from ~1 km/s
     damped = DampedLaw(steel, tau)
     for mine, theirs in zip(law.points([0.1, 1.0]), damped.points([0.1, 1.0]), strict=True):
         assert not mine.yielded
@@ -357,6 +357,8 @@ def test_elastic_law_command_flags_plastic_speeds(capsys):
           "--measured-fixes", "relaxation-time"], "not only the relaxation-time"),
         (["--against", "wall", "--measured-epsilon", "0.8", "--measured-speed", "1",
           "--measured-fixes", "both"], "--second-measured-epsilon"),
+        (["--against", "wall", "--limiting-pressure", "1e300"], "at or above the Young modulus"),
+        (["--against", "wall", "--yield-stress", "nan"], "finite number > 0"),
     ],
 )  # fmt: skip
 def test_plastic_refusals_are_one_line(args, match, capsys):

@@ -110,6 +110,22 @@ def limiting_pressure(
     partner_yield_stress_pa: float | None = None,
     limiting_pressure_pa: float | None = None,
 ) -> tuple[float, str]:
+    """:func:`_limiting_pressure`, refused at or above the grain's Young modulus (no material
+    yields there; the ideal strength is about E/10)."""
+    p_y, source = _limiting_pressure(si, yield_stress_pa, partner_yield_stress_pa,
+                                     limiting_pressure_pa)  # fmt: skip
+    if p_y >= si.grain.E:
+        raise InputError(
+            f"the limiting pressure {p_y:.3g} Pa ({source}) is at or above the Young modulus "
+            f"{si.grain.E:.3g} Pa: no material yields there (the ideal strength is about E/10); "
+            "check the units (Pa)"
+        )
+    return p_y, source
+
+
+def _limiting_pressure(
+    si: SILaw, yield_stress_pa, partner_yield_stress_pa, limiting_pressure_pa
+) -> tuple[float, str]:
     """``(p_y in Pa, where it comes from)``: the limiting pressure given, or the onset pressure
     of the softer of the bodies whose yield stress is given (module docs). Identical grains
     share the grain's yield stress; a partner of another material or an elastic wall without its
@@ -374,8 +390,16 @@ def _ratios(actual, hertz, contact: _Contact, tau: float) -> tuple[float, float,
     return ratio, ratio_bare, actual.force_rate_integral / hertz.force_rate_integral
 
 
-_RANGES = {"p_y": (1e-7, 1e3), "tau": (1e-9, 1e3)}
-"""Where the root searches of an inferred parameter look (reduced units: ``E``, ``R / c``)."""
+_RANGES = {"p_y": (1e-7, 0.9), "tau": (1e-9, 1e3)}
+"""Where the root searches of an inferred parameter look: ``p_y`` in the contact's ``E*`` (at
+``0.9 E*`` the yield speed is above any speed a law serves, about ``c``), ``tau`` in ``R / c``."""
+
+
+def _range(which: str, contact: _Contact) -> tuple[float, float]:
+    """:data:`_RANGES` of ``which`` in reduced units (``p_y`` scaled with the contact's ``E*``)."""
+    lo, hi = _RANGES[which]
+    scale = contact.law.E_star if which == "p_y" else 1.0
+    return lo * scale, hi * scale
 
 
 def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[float, float]:
@@ -390,7 +414,7 @@ def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[flo
             "measure at a speed the law serves"
         )
     contact = _contact(si)
-    lo, hi = (math.log(x) for x in _RANGES[which])
+    lo, hi = (math.log(x) for x in _range(which, contact))
     # The end of the range where epsilon is largest: no plastic flow, no damping.
     weakest = hi if which == "p_y" else lo
 
@@ -550,7 +574,7 @@ def fit_two_measurements(si: SILaw, first, second) -> PlasticLaw:
     contact = _contact(si)
     probe = PlasticLaw(si, si.grain.E, "probe")
     ratios = {id(slow): (1.0, 1.0, 1.0), id(fast): (1.0, 1.0, 1.0)}
-    (p_lo, p_hi), (t_lo, t_hi) = _RANGES["p_y"], _RANGES["tau"]
+    (p_lo, p_hi), (t_lo, t_hi) = _range("p_y", contact), _range("tau", contact)
 
     def eps(point, tau: float, p_y: float) -> float:
         got = probe._point(point, contact, p_y=p_y, tau=tau, ratios=ratios[id(point)]).epsilon

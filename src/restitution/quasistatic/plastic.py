@@ -132,6 +132,11 @@ class ThorntonContact:
     def __post_init__(self) -> None:
         for name in ("E_star", "R", "p_y", "mass"):
             object.__setattr__(self, name, _positive(name, getattr(self, name)))
+        if self.p_y >= self.E_star:
+            raise InputError(
+                f"a limiting pressure p_y = {self.p_y:.3g} at or above E* = {self.E_star:.3g}: no "
+                "material yields there (the ideal strength is about E/10)"
+            )
 
     @property
     def K(self) -> float:
