@@ -483,3 +483,14 @@ def test_exports_name_their_mechanisms(steel):
                                     parameters={"relaxation_time_c_over_R": 0.1},
                                     geometry="sphere")  # fmt: skip
     assert law_mechanisms(damped) == ["waves", "viscous"]
+
+
+def test_too_many_speeds_are_refused_before_any_work(capsys):
+    # Plastic flow costs about 2 s a speed, a pair's route about 0.6 s: beyond the one-hour bound
+    # of a run the command refuses at once, with the numbers and how many fit.
+    speeds = [str(0.001 * (i + 1)) for i in range(2000)]
+    code, _, err = _law(capsys, "--against", "wall", "--yield-stress", "1e9", "--speed", *speeds)
+    one_line_error(code, err, "2000 speeds", "at most 1800 speeds")
+    code, _, err = _law(capsys, "--against", "grain", "--partner-radius-ratio", "3",
+                        "--speed", *(str(1e-4 * (i + 1)) for i in range(7000)))  # fmt: skip
+    one_line_error(code, err, "7000 speeds", "low-speed route", "at most 6000 speeds")

@@ -182,6 +182,31 @@ def serve(
     return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
 
 
+PLASTIC_SECONDS_PER_SPEED = 2.0
+"""Wall time of one speed of a plastic answer (three force pulses and the spectra of the modes
+they drive), seconds: 1-2 s measured on the project's 2-core machine (steel, 1 mm/s to 100 m/s;
+slowest at the lowest speeds, whose pulses are longest)."""
+
+ROUTE_SECONDS_PER_SPEED = 0.6
+"""Wall time of one speed of a pair's low-speed route, seconds (0.57 s measured for the shipped
+sphere pairs' production points)."""
+
+
+def _check_speed_count(count: int, per_speed: float, what: str) -> None:
+    """Refuse, before anything is computed, ``count`` speeds of ``per_speed`` seconds each
+    beyond the bound of one run (:data:`restitution.budget.TIME_BOUND_S`), with the numbers."""
+    from restitution import budget
+
+    need = count * per_speed
+    if need > budget.TIME_BOUND_S:
+        most = int(budget.TIME_BOUND_S // per_speed)
+        raise InputError(
+            f"{count} speeds would take about {budget.format_duration(need)} ({what}, about "
+            f"{per_speed:g} s a speed), more than the {budget.format_duration(budget.TIME_BOUND_S)}"
+            f" bound of one run; ask for at most {most} speeds at a time"
+        )
+
+
 def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
     """The answer with plastic flow: the limiting pressure given or inferred, the relaxation
     time given or inferred with the plastic flow on (one measurement fixes one of them)."""
@@ -191,6 +216,7 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
         plastic_law,
     )
 
+    _check_speed_count(len(r.speeds), PLASTIC_SECONDS_PER_SPEED, "plastic flow on one pulse")
     tau = 0.0
     if r.relaxation_time is not None:
         if r.radius is None:
@@ -336,6 +362,7 @@ def _route(r: LawRequest, note):
         )
     grain = Grain(r.E, r.nu, r.rho, r.shape)
     vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
+    _check_speed_count(len(set(vs)), ROUTE_SECONDS_PER_SPEED, f"the {body} pair's low-speed route")
     note(
         f"note: two {body}s of this pair have no shipped law: each speed is computed now by "
         "their low-speed route (about a second a speed)"
