@@ -25,6 +25,7 @@ __all__ = [
     "contact_scales",
     "elastic_bound",
     "flag_points",
+    "half_space_of",
     "law_mechanisms",
     "mechanism_fields",
     "wall_of",
@@ -101,10 +102,19 @@ def contact_scales(si):
             "plastic flow on a thin plate is not modelled (Zener's plate model is elastic); use "
             "a half-space or a rigid wall, or leave out the plastic options"
         )
+    hs = half_space_of(si.law)
+    return replace(sphere_contact_law(nu), effective_modulus=hs.effective_modulus(nu)), SPHERE_MASS
+
+
+def half_space_of(law):
+    """The elastic half-space of a law's ``metadata["wall"]``
+    (:class:`restitution.bodies.wall.HalfSpace`), ``None`` for a rigid wall or a plate."""
     from restitution.bodies.wall import HalfSpace
 
-    hs = HalfSpace(wall["modulus_ratio"], wall["density_ratio"], wall["nu"])
-    return replace(sphere_contact_law(nu), effective_modulus=hs.effective_modulus(nu)), SPHERE_MASS
+    wall = wall_of(law)
+    if wall is None or wall.get("kind") == "plate":
+        return None
+    return HalfSpace(wall["modulus_ratio"], wall["density_ratio"], wall["nu"])
 
 
 def elastic_bound(si) -> tuple[float | None, str]:

@@ -53,7 +53,7 @@ from scipy.optimize import brentq
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT
-from restitution.laws.mechanisms import contact_scales, mechanism_fields, wall_of
+from restitution.laws.mechanisms import contact_scales, half_space_of, mechanism_fields, wall_of
 from restitution.laws.si_law import SILaw
 from restitution.quasistatic.hertz import QuasistaticError
 from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
@@ -92,13 +92,11 @@ def _contact(si: SILaw) -> _Contact:
     if pair is not None:
         return _Contact(law, mass, pair.pair(nu, PAIR_LOW_SPEED_MODES, SPHERE.geometry))
     modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
-    wall = wall_of(si.law)
-    if wall is None:
+    hs = half_space_of(si.law)  # contact_scales refused a plate
+    if hs is None:
         return _Contact(law, mass, modes)
-    from restitution.bodies.wall import HalfSpace
     from restitution.quasistatic.half_space import radiation_conductance
 
-    hs = HalfSpace(wall["modulus_ratio"], wall["density_ratio"], wall["nu"])
     return _Contact(law, mass, modes,
                     radiation_conductance(hs.density_ratio, hs.shear_speed, hs.nu))  # fmt: skip
 
@@ -247,9 +245,8 @@ class PlasticLaw:
 
     def yield_speed_m_s(self) -> float:
         """The speed ``w`` from which the contact yields, m/s."""
-        c = _contact(self.si)
-        v = yield_speed(c.law.E_star, c.law.R, self.reduced_p_y, c.mass)
-        return v * self.si.speed_scale_m_s
+        law, mass = contact_scales(self.si)  # no modes needed
+        return yield_speed(law.E_star, law.R, self.reduced_p_y, mass) * self.si.speed_scale_m_s
 
     @property
     def mechanisms(self) -> list[str]:
