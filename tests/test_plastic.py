@@ -494,3 +494,16 @@ def test_too_many_speeds_are_refused_before_any_work(capsys):
     code, _, err = _law(capsys, "--against", "grain", "--partner-radius-ratio", "3",
                         "--speed", *(str(1e-4 * (i + 1)) for i in range(7000)))  # fmt: skip
     one_line_error(code, err, "7000 speeds", "low-speed route", "at most 6000 speeds")
+
+
+def test_figure_main_parses_makes_the_folder_and_draws(tmp_path, capsys):
+    # The shared command line of the figure modules (reproduction.figures._style.figure_main).
+    from restitution.reproduction.figures._style import figure_main
+
+    drawn = []
+    figure_main(["--figures", str(tmp_path / "new"), "--nu", "0.2", "0.4"], "test",
+                lambda args: f"f_{len(args.nu)}.png",
+                lambda args, path: drawn.append((args.nu, path)), nu=([0.3], "nu"))  # fmt: skip
+    assert drawn == [([0.2, 0.4], tmp_path / "new" / "f_2.png")]
+    assert (tmp_path / "new").is_dir()
+    assert capsys.readouterr().out.strip() == f"wrote {tmp_path / 'new' / 'f_2.png'}"

@@ -1,10 +1,11 @@
-"""Shared figure furniture: notes printed under the axes (e.g. "quick run")."""
+"""Shared figure furniture: notes printed under the axes (e.g. "quick run"), and the command line
+every figure module's ``main`` offers (``--figures DIR``)."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
-__all__ = ["QUICK_NOTE", "add_notes", "limits_and_legends"]
+__all__ = ["QUICK_NOTE", "add_notes", "figure_main", "limits_and_legends"]
 
 QUICK_NOTE = "QUICK RUN: coarse grids, numbers not converged"
 """The note every figure of a quick paper run carries."""
@@ -54,3 +55,32 @@ def limits_and_legends(ax, limit_inf, solid: str, dashed: str, n_speeds: int) ->
     ax.add_artist(first)
     ax.legend(title=r"$v_i/c$", fontsize=8, title_fontsize=8, loc="upper left",
               bbox_to_anchor=(1.01, 1.0), ncol=1 if n_speeds <= 9 else 2)  # fmt: skip
+
+
+def figure_main(
+    argv,
+    description: str,
+    file_name: Callable | str,
+    draw: Callable,
+    *,
+    nu: tuple[float | list[float], str] | None = None,
+) -> None:
+    """The ``main`` of a figure module: ``--figures DIR`` (created if missing), an optional
+    ``--nu`` (``nu = (default, help)``; a list default takes several values), then
+    ``draw(args, path)`` with ``path = DIR / file_name`` (``file_name(args)`` when callable),
+    and ``wrote PATH`` on stdout."""
+    import argparse
+    from pathlib import Path
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--figures", required=True, help="directory for the PNG")
+    if nu is not None:
+        default, help_text = nu
+        many = {"nargs": "+"} if isinstance(default, list) else {}
+        parser.add_argument("--nu", type=float, default=default, help=help_text, **many)
+    args = parser.parse_args(argv)
+    out = Path(args.figures)
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / (file_name(args) if callable(file_name) else file_name)
+    draw(args, path)
+    print(f"wrote {path}")

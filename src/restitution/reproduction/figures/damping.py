@@ -19,7 +19,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["MATERIAL", "MEASURED", "DampedCurve", "compute", "main", "plot"]
 
@@ -109,17 +109,12 @@ def plot(curves: tuple[DampedCurve, ...], path=None):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.damping --figures DIR``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw epsilon(w) of damping steel grains.")
-    parser.add_argument("--figures", required=True, help="directory for damping_steel.png")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "damping_steel.png"
-    plot(compute(), path)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw epsilon(w) of damping steel grains.",
+        "damping_steel.png",
+        lambda args, path: plot(compute(), path),
+    )
 
 
 if __name__ == "__main__":

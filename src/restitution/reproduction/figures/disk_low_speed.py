@@ -27,7 +27,7 @@ from restitution.laws.law import law
 from restitution.quasistatic.hertz import contact_law
 from restitution.quasistatic.rayleigh import rayleigh_energy
 from restitution.quasistatic.slow_disk import asymptotic_loss
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["SlowDisk", "compute", "main", "plot"]
 
@@ -146,18 +146,13 @@ def plot(slow: list[SlowDisk], path=None, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.disk_low_speed --figures DIR``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw the disk's slow losses (shipped laws).")
-    parser.add_argument("--figures", required=True, help="directory for the PNG")
-    parser.add_argument("--nu", type=float, nargs="+", default=[0.33, 0.9], help="2D nu")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "disk_low_speed.png"
-    plot([compute(nu) for nu in args.nu], path)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw the disk's slow losses (shipped laws).",
+        "disk_low_speed.png",
+        lambda args, path: plot([compute(nu) for nu in args.nu], path),
+        nu=([0.33, 0.9], "2D nu"),
+    )
 
 
 if __name__ == "__main__":

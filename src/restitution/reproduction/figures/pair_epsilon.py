@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.atomic import replacing
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["RATIOS", "PairCurve", "compute", "main", "plot"]
 
@@ -159,18 +159,13 @@ def plot(curves: tuple[PairCurve, ...], path=None, nu: float = 0.33, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.pair_epsilon --figures DIR``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw the laws of two disks (shipped laws).")
-    parser.add_argument("--figures", required=True, help="directory for pair_epsilon.png")
-    parser.add_argument("--nu", type=float, default=0.33, help="2D Poisson number (0.33)")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / f"pair_epsilon_nu{args.nu:g}.png"
-    plot(compute(args.nu), path, nu=args.nu)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw the laws of two disks (shipped laws).",
+        lambda args: f"pair_epsilon_nu{args.nu:g}.png",
+        lambda args, path: plot(compute(args.nu), path, nu=args.nu),
+        nu=(0.33, "2D Poisson number (0.33)"),
+    )
 
 
 if __name__ == "__main__":

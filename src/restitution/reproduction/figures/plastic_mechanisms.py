@@ -20,7 +20,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["MechanismCurves", "compute", "main", "plot"]
 
@@ -127,17 +127,12 @@ def plot(c: MechanismCurves, path=None, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.plastic_mechanisms --figures DIR``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw a steel ball's loss mechanisms.")
-    parser.add_argument("--figures", required=True, help="directory for the PNG")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "plastic_mechanisms_steel.png"
-    plot(compute(), path)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw a steel ball's loss mechanisms.",
+        "plastic_mechanisms_steel.png",
+        lambda args, path: plot(compute(), path),
+    )
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.wall import HalfSpace, Plate
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["ThicknessCurve", "compute", "main", "plot"]
 
@@ -118,17 +118,12 @@ def plot(c: ThicknessCurve, path=None, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.plate_thickness --figures DIR``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw epsilon against plate thickness.")
-    parser.add_argument("--figures", required=True, help="directory for the PNG")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "plate_thickness_steel_glass.png"
-    plot(compute(), path)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw epsilon against plate thickness.",
+        "plate_thickness_steel_glass.png",
+        lambda args, path: plot(compute(), path),
+    )
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ import numpy as np
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.laws.si_law import si_law
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 from restitution.status import Status
 
 __all__ = ["MATERIALS", "SICurve", "compute", "main", "plot"]
@@ -129,17 +129,12 @@ def plot(curves: tuple[SICurve, ...], path=None, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.sphere_cylinder --figures DIR``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw spheres beside cylinders (shipped laws).")
-    parser.add_argument("--figures", required=True, help="directory for sphere_cylinder.png")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "sphere_cylinder.png"
-    plot(compute(), path)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw spheres beside cylinders (shipped laws).",
+        "sphere_cylinder.png",
+        lambda args, path: plot(compute(), path),
+    )
 
 
 if __name__ == "__main__":

@@ -22,7 +22,7 @@ from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.fem.reference import load_reference
 from restitution.laws.law import law
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["SlowSphere", "compute", "main", "plot"]
 
@@ -126,18 +126,13 @@ def plot(s: SlowSphere, path=None, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.sphere_low_speed --figures DIR [--nu NU]``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw the sphere's slow losses (shipped laws).")
-    parser.add_argument("--figures", required=True, help="directory for the PNG")
-    parser.add_argument("--nu", type=float, default=0.3, help="shipped sphere law (3D nu)")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / f"sphere_low_speed_nu{args.nu:g}.png"
-    plot(compute(args.nu), path)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw the sphere's slow losses (shipped laws).",
+        lambda args: f"sphere_low_speed_nu{args.nu:g}.png",
+        lambda args, path: plot(compute(args.nu), path),
+        nu=(0.3, "shipped sphere law (3D nu)"),
+    )
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ from restitution.atomic import replacing
 from restitution.bodies.pair import Partner
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.laws.law import law
-from restitution.reproduction.figures._style import add_notes
+from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["PairCurve", "compute", "main", "plot"]
 
@@ -110,18 +110,13 @@ def plot(curves: list[PairCurve], path=None, nu: float = 0.3, notes=()):
 
 def main(argv=None) -> None:
     """``python -m restitution.reproduction.figures.sphere_pairs --figures DIR [--nu NU]``."""
-    import argparse
-    from pathlib import Path
-
-    parser = argparse.ArgumentParser(description="Draw two spheres' losses (shipped laws).")
-    parser.add_argument("--figures", required=True, help="directory for the PNG")
-    parser.add_argument("--nu", type=float, default=0.3, help="shipped laws' 3D nu")
-    args = parser.parse_args(argv)
-    out = Path(args.figures)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / f"sphere_pairs_nu{args.nu:g}.png"
-    plot(compute(args.nu), path, args.nu)
-    print(f"wrote {path}")
+    figure_main(
+        argv,
+        "Draw two spheres' losses (shipped laws).",
+        lambda args: f"sphere_pairs_nu{args.nu:g}.png",
+        lambda args, path: plot(compute(args.nu), path, args.nu),
+        nu=(0.3, "shipped laws' 3D nu"),
+    )
 
 
 if __name__ == "__main__":
