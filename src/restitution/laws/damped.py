@@ -399,9 +399,11 @@ class DampedLaw:
         metadata = {**damped.metadata, "source": source, "points": records}
         return SILaw(self.si.grain, self.si.against, replace(damped, metadata=metadata))
 
-    def to_dict(self, speeds_m_s) -> dict:
+    def to_dict(self, speeds_m_s, points=None) -> dict:
         """JSON of ``restitution law`` with damping: the elastic law's, with the relaxation
-        time and, per point, ``epsilon_elastic`` and ``epsilon_viscous`` beside ``epsilon``."""
+        time and, per point, ``epsilon_elastic`` and ``epsilon_viscous`` beside ``epsilon``
+        (``points``: these, computed and flagged before by :func:`restitution.laws.mechanisms.
+        flag_points`, instead of integrating their viscous collisions again)."""
         d = self.si.to_dict(speeds_m_s)
         d["damping"] = {
             "model": "Kelvin-Voigt, one relaxation time (viscosities = tau x moduli); viscous "
@@ -415,9 +417,10 @@ class DampedLaw:
             if self.measured is None
             else {"epsilon": self.measured[0], "speed_m_s": self.measured[1]},
         }
-        points, bound = flag_points(self.si, self.points(speeds_m_s))
+        if points is None:
+            points, _ = flag_points(self.si, self.points(speeds_m_s))
+        # The elastic law's JSON holds the speed from which plastic flow is expected.
         d.update(mechanism_fields([*law_mechanisms(self.si.law), "viscous"]))
-        d["plastic_flow_expected_from_m_s"] = bound
         d["points"] = [p.to_dict() for p in points]
         return d
 

@@ -85,8 +85,10 @@ class LawAnswer:
         speeds = list(self.request.speeds)
         if self.plastic is not None:
             out = self.plastic.to_dict(speeds, self.points)
+        elif self.damped is not None:
+            out = self.damped.to_dict(speeds, self.points)
         else:
-            out = (self.damped or self.law).to_dict(speeds)
+            out = self.law.to_dict(speeds)
             out["points"] = [p.to_dict() for p in self.points]
         if self.constant is not None:
             out["constant"] = self.constant.to_dict()
