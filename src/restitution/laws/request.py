@@ -326,6 +326,7 @@ class LawRequest:
         if self.reference_speed is not None and self.maxwell_temperature is not None:
             raise InputError("give --reference-speed or --maxwell-temperature, not both")
         self._check_ratio()
+        self._check_damping()
         other = self.partner_grain
         if other is not None and self.damped:
             raise InputError(
@@ -492,6 +493,31 @@ class LawRequest:
         that fixes it."""
         given = (self.yield_stress, self.partner_yield_stress, self.limiting_pressure)
         return given != (None,) * 3 or self.fixes_limiting_pressure or self.fixes_both
+
+    def _check_damping(self) -> None:
+        """The damping options together: a measurement is an epsilon and a speed; a relaxation
+        time needs the radius (and a radius alone means nothing, but a plate's or an elastic
+        wall's, whose checks say so); a measurement that fixes the relaxation time and the
+        relaxation time given are one too many."""
+        if (self.measured_epsilon is None) != (self.measured_speed is None):
+            raise InputError("--measured-epsilon and --measured-speed go together; give both")
+        if self.relaxation_time is not None and self.radius is None:
+            raise InputError(
+                "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
+            )
+        if (
+            self.radius is not None
+            and self.relaxation_time is None
+            and (self.wall_thickness is None and self.wall_E is None)
+        ):
+            raise InputError("--radius goes with --relaxation-time; give both or neither")
+        if (self.relaxation_time is not None and self.measured_epsilon is not None
+                and self.measured_fixes not in ("limiting-pressure", "both")):  # fmt: skip
+            raise InputError(
+                "give --relaxation-time (with --radius) or --measured-epsilon with "
+                "--measured-speed, not both (or let the measurement fix the limiting pressure: "
+                "--measured-fixes limiting-pressure)"
+            )
 
     def _check_plastic(self) -> None:
         asked = self.measured_fixes is not None or self.fixes_both

@@ -219,23 +219,9 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
     )
 
     _check_speed_count(len(r.speeds), PLASTIC_SECONDS_PER_SPEED, "plastic flow on one pulse")
-    tau = 0.0
-    if r.relaxation_time is not None:
-        if r.radius is None:
-            raise InputError(
-                "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
-            )
-        tau = r.relaxation_time * s.grain.c_m_s / r.radius
-    elif r.radius is not None and r.wall_thickness is None:
-        raise InputError("--radius goes with --relaxation-time; give both or neither")
-    measured = None not in (r.measured_epsilon, r.measured_speed)
-    if not measured and (r.measured_epsilon, r.measured_speed) != (None, None):
-        raise InputError("--measured-epsilon and --measured-speed go together; give both")
-    if measured and not r.fixes_limiting_pressure and r.relaxation_time is not None:
-        raise InputError(
-            "the measurement fixes the relaxation time, which --relaxation-time gives too: "
-            "leave one out, or add --measured-fixes limiting-pressure"
-        )
+    # The request refused what does not go together (LawRequest._check_damping).
+    tau = 0.0 if r.relaxation_time is None else r.relaxation_time * s.grain.c_m_s / r.radius
+    measured = r.measured_epsilon is not None
     if r.fixes_both:
         note("note: fitting the relaxation time and the limiting pressure to the two "
              "measurements (nested root searches of the contact; half a minute)")  # fmt: skip
@@ -305,20 +291,7 @@ def _identical(E, nu, rho, geometry, path, option) -> SILaw:
 def _damped(r: LawRequest, s: SILaw, progress: Progress) -> DampedLaw | None:
     """The damped law the request asks for, or ``None`` without damping options."""
     if not r.damped:
-        if r.radius is not None:
-            raise InputError("--radius goes with --relaxation-time; give both or neither")
-        return None
-    if r.relaxation_time is not None and (r.measured_epsilon, r.measured_speed) != (None, None):
-        raise InputError(
-            "give --relaxation-time (with --radius) or --measured-epsilon with --measured-speed, "
-            "not both"
-        )
-    if r.relaxation_time is None and None in (r.measured_epsilon, r.measured_speed):
-        raise InputError("--measured-epsilon and --measured-speed go together; give both")
-    if r.relaxation_time is not None and r.radius is None:
-        raise InputError(
-            "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
-        )
+        return None  # the request refused damping options that do not go together
     return damped_law(
         s,
         relaxation_time_s=r.relaxation_time,
