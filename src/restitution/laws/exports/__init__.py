@@ -16,9 +16,11 @@ source and the package version. One module per form:
   every point within its error (and only there).
 * :mod:`~restitution.laws.exports.pchip`: :func:`pchip_table`: the law as a monotone
   piecewise-cubic table in m/s, which :mod:`~restitution.laws.exports.c_fortran`'s
-  :func:`c_header` (C99) and :func:`fortran_include` (Fortran 2003) evaluate on the computed
-  speeds, returning :data:`OUTSIDE` (``-1``) outside them; their headers state the range and
-  the maximum deviation from the law in its error bars.
+  :func:`c_header` (C99) and :func:`fortran_include` (Fortran 2003) evaluate at every speed a
+  grain meets: the table on the computed speeds, the slow-impact continuation
+  (:mod:`~restitution.laws.exports.below`) below them down to ``w = 0``, NaN with a status
+  above them (:class:`TableStatus`); their headers state the range, the maximum deviation from
+  the law in its error bars and the continuation's error bound.
 * :mod:`~restitution.laws.exports.constants`: :func:`constant_at` (epsilon at a reference
   speed) and :func:`maxwell_constant` (averaged over the impact speeds of a gas at a granular
   temperature; :func:`maxwell_temperatures` the temperatures a law averages): one number for
@@ -42,6 +44,7 @@ relative normal speed; every header says so (:attr:`SILaw.against_meaning`).
 
 from __future__ import annotations
 
+from restitution.laws.exports.below import SlowContinuation, slow_continuation
 from restitution.laws.exports.c_fortran import c_header, fortran_include
 from restitution.laws.exports.closed_form import ClosedForm, fit_closed_form
 from restitution.laws.exports.constants import (
@@ -57,7 +60,7 @@ from restitution.laws.exports.dem.liggghts import liggghts_snippet
 from restitution.laws.exports.dem.mercurydpm import mercurydpm_snippet
 from restitution.laws.exports.dem.yade import yade_snippet
 from restitution.laws.exports.folder import ExportFolder, write_folder
-from restitution.laws.exports.pchip import OUTSIDE, PchipTable, pchip_table
+from restitution.laws.exports.pchip import PchipTable, TableStatus, pchip_table
 from restitution.laws.exports.table import speed_table, write_csv, write_table
 from restitution.laws.exports.type_pairs import (
     SAME_SIZE_NOTE,
@@ -70,12 +73,13 @@ __all__ = [
     "DEM_TARGETS",
     "SAME_SIZE_NOTE",
     "TWO_MATERIALS_NOTE",
-    "OUTSIDE",
     "ClosedForm",
     "Constant",
     "DemTarget",
     "ExportFolder",
     "PchipTable",
+    "SlowContinuation",
+    "TableStatus",
     "TypePairs",
     "c_header",
     "constant_at",
@@ -89,6 +93,7 @@ __all__ = [
     "mercurydpm_snippet",
     "pchip_table",
     "register_dem_target",
+    "slow_continuation",
     "speed_table",
     "type_pair_constants",
     "write_csv",

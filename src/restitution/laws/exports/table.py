@@ -1,8 +1,12 @@
 """The law as a table of speeds: ``speed_m_s epsilon [epsilon_err]`` and its CSV.
 
 A uniform grid of the interpolant joined with the computed speeds, for codes that interpolate
-linearly between ``[v, e]`` pairs (AcuTrace style). Speeds in m/s, epsilon and its error
-dimensionless; the CSV adds ``v_over_c`` (reduced speed) and the status of every row.
+linearly between ``[v, e]`` pairs (AcuTrace style). Below the lowest computed speed the table
+carries rows of the slow-impact continuation (:mod:`~restitution.laws.exports.below`) down to
+``w = 0``, so that a code interpolating it has a value at every speed up to the law's largest;
+their error column is the continuation's bound. Speeds in m/s, epsilon and its error
+dimensionless; the CSV (the law's own points, from its lowest served speed) adds ``v_over_c``
+(reduced speed) and the status of every row.
 """
 
 from __future__ import annotations
@@ -16,9 +20,14 @@ import numpy as np
 from restitution import atomic
 from restitution.errors import InputError
 from restitution.laws.exports._heading import _header
+from restitution.laws.exports.below import slow_continuation
 from restitution.laws.si_law import SILaw
 
 __all__ = ["speed_table", "write_csv", "write_table"]
+
+BELOW_DECADES = 6
+"""Rows of the continuation below the lowest computed speed ``w0``: at ``w0 10^-k``,
+``k = 1 ... BELOW_DECADES``, and at ``w = 0``."""
 
 
 def _grid(s: SILaw, points: int) -> np.ndarray:
@@ -36,7 +45,8 @@ def _grid(s: SILaw, points: int) -> np.ndarray:
 
 def speed_table(s: SILaw, points: int = 61) -> np.ndarray:
     """``[speed_m_s, epsilon, epsilon_err]`` on a uniform grid of ``[0, w_max]`` joined with
-    the computed speeds (from the lowest computed speed if the law refuses lower ones).
+    the computed speeds (from the lowest computed speed if the law refuses lower ones), after
+    rows of the slow-impact continuation at ``w0 10^-k`` (:data:`BELOW_DECADES`) and ``w = 0``.
 
     Parameters
     ----------
@@ -51,7 +61,10 @@ def speed_table(s: SILaw, points: int = 61) -> np.ndarray:
         ``K >= points`` rows.
     """
     w = _grid(s, points)
-    return np.column_stack([w, s.epsilon(w), s.epsilon_err(w)])
+    rows = np.column_stack([w, s.epsilon(w), s.epsilon_err(w)])
+    below = slow_continuation(s, float(w[0]), float(rows[0, 1]))
+    slow = np.concatenate([[0.0], w[0] * 10.0 ** -np.arange(BELOW_DECADES, 0, -1)])
+    return np.vstack([np.column_stack([slow, below(slow), below.error_bound(slow)]), rows])
 
 
 def write_table(s: SILaw, path: str | os.PathLike, *, points: int = 61, columns: int = 3) -> Path:
@@ -64,7 +77,12 @@ def write_table(s: SILaw, path: str | os.PathLike, *, points: int = 61, columns:
         raise InputError(f"a table has 2 or 3 columns, not {columns}")
     table = speed_table(s, points)[:, :columns]
     names = ["speed_m_s", "epsilon", "epsilon_err"][:columns]
-    header = "\n".join([*_header(s), "columns: " + "  ".join(names) + " (piecewise linear)"])
+    below = slow_continuation(s, float(table[BELOW_DECADES + 1, 0]), table[BELOW_DECADES + 1, 1])
+    header = "\n".join([
+        *_header(s),
+        f"rows {below.describe()} (not computed points; the error column there is that bound)",
+        "columns: " + "  ".join(names) + " (piecewise linear)",
+    ])  # fmt: skip
     with atomic.replacing(path) as tmp:
         np.savetxt(tmp, table, fmt="%.8g", header=header, comments="# ")
     return Path(path)
