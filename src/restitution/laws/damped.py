@@ -100,15 +100,14 @@ def _contact(si: SILaw):
     """The quasistatic contact law and mass of ``si``'s body (reduced units): a body on the
     wall takes its kind's law (:attr:`~restitution.bodies.kinds.BodyKind.quasistatic_law`) and
     its own mass (``None``: the law's body's), a pair its law and reduced mass."""
-    from restitution.quasistatic.hertz_pair import pair_contact_law, pair_mass
-    from restitution.quasistatic.pulse import contact_law_for
+    from restitution.quasistatic.pulse import contact_law_for, pair_contact_for
 
     nu = float(si.law.nu)
     pair = si.law.partner
-    if pair is not None:
-        r = pair.radius_ratio
-        return pair_contact_law(nu, radius_ratio=r), pair_mass(r)
     kind = si.grain.kind
+    if pair is not None:  # the pair's own law and reduced mass, of its kind (issue 44: the
+        # sphere pair took the disk pair's law and 2D mass until a LAMMPS run disagreed)
+        return pair_contact_for(kind.geometry, nu, pair)
     return contact_law_for(kind.geometry, nu, kind.quasistatic_law), None
 
 

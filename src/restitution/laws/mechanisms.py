@@ -75,11 +75,8 @@ def contact_scales(si):
     SILaw` of spheres) in its reduced units: on a rigid wall, on an elastic half-space (``E*``
     of both), or two spheres (their ``E*``, ``R_eff`` and reduced mass; identical spheres are
     served as the wall at ``w/2``). :class:`InputError` for another body or a plate."""
-    from restitution.quasistatic.hertz_sphere import (
-        SPHERE_MASS,
-        sphere_contact_law,
-        sphere_pair_contact_law,
-    )
+    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
+    from restitution.quasistatic.pulse import pair_contact_for
 
     if si.grain.body != SPHERE.name:
         raise InputError(
@@ -90,10 +87,7 @@ def contact_scales(si):
     nu = float(si.law.nu)
     pair = si.law.partner
     if pair is not None:
-        law = sphere_pair_contact_law(nu, pair.nu2(nu), radius_ratio=pair.radius_ratio,
-                                      modulus_ratio=pair.modulus_ratio)  # fmt: skip
-        m2 = SPHERE_MASS * pair.density_ratio * pair.radius_ratio**3
-        return law, SPHERE_MASS * m2 / (SPHERE_MASS + m2)
+        return pair_contact_for(SPHERE.geometry, nu, pair)
     wall = wall_of(si.law)
     if wall is None:
         return sphere_contact_law(nu), SPHERE_MASS

@@ -61,6 +61,7 @@ __all__ = [
     "drive_asymptote",
     "sphere_contact_law",
     "sphere_pair_contact_law",
+    "sphere_pair_mass",
     "sphere_quasistatic_collision",
     "sphere_quasistatic_trajectory",
 ]
@@ -201,6 +202,16 @@ def sphere_pair_contact_law(
         name=f"hertz (two spheres, R2/R1 = {r2:g}, E2/E1 = {float(modulus_ratio):g})",
         effective_modulus=e_star,
     )
+
+
+def sphere_pair_mass(radius_ratio: float = 1.0, density_ratio: float = 1.0) -> float:
+    """The reduced mass ``m1 m2 / (m1 + m2)`` of two spheres, ``rho1 R1^3`` (``m_i = (4/3) pi
+    rho_i R_i^3``)."""
+    for name, value in (("radius_ratio", radius_ratio), ("density_ratio", density_ratio)):
+        if not (math.isfinite(value) and value > 0.0):
+            raise InputError(f"{name} must be a positive number, got {value}")
+    m2 = SPHERE_MASS * float(density_ratio) * float(radius_ratio) ** 3
+    return SPHERE_MASS * m2 / (SPHERE_MASS + m2)
 
 
 # ============================================================================================

@@ -28,15 +28,19 @@ import numpy as np
 
 from restitution.errors import InputError
 from restitution.quasistatic.hertz import LAWS, HertzLaw, contact_law, quasistatic_trajectory
+from restitution.quasistatic.hertz_pair import pair_contact_law, pair_mass
 from restitution.quasistatic.hertz_sphere import (
     SPHERE_MASS,
     SphereHertzLaw,
     sphere_contact_law,
+    sphere_pair_contact_law,
+    sphere_pair_mass,
     sphere_quasistatic_trajectory,
 )
 
 __all__ = [
     "THEORIES",
+    "pair_contact_for",
     "ContactLaw",
     "ForcePulse",
     "QuasistaticTheory",
@@ -85,6 +89,12 @@ class QuasistaticTheory:
         ``trajectory(law, v, mass=...)`` -> :class:`ForcePulse`.
     mass : float
         The body's mass in reduced units (the default of the trajectory).
+    make_pair_law : callable
+        ``make_pair_law(nu, partner)`` -> the law of two such bodies pressed together (the
+        second of :class:`~restitution.bodies.pair.partner.Partner`'s size and material), in
+        the first body's units.
+    pair_mass : callable
+        ``pair_mass(partner)`` -> their reduced mass ``m1 m2 / (m1 + m2)``, reduced units.
     """
 
     law_type: type
@@ -93,6 +103,8 @@ class QuasistaticTheory:
     make_law: Callable[[float, str], ContactLaw]
     trajectory: Callable[..., ForcePulse]
     mass: float
+    make_pair_law: Callable[..., ContactLaw]
+    pair_mass: Callable[..., float]
 
 
 THEORIES: dict[str, QuasistaticTheory] = {
@@ -103,6 +115,10 @@ THEORIES: dict[str, QuasistaticTheory] = {
         make_law=lambda nu, name: contact_law(nu, name),
         trajectory=quasistatic_trajectory,
         mass=math.pi,
+        make_pair_law=lambda nu, p: pair_contact_law(
+            nu, p.nu2(nu), radius_ratio=p.radius_ratio, modulus_ratio=p.modulus_ratio
+        ),
+        pair_mass=lambda p: pair_mass(p.radius_ratio, p.density_ratio),
     ),
     SphereHertzLaw.geometry: QuasistaticTheory(
         law_type=SphereHertzLaw,
@@ -111,9 +127,20 @@ THEORIES: dict[str, QuasistaticTheory] = {
         make_law=lambda nu, name: sphere_contact_law(nu),
         trajectory=sphere_quasistatic_trajectory,
         mass=SPHERE_MASS,
+        make_pair_law=lambda nu, p: sphere_pair_contact_law(
+            nu, p.nu2(nu), radius_ratio=p.radius_ratio, modulus_ratio=p.modulus_ratio
+        ),
+        pair_mass=lambda p: sphere_pair_mass(p.radius_ratio, p.density_ratio),
     ),
 }
 """The quasistatic theory of every geometry that has one."""
+
+
+def pair_contact_for(geometry: str, nu: float, partner) -> tuple[ContactLaw, float]:
+    """``(law, reduced mass)`` of a body of ``geometry`` (Poisson number ``nu``) pressed against
+    its ``partner`` (:class:`~restitution.bodies.pair.partner.Partner`), first body's units."""
+    theory = _theory(geometry)
+    return theory.make_pair_law(nu, partner), theory.pair_mass(partner)
 
 
 def _theory(geometry: str) -> QuasistaticTheory:
