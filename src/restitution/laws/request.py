@@ -228,8 +228,10 @@ class LawRequest:
         default=None,
         metadata=_option(
             "--radius",
-            "Radius of the grain, m (with --relaxation-time; for two sizes the smaller "
-            "grain's). The elastic law needs no radius; the viscous loss depends on tau c / R.",
+            "Radius of the grain, m (with --relaxation-time, or with --measured-epsilon to "
+            "state tau in seconds and export the DEM codes' viscoelastic contact; for two "
+            "sizes the smaller grain's). The elastic law needs no radius; the viscous loss "
+            "depends on tau c / R.",
         ),
     )
     yield_stress: float | None = field(
@@ -508,9 +510,13 @@ class LawRequest:
         if (
             self.radius is not None
             and self.relaxation_time is None
+            and self.measured_epsilon is None
             and (self.wall_thickness is None and self.wall_E is None)
         ):
-            raise InputError("--radius goes with --relaxation-time; give both or neither")
+            raise InputError(
+                "--radius goes with --relaxation-time or --measured-epsilon (damping); give "
+                "damping or leave out --radius"
+            )
         if (self.relaxation_time is not None and self.measured_epsilon is not None
                 and self.measured_fixes not in ("limiting-pressure", "both")):  # fmt: skip
             raise InputError(

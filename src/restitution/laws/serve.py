@@ -177,11 +177,27 @@ def serve(
     constant, pairs = _constants(r, s)
     written: tuple = ()
     if r.export_dir is not None:
-        folder = exports.write_folder(s, pairs or constant, r.export_dir)
+        model = _viscoelastic(r, damped, note)
+        folder = exports.write_folder(s, pairs or constant, r.export_dir, model)
         if folder.no_closed_form is not None:
             note(f"note: no closed form written: {folder.no_closed_form}")
         written = tuple(folder.paths)
     return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
+
+
+def _viscoelastic(r: LawRequest, damped: DampedLaw | None, note):
+    """The damped sphere law as the DEM codes' viscoelastic model for the exports
+    (:func:`restitution.laws.exports.viscoelastic.viscoelastic_model`, the part it drops at the
+    asked speeds), or ``None`` (no damping, or a body or pair it does not describe: noted)."""
+    if damped is None:
+        return None
+    from restitution.laws.exports.viscoelastic import viscoelastic_model
+
+    try:
+        return viscoelastic_model(damped, r.speeds)
+    except InputError as exc:
+        note(f"note: no viscoelastic DEM snippets: {exc}")
+        return None
 
 
 PLASTIC_SECONDS_PER_SPEED = 2.0

@@ -3,8 +3,11 @@
 :func:`write_folder` writes, into one folder, the table (``epsilon_table.txt``), the CSV
 (``epsilon.csv``), the closed form where it follows the points (``epsilon_closed_form.json``),
 the C header and the Fortran include that evaluate the law's table (``epsilon.h``,
-``epsilon.f90``) and, given a constant, one snippet per registered DEM target
-(:data:`~restitution.laws.exports.dem.DEM_TARGETS`, ``epsilon_<file_name>``). Speeds in m/s,
+``epsilon.f90``) and, given a constant or a damped sphere law's viscoelastic model
+(:class:`~restitution.laws.exports.viscoelastic.Viscoelastic`), one snippet per registered DEM
+target (:data:`~restitution.laws.exports.dem.DEM_TARGETS`, ``epsilon_<file_name>``): the
+code's own viscoelastic contact where it has one and a model is given, else the constant.
+Speeds in m/s,
 every file in SI units; each file is written whole or not at all (:mod:`restitution.atomic`).
 """
 
@@ -46,9 +49,13 @@ class ExportFolder:
     no_closed_form: str | None
 
 
-def write_folder(s: SILaw, constant: Constant | TypePairs | None, out: Path) -> ExportFolder:
+def write_folder(
+    s: SILaw, constant: Constant | TypePairs | None, out: Path, viscoelastic=None
+) -> ExportFolder:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
-    ``TypePairs`` of ``s``), a snippet per registered DEM target into the folder ``out``
+    ``TypePairs`` of ``s``) or ``viscoelastic`` (a damped sphere law's
+    :class:`~restitution.laws.exports.viscoelastic.Viscoelastic`, which a code with its own
+    viscoelastic contact takes instead), a snippet per registered DEM target into ``out``
     (created if missing), as one set (:func:`restitution.atomic.file_set`): a failure leaves
     the folder as it was, and files of an earlier export this one does not write (a closed
     form, snippets) are removed, so the folder holds one law's files only."""
@@ -72,8 +79,13 @@ def write_folder(s: SILaw, constant: Constant | TypePairs | None, out: Path) -> 
         names += [f"{stem}.h", f"{stem}.f90"]
         atomic.write_text(stage / names[-2], c_header(s, fit))
         atomic.write_text(stage / names[-1], fortran_include(s, fit))
-        if constant is not None:
-            for target in DEM_TARGETS.values():
-                names.append(f"{stem}_{target.file_name}")
-                atomic.write_text(stage / names[-1], target.snippet(s, constant))
+        for target in DEM_TARGETS.values():
+            if viscoelastic is not None and target.viscoelastic is not None:
+                text = target.viscoelastic(s, viscoelastic)
+            elif constant is not None:
+                text = target.snippet(s, constant)
+            else:
+                continue
+            names.append(f"{stem}_{target.file_name}")
+            atomic.write_text(stage / names[-1], text)
     return ExportFolder(tuple(out / name for name in names), fit, refusal)

@@ -30,11 +30,17 @@ class DemTarget:
         (:class:`~restitution.laws.si_law.SILaw`) and the constant ``c``
         (:class:`~restitution.laws.exports.constants.Constant`, or the
         :class:`~restitution.laws.exports.type_pairs.TypePairs` of ``s``), SI units.
+    viscoelastic : callable or None
+        ``viscoelastic(s, model) -> str``: the code's input lines that carry a damped sphere
+        law in its own viscoelastic contact
+        (:class:`~restitution.laws.exports.viscoelastic.Viscoelastic`), the velocity dependence
+        instead of a constant; ``None`` when the code has no such model.
     """
 
     name: str
     file_name: str
     snippet: Callable[..., str]
+    viscoelastic: Callable[..., str] | None = None
 
 
 DEM_TARGETS: dict[str, DemTarget] = {}

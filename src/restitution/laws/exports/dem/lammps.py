@@ -6,13 +6,15 @@ restitution; ``units si``. Registers itself as the DEM target ``lammps`` (``lamm
 
 from __future__ import annotations
 
+from restitution.laws.exports._heading import _header
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import _comment, _constants, _grain_of, _particles
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "lammps_snippet"]
+__all__ = ["TARGET", "lammps_snippet", "lammps_viscoelastic"]
 
 
 def _lammps_model(g, eps: float) -> str:
@@ -95,7 +97,60 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     )
 
 
+def lammps_viscoelastic(s: SILaw, model: Viscoelastic) -> str:
+    """Input lines for LAMMPS that carry a damped sphere law natively: ``hertz/material`` with
+    ``damping viscoelastic`` and ``limit_damping``, SI units.
+
+    LAMMPS's viscoelastic damping force is ``eta_n v_n`` with ``eta_n = eta_n0 a m_eff``
+    (``a`` the contact radius, ``m_eff`` the pair's effective mass), so the Kelvin-Voigt force
+    ``A_n a delta'`` (:mod:`~restitution.laws.exports.viscoelastic`, eq. 1) is
+    ``eta_n0 = A_n / m* = 2 tau E* / m*`` (1/(m s)), one per type pair, exact for grains of the
+    radii the model holds for. ``hertz/material E' eta_n0 0.0`` with ``E' = 2 E*``: LAMMPS
+    mixes a pair (and a wall) as ``1/E_eff = (1-nu^2)/E' + (1-nu^2)/E'``, which is ``E*`` at
+    ``nu = 0``. ``limit_damping`` clips the force at zero, the law's end of contact.
+    Frictionless tangential model; replace it with yours.
+    """
+    lines = [*(f"# {line}" for line in _header(s)), *(f"# {x}" for x in model.describe())]
+    lines += [
+        f"# {_particles(s)}",
+        "# eta_n0 = 2 tau E* / m* (1/(m s)) per type pair; hertz/material takes E' = 2 E* and "
+        "nu = 0 (LAMMPS mixes E_eff = E'/2 = E*); limit_damping: no attraction at separation",
+        "# tangential: frictionless here (linear_nohistory 1.0 0.0); put your friction model "
+        "there",
+    ]
+
+    def model_of(pair) -> str:
+        c = model.contacts[pair]
+        eta = model.damping_coefficient(pair) / c.m_eff_kg
+        return (
+            f"hertz/material {2.0 * c.E_star_pa:.10g} {eta:.10g} 0.0 damping viscoelastic "
+            "tangential linear_nohistory 1.0 0.0 limit_damping"
+        )
+
+    if s.against == "wall":
+        lines += [
+            "# needs: units si, atom_style sphere, comm_modify vel yes",
+            "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
+            "wall); grain-grain contacts take the law of two grains (--against grain)",
+            f"fix restitution_wall all wall/gran granular {model_of((1, 0))} zplane 0.0 NULL",
+            "",
+        ]
+        return "\n".join(lines)
+    two = len(model.contacts) > 1
+    needs = ", create_box 2 (type 1 the small grains, type 2 the large)" if two else ""
+    lines += [f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
+              "pair_style granular"]  # fmt: skip
+    for i, j in model.contacts:
+        lines.append(f"pair_coeff {'* *' if not two else f'{i} {j}'} {model_of((i, j))}")
+    return "\n".join([*lines, ""])
+
+
 TARGET = register_dem_target(
-    DemTarget(name="lammps", file_name="lammps.in", snippet=lammps_snippet)
+    DemTarget(
+        name="lammps",
+        file_name="lammps.in",
+        snippet=lammps_snippet,
+        viscoelastic=lammps_viscoelastic,
+    )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""
