@@ -130,7 +130,7 @@ def _argv(inputs: dict) -> list[str]:
              "law_file": "--law-file", "identical_law_file": "--identical-law-file",
              "reference_speed": "--reference-speed",
              "maxwell_temperature": "--maxwell-temperature", "export": "--export",
-             "measured_epsilon": "--measured-epsilon", "measured_speed_m_s": "--measured-speed",
+             "friction": "--friction", "measured_epsilon": "--measured-epsilon", "measured_speed_m_s": "--measured-speed",
              "relaxation_time_s": "--relaxation-time", "radius_m": "--radius",
              "compute": "--compute", "wall_E": "--wall-E", "wall_nu": "--wall-nu",
              "wall_rho": "--wall-rho", "wall_thickness_m": "--wall-thickness",

@@ -195,6 +195,14 @@ class LawRequest:
             "--reference-speed", "Constant for one-number codes: epsilon at this speed, m/s."
         ),
     )
+    friction: float | None = field(
+        default=None,
+        metadata=_option(
+            "--friction",
+            "Sliding friction coefficient mu the DEM snippets of --export set (default none: "
+            "they set mu = 0 and say so); restitution computes only the normal coefficient.",
+        ),
+    )
     maxwell_temperature: float | None = field(
         default=None,
         metadata=_option(
@@ -327,6 +335,12 @@ class LawRequest:
                 object.__setattr__(self, name, Path(value))
         if self.reference_speed is not None and self.maxwell_temperature is not None:
             raise InputError("give --reference-speed or --maxwell-temperature, not both")
+        if self.friction is not None:
+            if not (isinstance(self.friction, int | float) and math.isfinite(self.friction)
+                    and self.friction >= 0.0):  # fmt: skip
+                raise InputError(f"--friction must be a number >= 0, got {self.friction!r}")
+            if self.export_dir is None:
+                raise InputError("--friction goes into the DEM snippets: add --export DIR")
         self._check_ratio()
         self._check_damping()
         other = self.partner_grain
@@ -599,6 +613,7 @@ class LawRequest:
             "partner_identical_law_file": path(self.partner_identical_law_file),
             "reference_speed": self.reference_speed,
             "maxwell_temperature": self.maxwell_temperature, "export": path(self.export_dir),
+            "friction": self.friction,
             "measured_epsilon": self.measured_epsilon,
             "measured_speed_m_s": self.measured_speed,
             "relaxation_time_s": self.relaxation_time, "radius_m": self.radius,

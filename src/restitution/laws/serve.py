@@ -178,7 +178,7 @@ def serve(
     written: tuple = ()
     if r.export_dir is not None:
         model = _viscoelastic(r, damped, note)
-        folder = exports.write_folder(s, pairs or constant, r.export_dir, model)
+        folder = exports.write_folder(s, pairs or constant, r.export_dir, model, r.friction)
         if folder.no_closed_form is not None:
             note(f"note: no closed form written: {folder.no_closed_form}")
         written = tuple(folder.paths)

@@ -13,12 +13,13 @@ every file in SI units; each file is written whole or not at all (:mod:`restitut
 
 from __future__ import annotations
 
+import inspect
 import json
 from dataclasses import dataclass
 from pathlib import Path
 
 from restitution import atomic
-from restitution.errors import RestitutionError
+from restitution.errors import InputError, RestitutionError
 from restitution.laws.exports.c_fortran import c_header, fortran_include
 from restitution.laws.exports.closed_form import ClosedForm, fit_closed_form
 from restitution.laws.exports.constants import Constant
@@ -28,6 +29,17 @@ from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.si_law import SILaw
 
 __all__ = ["ExportFolder", "write_folder"]
+
+
+def _with_friction(target, make, s, what, friction: float) -> str:
+    """``make(s, what, friction=friction)``, refused in one line for a target whose snippet
+    takes no friction."""
+    if "friction" not in inspect.signature(make).parameters:
+        raise InputError(
+            f"the DEM target {target.name!r} sets no friction; leave out --friction, or give "
+            "its snippet a friction argument"
+        )
+    return make(s, what, friction=friction)
 
 
 @dataclass(frozen=True)
@@ -50,7 +62,11 @@ class ExportFolder:
 
 
 def write_folder(
-    s: SILaw, constant: Constant | TypePairs | None, out: Path, viscoelastic=None
+    s: SILaw,
+    constant: Constant | TypePairs | None,
+    out: Path,
+    viscoelastic=None,
+    friction: float | None = None,
 ) -> ExportFolder:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``) or ``viscoelastic`` (a damped sphere law's
@@ -81,11 +97,13 @@ def write_folder(
         atomic.write_text(stage / names[-1], fortran_include(s, fit))
         for target in DEM_TARGETS.values():
             if viscoelastic is not None and target.viscoelastic is not None:
-                text = target.viscoelastic(s, viscoelastic)
+                make, what = target.viscoelastic, viscoelastic
             elif constant is not None:
-                text = target.snippet(s, constant)
+                make, what = target.snippet, constant
             else:
                 continue
+            text = make(s, what) if friction is None else _with_friction(target, make, s, what,
+                                                                         friction)  # fmt: skip
             names.append(f"{stem}_{target.file_name}")
             atomic.write_text(stage / names[-1], text)
     return ExportFolder(tuple(out / name for name in names), fit, refusal)

@@ -62,6 +62,25 @@ def _comment(s: SILaw, c: Constant | TypePairs, mark: str) -> str:
     return "\n".join(f"{mark} {line}" for line in lines)
 
 
+def friction_line(friction: float | None, where: str) -> str:
+    """What the snippet sets for friction, and where the user's goes (``where``: the code's
+    parameter): restitution computes the normal coefficient only."""
+    if friction is None:
+        return (
+            f"friction: mu = 0 here, because none was given (--friction MU sets yours; or edit "
+            f"{where}); restitution computes only the normal coefficient"
+        )
+    return f"friction: mu = {friction:g} as given (--friction), in {where}"
+
+
+WALL_NOTE = (
+    "this is a grain-on-wall law: where the code takes it per particle type or material it "
+    "also acts on grain-grain contacts of those particles, which need the law of two grains "
+    "(--against grain) instead; give them their own type pair"
+)
+"""The warning every wall snippet of a per-type code carries (issue 44)."""
+
+
 def _particles(s: SILaw) -> str:
     """What the DEM code's particles stand for, for the snippets' comments."""
     if s.grain.kind.dimension == 3:

@@ -29,7 +29,9 @@ class DemTarget:
         ``snippet(s, c) -> str``: the code's input lines for the law ``s``
         (:class:`~restitution.laws.si_law.SILaw`) and the constant ``c``
         (:class:`~restitution.laws.exports.constants.Constant`, or the
-        :class:`~restitution.laws.exports.type_pairs.TypePairs` of ``s``), SI units.
+        :class:`~restitution.laws.exports.type_pairs.TypePairs` of ``s``), SI units; with a
+        keyword ``friction`` (Coulomb's ``mu`` or ``None``) when the code's snippet can set
+        the user's friction (all shipped ones do).
     viscoelastic : callable or None
         ``viscoelastic(s, model) -> str``: the code's input lines that carry a damped sphere
         law in its own viscoelastic contact

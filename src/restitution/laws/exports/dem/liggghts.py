@@ -7,7 +7,14 @@ Registers itself as the DEM target ``liggghts`` (``liggghts.in``).
 from __future__ import annotations
 
 from restitution.laws.exports.constants import Constant
-from restitution.laws.exports.dem._common import _comment, _constants, _grain_of, _particles
+from restitution.laws.exports.dem._common import (
+    WALL_NOTE,
+    _comment,
+    _constants,
+    _grain_of,
+    _particles,
+    friction_line,
+)
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.si_law import SILaw
@@ -15,7 +22,7 @@ from restitution.laws.si_law import SILaw
 __all__ = ["TARGET", "liggghts_snippet"]
 
 
-def liggghts_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
     """Input lines for LIGGGHTS (``coefficientRestitution peratomtypepair``): one atom type for
     one constant, two for a :class:`TypePairs` (type 1 the small grains; the matrix row by
     row)."""
@@ -31,12 +38,14 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs) -> str:
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
+            *([f"# {WALL_NOTE}"] if s.against == "wall" else []),
+            f"# {friction_line(friction, 'coefficientFriction')}",
             f"fix m1 all property/global youngsModulus peratomtype {moduli}",
             f"fix m2 all property/global poissonsRatio peratomtype {poisson}",
             f"fix m3 all property/global coefficientRestitution peratomtypepair {n} "
             + " ".join(f"{e:.8f}" for e in matrix),
             f"fix m4 all property/global coefficientFriction peratomtypepair {n} "
-            + " ".join(["0.0"] * (n * n)),
+            + " ".join([repr(float(0.0 if friction is None else friction))] * (n * n)),
             "pair_style gran model hertz tangential history",
             "pair_coeff * *",
             "",

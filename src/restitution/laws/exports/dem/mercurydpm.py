@@ -7,7 +7,13 @@ Density in kg/m^3, epsilon with the user's collision time ``tc`` (s) and the eff
 from __future__ import annotations
 
 from restitution.laws.exports.constants import Constant
-from restitution.laws.exports.dem._common import _comment, _constants, _particles
+from restitution.laws.exports.dem._common import (
+    WALL_NOTE,
+    _comment,
+    _constants,
+    _particles,
+    friction_line,
+)
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.si_law import SILaw
@@ -52,39 +58,100 @@ def _mercury_mass(s: SILaw, c: Constant | TypePairs) -> str:
     return f"{head}; for {which}, {m}"
 
 
-def _mercury_species(name: str, rho: float, eps: float, mass: str) -> list[str]:
+def _mass_expr(s: SILaw, radius: str, rho: float) -> str:
+    """C++ for the mass of a particle of radius ``radius`` (a C++ name) and density ``rho``, as
+    MercuryDPM computes it (``pi r^2 rho`` in a 2D simulation)."""
+    if s.grain.kind.dimension == 3:
+        return f"4.0 / 3.0 * constants::pi * {radius} * {radius} * {radius} * {rho:.8g}"
+    return f"constants::pi * {radius} * {radius} * {rho:.8g}"
+
+
+def _mercury_declarations(s: SILaw, c: Constant | TypePairs) -> list[str]:
+    """Every name the species lines use, declared (issue 44: ``tc``, ``mass``, ``m1``, ``m2``
+    were left undefined): ``tc`` and ``radius`` are the user's to set, the masses follow from
+    them and the densities."""
+    lines = [
+        "// SET tc and radius to your simulation's: they are placeholders so that these lines "
+        "compile; epsilon is exact for any tc (tc sets the species' stiffness)",
+        "const Mdouble tc = 1e-5;  // s: your collision time",
+    ]
+    pair = s.law.partner
+    if pair is None:
+        lines += [
+            "const Mdouble radius = 1e-3;  // m: your grains' radius",
+            f"const Mdouble m = {_mass_expr(s, 'radius', s.grain.rho)};  // kg, one grain",
+            "const Mdouble mass = "
+            + ("m;  // kg, effective mass of two identical grains" if s.against == "grain"
+               else "2.0 * m;  // kg, effective mass of a grain on a wall (m2 infinite)"),
+        ]  # fmt: skip
+        return lines
+    rho2 = s.partner_grain.rho if s.partner_grain is not None else s.grain.rho
+    small = "type 1" if s.partner_grain is not None else "the small grains'"
+    lines += [
+        f"const Mdouble radius = 1e-3;  // m: {small} radius",
+        f"const Mdouble m1 = {_mass_expr(s, 'radius', s.grain.rho)};  // kg",
+        f"const Mdouble m2 = {_mass_expr(s, f'({pair.radius_ratio:.8g} * radius)', rho2)};  // kg",
+    ]
+    if not isinstance(c, TypePairs):
+        lines.append("const Mdouble mass = 2 * m1 * m2 / (m1 + m2);  // kg, effective mass")
+    return lines
+
+
+def _mercury_friction(name: str, friction: float | None) -> list[str]:
+    """The sliding friction of a species, with MercuryDPM's usual sliding stiffness and
+    dissipation (2/7 of the normal ones), when ``friction`` is given."""
+    if friction is None:
+        return []
     return [
-        f"auto {name} = speciesHandler.copyAndAddObject(LinearViscoelasticSpecies());",
-        f"{name}->setDensity({rho:.8g});",
-        f"{name}->setCollisionTimeAndRestitutionCoefficient(tc, {eps:.8f}, {mass});",
+        f"{name}->setSlidingFrictionCoefficient({friction:g});",
+        f"{name}->setSlidingStiffness(2.0 / 7.0 * {name}->getStiffness());",
+        f"{name}->setSlidingDissipation(2.0 / 7.0 * {name}->getDissipation());",
     ]
 
 
-def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+def _mercury_species(
+    name: str, rho: float, eps: float, mass: str, friction: float | None = None
+) -> list[str]:
+    species = "LinearViscoelastic" + ("" if friction is None else "SlidingFriction") + "Species"
+    return [
+        f"auto {name} = speciesHandler.copyAndAddObject({species}());",
+        f"{name}->setDensity({rho:.8g});",
+        f"{name}->setCollisionTimeAndRestitutionCoefficient(tc, {eps:.8f}, {mass});",
+        *_mercury_friction(name, friction),
+    ]
+
+
+def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
     """C++ lines for MercuryDPM (``LinearViscoelasticSpecies``; choose the collision time). A
     :class:`TypePairs` gives a species per type (``species1`` the small grains, ``species2`` the
     large) and their mixed species (``speciesHandler.getMixedObject``)."""
     g = s.grain
     consts = _constants(s, c)
     if len(consts) == 1:
-        body = _mercury_species("species", g.rho, consts[1, 1].epsilon, "mass")
+        body = _mercury_species("species", g.rho, consts[1, 1].epsilon, "mass", friction)
+        if s.law.partner is not None:  # one constant for a pair: the 1-2 contact's
+            body.insert(0, "// the pair's constant (small with large)")
     else:
         two = c.two_materials
         body = [
             "// type 1: this grain's material" if two else "// type 1: the small grains",
-            *_mercury_species("species1", c.grains[1].rho, consts[1, 1].epsilon, "m1"),
+            *_mercury_species("species1", c.grains[1].rho, consts[1, 1].epsilon, "m1", friction),
             "// type 2: the partner's material" if two else "// type 2: the large grains",
-            *_mercury_species("species2", c.grains[2].rho, consts[2, 2].epsilon, "m2"),
+            *_mercury_species("species2", c.grains[2].rho, consts[2, 2].epsilon, "m2", friction),
             "// 1-2: type 1 with type 2" if two else "// 1-2: a small grain with a large one",
             "auto species12 = speciesHandler.getMixedObject(species1, species2);",
             "species12->setCollisionTimeAndRestitutionCoefficient(tc, "
             f"{consts[1, 2].epsilon:.8f}, 2 * m1 * m2 / (m1 + m2));",
+            *_mercury_friction("species12", friction),
         ]
     return "\n".join(
         [
             _comment(s, c, "//"),
             f"// {_particles(s)}",
+            *([f"// {WALL_NOTE}"] if s.against == "wall" else []),
+            f"// {friction_line(friction, 'a sliding-friction species')}",
             f"// tc: your collision time (s); {_mercury_mass(s, c)}",
+            *_mercury_declarations(s, c),
             *body,
             "",
         ]

