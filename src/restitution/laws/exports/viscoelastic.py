@@ -20,6 +20,11 @@ law's epsilon, the native model's (the package's own quasistatic viscous collisi
 codes integrate: :func:`restitution.quasistatic.viscoelastic.viscous_collision`) and their
 difference, so a user sees how large the left-out part is at the speeds of their simulation.
 
+Every contact of the system. (1) with one ``tau`` holds for every contact of the material, so
+one export carries the grains of each size with each other and with a rigid wall (type pairs
+``(i, j)``, the wall ``(i, 0)``), whatever the law's own contact; the part dropped is stated for
+the law's contact (:attr:`Viscoelastic.law_pair`), where the waves are known.
+
 Only spheres (3D Hertz): the codes' viscoelastic models are Hertz's contact, and a disk's or a
 cylinder's contact is not (docs/quasistatic.md); their damped laws reach a DEM code as a
 constant or through the LAMMPS plugin. SI units throughout.
@@ -29,6 +34,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+import numpy as np
 
 from restitution.errors import InputError
 
@@ -52,6 +59,18 @@ class ContactScales:
     E_star_pa: float
     R_eff_m: float
     m_eff_kg: float
+
+    def epsilon(self, tau_s: float, speeds_m_s) -> np.ndarray:
+        """epsilon of (1) at impact speeds ``w`` (m/s): the package's quasistatic viscous
+        collision (:func:`~restitution.quasistatic.viscoelastic.viscous_collision`, DOP853) on
+        this contact's Hertz law in SI units."""
+        from restitution.quasistatic.hertz_sphere import SphereHertzLaw
+        from restitution.quasistatic.viscoelastic import viscous_collision
+
+        law = SphereHertzLaw(nu=0.0, R=self.R_eff_m, name="Hertz, SI units",
+                             effective_modulus=self.E_star_pa)  # fmt: skip
+        w = np.atleast_1d(np.asarray(speeds_m_s, dtype=float))
+        return viscous_collision(law, w, tau_s, mass=self.m_eff_kg).epsilon
 
 
 @dataclass(frozen=True)
@@ -91,7 +110,10 @@ class Viscoelastic:
     relaxation_time_err_s : float
         Its error (an inferred ``tau``; 0 for a given one), s.
     contacts : dict
-        ``(i, j) -> ContactScales`` per pair of particle types; a wall is type pair ``(1, 0)``.
+        ``(i, j) -> ContactScales`` per pair of particle types, the rigid wall as type ``0``:
+        the grains with each other, then each type with the wall.
+    law_pair : tuple of int
+        The law's own contact among them.
     dropped : tuple of DroppedPart
         The law against the model at the asked speeds, for the law's own contact.
     radii_m : dict
@@ -103,9 +125,20 @@ class Viscoelastic:
     relaxation_time_s: float
     relaxation_time_err_s: float
     contacts: dict
+    law_pair: tuple
     dropped: tuple
     radii_m: dict
     density: float
+
+    @property
+    def grain_pairs(self) -> list[tuple[int, int]]:
+        """The type pairs of two grains, in order."""
+        return [pair for pair in self.contacts if pair[1] != 0]
+
+    @property
+    def wall_pairs(self) -> list[tuple[int, int]]:
+        """``(i, 0)`` for each type ``i`` on the wall."""
+        return [pair for pair in self.contacts if pair[1] == 0]
 
     def damping_coefficient(self, pair: tuple[int, int]) -> float:
         """``A_n = 2 tau E*`` (N s/m^2) of a type pair: ``F_diss = A_n a delta'`` (1)."""
@@ -130,9 +163,12 @@ class Viscoelastic:
                 "N s/m^2"
             )
         if self.dropped:
+            i, j = self.law_pair
+            who = f"type {i} on the wall" if j == 0 else f"types {i}-{j}"
             lines.append(
                 "left out: the elastic waves (the grains' vibrations), which this model cannot "
-                "carry; the law's epsilon against the model's, per impact speed:"
+                f"carry; for {who} (the law's contact; the others drop theirs too), the law's "
+                "epsilon against the model's, per impact speed:"
             )
             lines += [
                 f"  w = {d.speed_m_s:.4g} m/s: law {d.epsilon_law:.6f} +- {d.epsilon_law_err:.2g}"
@@ -181,25 +217,26 @@ def viscoelastic_model(damped, speeds_m_s, radius_m: float | None = None) -> Vis
         )
     tau_s = damped.tau * radius / g.c_m_s
     tau_err_s = damped.tau_err * radius / g.c_m_s
-    e_one = g.E / (1.0 - g.nu**2)  # one sphere's E / (1 - nu^2)
-    m1 = _sphere_mass(radius, g.rho)
+    e_one = g.E / (1.0 - g.nu**2)  # one sphere's E / (1 - nu^2): on the rigid wall
+    ratio = 1.0 if pair is None else float(pair.radius_ratio)
+    radii = {1: radius} if ratio == 1.0 else {1: radius, 2: ratio * radius}
+    mass = {t: _sphere_mass(r, g.rho) for t, r in radii.items()}
+    contacts = {}
+    for i in radii:
+        for j in radii:
+            if i <= j:
+                ri, rj, mi, mj = radii[i], radii[j], mass[i], mass[j]
+                contacts[i, j] = ContactScales(e_one / 2.0, ri * rj / (ri + rj),
+                                               mi * mj / (mi + mj))  # fmt: skip
+    for i in radii:
+        contacts[i, 0] = ContactScales(e_one, radii[i], mass[i])
     if si.against == "wall":
-        contacts = {(1, 0): ContactScales(e_one, radius, m1)}
-        radii = {1: radius}
+        law_pair = (1, 0)
     else:
-        ratio = 1.0 if pair is None else float(pair.radius_ratio)
-        r2 = ratio * radius
-        m2 = _sphere_mass(r2, g.rho)
-        contacts = {(1, 1): ContactScales(e_one / 2.0, radius / 2.0, m1 / 2.0)}
-        radii = {1: radius}
-        if ratio != 1.0:
-            contacts[2, 2] = ContactScales(e_one / 2.0, r2 / 2.0, m2 / 2.0)
-            contacts[1, 2] = ContactScales(e_one / 2.0, radius * r2 / (radius + r2),
-                                           m1 * m2 / (m1 + m2))  # fmt: skip
-            radii[2] = r2
+        law_pair = (1, 2) if ratio != 1.0 else (1, 1)
     dropped = tuple(
         DroppedPart(p.speed_m_s, p.epsilon, p.epsilon_err, p.epsilon_viscous)
         for p in damped.points(list(speeds_m_s))
         if p.epsilon is not None and p.epsilon_viscous is not None
     )
-    return Viscoelastic(tau_s, tau_err_s, contacts, dropped, radii, float(g.rho))
+    return Viscoelastic(tau_s, tau_err_s, contacts, law_pair, dropped, radii, float(g.rho))

@@ -156,21 +156,24 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = 
             f"{_tangential(friction)} limit_damping"
         )
 
-    if s.against == "wall":
-        lines += [
-            "# needs: units si, atom_style sphere, comm_modify vel yes",
-            "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
-            "wall); grain-grain contacts take the law of two grains (--against grain)",
-            f"fix restitution_wall all wall/gran granular {model_of((1, 0))} zplane 0.0 NULL",
-            "",
-        ]
-        return "\n".join(lines)
-    two = len(model.contacts) > 1
+    grains, walls = model.grain_pairs, model.wall_pairs
+    two = len(model.radii_m) > 1
     needs = ", create_box 2 (type 1 the small grains, type 2 the large)" if two else ""
-    lines += [f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
-              "pair_style granular"]  # fmt: skip
-    for i, j in model.contacts:
-        lines.append(f"pair_coeff {'* *' if not two else f'{i} {j}'} {model_of((i, j))}")
+    lines += [
+        f"# needs: units si, atom_style sphere, comm_modify vel yes{needs}",
+        "# grains with grains:",
+        "pair_style granular",
+        *(f"pair_coeff {'* *' if not two else f'{i} {j}'} {model_of((i, j))}" for i, j in grains),
+        "# grains on the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
+        "wall), one fix per type (m* is the grain's own mass)",
+    ]
+    for i, _ in walls:
+        group = "all" if not two else f"restitution_type{i}"
+        if two:
+            lines.append(f"group {group} type {i}")
+        lines.append(
+            f"fix restitution_wall{i} {group} wall/gran granular {model_of((i, 0))} zplane 0.0 NULL"
+        )
     return "\n".join([*lines, ""])
 
 
