@@ -175,3 +175,47 @@ def test_one_export_carries_every_contact_of_two_sizes_and_a_wall(tmp_path):
                                        box_types=2))  # fmt: skip
         print(f"{pair}: LAMMPS {runs[1]:.9f}, model {want:.9f}")
         assert abs(runs[1] - want) <= 2 * abs(runs[1] - runs[0]) + 1e-9
+
+
+def test_liggghts_mercurydpm_and_yade_carry_the_same_model():
+    # Not run (none of the three codes is on this machine): their lines hold the mapping of
+    # each code's force (module docs of each target), checked here against the constants.
+    from restitution.laws.exports.dem.liggghts import liggghts_viscoelastic
+    from restitution.laws.exports.dem.mercurydpm import mercurydpm_viscoelastic
+    from restitution.laws.exports.dem.yade import yade_viscoelastic
+
+    d = damped("grain", 2.0)
+    m = viscoelastic_model(d, SPEEDS)
+    tau = m.relaxation_time_s
+    # LIGGGHTS: full 3x3 matrices (types 1, 2 and the wall 3), row by row.
+    lig = liggghts_viscoelastic(d.si, m)
+    order = [(1, 1), (1, 2), (1, 0), (1, 2), (2, 2), (2, 0), (1, 0), (2, 0), None]
+
+    def row(name):
+        found = re.search(rf"^fix m\d all property/global {name} peratomtypepair 3 (.*)$", lig,
+                          re.M)  # fmt: skip
+        return [float(x) for x in found.group(1).split()]
+
+    kn, gamman = row("kn"), row("gamman")
+    for k, pair in enumerate(order):
+        if pair is None:
+            assert kn[k] == gamman[k] == 0.0
+            continue
+        c = m.contacts[pair]
+        assert_allclose(kn[k], 4 / 3 * c.E_star_pa, rtol=1e-9)
+        assert_allclose(gamman[k], 2 * tau * c.E_star_pa / c.m_eff_kg, rtol=1e-9)
+    assert "limitForce on primitive type 3 zplane 0.0" in lig
+    # MercuryDPM: A = tau and E* of two grains and of the rigid wall; no size in them.
+    mdpm = mercurydpm_viscoelastic(d.si, m)
+    assert mdpm.count(f"setDissipation({tau:.10g})") == 3
+    assert f"species->setEffectiveElasticModulus({E / (2 * (1 - NU**2)):.10g})" in mdpm
+    assert f"grainWall->setEffectiveElasticModulus({E / (1 - NU**2):.10g})" in mdpm
+    # YADE: en of each pair of materials = that contact's Kelvin-Voigt epsilon at vn.
+    yade = yade_viscoelastic(d.si, m, speed_m_s=1.0)
+    compile(yade, "yade.py", "exec")
+    for (i, j), name in (((1, 1), "mat1, mat1"), ((1, 2), "mat1, mat2"), ((2, 0), "mat2, wallMat")):
+        want = rebound_si(m.contacts[i, j].m_eff_kg, m.contacts[i, j].E_star_pa,
+                          m.contacts[i, j].R_eff_m, tau, 1.0)  # fmt: skip
+        got = float(re.search(rf"\({name}, ([\d.]+)\)", yade).group(1))
+        assert_allclose(got, want, rtol=1e-7)
+    assert "vn=1.0)" in yade

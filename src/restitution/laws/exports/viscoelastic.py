@@ -54,11 +54,15 @@ class ContactScales:
         ``R* = R1 R2/(R1+R2)``, m (a flat wall: ``R``).
     m_eff_kg : float
         ``m* = m1 m2/(m1+m2)``, kg (a wall: ``m``).
+    G_star_pa : float
+        Mindlin's ``G*``, Pa: ``1/G* = (2-nu1)/G1 + (2-nu2)/G2`` (a rigid wall: ``G/(2-nu)``),
+        for codes whose tangential stiffness is ``8 G* a``.
     """
 
     E_star_pa: float
     R_eff_m: float
     m_eff_kg: float
+    G_star_pa: float
 
     def epsilon(self, tau_s: float, speeds_m_s) -> np.ndarray:
         """epsilon of (1) at impact speeds ``w`` (m/s): the package's quasistatic viscous
@@ -218,6 +222,7 @@ def viscoelastic_model(damped, speeds_m_s, radius_m: float | None = None) -> Vis
     tau_s = damped.tau * radius / g.c_m_s
     tau_err_s = damped.tau_err * radius / g.c_m_s
     e_one = g.E / (1.0 - g.nu**2)  # one sphere's E / (1 - nu^2): on the rigid wall
+    g_one = g.E / (2.0 * (1.0 + g.nu)) / (2.0 - g.nu)  # G / (2 - nu): on the rigid wall
     ratio = 1.0 if pair is None else float(pair.radius_ratio)
     radii = {1: radius} if ratio == 1.0 else {1: radius, 2: ratio * radius}
     mass = {t: _sphere_mass(r, g.rho) for t, r in radii.items()}
@@ -227,9 +232,9 @@ def viscoelastic_model(damped, speeds_m_s, radius_m: float | None = None) -> Vis
             if i <= j:
                 ri, rj, mi, mj = radii[i], radii[j], mass[i], mass[j]
                 contacts[i, j] = ContactScales(e_one / 2.0, ri * rj / (ri + rj),
-                                               mi * mj / (mi + mj))  # fmt: skip
+                                               mi * mj / (mi + mj), g_one / 2.0)  # fmt: skip
     for i in radii:
-        contacts[i, 0] = ContactScales(e_one, radii[i], mass[i])
+        contacts[i, 0] = ContactScales(e_one, radii[i], mass[i], g_one)
     if si.against == "wall":
         law_pair = (1, 0)
     else:

@@ -81,6 +81,15 @@ WALL_NOTE = (
 """The warning every wall snippet of a per-type code carries (issue 44)."""
 
 
+def viscoelastic_head(s: SILaw, model, friction: float | None, where: str, mark: str) -> list:
+    """The comment lines of a viscoelastic snippet: the export heading, the model and its
+    constants with the part it drops (:meth:`~restitution.laws.exports.viscoelastic.
+    Viscoelastic.describe`), what the particles stand for and the friction (``where``: the
+    code's parameter)."""
+    lines = [*_header(s), *model.describe(), _particles(s), friction_line(friction, where)]
+    return [f"{mark} {line}" for line in lines]
+
+
 def _particles(s: SILaw) -> str:
     """What the DEM code's particles stand for, for the snippets' comments."""
     if s.grain.kind.dimension == 3:

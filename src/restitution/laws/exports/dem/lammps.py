@@ -6,7 +6,6 @@ restitution; ``units si``. Registers itself as the DEM target ``lammps`` (``lamm
 
 from __future__ import annotations
 
-from restitution.laws.exports._heading import _header
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import (
     _comment,
@@ -14,6 +13,7 @@ from restitution.laws.exports.dem._common import (
     _grain_of,
     _particles,
     friction_line,
+    viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
@@ -139,13 +139,11 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = 
     ``nu = 0``. ``limit_damping`` clips the force at zero, the law's end of contact.
     Tangential model as in :func:`lammps_snippet`.
     """
-    lines = [*(f"# {line}" for line in _header(s)), *(f"# {x}" for x in model.describe())]
+    lines = viscoelastic_head(s, model, friction, _FRICTION_WHERE, "#")
     lines += [
-        f"# {_particles(s)}",
         f"# {INSTALL_NOTE}",
         "# eta_n0 = 2 tau E* / m* (1/(m s)) per type pair; hertz/material takes E' = 2 E* and "
         "nu = 0 (LAMMPS mixes E_eff = E'/2 = E*); limit_damping: no attraction at separation",
-        f"# {friction_line(friction, _FRICTION_WHERE)}",
     ]
 
     def model_of(pair) -> str:

@@ -1,7 +1,10 @@
-"""The LIGGGHTS snippet: ``coefficientRestitution peratomtypepair`` and the Hertz model.
+"""The LIGGGHTS snippet: ``coefficientRestitution peratomtypepair`` and the Hertz model, or a
+damped sphere law in ``hertz/stiffness``.
 
-Young's modulus (Pa) and Poisson number per atom type, epsilon per pair of atom types.
-Registers itself as the DEM target ``liggghts`` (``liggghts.in``).
+Young's modulus (Pa) and Poisson number per atom type, epsilon per pair of atom types; or the
+stiffness and damping constants per type pair of the viscoelastic contact
+(:func:`liggghts_viscoelastic`). Registers itself as the DEM target ``liggghts``
+(``liggghts.in``).
 """
 
 from __future__ import annotations
@@ -14,12 +17,14 @@ from restitution.laws.exports.dem._common import (
     _grain_of,
     _particles,
     friction_line,
+    viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "liggghts_snippet"]
+__all__ = ["TARGET", "liggghts_snippet", "liggghts_viscoelastic"]
 
 
 def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
@@ -53,7 +58,72 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None =
     )
 
 
+def liggghts_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = None) -> str:
+    """Input lines for LIGGGHTS that carry a damped sphere law natively: ``model
+    hertz/stiffness`` with ``limitForce on``.
+
+    LIGGGHTS's ``hertz/stiffness`` force is ``kn sqrt(R* delta) delta + gamman m*
+    sqrt(R* delta) delta'`` (``normal_model_hertz_stiffness.h``), so the Kelvin-Voigt force
+    (:mod:`~restitution.laws.exports.viscoelastic`, eq. 1) is ``kn = (4/3) E*`` and
+    ``gamman = 2 tau E* / m*`` (1/(m s)), per type pair, exact for grains of the radii the
+    model holds for; LIGGGHTS mixes nothing, so every pair is given, the wall as the last atom
+    type. ``limitForce on`` clips the force at zero. Tangential: Mindlin's ``kt = 8 G*``,
+    ``gammat = 0``, Coulomb's ``mu`` the given friction (0 otherwise). Not run here (no
+    LIGGGHTS on this machine): written from its source and documentation.
+    """
+    types = sorted(model.radii_m)
+    wall = len(types) + 1
+    n = wall
+
+    def entry(i: int, j: int):
+        a, b = sorted((i, j))
+        if a == wall:  # wall with wall: never in contact
+            return None
+        return model.contacts[(a, 0) if b == wall else (a, b)]
+
+    def matrix(value) -> str:
+        rows = []
+        for i in range(1, n + 1):
+            for j in range(1, n + 1):
+                c = entry(i, j)
+                rows.append("0.0" if c is None else f"{value(c, (i, j)):.10g}")
+        return " ".join(rows)
+
+    def gamman(c, ij) -> float:
+        return 2.0 * model.relaxation_time_s * c.E_star_pa / c.m_eff_kg
+
+    mu = repr(float(0.0 if friction is None else friction))
+    return "\n".join(
+        [
+            *viscoelastic_head(s, model, friction, "coefficientFriction", "#"),
+            "# not run here (no LIGGGHTS on this machine): written from hertz/stiffness's source",
+            "# kn = (4/3) E* (Pa), gamman = 2 tau E* / m* (1/(m s)), kt = 8 G* (Pa), gammat = 0; "
+            f"atom types: grains {', '.join(map(str, types))}, the wall {wall}",
+            f"fix m1 all property/global kn peratomtypepair {n} "
+            + matrix(lambda c, ij: 4.0 / 3.0 * c.E_star_pa),
+            f"fix m2 all property/global kt peratomtypepair {n} "
+            + matrix(lambda c, ij: 8.0 * c.G_star_pa),
+            f"fix m3 all property/global gamman peratomtypepair {n} " + matrix(gamman),
+            f"fix m4 all property/global gammat peratomtypepair {n} " + matrix(lambda c, ij: 0.0),
+            f"fix m5 all property/global coefficientFriction peratomtypepair {n} "
+            + " ".join([mu] * (n * n)),
+            "pair_style gran model hertz/stiffness tangential history limitForce on",
+            "pair_coeff * *",
+            "# the wall: a plane at z = 0 below the grains, atom type "
+            f"{wall} (change zplane 0.0 to your wall)",
+            "fix restitution_wall all wall/gran model hertz/stiffness tangential history "
+            f"limitForce on primitive type {wall} zplane 0.0",
+            "",
+        ]
+    )
+
+
 TARGET = register_dem_target(
-    DemTarget(name="liggghts", file_name="liggghts.in", snippet=liggghts_snippet)
+    DemTarget(
+        name="liggghts",
+        file_name="liggghts.in",
+        snippet=liggghts_snippet,
+        viscoelastic=liggghts_viscoelastic,
+    )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

@@ -1,4 +1,5 @@
-"""The MercuryDPM snippet (C++): a ``LinearViscoelasticSpecies`` per particle type.
+"""The MercuryDPM snippet (C++): a ``LinearViscoelasticSpecies`` per particle type, or a damped
+sphere law as ``HertzianBSHPViscoelasticSpecies`` (:func:`mercurydpm_viscoelastic`).
 
 Density in kg/m^3, epsilon with the user's collision time ``tc`` (s) and the effective mass
 (kg) it needs. Registers itself as the DEM target ``mercurydpm`` (``mercurydpm.cpp``).
@@ -13,12 +14,14 @@ from restitution.laws.exports.dem._common import (
     _constants,
     _particles,
     friction_line,
+    viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "mercurydpm_snippet"]
+__all__ = ["TARGET", "mercurydpm_snippet", "mercurydpm_viscoelastic"]
 
 
 def _mass_ratio(s: SILaw, r: float) -> str:
@@ -158,7 +161,61 @@ def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None
     )
 
 
+def mercurydpm_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = None) -> str:
+    """C++ lines for MercuryDPM that carry a damped sphere law natively:
+    ``HertzianBSHPViscoelasticSpecies`` (Brilliantov-Spahn-Hertzsch-Poschel).
+
+    Its force is ``max(0, (4/3) E* sqrt(R* delta) delta + (3/2) A (4/3) E* sqrt(R* delta)
+    delta')`` (``HertzianBSHPViscoelasticInteraction.cc``): the Kelvin-Voigt force
+    (:mod:`~restitution.laws.exports.viscoelastic`, eq. 1) with ``A = tau`` (s) and ``E*``
+    (Pa), clipped at zero, with no mass or size in it: exact for every size. One species for
+    the grains (its own contacts take ``E*`` of two grains); the walls' species and the mixed
+    grain-wall species set explicitly (MercuryDPM's default mixing averages ``A`` and ``E*``
+    harmonically): ``E*`` of the rigid wall. With friction, the Mindlin variant with ``G*``.
+    Not run here (no MercuryDPM on this machine): written from its source.
+    """
+    grain = model.contacts[1, 1]
+    on_wall = model.contacts[1, 0]
+    kind = "HertzianBSHPViscoelastic" + ("" if friction is None else "Mindlin") + "Species"
+
+    def setters(name: str, c) -> list[str]:
+        lines = [
+            f"{name}->setEffectiveElasticModulus({c.E_star_pa:.10g});  // E*, Pa",
+            f"{name}->setDissipation({model.relaxation_time_s:.10g});  // A = tau, s",
+        ]
+        if friction is not None:
+            lines += [
+                f"{name}->setEffectiveShearModulus({c.G_star_pa:.10g});  // G*, Pa",
+                f"{name}->setSlidingFrictionCoefficient({friction:g});",
+            ]
+        return lines
+
+    return "\n".join(
+        [
+            *viscoelastic_head(s, model, friction, "a Mindlin species' sliding friction", "//"),
+            "// not run here (no MercuryDPM on this machine): written from the BSHP species' "
+            "source; A and E* hold for grains of every size",
+            f"auto species = speciesHandler.copyAndAddObject({kind}());  // the grains",
+            f"species->setDensity({model.density:.8g});",
+            *setters("species", grain),
+            f"auto wallSpecies = speciesHandler.copyAndAddObject({kind}());  // give your walls "
+            "this species",
+            f"wallSpecies->setDensity({model.density:.8g});",
+            *setters("wallSpecies", on_wall),
+            "auto grainWall = speciesHandler.getMixedObject(species, wallSpecies);  // the "
+            "grains on the rigid wall",
+            *setters("grainWall", on_wall),
+            "",
+        ]
+    )
+
+
 TARGET = register_dem_target(
-    DemTarget(name="mercurydpm", file_name="mercurydpm.cpp", snippet=mercurydpm_snippet)
+    DemTarget(
+        name="mercurydpm",
+        file_name="mercurydpm.cpp",
+        snippet=mercurydpm_snippet,
+        viscoelastic=mercurydpm_viscoelastic,
+    )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

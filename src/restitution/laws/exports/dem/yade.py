@@ -16,12 +16,18 @@ from restitution.laws.exports.dem._common import (
     _constants,
     _particles,
     friction_line,
+    viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "yade_snippet"]
+__all__ = ["TARGET", "yade_snippet", "yade_viscoelastic"]
+
+RIGID = 1e6
+"""The wall material's modulus over the grains': ``E*`` then differs from the rigid wall's
+``E / (1 - nu^2)`` by about ``1e-6``."""
 
 
 def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
@@ -68,5 +74,64 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = Non
     )
 
 
-TARGET = register_dem_target(DemTarget(name="yade", file_name="yade.py", snippet=yade_snippet))
+def yade_viscoelastic(
+    s: SILaw, model: Viscoelastic, friction: float | None = None, speed_m_s: float | None = None
+) -> str:
+    """Python lines for YADE that carry a damped sphere law in its own viscoelastic Hertz
+    contact: ``Ip2_FrictMat_FrictMat_MindlinPhys(en=..., vn=...)``.
+
+    With ``vn`` given, YADE (merge request 977: Brilliantov 1996, Muller and Poschel 2011)
+    damps Hertz's contact with ``2 A E* sqrt(R* delta) delta'``, the Kelvin-Voigt force
+    (:mod:`~restitution.laws.exports.viscoelastic`, eq. 1) with ``A = tau``; but ``A`` is not
+    an input: YADE infers it from a restitution ``en`` at the speed ``vn`` through a Pade
+    approximant, and for one ``en`` it scales with the size (``A ~ R``). So each pair of
+    materials gets ``en`` = the Kelvin-Voigt epsilon of its own contact at ``vn`` (the
+    package's viscous collision), one material per grain size, the wall its own (nearly
+    rigid, :data:`RIGID`); ``A = tau`` up to the approximant's accuracy. Walls need
+    ``hertzian=True`` (``R* = R``). Not run here (no YADE on this machine).
+    """
+    vn = speed_m_s if speed_m_s is not None else (
+        model.dropped[len(model.dropped) // 2].speed_m_s if model.dropped else 1.0
+    )  # fmt: skip
+    angle = 0.0 if friction is None else math.atan(friction)
+    g = s.grain
+    types = sorted(model.radii_m)
+
+    def mat(name: str, young: float) -> str:
+        return (
+            f"{name} = O.materials.append(FrictMat(young={young:.8g}, poisson={g.nu:.8g}, "
+            f"density={g.rho:.8g}, frictionAngle={angle!r}))"
+        )
+
+    def en(pair) -> float:
+        return float(model.contacts[pair].epsilon(model.relaxation_time_s, vn)[0])
+
+    matches = [f"(mat{i}, mat{j}, {en((i, j)):.10f})" for i, j in model.grain_pairs]
+    matches += [f"(mat{i}, wallMat, {en((i, 0)):.10f})" for i, _ in model.wall_pairs]
+    return "\n".join(
+        [
+            *viscoelastic_head(s, model, friction, "frictionAngle = atan(mu)", "#"),
+            "# not run here (no YADE on this machine); YADE infers its dissipation constant A "
+            "from en at vn (a Pade approximant): A = tau to that approximant's accuracy",
+            f"# en: the Kelvin-Voigt epsilon of each contact at vn = {vn:.6g} m/s, for grains of "
+            "the radii above (one material per size: A ~ R for one en)",
+            *(
+                mat(f"mat{i}", g.E) + f"  # grains of radius {model.radii_m[i]:.6g} m"
+                for i in types
+            ),  # fmt: skip
+            mat("wallMat", RIGID * g.E) + "  # the wall, nearly rigid",
+            f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=({', '.join(matches)}"
+            f")), vn={vn!r})",
+            "# walls: Ig2_Wall_Sphere_ScGeom(hertzian=True) and Ig2_Facet_Sphere_ScGeom("
+            "hertzian=True), so that R* = R; use ip2 with Law2_ScGeom_MindlinPhys_Mindlin()",
+            "",
+        ]
+    )
+
+
+TARGET = register_dem_target(
+    DemTarget(
+        name="yade", file_name="yade.py", snippet=yade_snippet, viscoelastic=yade_viscoelastic
+    )
+)
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

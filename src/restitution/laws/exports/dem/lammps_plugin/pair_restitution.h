@@ -1,0 +1,46 @@
+// pair_style restitution: frictionless Hertz contact with Tsuji's damping, whose coefficient is
+// fixed per contact from the tabulated epsilon(w) at the contact's impact speed.
+//
+//   pair_style restitution
+//   pair_coeff i j E* table_file       (i <= j; every type pair explicitly, no mixing)
+//
+// E* (Pa): 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j. R* and m* come from the two atoms'
+// radii and masses (atom_style sphere). Needs units si, comm_modify vel yes and one MPI rank.
+// compute pair restitution gives two numbers: the contacts open now, the contacts opened so far.
+
+#ifndef RESTITUTION_PAIR_RESTITUTION_H
+#define RESTITUTION_PAIR_RESTITUTION_H
+
+#include "contact_store.h"
+#include "pair.h"
+#include "restitution_table.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairRestitution : public Pair {
+ public:
+  PairRestitution(class LAMMPS *);
+  ~PairRestitution() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+
+ protected:
+  double **estar;       // E* of each type pair, Pa
+  int **table_of;       // index into tables of each type pair
+  std::vector<Restitution::RestitutionTable> tables;
+  std::vector<double> maxrad;    // largest radius of each type, m
+  Restitution::ContactStore contacts;
+
+  void allocate();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
