@@ -151,6 +151,7 @@ def body_folders() -> tuple[str, ...]:
 
 QUASISTATIC_MODULES: tuple[str, ...] = (
     "restitution.quasistatic.hertz",
+    "restitution.quasistatic.hertz_pair",
     "restitution.quasistatic.hertz_sphere",
     "restitution.quasistatic.low_speed",
     "restitution.quasistatic.pulse",
