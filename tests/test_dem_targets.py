@@ -68,8 +68,11 @@ def test_a_target_registered_in_a_test_is_written_by_the_export(registry, tmp_pa
     s = _law()
     c = exports.constant_at(s, 500.0)
     written = exports.write_folder(s, c, tmp_path / "lib")
-    assert written.paths[-1] == tmp_path / "lib" / "epsilon_toy.dem"
-    assert written.paths[-1].read_text() == f"toy {c.epsilon:.8f}\n"
+    toy = tmp_path / "lib" / "epsilon_toy.dem"
+    # After the snippets, the LAMMPS plugin's table and input lines (the law per contact).
+    plugin = ["epsilon_lammps_plugin_wall1.table", "epsilon_lammps_plugin.in"]
+    assert [p.name for p in written.paths[-3:]] == [toy.name, *plugin]
+    assert toy.read_text() == f"toy {c.epsilon:.8f}\n"
     # Without a constant no snippet is written, the toy's neither.
     bare = exports.write_folder(s, None, tmp_path / "bare")
     assert not (tmp_path / "bare" / "epsilon_toy.dem").exists()
@@ -79,6 +82,7 @@ def test_a_target_registered_in_a_test_is_written_by_the_export(registry, tmp_pa
         "epsilon_closed_form.json",
         "epsilon.h",
         "epsilon.f90",
+        *plugin,
     ]
     # The command line writes it too, after the shipped codes.
     out = tmp_path / "cli"
@@ -88,12 +92,13 @@ def test_a_target_registered_in_a_test_is_written_by_the_export(registry, tmp_pa
     assert code == 0, err
     assert (out / "epsilon_toy.dem").read_text().startswith("toy 0.9")
     wrote = stdout.split("wrote ")[-1].strip().split(", ")
-    assert [w.rsplit("/", 1)[-1] for w in wrote[-5:]] == [
+    assert [w.rsplit("/", 1)[-1] for w in wrote[-7:]] == [
         "epsilon_lammps.in",
         "epsilon_liggghts.in",
         "epsilon_mercurydpm.cpp",
         "epsilon_yade.py",
         "epsilon_toy.dem",
+        *plugin,
     ]
 
 

@@ -53,6 +53,7 @@ def _register() -> None:
     from restitution.cli import collide as _collide
     from restitution.cli import epsilon as _epsilon
     from restitution.cli import fem_compare as _fem_compare
+    from restitution.cli import lammps_plugin as _lammps_plugin
     from restitution.cli import law as _law
     from restitution.cli import modes as _modes
     from restitution.cli import paper as _paper
@@ -67,6 +68,7 @@ def _register() -> None:
     cli.add_command(_fem_compare.compare_fem)
     cli.add_command(_paper.paper)
     cli.add_command(_law.law)
+    cli.add_command(_lammps_plugin.lammps_plugin)
 
 
 _register()

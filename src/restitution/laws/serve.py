@@ -181,6 +181,8 @@ def serve(
         folder = exports.write_folder(s, pairs or constant, r.export_dir, model, r.friction)
         if folder.no_closed_form is not None:
             note(f"note: no closed form written: {folder.no_closed_form}")
+        if folder.no_plugin is not None:
+            note(f"note: no LAMMPS plugin tables written: {folder.no_plugin}")
         written = tuple(folder.paths)
     return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
 

@@ -6,7 +6,9 @@ the C header and the Fortran include that evaluate the law's table (``epsilon.h`
 ``epsilon.f90``) and, given a constant or a damped sphere law's viscoelastic model
 (:class:`~restitution.laws.exports.viscoelastic.Viscoelastic`), one snippet per registered DEM
 target (:data:`~restitution.laws.exports.dem.DEM_TARGETS`, ``epsilon_<file_name>``): the
-code's own viscoelastic contact where it has one and a model is given, else the constant.
+code's own viscoelastic contact where it has one and a model is given, else the constant; and
+the LAMMPS plugin's tables and input lines, which carry the whole law per contact
+(:mod:`~restitution.laws.exports.plugin_files`).
 Speeds in m/s,
 every file in SI units; each file is written whole or not at all (:mod:`restitution.atomic`).
 """
@@ -24,6 +26,7 @@ from restitution.laws.exports.c_fortran import c_header, fortran_include
 from restitution.laws.exports.closed_form import ClosedForm, fit_closed_form
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem import DEM_TARGETS
+from restitution.laws.exports.plugin_files import plugin_files
 from restitution.laws.exports.table import write_csv, write_table
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.si_law import SILaw
@@ -54,11 +57,15 @@ class ExportFolder:
         The fitted closed form; ``None`` when none follows the points within their errors.
     no_closed_form : str or None
         Why no closed form was written (the fit's refusal), else ``None``.
+    no_plugin : str or None
+        Why no LAMMPS plugin tables were written (the plugin cannot carry the law), else
+        ``None``.
     """
 
     paths: tuple[Path, ...]
     closed_form: ClosedForm | None
     no_closed_form: str | None
+    no_plugin: str | None = None
 
 
 def write_folder(
@@ -84,6 +91,10 @@ def write_folder(
     except RestitutionError as exc:
         fit = None
         refusal = str(exc)
+    try:
+        plugin, no_plugin = plugin_files(s, constant), None
+    except InputError as exc:
+        plugin, no_plugin = {}, str(exc)
     stem = "epsilon"
     names = [f"{stem}_table.txt", f"{stem}.csv"]
     with atomic.file_set(out, family=(f"{stem}_*", f"{stem}.*")) as stage:
@@ -106,4 +117,7 @@ def write_folder(
                                                                          friction)  # fmt: skip
             names.append(f"{stem}_{target.file_name}")
             atomic.write_text(stage / names[-1], text)
-    return ExportFolder(tuple(out / name for name in names), fit, refusal)
+        for name, text in plugin.items():
+            names.append(name)
+            atomic.write_text(stage / name, text)
+    return ExportFolder(tuple(out / name for name in names), fit, refusal, no_plugin)

@@ -1,0 +1,123 @@
+// fix wall/restitution (fix_wall_restitution.h; physics in tsuji_contact.h).
+
+#include "fix_wall_restitution.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "update.h"
+
+#include "tsuji_contact.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using Restitution::RestitutionTable;
+
+FixWallRestitution::FixWallRestitution(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  if (narg != 7)
+    error->all(FLERR,
+               "fix wall/restitution: expected 'fix ID group wall/restitution E* table_file "
+               "xplane|yplane|zplane coord'");
+  estar = utils::numeric(FLERR, arg[3], false, lmp);
+  if (!(estar > 0.0)) error->all(FLERR, "fix wall/restitution: E* must be > 0 Pa, got {}", estar);
+  try {
+    table = RestitutionTable::read(arg[4]);
+  } catch (const Restitution::TableError &err) {
+    error->all(FLERR, "fix wall/restitution: {}", err.what());
+  }
+  if (strcmp(arg[5], "xplane") == 0)
+    axis = 0;
+  else if (strcmp(arg[5], "yplane") == 0)
+    axis = 1;
+  else if (strcmp(arg[5], "zplane") == 0)
+    axis = 2;
+  else
+    error->all(FLERR, "fix wall/restitution: the wall is xplane, yplane or zplane, got {}",
+               arg[5]);
+  coord = utils::numeric(FLERR, arg[6], false, lmp);
+
+  vector_flag = 1;
+  size_vector = 2;
+  global_freq = 1;
+  extvector = 0;
+}
+
+int FixWallRestitution::setmask()
+{
+  return POST_FORCE;
+}
+
+void FixWallRestitution::init()
+{
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "fix wall/restitution needs per-atom radius and mass: use atom_style sphere");
+  if (comm->nprocs > 1)
+    error->all(FLERR,
+               "fix wall/restitution keeps its per-contact state on one MPI rank; run on 1 rank "
+               "(it has {})",
+               comm->nprocs);
+  if (strcmp(update->unit_style, "si") != 0)
+    error->all(FLERR, "fix wall/restitution reads speeds in m/s and E* in Pa: use 'units si'");
+  if (axis == 2 && domain->dimension == 2)
+    error->all(FLERR, "fix wall/restitution: a 2D run (dimension 2) takes xplane or yplane");
+}
+
+void FixWallRestitution::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixWallRestitution::post_force(int /*vflag*/)
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+
+  contacts.begin();
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double gap = x[i][axis] - coord;
+    if (gap >= radius[i]) continue;
+    const double vn = v[i][axis];    // away from the wall: > 0
+
+    Restitution::ContactState *state = contacts.find(tag[i], 0);
+    if (!state) {
+      const double w = std::fabs(vn);
+      RestitutionTable::Status status;
+      const double eps = table.epsilon(w, status);
+      if (status == RestitutionTable::Status::Above)
+        error->one(FLERR,
+                   "fix wall/restitution: impact at {:.8g} m/s of atom {} (type {}) on the wall "
+                   "is above the range {:.8g} ... {:.8g} m/s of table {}; no epsilon is "
+                   "extrapolated: give a table that reaches this speed",
+                   w, tag[i], atom->type[i], table.w_min(), table.w_max(), table.name());
+      if (status == RestitutionTable::Status::BadSpeed)
+        error->one(FLERR, "fix wall/restitution: impact speed {} of atom {} is not a finite "
+                   "number", w, tag[i]);
+      double beta = 0.0;
+      try {
+        beta = table.beta(eps);
+      } catch (const Restitution::TableError &err) {
+        error->one(FLERR, "fix wall/restitution: {}", err.what());
+      }
+      state = contacts.open(tag[i], 0, w, eps, beta);
+    }
+
+    double energy;
+    f[i][axis] += Restitution::tsuji_normal_force(estar, radius[i], rmass[i], state->beta,
+                                                  radius[i] - gap, -vn, energy);
+  }
+  contacts.sweep();
+}
+
+double FixWallRestitution::compute_vector(int n)
+{
+  return n == 0 ? static_cast<double>(contacts.live()) : static_cast<double>(contacts.opened());
+}

@@ -1,0 +1,43 @@
+// fix wall/restitution: a static frictionless plane; each grain's contact with it is Hertz's
+// with Tsuji's damping, the damping coefficient fixed per contact from the tabulated epsilon(w)
+// at the speed towards the wall at first touch.
+//
+//   fix ID group wall/restitution E* table_file xplane|yplane|zplane coord
+//
+// The grains sit on the + side of the plane (coordinate > coord). E* (Pa): 1/E* = (1 -
+// nu^2)/E (+ (1 - nu_w^2)/E_w for an elastic wall); R* = the grain's radius, m* = its mass.
+// zplane needs dimension 3. Needs units si and one MPI rank. Global vector of 2: the contacts
+// open now, the contacts opened so far.
+
+#ifndef RESTITUTION_FIX_WALL_RESTITUTION_H
+#define RESTITUTION_FIX_WALL_RESTITUTION_H
+
+#include "contact_store.h"
+#include "fix.h"
+#include "restitution_table.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class FixWallRestitution : public Fix {
+ public:
+  FixWallRestitution(class LAMMPS *, int, char **);
+
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  double compute_vector(int) override;
+
+ protected:
+  double estar;        // Pa
+  int axis;            // 0, 1, 2: the plane's normal
+  double coord;        // the plane's position along axis, m
+  Restitution::RestitutionTable table;
+  Restitution::ContactStore contacts;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

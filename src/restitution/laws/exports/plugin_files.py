@@ -1,0 +1,91 @@
+"""The LAMMPS plugin's files of one export: a table per contact and the input lines that load
+them (docs/lammps-plugin.md).
+
+The plugin (:mod:`~restitution.laws.exports.lammps_plugin`) carries the whole law, every speed,
+per contact; an export folder holds, beside the constants' snippets, the plugin's table of the
+law's contact and, for a :class:`~restitution.laws.exports.type_pairs.TypePairs`, of each type
+pair (1-1 and 2-2 from the laws of identical grains), and ``epsilon_lammps_plugin.in`` with the
+``plugin load``, ``pair_style``/``pair_coeff`` or ``fix wall/restitution`` lines. SI units.
+"""
+
+from __future__ import annotations
+
+from restitution.laws.exports._heading import _header
+from restitution.laws.exports.lammps_plugin import (
+    PLUGIN_NAME,
+    PluginWall,
+    contact_modulus,
+    lammps_plugin_input,
+    plugin_table,
+)
+from restitution.laws.exports.pchip import pchip_table
+from restitution.laws.exports.type_pairs import TypePairs
+
+__all__ = ["INPUT_NAME", "plugin_files"]
+
+INPUT_NAME = "epsilon_lammps_plugin.in"
+"""The input lines' file in an export folder."""
+
+
+def _table_name(i: int, j: int) -> str:
+    return f"epsilon_lammps_plugin_wall{i}.table" if j == 0 else (
+        f"epsilon_lammps_plugin_{i}{j}.table"
+    )  # fmt: skip
+
+
+def plugin_files(s, c=None) -> dict[str, str]:
+    """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
+    :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
+    :class:`TypePairs` ``c`` (their 1-1 and 2-2 laws); a ``Constant`` or ``None`` adds nothing.
+
+    Raises
+    ------
+    InputError
+        Where the plugin cannot carry the law (an epsilon below the map's range, a table
+        without two knots): the message says why.
+    """
+    g = s.grain
+    laws = {}
+    if s.against == "wall":
+        laws[1, 0] = s
+    elif isinstance(c, TypePairs):
+        laws[1, 1], laws[1, 2] = c.identical, s
+        laws[2, 2] = c.identical2 if c.two_materials else c.identical
+    elif s.law.partner is not None:
+        laws[1, 2] = s
+    else:
+        laws[1, 1] = s
+    grains = c.grains if isinstance(c, TypePairs) and c.two_materials else {1: g, 2: g}
+    files, pairs, wall = {}, {}, None
+    for (i, j), law in laws.items():
+        name = _table_name(i, j)
+        what = "on the wall" if j == 0 else f"types {i}-{j}"
+        files[name] = plugin_table(pchip_table(law), [*_header(law), f"contact: {what}"])
+        if j == 0:
+            # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
+            plane = "yplane" if g.kind.planar else "zplane"
+            wall = PluginWall(contact_modulus(g.E, g.nu), name, plane=plane)
+        else:
+            a, b = grains[i], grains[j]
+            pairs[i, j] = (contact_modulus(a.E, a.nu, b.E, b.nu), name)
+    lines = [f"# {line}" for line in _header(s)]
+    lines += [
+        f"# the plugin: build it with `restitution lammps-plugin --out DIR` and put {PLUGIN_NAME}",
+        "# here (or give its path after plugin load); the tables are read from where LAMMPS runs;",
+        "# the wall: a static plane at 0 with the grains on its + side (change it to yours)",
+    ]
+    if not pairs:
+        lines.append(
+            "# grain-grain contacts need the law of two grains (--against grain): this export "
+            "holds the wall's only"
+        )
+    elif (1, 2) in pairs and (1, 1) not in pairs:
+        lines.append(
+            "# only the 1-2 contact's table: give --reference-speed or --maxwell-temperature "
+            "to export 1-1 and 2-2 too (LAMMPS stops on a type pair without a table)"
+        )
+    # "./": dlopen looks for a bare file name on the library path, not where LAMMPS runs.
+    files[INPUT_NAME] = "\n".join(lines) + "\n" + lammps_plugin_input(
+        f"./{PLUGIN_NAME}", pairs, wall
+    )
+    return files
