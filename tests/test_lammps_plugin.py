@@ -646,7 +646,8 @@ def test_the_export_writes_a_table_per_contact_and_their_input_lines():
     c = exports.type_pair_constants(pair, same, speed_m_s=1.0)
     files = plugin_files(pair, c)
     names = ["epsilon_lammps_plugin_11.table", "epsilon_lammps_plugin_12.table",
-             "epsilon_lammps_plugin_22.table", INPUT_NAME]  # fmt: skip
+             "epsilon_lammps_plugin_22.table", "epsilon_lammps_plugin_wall1.table",
+             INPUT_NAME]  # fmt: skip
     assert sorted(files) == sorted(names)
     # 1-1 and 2-2 are the law of identical grains, 1-2 the pair's: each file its own knots.
     for name, law in (("11", same), ("12", pair), ("22", same)):
@@ -657,7 +658,56 @@ def test_the_export_writes_a_table_per_contact_and_their_input_lines():
         line = f"pair_coeff {i} {j} {e_star:.12g} epsilon_lammps_plugin_{i}{j}.table"
         assert line in files[INPUT_NAME]
     assert "plugin load ./restitutionplugin.so" in files[INPUT_NAME]
+    # The grains on the rigid wall too (one material: one table and one fix for every size).
+    wall = restitution.si_law(*steel, "sphere", "wall")
+    assert_allclose(read_table(files["epsilon_lammps_plugin_wall1.table"]).w,
+                    pchip_table(wall).w_m_s, rtol=1e-16)  # fmt: skip
+    e_wall = lp.contact_modulus(*steel[:2])
+    assert (
+        f"fix wall all wall/restitution {e_wall:.12g} epsilon_lammps_plugin_wall1.table"
+        in (files[INPUT_NAME])
+    )
     # One constant of a pair: the 1-2 table only, and the lines say how to get the others.
     only = plugin_files(pair, exports.constant_at(pair, 1.0))
-    assert sorted(only) == ["epsilon_lammps_plugin.in", "epsilon_lammps_plugin_12.table"]
+    assert sorted(only) == ["epsilon_lammps_plugin.in", "epsilon_lammps_plugin_12.table",
+                            "epsilon_lammps_plugin_wall1.table"]  # fmt: skip
     assert "to export 1-1 and 2-2 too" in only[INPUT_NAME]
+
+
+@pytest.mark.slow
+def test_an_export_of_two_materials_runs_each_on_the_wall(tmp_path, plugin, cli):
+    # Steel with glass spheres (the shipped pair of two materials): the folder holds each
+    # material's wall table and one fix per type's group; a glass grain (type 2) dropped on the
+    # wall at 1 m/s rebounds with glass's law on the wall, not steel's.
+    out = tmp_path / "export"
+    code, _, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                       "sphere", "--against", "grain", "--partner-radius-ratio", "1",
+                       "--partner-E", "63e9", "--partner-nu", "0.2481", "--partner-rho", "2500",
+                       "--speed", "1", "--reference-speed", "1", "--export", str(out))  # fmt: skip
+    assert code == 0, err
+    (out / lp.PLUGIN_NAME).symlink_to(plugin)
+    glass = restitution.si_law(63e9, 0.2481, 2500.0, "sphere", "wall")
+    steel = restitution.si_law(STEEL["E"], STEEL["nu"], STEEL["rho"], "sphere", "wall")
+    w, r = 1.0, 0.01
+    tc = contact_time(lp.contact_modulus(63e9, 0.2481), r, 4 / 3 * math.pi * r**3 * 2500, w)
+    dt = tc / STEPS_PER_CONTACT
+    lead = 3.5 * dt
+    lines = [
+        "units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+        "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 2 box",
+        f"create_atoms 2 single 0 0 {r + w * lead!r}",
+        f"set atom 1 diameter {2 * r!r} density 2500.0", f"set atom 1 vz {-w!r}",
+        "comm_modify vel yes", "include epsilon_lammps_plugin.in", "fix nve all nve/sphere",
+        f"timestep {dt!r}", f"run {int((lead + 3 * tc) / dt)}", 'print "AFTER $(vz[1]:%.17g)"',
+    ]  # fmt: skip
+    (out / "in.run").write_text("\n".join(lines) + "\n")
+    lmp = str(Path(sys.executable).with_name("lmp"))
+    run = subprocess.run([lmp, "-in", "in.run", "-log", "none"], cwd=out, env=_lmp_env(),
+                         capture_output=True, text=True)  # fmt: skip
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
+    ratio = float(re.search(r"^AFTER (\S+)", run.stdout, re.M).group(1)) / w
+    print(f"glass on the wall: LAMMPS {ratio:.10f}, glass law {glass.epsilon(w):.10f}, steel's "
+          f"{steel.epsilon(w):.10f}")  # fmt: skip
+    bound = glass.epsilon_err(w) + pchip_table(glass).max_deviation + TIME_STEP_MARGIN
+    assert abs(ratio - glass.epsilon(w)) <= bound
+    assert abs(ratio - glass.epsilon(w)) < abs(ratio - steel.epsilon(w))

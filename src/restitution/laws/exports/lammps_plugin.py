@@ -455,7 +455,7 @@ class PluginWall:
 def lammps_plugin_input(
     plugin: str | os.PathLike,
     pairs: Mapping[tuple[int, int], tuple[float, str | os.PathLike]],
-    wall: PluginWall | None = None,
+    wall: PluginWall | Sequence[PluginWall] | None = None,
 ) -> str:
     """The LAMMPS input lines that load the plugin and give each type pair its table.
 
@@ -466,8 +466,9 @@ def lammps_plugin_input(
     pairs : dict
         ``{(i, j): (E* in Pa, table file)}`` for every type pair ``i <= j`` of the run (no
         mixing: a pair left out stops LAMMPS); empty for a wall alone (no pair style).
-    wall : PluginWall, optional
-        A wall, for ``fix wall/restitution``.
+    wall : PluginWall or sequence of PluginWall, optional
+        A wall, for ``fix wall/restitution`` (several: one fix each, e.g. one per type's
+        group).
 
     Returns
     -------
@@ -496,15 +497,15 @@ def lammps_plugin_input(
         if e <= 0.0:
             raise InputError(f"E* of types {i} {j} must be > 0 Pa, got {e!r}")
         lines.append(f"pair_coeff {i} {j} {e:.12g} {Path(table)}")
-    if wall is not None:
-        if wall.plane not in ("xplane", "yplane", "zplane"):
-            raise InputError(f"wall.plane must be xplane, yplane or zplane, got {wall.plane!r}")
-        e = real(wall.estar_pa, "wall.estar_pa", "> 0 (Pa)")
+    for one in () if wall is None else (wall,) if isinstance(wall, PluginWall) else wall:
+        if one.plane not in ("xplane", "yplane", "zplane"):
+            raise InputError(f"wall.plane must be xplane, yplane or zplane, got {one.plane!r}")
+        e = real(one.estar_pa, "wall.estar_pa", "> 0 (Pa)")
         if e <= 0.0:
             raise InputError(f"wall.estar_pa must be > 0 Pa, got {e!r}")
-        z0 = real(wall.position_m, "wall.position_m", "(m)")
+        z0 = real(one.position_m, "wall.position_m", "(m)")
         lines.append(
-            f"fix {wall.fix_id} {wall.group} wall/restitution {e:.12g} {Path(wall.table)} "
-            f"{wall.plane} {z0:.12g}"
+            f"fix {one.fix_id} {one.group} wall/restitution {e:.12g} {Path(one.table)} "
+            f"{one.plane} {z0:.12g}"
         )
     return "\n".join(lines) + "\n"

@@ -5,11 +5,14 @@ The plugin (:mod:`~restitution.laws.exports.lammps_plugin`) carries the whole la
 per contact; an export folder holds, beside the constants' snippets, the plugin's table of the
 law's contact and, for a :class:`~restitution.laws.exports.type_pairs.TypePairs`, of each type
 pair (1-1 and 2-2 from the laws of identical grains), and ``epsilon_lammps_plugin.in`` with the
-``plugin load``, ``pair_style``/``pair_coeff`` or ``fix wall/restitution`` lines. SI units.
+``plugin load``, ``pair_style``/``pair_coeff`` or ``fix wall/restitution`` lines. An export of
+grains also carries each material's law on the rigid wall (the shipped law of that grain on a
+wall, whatever its size): one folder for a system of walls and grains. SI units.
 """
 
 from __future__ import annotations
 
+from restitution.errors import InputError
 from restitution.laws.exports._heading import _header
 from restitution.laws.exports.lammps_plugin import (
     PLUGIN_NAME,
@@ -20,6 +23,7 @@ from restitution.laws.exports.lammps_plugin import (
 )
 from restitution.laws.exports.pchip import pchip_table
 from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.si_law import si_law
 
 __all__ = ["INPUT_NAME", "plugin_files"]
 
@@ -55,16 +59,27 @@ def plugin_files(s, c=None) -> dict[str, str]:
         laws[1, 2] = s
     else:
         laws[1, 1] = s
-    grains = c.grains if isinstance(c, TypePairs) and c.two_materials else {1: g, 2: g}
-    files, pairs, wall = {}, {}, None
+    two = isinstance(c, TypePairs) and c.two_materials
+    grains = c.grains if two else {1: g, 2: g}
+    missing = []
+    if s.against == "grain":  # each material on the wall too: one folder for the system
+        for i in (1, 2) if two else (1,):
+            try:
+                laws[i, 0] = si_law(grain=grains[i], against="wall")
+            except InputError as exc:
+                missing.append(f"type {i} on the wall: {exc}")
+    # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
+    plane = "yplane" if g.kind.planar else "zplane"
+    files, pairs, walls = {}, {}, []
     for (i, j), law in laws.items():
         name = _table_name(i, j)
-        what = "on the wall" if j == 0 else f"types {i}-{j}"
+        what = f"type {i} on the wall" if j == 0 else f"types {i}-{j}"
         files[name] = plugin_table(pchip_table(law), [*_header(law), f"contact: {what}"])
         if j == 0:
-            # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
-            plane = "yplane" if g.kind.planar else "zplane"
-            wall = PluginWall(contact_modulus(g.E, g.nu), name, plane=plane)
+            a = grains[i]
+            group, fix_id = (f"restitution_type{i}", f"wall{i}") if two else ("all", "wall")
+            estar = contact_modulus(a.E, a.nu)
+            walls.append((i, PluginWall(estar, name, plane=plane, group=group, fix_id=fix_id)))
         else:
             a, b = grains[i], grains[j]
             pairs[i, j] = (contact_modulus(a.E, a.nu, b.E, b.nu), name)
@@ -84,8 +99,10 @@ def plugin_files(s, c=None) -> dict[str, str]:
             "# only the 1-2 contact's table: give --reference-speed or --maxwell-temperature "
             "to export 1-1 and 2-2 too (LAMMPS stops on a type pair without a table)"
         )
+    lines += [f"# no table for {m}" for m in missing]
+    # Two materials: one wall fix per type's group.
+    lines += [f"group {w.group} type {i}" for i, w in walls if w.group != "all"]
     # "./": dlopen looks for a bare file name on the library path, not where LAMMPS runs.
-    files[INPUT_NAME] = "\n".join(lines) + "\n" + lammps_plugin_input(
-        f"./{PLUGIN_NAME}", pairs, wall
-    )
+    body = lammps_plugin_input(f"./{PLUGIN_NAME}", pairs, [w for _, w in walls])
+    files[INPUT_NAME] = "\n".join(lines) + "\n" + body
     return files
