@@ -8,9 +8,8 @@ the C header and the Fortran include that evaluate the law's table (``epsilon.h`
 target (:data:`~restitution.laws.exports.dem.DEM_TARGETS`, ``epsilon_<file_name>``): the
 code's own viscoelastic contact where it has one and a model is given, else the constant; and
 the LAMMPS plugin's tables and input lines, which carry the whole law per contact
-(:mod:`~restitution.laws.exports.plugin_files`).
-Speeds in m/s,
-every file in SI units; each file is written whole or not at all (:mod:`restitution.atomic`).
+(:mod:`~restitution.laws.exports.plugin_files`). Speeds in m/s, every file in SI units; each
+file is written whole or not at all (:mod:`restitution.atomic`).
 """
 
 from __future__ import annotations
