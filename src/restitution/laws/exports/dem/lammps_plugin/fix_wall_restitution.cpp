@@ -90,22 +90,12 @@ void FixWallRestitution::post_force(int /*vflag*/)
     Restitution::ContactState *state = contacts.find(tag[i], 0);
     if (!state) {
       const double w = std::fabs(vn);
-      RestitutionTable::Status status;
-      const double eps = table.epsilon(w, status);
-      if (status == RestitutionTable::Status::Above)
-        error->one(FLERR,
-                   "fix wall/restitution: impact at {:.8g} m/s of atom {} (type {}) on the wall "
-                   "is above the range {:.8g} ... {:.8g} m/s of table {}; no epsilon is "
-                   "extrapolated: give a table that reaches this speed",
-                   w, tag[i], atom->type[i], table.w_min(), table.w_max(), table.name());
-      if (status == RestitutionTable::Status::BadSpeed)
-        error->one(FLERR, "fix wall/restitution: impact speed {} of atom {} is not a finite "
-                   "number", w, tag[i]);
-      double beta = 0.0;
+      double eps = 0.0, beta = 0.0;
       try {
-        beta = table.beta(eps);
+        beta = table.first_touch(w, eps);
       } catch (const Restitution::TableError &err) {
-        error->one(FLERR, "fix wall/restitution: {}", err.what());
+        error->one(FLERR, "fix wall/restitution, atom {} (type {}) on the wall: {}", tag[i],
+                   atom->type[i], err.what());
       }
       state = contacts.open(tag[i], 0, w, eps, beta);
     }

@@ -173,22 +173,12 @@ void PairRestitution::compute(int eflag, int vflag)
       if (!state) {
         const RestitutionTable &table = tables[table_of[itype][jtype]];
         const double w = std::fabs(vn);
-        RestitutionTable::Status status;
-        const double eps = table.epsilon(w, status);
-        if (status == RestitutionTable::Status::Above)
-          error->one(FLERR,
-                     "pair restitution: impact at {:.8g} m/s between atoms {} and {} (types {} "
-                     "{}) is above the range {:.8g} ... {:.8g} m/s of table {}; no epsilon is "
-                     "extrapolated: give a table that reaches this speed",
-                     w, tag[i], tag[j], itype, jtype, table.w_min(), table.w_max(), table.name());
-        if (status == RestitutionTable::Status::BadSpeed)
-          error->one(FLERR, "pair restitution: impact speed {} between atoms {} and {} is not "
-                     "a finite number", w, tag[i], tag[j]);
-        double beta = 0.0;
+        double eps = 0.0, beta = 0.0;
         try {
-          beta = table.beta(eps);
+          beta = table.first_touch(w, eps);
         } catch (const Restitution::TableError &err) {
-          error->one(FLERR, "pair restitution, types {} {}: {}", itype, jtype, err.what());
+          error->one(FLERR, "pair restitution, atoms {} and {} (types {} {}): {}", tag[i],
+                     tag[j], itype, jtype, err.what());
         }
         state = contacts.open(tag[i], tag[j], w, eps, beta);
       }

@@ -253,6 +253,22 @@ double RestitutionTable::epsilon(double w, Status &status) const
   return hermite(w, w_[lo], w_[lo + 1], eps_[lo], eps_[lo + 1], slope_[lo], slope_[lo + 1]);
 }
 
+double RestitutionTable::first_touch(double w, double &eps) const
+{
+  Status status;
+  eps = epsilon(w, status);
+  if (status == Status::Inside || status == Status::Below) return beta(eps);
+  std::ostringstream msg;
+  msg.precision(8);
+  if (status == Status::Above)
+    msg << "impact at " << w << " m/s is above the range " << w_min() << " ... " << w_max()
+        << " m/s of table " << name_
+        << "; no epsilon is extrapolated: give a table that reaches this speed";
+  else
+    msg << "impact speed " << w << " m/s is not a finite number";
+  throw TableError(msg.str());
+}
+
 double RestitutionTable::beta(double eps) const
 {
   if (!(eps >= map_eps_.front() && eps <= 1.0)) {

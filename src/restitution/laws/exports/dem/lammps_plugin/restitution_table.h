@@ -49,6 +49,10 @@ class RestitutionTable {
   // beta of Tsuji's damping that gives restitution coefficient eps; throws TableError for an
   // eps outside [smallest map epsilon, 1].
   double beta(double eps) const;
+  // At a contact's first touch with impact speed w (m/s): sets eps = epsilon(w) and returns
+  // beta(eps); throws TableError (what to do in it) above the range, for a speed that is not
+  // a finite number, or for an eps outside the map. The styles add who touched.
+  double first_touch(double w, double &eps) const;
 
   double w_min() const { return w_.front(); }
   double w_max() const { return w_.back(); }
