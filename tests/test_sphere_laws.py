@@ -450,7 +450,9 @@ def test_cli_law_exports_a_sphere_law_file(tmp_path, capsys):
     )  # fmt: skip
     assert code == 0, err
     files = sorted(out_dir.iterdir())
-    assert len(files) == 11  # 5 tables and codes, 4 snippets, the plugin's table and lines
+    # 5 tables and codes, 4 snippets, the plugin's tables (the grains', the grain on the wall)
+    # and its input lines.
+    assert len(files) == 12
     for p in files:
         if p.suffix != ".json":
             assert "grain: sphere: elastic sphere (3D)" in p.read_text(), p.name
