@@ -770,6 +770,27 @@ def test_stored_rows_are_range_checked_when_read(tmp_path):
         (("curve", "--out", ""), "'--out': is empty"),
         (("law", "--export", " "), "'--export': is empty"),
         (("collide", "--bogus"), "No such option '--bogus'"),
+        # A bad speed in the command's words, not the library's ("speeds ... array(...)").
+        (
+            (
+                "law",
+                "--E",
+                "210e9",
+                "--nu",
+                "0.3",
+                "--rho",
+                "7850",
+                "--shape",
+                "sphere",
+                "--against",
+                "wall",
+                "--speed",
+                "1",
+                "--speed",
+                "-1",
+            ),
+            "--speed must be a finite number >= 0 (m/s), got -1.0",
+        ),  # fmt: skip
     ],
 )
 def test_usage_errors_are_one_line_and_an_empty_path_is_refused(cli, tmp_path, args, match,

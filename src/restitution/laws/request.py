@@ -327,6 +327,13 @@ class LawRequest:
         if self.shape not in SHAPES:
             self.grain  # noqa: B018 -- the grain's own one-line refusal of the geometry
         speeds = tuple(self.speeds) or DEFAULT_SPEEDS_M_S
+        for w in speeds:  # in the command's words (issue 47: "speeds ... array([ 1., -1.])")
+            if (
+                isinstance(w, bool)
+                or not isinstance(w, int | float)
+                or not (math.isfinite(w) and w >= 0.0)
+            ):
+                raise InputError(f"--speed must be a finite number >= 0 (m/s), got {w!r}")
         object.__setattr__(self, "speeds", speeds)
         for name in ("law_file", "identical_law_file", "partner_identical_law_file",
                      "export_dir", "store"):  # fmt: skip
