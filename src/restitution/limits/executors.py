@@ -29,6 +29,7 @@ import sys
 import threading
 import time
 from collections.abc import Iterator
+from multiprocessing import resource_tracker
 from typing import Any
 
 import restitution.budget as budget
@@ -67,25 +68,49 @@ def _single_threaded_children() -> Iterator[None]:
                 os.environ[k] = v
 
 
+class _Deferred:
+    """A Ctrl-C taken while the workers started, to be raised once they run."""
+
+    def __init__(self) -> None:
+        self.taken = False
+
+    def take(self, signum, frame) -> None:  # noqa: ARG002 - a signal handler's signature
+        self.taken = True
+
+    def raise_if_taken(self) -> None:
+        """Raise the Ctrl-C taken while the workers started (the caller holds the cluster)."""
+        if self.taken:
+            raise KeyboardInterrupt
+
+
 @contextlib.contextmanager
-def _children_without_sigint() -> Iterator[None]:
-    """Worker processes started inside this block ignore Ctrl-C (SIGINT).
+def _children_without_sigint() -> Iterator[_Deferred]:
+    """Worker processes started inside this block never see Ctrl-C (SIGINT); one pressed
+    meanwhile is kept and raised by :meth:`_Deferred.raise_if_taken` once they run.
 
     The sweep stops its workers when it is interrupted. Interrupted themselves while they
     started, the workers printed tracebacks and left the cluster in a state its exit handler
-    asserted on (issue 30: tracebacks after Ctrl-C of ``curve --workers 2``). An ignored signal
-    stays ignored across fork and exec, and Python keeps it ignored at start-up; Dask spawns
-    the workers from its own thread, so the disposition (process-wide) is set, not a thread's
-    mask. A Ctrl-C while the workers start (a few seconds, said on stderr) is ignored by this
-    process too; one after it interrupts the sweep.
+    asserted on (issue 30: tracebacks after Ctrl-C of ``curve --workers 2``). The block used to
+    ignore SIGINT process-wide, so a Ctrl-C in its first seconds was lost and the sweep ran to
+    its end (issue 47). Now SIGINT is *blocked* in this thread: every thread started here (Dask's
+    event loop, the thread that spawns the workers) inherits the mask, and so do the worker
+    processes (a signal mask survives fork and exec, and Python leaves it alone), while this
+    process takes the signal through a handler that only records it: in another of its threads,
+    or, pending, when the mask is lifted.
     """
+    deferred = _Deferred()
     if threading.current_thread() is not threading.main_thread():
-        yield
+        yield deferred
         return
-    old = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    # multiprocessing starts its resource tracker with SIGINT blocked and then *unblocks* it in
+    # the starting thread (Dask's event loop): started now, before the mask, it is left alone.
+    resource_tracker.ensure_running()
+    old = signal.signal(signal.SIGINT, deferred.take)
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
     try:
-        yield
+        yield deferred
     finally:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # a pending one: taken
         signal.signal(signal.SIGINT, old)
 
 
@@ -224,8 +249,11 @@ def executor(
         from distributed import Client, LocalCluster
 
         if sys.stderr.isatty():
-            print(f"starting {workers} workers (Ctrl-C is taken once they run)", file=sys.stderr)
-        with _single_threaded_children(), _children_without_sigint():
+            print(
+                f"starting {workers} workers (a Ctrl-C now stops the sweep once they run)",
+                file=sys.stderr,
+            )
+        with _single_threaded_children(), _children_without_sigint() as deferred:
             cluster = LocalCluster(
                 n_workers=workers,
                 threads_per_worker=1,
@@ -239,6 +267,7 @@ def executor(
                 silence_logs=logging.CRITICAL,
             )
         with cluster, Client(cluster) as c:
+            deferred.raise_if_taken()  # inside: the cluster closes as after any Ctrl-C
             yield c.get_executor(pure=False), f"dask LocalCluster, {workers} workers"
         return
     n = budget.cpu_count()
