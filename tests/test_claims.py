@@ -7,6 +7,7 @@ another host, its heartbeat is older than the lease).
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import socket
@@ -84,6 +85,39 @@ def test_claims_of_another_host_last_a_lease(store):
         assert b.claim(["fresh", "stale"]) == ({"stale"}, {"fresh"})
 
 
+def test_claims_of_a_live_process_that_stopped_beating_are_taken_over(store):
+    """Issue 47: on one host a claim was judged by its process alone, so the claims of a sweep
+    that hung, or whose process number another program now has (a container restarted under the
+    same host name), held the next sweep waiting forever. A claim whose heartbeat is older than
+    the lease is taken over on every host; here its process (this one) is alive."""
+    now = time.time()
+    with sqlite3.connect(store) as conn:
+        conn.execute(claims_module._SCHEMA)
+        conn.executemany(
+            "INSERT INTO claims VALUES (?, 'hung', ?, ?, ?)",
+            [("fresh", socket.gethostname(), os.getpid(), now),
+             ("stale", socket.gethostname(), os.getpid(), now - LEASE_S - 1.0)],
+        )  # fmt: skip
+    with Claims(store) as b:
+        assert b.claim(["fresh", "stale"]) == ({"stale"}, {"fresh"})
+
+
+def test_a_live_sweep_beats_while_it_computes(store):
+    """The heartbeat thread renews a sweep's claims between its batches (a batch may take longer
+    than the lease), so a live sweep keeps them."""
+    with Claims(store, beat_s=0.02) as a:
+        a.claim(["k1"])
+        with sqlite3.connect(store) as conn:
+            first = conn.execute("SELECT heartbeat FROM claims").fetchone()[0]
+            deadline = time.monotonic() + 30.0
+            while time.monotonic() < deadline:
+                beat = conn.execute("SELECT heartbeat FROM claims").fetchone()[0]
+                if beat > first:
+                    break
+                time.sleep(0.02)
+        assert beat > first
+
+
 def test_closing_releases_the_claims(store):
     with Claims(store) as a:
         a.claim(["k1"])
@@ -106,7 +140,16 @@ def test_two_concurrent_sweeps_compute_every_point_once(store, monkeypatch):
 
     first = threading.Thread(target=sweep, args=(0,))
     first.start()
-    time.sleep(0.05)  # the first has claimed its points
+    deadline = time.monotonic() + 60.0
+    while time.monotonic() < deadline:  # until the first has claimed its points (a fixed
+        # pause of 0.05 s was not always enough on a loaded machine)
+        with (
+            contextlib.suppress(sqlite3.OperationalError),
+            contextlib.closing(sqlite3.connect(store)) as conn,
+        ):
+            if conn.execute("SELECT COUNT(*) FROM claims").fetchone()[0]:
+                break
+        time.sleep(0.01)
     second = threading.Thread(target=sweep, args=(1,))
     second.start()
     first.join(60)
