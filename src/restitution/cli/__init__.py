@@ -99,7 +99,10 @@ def main(argv: list[str] | None = None) -> None:
         exc.show()
         sys.exit(exc.exit_code)
     except RestitutionError as exc:
-        click.echo(f"error: {exc}", err=True)
+        from restitution.cli.words import command_of, in_command_words
+
+        words = sys.argv[1:] if argv is None else list(argv)
+        click.echo(f"error: {in_command_words(str(exc), command_of(cli, words))}", err=True)
         sys.exit(2)
     except OSError as exc:  # a file the command reads or writes, named by the system
         where = f" ({exc.filename})" if exc.filename else ""

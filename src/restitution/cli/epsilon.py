@@ -42,6 +42,7 @@ from restitution.cli.report import (
     format_options,
     output_format,
 )
+from restitution.cli.words import current_command, in_command_words
 from restitution.errors import InputError
 from restitution.limits.sweep import (
     DEFAULTS,
@@ -401,7 +402,7 @@ def _finish(status, advice, failures, report, strict, fmt="text") -> None:
     if fmt != "json":
         note(f"warning: {status}: {advice}")
         for a, n, m in failures[:3]:
-            note(f"  failed: alpha = {a:g}, N = {n}: {m}")
+            note(f"  failed: alpha = {a:g}, N = {n}: {in_command_words(m, current_command())}")
         for spec, m in (report.lost if report is not None else ())[:3]:
             note(
                 f"  lost (worker died; rerun to retry): v = {spec.v:g}, "

@@ -266,8 +266,9 @@ def _start_gap(material: Material, v: float, alpha: float, geometry: str) -> flo
     else:
         mass = 0.5 * math.pi * material.rho
         integral = math.pi * float(i0e(alpha))
-    energy = 0.5 * mass * v**2
-    return max(-math.log(CONTACT_TOL * energy * alpha / integral) / alpha, 0.0)
+    # In logarithms: at v = 1e-300 the energy underflows to 0 (issue 47: a math domain error).
+    ln_ratio = math.log(CONTACT_TOL * 0.5 * mass * alpha / integral) + 2.0 * math.log(v)
+    return max(-ln_ratio / alpha, 0.0)
 
 
 def run_cost(

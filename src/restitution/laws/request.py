@@ -331,9 +331,11 @@ class LawRequest:
             if (
                 isinstance(w, bool)
                 or not isinstance(w, int | float)
-                or not (math.isfinite(w) and w >= 0.0)
+                or not (math.isfinite(w) and w > 0.0)
             ):
-                raise InputError(f"--speed must be a finite number >= 0 (m/s), got {w!r}")
+                # > 0: at rest there is no collision (issue 47: 0 reached the routes, which
+                # refused it in their own words, "need v > 0 and spread >= 0")
+                raise InputError(f"--speed must be a finite number > 0 (m/s), got {w!r}")
         object.__setattr__(self, "speeds", speeds)
         for name in ("law_file", "identical_law_file", "partner_identical_law_file",
                      "export_dir", "store"):  # fmt: skip

@@ -41,6 +41,7 @@ __all__ = [
     "GEOMETRIES",
     "PARTNERS",
     "SHAPES",
+    "SLOWEST_V",
     "Grain",
     "partner_factor",
 ]
@@ -103,6 +104,12 @@ def partner_factor(against: str) -> float:
     raise InputError(
         f"against (the collision partner) must be 'wall' or 'grain', got {describe(against)}"
     )
+
+
+SLOWEST_V = 1e-16
+"""Slowest nonzero reduced speed (``c``) a grain is asked about. The sphere's vibrational loss
+there is 1.05e-17 (Rayleigh's estimate at nu = 0.3; ``1 - epsilon`` rounds to 0), and the
+routes' quadratures of the contact pulse are not sized for the ever longer pulses below it."""
 
 
 @dataclass(frozen=True, init=False)
@@ -269,7 +276,17 @@ class Grain:
             ``v = w / (k c)`` with ``k = 1`` (wall) or ``2`` (grain).
         """
         w = non_negative(speed_m_s, "speeds", "m/s")
-        v = w / self.speed_scale(against)
+        scale = self.speed_scale(against)
+        v = w / scale
+        slow = (np.asarray(v) > 0) & (np.asarray(v) < SLOWEST_V)
+        if np.any(slow):  # issue 47: 1e-300 m/s (or E = 1e300 Pa) ended in a ZeroDivisionError
+            first = float(np.asarray(w)[slow].flat[0])
+            raise InputError(
+                f"the speed {first:.3g} m/s is {first / scale:.3g} c of this grain (c = "
+                f"{self.c_m_s:.3g} m/s): below {SLOWEST_V:g} c the vibrational loss (under "
+                f"1e-17) vanishes in double precision and epsilon is 1; ask for at least "
+                f"{SLOWEST_V * scale:.3g} m/s"
+            )
         return float(v) if np.ndim(speed_m_s) == 0 else v
 
     def speed_m_s(self, v, against: str):
