@@ -996,3 +996,30 @@ def test_a_bounce_estimate_covers_the_steps_it_takes(monkeypatch):
         counted[0] = 0
         bounce(modes, v, alpha, 8, **flight)
         assert counted[0] * collision_seconds(1, n) <= estimate_s, (n, v, alpha, counted[0])
+
+
+@pytest.mark.parametrize(("geometry", "count", "alpha"), [("disk", 300, 2e8), ("sphere", 400, 5e5)])
+def test_the_memory_estimate_covers_the_quadrature_it_builds(geometry, count, alpha):
+    """Issue 47: `epsilon --nu 0.33 --v 1e-9` was not refused and grew to 10-12 GB: the
+    estimate of a collision's memory counted the basis table the surface quadrature keeps, not
+    the temporaries of building it (the peak resident memory of one collision grew 2.75 times
+    the estimate for the disk, 3.27 for the sphere). The allocations of building the quadrature
+    are traced here (numpy reports them to tracemalloc) and must lie within the estimate of the
+    whole collision."""
+    import tracemalloc
+
+    from restitution.bodies.cache import get_modes
+    from restitution.dynamics.collision import CollisionSettings
+    from restitution.dynamics.steps import estimate_work
+
+    nu = 0.33 if geometry == "disk" else 0.3
+    body = get_modes(nu, count, geometry=geometry)
+    est = estimate_work(body, np.array([1e-9]), np.array([alpha]), CollisionSettings())
+    tracemalloc.start()
+    try:
+        body.surface_quadrature(est.n_phi)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak > 2**24  # a table of tens of MB: what the estimate is about
+    assert peak <= est.memory_bytes, (peak / 2**20, est.memory_bytes / 2**20)

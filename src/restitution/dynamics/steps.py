@@ -16,7 +16,14 @@ from restitution.dynamics.integrators import INTEGRATORS
 from restitution.dynamics.settings import DEFAULT_ENERGY_TOL, CollisionSettings
 from restitution.errors import InputError
 
-__all__ = ["MAX_MEMORY_BYTES", "WorkEstimate", "check_work", "estimate_work", "initial_step"]
+__all__ = [
+    "MAX_MEMORY_BYTES",
+    "QUADRATURE_PEAK",
+    "WorkEstimate",
+    "check_work",
+    "estimate_work",
+    "initial_step",
+]
 
 # Step coefficient c of dt = c * min(1 / (alpha v), 1 / omega_max) that gives an energy drift
 # of about 1e-6, measured per integrator at nu = 0.33 (v = 0.005-0.3, alpha = 500-4000,
@@ -48,6 +55,14 @@ def initial_step(
     w_max = float(body.omega.max())
     return coeff * np.minimum(contact_law.step_time(alpha, v), 1.0 / w_max)
 
+
+QUADRATURE_PEAK = 4.0
+"""Peak memory of building a body's surface quadrature over the basis table it keeps (the
+temporaries of its trigonometric and Legendre columns). Measured as the growth of the peak
+resident memory of one :func:`collide_batch` (issue 47: the estimate without it was about 3
+times low, and ``epsilon --nu 0.33 --v 1e-9`` grew to 10-12 GB): the disk 2.75 (n_phi = 0.41 M
+and 0.83 M, N = 300), the sphere 3.27 (58 k and 117 k nodes, N = 400); 4 leaves a fifth for
+other mode sets."""
 
 MAX_MEMORY_BYTES = 4 * 2**30
 """Largest working memory (quadrature and batch arrays) a collision run may plan to use."""
@@ -134,8 +149,9 @@ def estimate_work(
         limit = "body"
     n_phi = settings.n_phi or contact_law.nodes(body, float(alpha.max()))
     orders = np.unique(body.order).size
-    # trig (n_phi x 2K) and a few (B x n_phi) and (B x N) work arrays, 8 bytes each.
-    memory = 8.0 * (n_phi * (2 * orders + 4) + 6 * v.size * (n_phi + len(body)))
+    # trig (n_phi x 2K) at its construction's peak and a few (B x n_phi) and (B x N) work
+    # arrays, 8 bytes each.
+    memory = 8.0 * (QUADRATURE_PEAK * n_phi * (2 * orders + 4) + 6 * v.size * (n_phi + len(body)))
     return WorkEstimate(
         steps=float(steps[worst]),
         t_end=float(t_end[worst]),
