@@ -313,7 +313,7 @@ def test_compute_pair_reference_appends_runs_with_provenance(tmp_path, monkeypat
     from restitution.fem.limits import _assemble
     from restitution.fem.pair_limits import FemPairEpsilon
 
-    def fake(nu, partner, w, *, levels, grading, on_run):
+    def fake(nu, partner, w, *, levels, grading, on_run, geometry):
         runs = [FemRun(a, k, 100, 0.1, 0.9 - 0.01 / a - 1e-4 * 2.0**-k, 1e-6, 10, 1e-3, 0.0)
                 for a in (10.0, 20.0, 40.0) for k in levels]  # fmt: skip
         for run in runs:

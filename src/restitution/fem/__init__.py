@@ -13,10 +13,10 @@ modal solver), :mod:`~restitution.fem.graded` (meshes sized by the contact half-
 :mod:`~restitution.fem.richardson` (the limit h -> 0), :mod:`~restitution.fem.limits` (epsilon
 with h -> 0 and alpha -> infinity), :mod:`~restitution.fem.reference` (stored reference values
 with provenance) and :mod:`~restitution.fem.judge` (a law against the reference). Two free disks
-meeting head-on (the judge of the modal pair): :mod:`~restitution.fem.pair_model` (both meshes
-as one body), :mod:`~restitution.fem.pair_impact` (one collision),
-:mod:`~restitution.fem.pair_limits` (both limits) and :mod:`~restitution.fem.pair_reference`
-(stored reference values of pairs).
+or two free spheres meeting head-on (the judge of the modal pair; ``geometry=`` the kind of
+both): :mod:`~restitution.fem.pair_model` (both meshes as one body),
+:mod:`~restitution.fem.pair_impact` (one collision), :mod:`~restitution.fem.pair_limits` (both
+limits) and :mod:`~restitution.fem.pair_reference` (stored reference values of pairs).
 """
 
 from restitution.fem.compare import Comparison, compare_fem_modal

@@ -1,8 +1,9 @@
-"""One head-on collision of two free disks solved with finite elements (no modal truncation).
+"""One head-on collision of two free disks (or two free spheres) solved with finite elements
+(no modal truncation).
 
-Units: the first disk's, ``E1 = rho1 = R1 = 1`` (2D plane-stress constants); ``w`` (relative
-normal speed of the centres) in ``c1``, ``alpha`` in ``1/R1``, times in ``R1 / c1``, forces per
-unit thickness in ``E1 R1``.
+Units: the first body's, ``E1 = rho1 = R1 = 1`` (a disk's 2D plane-stress constants, a sphere's
+3D ones); ``w`` (relative normal speed of the centres) in ``c1``, ``alpha`` in ``1/R1``, times
+in ``R1 / c1``, forces per unit thickness in ``E1 R1`` (spheres: forces in ``E1 R1^2``).
 
 The pair is the composite body of :mod:`restitution.fem.pair_model` (both half-disk meshes,
 the gap of the modal pair :mod:`restitution.bodies.pair.body`), integrated by the disk-wall
@@ -17,6 +18,10 @@ towards the second and the second at ``w m1 / (m1 + m2)`` towards the first.
 (:func:`restitution.fem.pair_model.pair_scales`) doubled, and is reduced as in
 :func:`restitution.fem.impact.fem_collide` when a run meets a larger pressure or drifts more than
 ``energy_tol``.
+
+``geometry`` names the kind of both bodies (default the disk,
+:data:`restitution.fem.pair_model.PAIR_GEOMETRY`); two spheres are the same collision of their
+meridian sections (:mod:`restitution.fem.pair_model`, **Spheres**), started and stopped alike.
 """
 
 from __future__ import annotations
@@ -39,6 +44,7 @@ from restitution.fem.impact import (
     _start_position,
 )
 from restitution.fem.pair_model import (
+    PAIR_GEOMETRY,
     PairModel,
     check_pair_inputs,
     pair_mesh_settings,
@@ -51,26 +57,29 @@ __all__ = ["PairCollision", "fem_collide_pair", "pair_model_for"]
 
 @dataclass(frozen=True)
 class PairCollision:
-    """One FEM collision of two disks.
+    """One FEM collision of two disks (or spheres).
 
     Attributes
     ----------
     result : CollisionResult
-        ``method="fem"``, ``nu`` the first disk's, ``v`` the relative speed ``w`` (``c1``),
+        ``method="fem"``, ``nu`` the first body's, ``v`` the relative speed ``w`` (``c1``),
         ``alpha`` (``1/R1``), ``epsilon`` of the relative speed, ``max_compression`` the
         largest approach of the centres past touching (``R1``), ``max_force`` the whole
-        disks' contact force (``E1 R1``), ``energy_drift`` relative to ``(mu/2) w^2``.
+        bodies' contact force (``E1 R1``; spheres ``E1 R1^2``), ``energy_drift`` relative to
+        ``(mu/2) w^2``.
     partner : Partner
     nu2 : float
-        The second disk's Poisson number.
+        The second body's Poisson number.
     level : int
-        Mesh level of both disks.
+        Mesh level of both bodies.
     n_dofs : tuple of int
-        Kept dofs of each half disk.
+        Kept dofs of each mesh (half disk or meridian section).
     contact_chords : tuple of float
-        Each disk's longest arc chord within the Hertz half-width, ``R1``.
+        Each body's longest arc chord within the Hertz half-width, ``R1``.
     reference : int
         The body whose arc carries the potential (0: the first).
+    geometry : str
+        The kind of both bodies.
     """
 
     result: CollisionResult
@@ -80,6 +89,7 @@ class PairCollision:
     n_dofs: tuple[int, int]
     contact_chords: tuple[float, float]
     reference: int
+    geometry: str = PAIR_GEOMETRY
 
     @property
     def epsilon(self) -> float:
@@ -90,6 +100,7 @@ class PairCollision:
         """JSON-ready summary (the collision's scalars and both meshes)."""
         r = self.result
         return {
+            "geometry": self.geometry,
             "nu": r.nu,
             "nu2": self.nu2,
             "partner": self.partner.to_dict(),
@@ -118,12 +129,15 @@ def pair_model_for(
     level: int,
     grading: ContactGrading | None = None,
     n_gauss: int = FemSettings.n_gauss,
+    geometry: str = PAIR_GEOMETRY,
 ) -> PairModel:
     """The (cached) :class:`PairModel` that :func:`fem_collide_pair` uses for these inputs
-    (``n_gauss`` Gauss points per arc facet of the reference body)."""
+    (``n_gauss`` Gauss points per arc facet of the reference body, ``geometry`` the kind)."""
     mesh_only = FemSettings(n_gauss=int(n_gauss))
-    first, second = pair_mesh_settings(partner, w, alpha, level, grading, mesh_only)
-    return pair_model(float(nu), partner, first, second, pair_scales(partner, w).half_width)
+    first, second = pair_mesh_settings(partner, w, alpha, level, grading, mesh_only, geometry,
+                                       nu)  # fmt: skip
+    half_width = pair_scales(partner, w, geometry, nu).half_width
+    return pair_model(float(nu), partner, first, second, half_width, geometry)
 
 
 def fem_collide_pair(
@@ -132,27 +146,32 @@ def fem_collide_pair(
     w: float,
     alpha: float,
     *,
+    geometry: str = PAIR_GEOMETRY,
     level: int = 1,
     grading: ContactGrading | None = None,
     settings: FemSettings | None = None,
     **overrides,
 ) -> PairCollision:
-    """Two free disks meeting head-on, solved with finite elements (module docs).
+    """Two free disks (or spheres) meeting head-on, solved with finite elements (module docs).
 
     Parameters
     ----------
     nu : float
-        The first disk's 2D Poisson number.
+        The first body's Poisson number (a disk's 2D one, a sphere's 3D one).
     partner : Partner
-        The second disk: radius, modulus and density in the first disk's units, own ``nu``.
+        The second body: radius, modulus and density in the first body's units, own ``nu``.
     w : float
         Relative normal speed of the centres before the collision, ``c1``, in (0, 1).
     alpha : float
         Hardness of the contact potential, ``1/R1``.
+    geometry : str
+        The kind of both bodies, a kind the FEM route meshes
+        (:func:`restitution.fem.section.fem_geometries`; default the disk).
     level : int
-        Mesh level of both disks (each level halves all element sizes).
+        Mesh level of both bodies (each level halves all element sizes).
     grading : ContactGrading, optional
-        How both meshes are graded (default :func:`restitution.fem.graded.default_grading`).
+        How both meshes are graded (default :func:`restitution.fem.graded.default_grading` of
+        the kind).
     settings : FemSettings, optional
         Integrator settings (``step_safety``, ``energy_tol``, ``max_step_reductions``,
         ``n_gauss``, ``record``, ...); its mesh fields are replaced by the pair's. Keyword
@@ -166,18 +185,19 @@ def fem_collide_pair(
     ------
     InputError
         For a partner that is not a :class:`Partner`, ``w`` outside (0, 1), a non-positive
-        ``alpha`` or a negative level.
+        ``alpha``, a negative level, a kind the FEM route does not mesh or a Poisson number
+        outside the kind's range.
     FemCollisionError
         When no step within ``max_step_reductions`` reductions meets ``energy_tol``.
     """
-    partner, w = check_pair_inputs(partner, w, alpha)
+    partner, w = check_pair_inputs(partner, w, alpha, geometry)
     alpha = float(alpha)
     settings = settings or FemSettings()
     if overrides:
         settings = replace(settings, **overrides)
     start = time.perf_counter()
-    scales = pair_scales(partner, w)
-    pair = pair_model_for(nu, partner, w, alpha, level, grading, settings.n_gauss)
+    scales = pair_scales(partner, w, geometry, nu)
+    pair = pair_model_for(nu, partner, w, alpha, level, grading, settings.n_gauss, geometry)
     model = pair.composite
     e0 = 0.5 * model.disk.mass * w**2
     x_c = _start_position(model, alpha, e0)
@@ -226,4 +246,5 @@ def fem_collide_pair(
         n_dofs=pair.n_dofs,
         contact_chords=pair.contact_chords,
         reference=pair.reference,
+        geometry=pair.geometry,
     )

@@ -1,10 +1,19 @@
-"""Two free disks meeting head-on, as one finite-element body for their contact.
+"""Two free disks, or two free spheres, meeting head-on, as one finite-element body for their
+contact.
 
-Units: the *first* disk's, ``E1 = rho1 = R1 = 1`` (its 2D plane-stress constants). The second
-disk has ``R2 = radius_ratio``, ``E2 = modulus_ratio``, ``rho2 = density_ratio`` and its own
-Poisson number (:class:`restitution.bodies.pair.partner.Partner`). Lengths in ``R1``, the
-relative normal speed ``w`` of the centres in ``c1 = sqrt(E1/rho1)``, ``alpha`` in ``1/R1``,
-forces per unit thickness in ``E1 R1``, energies in ``E1 R1^2``, masses in ``rho1 R1^2``.
+Units: the *first* body's, ``E1 = rho1 = R1 = 1`` (a disk's 2D plane-stress constants, a
+sphere's 3D ones). The second body, of the same kind, has ``R2 = radius_ratio``,
+``E2 = modulus_ratio``, ``rho2 = density_ratio`` and its own Poisson number
+(:class:`restitution.bodies.pair.partner.Partner`). Lengths in ``R1``, the relative normal speed
+``w`` of the centres in ``c1 = sqrt(E1/rho1)``, ``alpha`` in ``1/R1``; disks: forces per unit
+thickness in ``E1 R1``, energies in ``E1 R1^2``, masses in ``rho1 R1^2``; spheres: forces in
+``E1 R1^2``, energies in ``E1 R1^3``, masses in ``rho1 R1^3``.
+
+The kind is the ``geometry`` of every function (default :data:`PAIR_GEOMETRY`, the disk): a
+kind the FEM route meshes (:func:`restitution.fem.section.fem_geometries`). What follows is
+written for disks; a three-dimensional kind (the sphere) is the same construction on the
+meridian sections (:mod:`restitution.fem.section`, the axis ``y = r``), with the differences
+listed under **Spheres** below.
 
 **The formulation** is the modal pair's (:mod:`restitution.bodies.pair.body`). Each disk is the
 half disk of :mod:`restitution.fem.mesh` (the symmetric family, roller on the diameter), in its
@@ -44,7 +53,11 @@ own centre of mass. The gap's change from free vibrations of energies ``E1 + E2`
 Each body is computed in its own reduced units (:func:`restitution.fem.model.fem_model`, cached;
 two identical disks share one model) and scaled: ``K = E_i K_own`` (2D elasticity does not
 change under a change of length), ``M = rho_i R_i^2 M_own``, lengths and arc weights ``R_i``,
-frequencies ``sqrt(E_i / rho_i) / R_i``, compliances ``1 / E_i``.
+frequencies ``sqrt(E_i / rho_i) / R_i``, compliances ``1 / E_i``. In ``d`` dimensions
+(:attr:`BodyKind.dimension <restitution.bodies.kinds.BodyKind.dimension>`) an energy is
+``E R^d`` and a displacement ``R`` times the own one, so ``K = E_i R_i^(d-2) K_own``,
+``M = rho_i R_i^d M_own``, surface weights ``R_i^(d-1)`` and compliances
+``1 / (E_i R_i^(d-2))``.
 
 **Meshes.** Both meshes are graded (:func:`restitution.fem.mesh.graded_half_disk`) by the
 pair's quasistatic contact (:func:`pair_scales`): the 2D Hertz half-width ``b`` of two disks,
@@ -56,6 +69,26 @@ both), the contact zone ``1.2 sqrt(b^2 + 14 R_eff / alpha) / R_i`` (the wall's z
 :func:`restitution.fem.impact.contact_angle_estimate` with the gap's curvature ``1/R_eff``) and
 the far size ``h_far`` of its own radius. Two identical disks at ``w`` and ``alpha`` get the
 meshes of the disk on the wall at ``v = w/2``, ``alpha_wall = 2 alpha``.
+
+**Spheres** (a kind that is not :attr:`~restitution.bodies.kinds.BodyKind.planar`). Each body
+is the sphere's meridian section (:mod:`restitution.fem.section`): its 3D material
+(:func:`restitution.fem.section.fem_material`, no plane-stress conversion), its axisymmetric
+matrices and its surface quadrature ``2 pi r ds`` over the near hemisphere; the section carries
+the whole sphere (masses, energies and forces are the whole bodies'). The gap is the modal
+sphere pair's (:mod:`restitution.bodies.pair.body`): surface points paired by their distance
+``y = r`` from the common axis, ``R1 sin(theta1) = R2 sin(theta2)``; the composite and the
+collision are unchanged, with the scalings above for ``d = 3`` (``K`` times ``E_i R_i``, ``M``
+times ``rho_i R_i^3``, weights ``R_i^2``, compliances ``1 / (E_i R_i)``). The pair's contact
+(:func:`pair_scales`) is 3D Hertz: the compression ``delta``
+(:meth:`Partner.max_compression` with ``geometry`` and the first ``nu``), the peak force
+``F = (4/3) E* sqrt(R_eff) delta^(3/2)`` with ``1/E* = (1 - nu1^2) + (1 - nu2^2) / E2``, the
+contact radius ``a = sqrt(R_eff delta)`` (in place of ``b``), the peak pressure
+``3 F / (2 pi a^2)`` and the contact time ``2.943 delta / w``; the reduced mass is that of the
+whole spheres, ``m_i = (4/3) pi rho_i R_i^3``. The meshes are the sphere's grading
+(:func:`restitution.fem.graded.default_grading`) with the same contact size, zone and far size
+as above. Two identical spheres at ``w`` and ``alpha`` get the meshes of the sphere on the wall
+at ``v = w/2``, ``alpha_wall = 2 alpha`` (``delta = 2 delta_wall(w/2)``, ``R_eff = 1/2``:
+the same ``a``, force and pressure).
 """
 
 from __future__ import annotations
@@ -68,6 +101,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from restitution.bodies.disk.kind import KIND as DISK
+from restitution.bodies.kinds import BodyKind
 from restitution.bodies.material import Material
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
@@ -76,6 +110,7 @@ from restitution.fem.elasticity import HalfDisk, as_material
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.impact import FemSettings
 from restitution.fem.model import FemModel, _largest_eigenvalue, fem_model
+from restitution.fem.section import _kind as fem_kind
 
 __all__ = [
     "PAIR_GEOMETRY",
@@ -88,23 +123,28 @@ __all__ = [
 ]
 
 PAIR_GEOMETRY = DISK.geometry
-"""The kind of both bodies of an FEM pair: the route computes two disks meeting head-on (module
-docs), each meshed as the disk on the wall is."""
+"""The default kind of both bodies of an FEM pair (the disk): the route computes two bodies of
+one kind the FEM route meshes meeting head-on (module docs), each meshed as that body on the
+wall is; ``geometry=`` names another (the sphere)."""
 
 _TRACE = 3
 """Nodes of a quadratic arc facet: its two vertices and its midpoint."""
 
 
-def check_pair_inputs(partner, w: float, alpha: float | None = None) -> tuple[Partner, float]:
+def check_pair_inputs(
+    partner, w: float, alpha: float | None = None, geometry: str = PAIR_GEOMETRY
+) -> tuple[Partner, float]:
     """Refuse what the FEM pair cannot compute; the :class:`Partner` and ``w`` as a float.
 
-    ``partner`` must be a :class:`Partner` of disks, ``w`` (``c1``) in ``(0, 1)``, ``alpha``
-    (``1/R1``, when given) positive and finite.
+    ``partner`` must be a :class:`Partner` (of two bodies of the kind ``geometry``), ``w``
+    (``c1``) in ``(0, 1)``, ``alpha`` (``1/R1``, when given) positive and finite; ``geometry``
+    a kind the FEM route meshes.
     """
+    kind = fem_kind(geometry)
     if not isinstance(partner, Partner):
         raise InputError(
-            "the second disk must be given as a restitution.bodies.pair.Partner (its radius, "
-            f"modulus and density ratios and Poisson number), got {partner!r}"
+            f"the second {kind.geometry} must be given as a restitution.bodies.pair.Partner (its "
+            f"radius, modulus and density ratios and Poisson number), got {partner!r}"
         )
     w = float(w)
     if not 0.0 < w < 1.0:
@@ -118,7 +158,8 @@ def check_pair_inputs(partner, w: float, alpha: float | None = None) -> tuple[Pa
 
 @dataclass(frozen=True)
 class PairScales:
-    """The pair's quasistatic contact at relative speed ``w`` (first disk's units).
+    """The pair's quasistatic contact at relative speed ``w`` (first body's units; the
+    sphere's in brackets).
 
     Attributes
     ----------
@@ -127,13 +168,16 @@ class PairScales:
     compression : float
         Largest approach of the centres, ``R1`` (:meth:`Partner.max_compression`).
     force : float
-        Peak contact force of the whole disks, ``2 E0 / compression``, ``E1 R1``.
+        Peak contact force of the whole disks, ``2 E0 / compression``, ``E1 R1`` (3D Hertz,
+        ``(4/3) E* sqrt(R_eff) compression^(3/2)``, ``E1 R1^2``).
     half_width : float
-        2D Hertz half-width ``b`` of the common contact, ``R1``.
+        2D Hertz half-width ``b`` of the common contact (Hertz contact radius
+        ``sqrt(R_eff compression)``), ``R1``.
     pressure : float
-        Hertz peak pressure ``2 F / (pi b)``, ``E1``.
+        Hertz peak pressure ``2 F / (pi b)`` (``3 F / (2 pi b^2)``), ``E1``.
     contact_time : float
-        ``pi compression / w``, ``R1 / c1`` (eq. 61's ``pi sqrt(ln(4/v))`` on the wall).
+        ``pi compression / w`` (Hertz's ``2.943 compression / w``), ``R1 / c1`` (eq. 61's
+        ``pi sqrt(ln(4/v))`` on the wall).
     effective_radius : float
         ``R1 R2 / (R1 + R2)``, ``R1``.
     """
@@ -147,14 +191,41 @@ class PairScales:
     effective_radius: float
 
 
-def _whole_masses(partner: Partner) -> tuple[float, float]:
-    """Masses of the whole disks per unit thickness, ``rho1 R1^2``."""
-    return math.pi, math.pi * partner.density_ratio * partner.radius_ratio**2
+_HERTZ_TIME = 2.9433
+"""Hertz's contact time over ``delta_max / v`` (:data:`restitution.bodies.sphere.surface.
+CONTACT_TIME_CONSTANT`, the sphere's on the wall): the time scale of a 3D pair's contact."""
 
 
-def pair_scales(partner: Partner, w: float) -> PairScales:
+def _whole_masses(partner: Partner, kind: BodyKind) -> tuple[float, float]:
+    """Masses of the whole bodies: the unit ball of the kind's dimension ``d`` times
+    ``rho_i R_i^d`` (disks ``pi R^2``, per unit thickness, ``rho1 R1^2``; spheres
+    ``(4/3) pi R^3``, ``rho1 R1^3``)."""
+    d = kind.dimension
+    unit = math.pi ** (d / 2) / math.gamma(d / 2 + 1)
+    return unit, unit * partner.density_ratio * partner.radius_ratio**d
+
+
+def _pair_nu(kind: BodyKind, nu: float | None) -> float | None:
+    """The first body's Poisson number, checked by ``kind``, where the kind's scales need it
+    (:attr:`BodyKind.scales_need_nu`); ``None`` where they do not (the disk's)."""
+    if not kind.scales_need_nu:
+        return None
+    if nu is None:
+        raise InputError(
+            f"the contact scales of two {kind.geometry}s need the first one's Poisson number; "
+            "pass nu="
+        )
+    return kind.check_nu(nu)
+
+
+def pair_scales(
+    partner: Partner, w: float, geometry: str = PAIR_GEOMETRY, nu: float | None = None
+) -> PairScales:
     """The quasistatic scales of the pair at relative speed ``w`` (``c1``) that size its meshes
-    and its time step (module docs); for identical disks the wall's at ``v = w/2``.
+    and its time step (module docs); for identical bodies the wall's at ``v = w/2``.
+
+    ``geometry`` is the kind of both bodies; a kind whose scales need the Poisson number (the
+    sphere) takes the first body's ``nu`` (the partner's is :meth:`Partner.nu2`).
 
     Examples
     --------
@@ -163,22 +234,33 @@ def pair_scales(partner: Partner, w: float) -> PairScales:
     >>> round(s.half_width, 12) == round(contact_half_width(0.1), 12)
     True
     """
-    partner, w = check_pair_inputs(partner, w)
-    m1, m2 = _whole_masses(partner)
+    partner, w = check_pair_inputs(partner, w, geometry=geometry)
+    kind = fem_kind(geometry)
+    nu = _pair_nu(kind, nu)
+    m1, m2 = _whole_masses(partner, kind)
     mu = m1 * m2 / (m1 + m2)
-    delta = float(partner.max_compression(w))
-    force = mu * w**2 / delta
+    delta = float(partner.max_compression(w, kind.geometry, nu))
     r2, e2 = partner.radius_ratio, partner.modulus_ratio
     r_eff = r2 / (1.0 + r2)
-    e_eff = e2 / (1.0 + e2)
-    b = math.sqrt(4.0 * force * r_eff / (math.pi * e_eff))
+    if kind.planar:
+        force = mu * w**2 / delta
+        e_eff = e2 / (1.0 + e2)
+        b = math.sqrt(4.0 * force * r_eff / (math.pi * e_eff))
+        pressure = 2.0 * force / (math.pi * b)
+        duration = math.pi * delta / w
+    else:
+        e_star = 1.0 / ((1.0 - nu**2) + (1.0 - partner.nu2(nu) ** 2) / e2)
+        force = 4.0 / 3.0 * e_star * math.sqrt(r_eff) * delta**1.5
+        b = math.sqrt(r_eff * delta)
+        pressure = 3.0 * force / (2.0 * math.pi * b**2)
+        duration = _HERTZ_TIME * delta / w
     return PairScales(
         w=w,
         compression=delta,
         force=force,
         half_width=b,
-        pressure=2.0 * force / (math.pi * b),
-        contact_time=math.pi * delta / w,
+        pressure=pressure,
+        contact_time=duration,
         effective_radius=r_eff,
     )
 
@@ -190,16 +272,19 @@ def pair_mesh_settings(
     level: int,
     grading: ContactGrading | None = None,
     base: FemSettings | None = None,
+    geometry: str = PAIR_GEOMETRY,
+    nu: float | None = None,
 ) -> tuple[FemSettings, FemSettings]:
     """The two bodies' mesh settings (each in its own units) for ``w`` (``c1``), ``alpha``
-    (``1/R1``) and the mesh ``level`` (module docs: meshes); integrator fields from ``base``.
+    (``1/R1``) and the mesh ``level`` (module docs: meshes); integrator fields from ``base``;
+    ``geometry`` and ``nu`` as for :func:`pair_scales`.
     """
-    partner, w = check_pair_inputs(partner, w, alpha)
+    partner, w = check_pair_inputs(partner, w, alpha, geometry)
     if int(level) != level or level < 0:
         raise InputError(f"the mesh level must be a non-negative integer, got {level}")
-    grading = grading or default_grading(PAIR_GEOMETRY)
+    grading = grading or default_grading(geometry)
     base = base or FemSettings()
-    scales = pair_scales(partner, w)
+    scales = pair_scales(partner, w, geometry, nu)
     b = scales.half_width
     zone = 1.2 * math.sqrt(b**2 + 14.0 * scales.effective_radius / alpha)
     out = []
@@ -312,24 +397,29 @@ class PairModel:
     Attributes
     ----------
     partner : Partner
+    geometry : str
+        The kind of both bodies.
     materials : tuple of Material
-        Each body's material in its own reduced units (``E = rho = 1``, its own ``nu``).
+        Each body's material in its own reduced units (``E = rho = 1``, its own ``nu``; a
+        disk's 2D constants, a sphere's 3D ones).
     bodies : tuple of FemModel
         Each body's model in its own units.
     reference : int
         The body whose arc carries the potential: 0 (the first) unless the second is smaller.
     composite : FemModel
-        The pair as one body in the first disk's units; its dofs are the first body's followed
+        The pair as one body in the first body's units; its dofs are the first body's followed
         by the second's (``R1``); ``disk.mesh`` and ``disk.basis`` are ``None`` (two meshes).
     n_first : int
         Kept dofs of the first body.
     masses : tuple of float
-        The discrete half-disk masses ``m1, m2`` (``rho1 R1^2``).
+        The discrete masses ``m1, m2`` of the meshes: half disks (``rho1 R1^2``) or whole
+        spheres (``rho1 R1^3``).
     contact_chords : tuple of float
         Each body's longest arc chord in the Hertz half-width ``b``, ``R1``.
     """
 
     partner: Partner
+    geometry: str
     materials: tuple[Material, Material]
     bodies: tuple[FemModel, FemModel]
     reference: int
@@ -340,16 +430,16 @@ class PairModel:
 
     @property
     def n_dofs(self) -> tuple[int, int]:
-        """Kept dofs of each half disk."""
+        """Kept dofs of each mesh (half disk or meridian section)."""
         return tuple(int(m.disk.n_dofs) for m in self.bodies)
 
     def split(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """A composite vector as the two bodies' parts (``R1``, first-disk units)."""
+        """A composite vector as the two bodies' parts (``R1``, first-body units)."""
         return u[: self.n_first], u[self.n_first :]
 
 
 def _scale(partner: Partner, body: int) -> tuple[float, float, float]:
-    """``(R, E, rho)`` of ``body`` in the first disk's units."""
+    """``(R, E, rho)`` of ``body`` in the first body's units."""
     if body == 0:
         return 1.0, 1.0, 1.0
     return partner.radius_ratio, partner.modulus_ratio, partner.density_ratio
@@ -357,25 +447,35 @@ def _scale(partner: Partner, body: int) -> tuple[float, float, float]:
 
 @functools.lru_cache(maxsize=4)
 def pair_model(
-    nu: float, partner: Partner, first: FemSettings, second: FemSettings, half_width: float
+    nu: float,
+    partner: Partner,
+    first: FemSettings,
+    second: FemSettings,
+    half_width: float,
+    geometry: str = PAIR_GEOMETRY,
 ) -> PairModel:
     """Both bodies' models and the composite body (cached).
 
     Parameters
     ----------
     nu : float
-        The first disk's 2D Poisson number.
+        The first body's Poisson number (a disk's 2D one, a sphere's 3D one).
     partner : Partner
     first, second : FemSettings
         Each body's mesh in its own units (:func:`pair_mesh_settings`).
     half_width : float
         The pair's Hertz half-width ``b`` (``R1``), for the contact chords only.
+    geometry : str
+        The kind of both bodies (module docs).
     """
-    materials = (as_material(float(nu)), as_material(partner.nu2(float(nu))))
+    kind = fem_kind(geometry)
+    d = kind.dimension
+    materials = (as_material(float(nu), kind.geometry),
+                 as_material(partner.nu2(float(nu)), kind.geometry))  # fmt: skip
     models = tuple(
         fem_model(
             material, int(s.refine), float(s.contact_angle), s.h_contact, s.h_far, s.grading,
-            s.n_gauss, PAIR_GEOMETRY,
+            s.n_gauss, kind.geometry,
         )
         for material, s in zip(materials, (first, second), strict=True)
     )  # fmt: skip
@@ -384,7 +484,8 @@ def pair_model(
     scale = [_scale(partner, i) for i in (0, 1)]
     r_ref, r_other = scale[ref][0], scale[other][0]
 
-    # The reference's quadrature; its points' heights from the P2 trace of its own facets.
+    # The reference's quadrature; its points' heights (a sphere's: distances from the axis,
+    # the modal pair's pairing) from the P2 trace of its own facets.
     rq = models[ref].quad
     where = models[ref].disk.basis.doflocs[:, models[ref].disk.free]
     height = r_ref * (rq.B @ where[1])
@@ -398,8 +499,8 @@ def pair_model(
     stiffness, mass_diagonal, translation = [], [], []
     for i, model in enumerate(models):
         radius, modulus, density = scale[i]
-        stiffness.append(modulus * model.disk.K)
-        mass_diagonal.append(density * radius**2 * model.disk.M.diagonal())
+        stiffness.append(modulus * radius ** (d - 2) * model.disk.K)
+        mass_diagonal.append(density * radius**d * model.disk.M.diagonal())
         translation.append(model.disk.rigid)
     m = tuple(float(t @ (md * t)) for t, md in zip(translation, mass_diagonal, strict=True))
     total = m[0] + m[1]
@@ -409,7 +510,7 @@ def pair_model(
     M = sp.diags(mass_diag).tocsr()
     n = mass_diag.size
     n_first = int(models[0].disk.n_dofs)
-    weight = r_ref * rq.weight
+    weight = r_ref ** (d - 1) * rq.weight
     B = sp.hstack(blocks, format="csr")
     offset = 0 if ref == 0 else n_first
     quad = ArcQuadrature(
@@ -423,7 +524,7 @@ def pair_model(
     disk = HalfDisk(
         material=materials[0],
         discretisation="P2+lumped",
-        geometry=PAIR_GEOMETRY,
+        geometry=kind.geometry,
         mesh=None,
         basis=None,
         free=np.arange(n),
@@ -444,7 +545,8 @@ def pair_model(
         r=M @ rigid,
         omega_K=max(omega),
         lambda_B=_largest_eigenvalue(BtWB, mass_diag),
-        chi=chi[0] / scale[0][1] + chi[1] / scale[1][1],
+        chi=chi[0] / (scale[0][1] * scale[0][0] ** (d - 2))
+        + chi[1] / (scale[1][1] * scale[1][0] ** (d - 2)),
         h_min=min(model.h_min * scale[i][0] for i, model in enumerate(models)),
     )
     chords = tuple(
@@ -453,6 +555,7 @@ def pair_model(
     )
     return PairModel(
         partner=partner,
+        geometry=kind.geometry,
         materials=materials,
         bodies=models,
         reference=ref,
