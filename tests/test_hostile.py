@@ -931,6 +931,8 @@ _STEEL = ("--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape", "sphere", "
         ((*_STEEL, "--speed", "1", "--reference-speed", "1e-300"), "is 1.93e-304 c of this grain"),
         (("law", "--E", "1e300", *_STEEL[2:], "--speed", "1"), "c = 1.13e+148 m/s"),
         (("compare-fem", "--nu", "0.33", "--v", "1e-300"), "more than the 1 h bound"),
+        # Forcing was offered (and taken) for a run of 7.6e295 days: advice that fails.
+        (("compare-fem", "--nu", "0.33", "--v", "1e-300", "--force"), "--force is no way out"),
         # At rest there is no collision: the routes refused 0 in their own words.
         ((*_STEEL, "--speed", "0"), "--speed must be a finite number > 0 (m/s), got 0.0"),
     ],

@@ -23,6 +23,7 @@ from restitution.errors import InputError
 
 __all__ = [
     "MEMORY_SHARE",
+    "NEVER_S",
     "TIME_BOUND_S",
     "available_memory",
     "check_memory",
@@ -43,6 +44,10 @@ to the other processes of this (shared) machine and to the slack of the estimate
 
 TIME_BOUND_S = 3600.0
 """Longest estimated wall time of one run, seconds, unless forced."""
+
+NEVER_S = 30 * 86400.0
+"""Estimated seconds beyond which a run is refused even when forced (30 days): it would not end
+on any machine this package plans for, so forcing is not offered."""
 
 # Wall time of one time step of a collision of N modes: 17 us + 13 ns * N. Measured on the
 # project's 2-core machine (load average about 3.5, shared with a long computation) with
@@ -258,10 +263,17 @@ def check_time_total(
         One line: the estimated and allowed time, what fits, and how to force.
     """
     bound = TIME_BOUND_S if bound is None else bound
-    if need > bound and not force:
+    if need > bound and (not force or need > NEVER_S):
+        # Forcing is offered only where a forced run ends (issue 47: advice that fails when
+        # followed; compare-fem --v 1e-300 offered --force for 7.6e295 days).
+        how = (
+            f", or give {override} (it lifts the time bound, never the memory bound)"
+            if need <= NEVER_S
+            else f"; {override} is no way out: a run of over {format_duration(NEVER_S)} would "
+            "not end"
+        )
         raise InputError(
             f"{named(name, value)} would take about {format_duration(need)} ({what}), more "
-            f"than the {format_duration(bound)} bound of one run; {fit(bound)} in it, or give "
-            f"{override} (it lifts the time bound, never the memory bound)"
+            f"than the {format_duration(bound)} bound of one run; {fit(bound)} in it{how}"
         )
     return need
