@@ -104,6 +104,7 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.kinds import BodyKind
 from restitution.bodies.material import Material
 from restitution.bodies.pair.partner import Partner
+from restitution.bodies.sphere.surface import CONTACT_TIME_CONSTANT
 from restitution.errors import InputError
 from restitution.fem.contact import ArcQuadrature
 from restitution.fem.elasticity import HalfDisk, as_material
@@ -191,11 +192,6 @@ class PairScales:
     effective_radius: float
 
 
-_HERTZ_TIME = 2.9433
-"""Hertz's contact time over ``delta_max / v`` (:data:`restitution.bodies.sphere.surface.
-CONTACT_TIME_CONSTANT`, the sphere's on the wall): the time scale of a 3D pair's contact."""
-
-
 def _whole_masses(partner: Partner, kind: BodyKind) -> tuple[float, float]:
     """Masses of the whole bodies: the unit ball of the kind's dimension ``d`` times
     ``rho_i R_i^d`` (disks ``pi R^2``, per unit thickness, ``rho1 R1^2``; spheres
@@ -253,7 +249,7 @@ def pair_scales(
         force = 4.0 / 3.0 * e_star * math.sqrt(r_eff) * delta**1.5
         b = math.sqrt(r_eff * delta)
         pressure = 3.0 * force / (2.0 * math.pi * b**2)
-        duration = _HERTZ_TIME * delta / w
+        duration = CONTACT_TIME_CONSTANT * delta / w  # Hertz's, as on the wall
     return PairScales(
         w=w,
         compression=delta,
