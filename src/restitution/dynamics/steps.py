@@ -141,7 +141,7 @@ def estimate_work(
         <= settings.max_steps
     ):
         limit = "tolerance"  # the default tolerance's step would fit
-    elif flight[worst] > 0.5 * t_end[worst]:
+    elif flight[worst] >= 0.5 * t_end[worst]:  # ">=": an infinite flight (v = 1e-300) too
         limit = "approach"
     elif wall_time[worst] * float(body.omega.max()) < 1.0:
         limit = "wall"  # the exponential wall: alpha v > omega_max
