@@ -647,6 +647,7 @@ def test_ctrl_c_of_a_dask_sweep_stops_it_without_a_traceback(tmp_path, after_s):
             "0.33", "--v", "0.1", "0.2", "0.3", "--modes", "400", "800", "1600", "3200",
             "--workers", "2", "--out", str(tmp_path / "out"), "--no-progress",
             "--store", str(tmp_path / "s.db")]  # fmt: skip
+
     def as_a_shell_starts_it():
         # A shell starts a command with Ctrl-C at its default; pytest-xdist's workers ignore
         # it, and an ignored signal stays ignored in a child (the sweep then never took it).
