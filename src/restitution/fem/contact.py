@@ -74,7 +74,7 @@ class ArcQuadrature:
 
 
 def arc_quadrature(
-    disk: HalfDisk, n_gauss: int = 8, phi_max: float = 0.5 * math.pi
+    disk: HalfDisk, n_gauss: int = 8, phi_max: float = 0.5 * math.pi, y_max: float | None = None
 ) -> ArcQuadrature:
     """Build the arc quadrature of a discretised half disk.
 
@@ -86,6 +86,9 @@ def arc_quadrature(
     phi_max : float
         Facets whose midpoint angle exceeds this (radians) are left out; ``pi/2`` gives the
         paper's range ``-pi/2 <= phi <= pi/2`` of the whole disk.
+    y_max : float, optional
+        Facets whose midpoint lies farther than this from the axis ``y = 0`` (``R``) are left
+        out too (a flat boundary, :mod:`restitution.fem.block`, where every angle is ``pi/2``).
     """
     if n_gauss < 1:
         raise InputError(f"n_gauss must be at least 1, got {n_gauss}")
@@ -95,6 +98,8 @@ def arc_quadrature(
     a, b = mesh.facets[0, facets], mesh.facets[1, facets]
     mid_loc = mesh.doflocs[:, nverts + facets]
     keep = np.arctan2(mid_loc[1], mid_loc[0]) <= phi_max + 1e-12
+    if y_max is not None:
+        keep &= mid_loc[1] <= y_max
     facets, a, b, mid_loc = facets[keep], a[keep], b[keep], mid_loc[:, keep]
     Xa, Xb, Xm = mesh.doflocs[:, a], mesh.doflocs[:, b], mid_loc
 

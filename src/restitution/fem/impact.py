@@ -67,6 +67,7 @@ __all__ = [
     "fem_collide",
     "model_for",
     "pressure_estimate",
+    "run_accepted",
     "verlet_step",
 ]
 
@@ -343,6 +344,33 @@ def _run(model: FemModel, v: float, alpha: float, dt: float, s: FemSettings) -> 
             return out
 
 
+def run_accepted(
+    model: FemModel, v: float, alpha: float, dt: float, settings: FemSettings, who: str
+) -> _Run:
+    """Runs of the collision from the step ``dt`` down until one is stable and drifts at most
+    ``energy_tol``: an unstable run plans for half again the pressure it met (and at least
+    halves the step), a drifting one aims at half the tolerance (Verlet's energy error goes
+    like ``dt^2``); :class:`FemCollisionError` naming ``who`` after ``max_step_reductions``."""
+    run = None
+    for attempt in range(settings.max_step_reductions + 1):
+        run = _run(model, v, alpha, dt, settings)
+        if run.stable and run.drift <= settings.energy_tol:
+            return run
+        if attempt == settings.max_step_reductions:
+            why = "was unstable" if not run.stable else f"drifted by {run.drift:.2e}"
+            raise FemCollisionError(
+                f"{who} at dt = {dt:.3g} {why} after {attempt} step reductions "
+                f"(energy_tol = {settings.energy_tol:.1e}); raise max_step_reductions or "
+                "energy_tol, or lower step_safety"
+            )
+        if not run.stable:
+            pressure = 1.5 * run.max_pressure
+            dt = min(0.5 * dt, _stable_step(model, alpha, pressure, settings.step_safety))
+        else:
+            dt *= float(np.clip(math.sqrt(0.5 * settings.energy_tol / run.drift), 0.1, 0.8))
+    return run
+
+
 def fem_collide(
     material_or_nu: Material | float,
     v: float,
@@ -402,25 +430,7 @@ def fem_collide(
     dt = _stable_step(
         model, alpha, pressure_estimate(v, geometry, material.nu), settings.step_safety
     )
-    run = None
-    for attempt in range(settings.max_step_reductions + 1):
-        run = _run(model, v, alpha, dt, settings)
-        if run.stable and run.drift <= settings.energy_tol:
-            break
-        if attempt == settings.max_step_reductions:
-            why = "was unstable" if not run.stable else f"drifted by {run.drift:.2e}"
-            raise FemCollisionError(
-                f"the run at dt = {dt:.3g} {why} after {attempt} step reductions "
-                f"(energy_tol = {settings.energy_tol:.1e}); raise max_step_reductions or "
-                "energy_tol, or lower step_safety"
-            )
-        if not run.stable:
-            # Plan for half again the pressure met so far.
-            pressure = 1.5 * run.max_pressure
-            dt = min(0.5 * dt, _stable_step(model, alpha, pressure, settings.step_safety))
-        else:
-            # Verlet's energy error scales like dt^2: aim at half the tolerance.
-            dt *= float(np.clip(math.sqrt(0.5 * settings.energy_tol / run.drift), 0.1, 0.8))
+    run = run_accepted(model, v, alpha, dt, settings, "the run")
     wall = time.perf_counter() - t_start
     history = None
     if settings.record and run.history:

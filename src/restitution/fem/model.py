@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
+from skfem import MeshTri2
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.bodies.material import Material
@@ -29,7 +30,7 @@ from restitution.fem.contact import ArcQuadrature, arc_quadrature
 from restitution.fem.elasticity import HalfDisk, assemble_half_disk
 from restitution.fem.mesh import graded_half_disk
 
-__all__ = ["FemModel", "fem_model"]
+__all__ = ["FemModel", "fem_model", "model_of_mesh"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -115,8 +116,23 @@ def fem_model(
     mesh = graded_half_disk(
         refine, contact_angle, h_contact=h_contact, h_far=h_far, grading=grading
     )
+    return model_of_mesh(mesh, material, n_gauss, geometry)
+
+
+def model_of_mesh(
+    mesh: MeshTri2,
+    material: Material,
+    n_gauss: int,
+    geometry: str,
+    surface_reach: float | None = None,
+) -> FemModel:
+    """The :class:`FemModel` of any mesh with the boundaries of :mod:`restitution.fem.mesh`
+    (``"arc"``, the contact side; ``"diameter"``, the symmetry line or axis): the matrices of
+    ``geometry``, the contact quadrature on the arc facets (those within ``surface_reach`` of
+    the axis when given, :func:`restitution.fem.contact.arc_quadrature`), the bounds and the
+    compliances."""
     disk = assemble_half_disk(mesh, material, "P2+lumped", geometry)
-    quad = arc_quadrature(disk, n_gauss)
+    quad = arc_quadrature(disk, n_gauss, y_max=surface_reach)
     mass_diagonal = disk.M.diagonal()
     r = disk.M @ disk.rigid
     omega_K = math.sqrt(_largest_eigenvalue(disk.K, mass_diagonal))

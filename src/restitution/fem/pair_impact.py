@@ -26,22 +26,18 @@ meridian sections (:mod:`restitution.fem.pair_model`, **Spheres**), started and 
 
 from __future__ import annotations
 
-import math
 import time
 from dataclasses import dataclass, replace
-
-import numpy as np
 
 from restitution.bodies.pair.partner import Partner
 from restitution.dynamics.results import CollisionResult
 from restitution.fem.graded import ContactGrading
 from restitution.fem.impact import (
     INTEGRATOR,
-    FemCollisionError,
     FemSettings,
-    _run,
     _stable_step,
     _start_position,
+    run_accepted,
 )
 from restitution.fem.pair_model import (
     PAIR_GEOMETRY,
@@ -205,23 +201,7 @@ def fem_collide_pair(
         # Approach, four quasistatic contact times and a margin, as on the wall.
         settings = replace(settings, max_time=(-1.0 - x_c) / w + 4.0 * scales.contact_time + 10)
     dt = _stable_step(model, alpha, 2.0 * scales.pressure, settings.step_safety)
-    run = None
-    for attempt in range(settings.max_step_reductions + 1):
-        run = _run(model, w, alpha, dt, settings)
-        if run.stable and run.drift <= settings.energy_tol:
-            break
-        if attempt == settings.max_step_reductions:
-            why = "was unstable" if not run.stable else f"drifted by {run.drift:.2e}"
-            raise FemCollisionError(
-                f"the pair's run at dt = {dt:.3g} {why} after {attempt} step reductions "
-                f"(energy_tol = {settings.energy_tol:.1e}); raise max_step_reductions or "
-                "energy_tol, or lower step_safety"
-            )
-        if not run.stable:
-            pressure = 1.5 * run.max_pressure
-            dt = min(0.5 * dt, _stable_step(model, alpha, pressure, settings.step_safety))
-        else:
-            dt *= float(np.clip(math.sqrt(0.5 * settings.energy_tol / run.drift), 0.1, 0.8))
+    run = run_accepted(model, w, alpha, dt, settings, "the pair's run")
     result = CollisionResult(
         method="fem",
         nu=float(pair.materials[0].nu),

@@ -441,6 +441,110 @@ def _scale(partner: Partner, body: int) -> tuple[float, float, float]:
     return partner.radius_ratio, partner.modulus_ratio, partner.density_ratio
 
 
+def compose(
+    models: tuple[FemModel, FemModel],
+    scale: tuple[tuple[float, float, float], tuple[float, float, float]],
+    ref: int,
+    tip: float,
+    dimension: int,
+) -> tuple[FemModel, tuple[float, float]]:
+    """Two bodies' models as the composite body of the module docs, in the first body's units.
+
+    Parameters
+    ----------
+    models : tuple of FemModel
+        Each body in its own units, its contact side at ``+x`` facing the other.
+    scale : tuple of (R, E, rho)
+        Each body's length, modulus and density in the first body's units.
+    ref : int
+        The body whose contact quadrature carries the potential (its points' heights must lie
+        on the other's contact side).
+    tip : float
+        The other body's reference ``x`` where its contact side meets the axis, first body's
+        units (``R2`` for a ball whose centre is its origin; ``0`` for a block whose top is,
+        :mod:`restitution.fem.block`): the composite's heights are ``x1_ref + x2_ref - tip``.
+    dimension : int
+        ``d`` of the scalings (2 for a disk's half, 3 for a meridian section).
+
+    Returns
+    -------
+    composite : FemModel
+    masses : tuple of float
+        The discrete masses of both bodies (first body's units).
+    """
+    d = dimension
+    other = 1 - ref
+    r_ref, r_other = scale[ref][0], scale[other][0]
+    materials = tuple(model.disk.material for model in models)
+    geometry = models[0].disk.geometry
+
+    # The reference's quadrature; its points' heights (a sphere's: distances from the axis,
+    # the modal pair's pairing) from the P2 trace of its own facets.
+    rq = models[ref].quad
+    where = models[ref].disk.basis.doflocs[:, models[ref].disk.free]
+    height = r_ref * (rq.B @ where[1])
+    B_other, x_other, chi_other = _trace_at_heights(models[other], height / r_other)
+    blocks = [None, None]
+    x_ref = [None, None]
+    chi = [None, None]
+    blocks[ref], x_ref[ref], chi[ref] = rq.B, r_ref * rq.x_ref, models[ref].chi
+    blocks[other], x_ref[other], chi[other] = B_other, r_other * x_other, chi_other
+
+    stiffness, mass_diagonal, translation = [], [], []
+    for i, model in enumerate(models):
+        radius, modulus, density = scale[i]
+        stiffness.append(modulus * radius ** (d - 2) * model.disk.K)
+        mass_diagonal.append(density * radius**d * model.disk.M.diagonal())
+        translation.append(model.disk.rigid)
+    m = tuple(float(t @ (md * t)) for t, md in zip(translation, mass_diagonal, strict=True))
+    total = m[0] + m[1]
+    rigid = np.concatenate([m[1] / total * translation[0], m[0] / total * translation[1]])
+    mass_diag = np.concatenate(mass_diagonal)
+    K = sp.block_diag(stiffness, format="csr")
+    M = sp.diags(mass_diag).tocsr()
+    n = mass_diag.size
+    weight = r_ref ** (d - 1) * rq.weight
+    B = sp.hstack(blocks, format="csr")
+    offset = 0 if ref == 0 else int(models[0].disk.n_dofs)
+    quad = ArcQuadrature(
+        phi=rq.phi,
+        x_ref=x_ref[0] + x_ref[1] - tip,
+        weight=weight,
+        B=B,
+        BT=B.T.tocsr(),
+        facet_nodes=rq.facet_nodes + offset,
+    )
+    disk = HalfDisk(
+        material=materials[0],
+        discretisation="P2+lumped",
+        geometry=geometry,
+        mesh=None,
+        basis=None,
+        free=np.arange(n),
+        K=K,
+        M=M,
+        rigid=rigid,
+        mass=float(rigid @ (M @ rigid)),
+    )
+    omega = [
+        model.omega_K * math.sqrt(scale[i][1] / scale[i][2]) / scale[i][0]
+        for i, model in enumerate(models)
+    ]
+    BtWB = (B.T @ sp.diags(weight) @ B).tocsr()
+    composite = FemModel(
+        disk=disk,
+        quad=quad,
+        inverse_mass=1.0 / mass_diag,
+        r=M @ rigid,
+        omega_K=max(omega),
+        lambda_B=_largest_eigenvalue(BtWB, mass_diag),
+        chi=chi[0] / (scale[0][1] * scale[0][0] ** (d - 2))
+        + chi[1] / (scale[1][1] * scale[1][0] ** (d - 2)),
+        h_min=min(model.h_min * scale[i][0] for i, model in enumerate(models)),
+    )
+    return composite, m
+
+
 @functools.lru_cache(maxsize=4)
 def pair_model(
     nu: float,
@@ -476,75 +580,8 @@ def pair_model(
         for material, s in zip(materials, (first, second), strict=True)
     )  # fmt: skip
     ref = 0 if partner.radius_ratio >= 1.0 else 1
-    other = 1 - ref
-    scale = [_scale(partner, i) for i in (0, 1)]
-    r_ref, r_other = scale[ref][0], scale[other][0]
-
-    # The reference's quadrature; its points' heights (a sphere's: distances from the axis,
-    # the modal pair's pairing) from the P2 trace of its own facets.
-    rq = models[ref].quad
-    where = models[ref].disk.basis.doflocs[:, models[ref].disk.free]
-    height = r_ref * (rq.B @ where[1])
-    B_other, x_other, chi_other = _trace_at_heights(models[other], height / r_other)
-    blocks = [None, None]
-    x_ref = [None, None]
-    chi = [None, None]
-    blocks[ref], x_ref[ref], chi[ref] = rq.B, r_ref * rq.x_ref, models[ref].chi
-    blocks[other], x_ref[other], chi[other] = B_other, r_other * x_other, chi_other
-
-    stiffness, mass_diagonal, translation = [], [], []
-    for i, model in enumerate(models):
-        radius, modulus, density = scale[i]
-        stiffness.append(modulus * radius ** (d - 2) * model.disk.K)
-        mass_diagonal.append(density * radius**d * model.disk.M.diagonal())
-        translation.append(model.disk.rigid)
-    m = tuple(float(t @ (md * t)) for t, md in zip(translation, mass_diagonal, strict=True))
-    total = m[0] + m[1]
-    rigid = np.concatenate([m[1] / total * translation[0], m[0] / total * translation[1]])
-    mass_diag = np.concatenate(mass_diagonal)
-    K = sp.block_diag(stiffness, format="csr")
-    M = sp.diags(mass_diag).tocsr()
-    n = mass_diag.size
-    n_first = int(models[0].disk.n_dofs)
-    weight = r_ref ** (d - 1) * rq.weight
-    B = sp.hstack(blocks, format="csr")
-    offset = 0 if ref == 0 else n_first
-    quad = ArcQuadrature(
-        phi=rq.phi,
-        x_ref=x_ref[0] + x_ref[1] - partner.radius_ratio,
-        weight=weight,
-        B=B,
-        BT=B.T.tocsr(),
-        facet_nodes=rq.facet_nodes + offset,
-    )
-    disk = HalfDisk(
-        material=materials[0],
-        discretisation="P2+lumped",
-        geometry=kind.geometry,
-        mesh=None,
-        basis=None,
-        free=np.arange(n),
-        K=K,
-        M=M,
-        rigid=rigid,
-        mass=float(rigid @ (M @ rigid)),
-    )
-    omega = [
-        model.omega_K * math.sqrt(scale[i][1] / scale[i][2]) / scale[i][0]
-        for i, model in enumerate(models)
-    ]
-    BtWB = (B.T @ sp.diags(weight) @ B).tocsr()
-    composite = FemModel(
-        disk=disk,
-        quad=quad,
-        inverse_mass=1.0 / mass_diag,
-        r=M @ rigid,
-        omega_K=max(omega),
-        lambda_B=_largest_eigenvalue(BtWB, mass_diag),
-        chi=chi[0] / (scale[0][1] * scale[0][0] ** (d - 2))
-        + chi[1] / (scale[1][1] * scale[1][0] ** (d - 2)),
-        h_min=min(model.h_min * scale[i][0] for i, model in enumerate(models)),
-    )
+    scale = tuple(_scale(partner, i) for i in (0, 1))
+    composite, m = compose(models, scale, ref, partner.radius_ratio, d)
     chords = tuple(
         scale[i][0] * _contact_chord(model, half_width / scale[i][0])
         for i, model in enumerate(models)
@@ -556,7 +593,7 @@ def pair_model(
         bodies=models,
         reference=ref,
         composite=composite,
-        n_first=n_first,
+        n_first=int(models[0].disk.n_dofs),
         masses=m,
         contact_chords=chords,
     )
