@@ -17,8 +17,10 @@ Command line (one process, one point after the other)::
 
     python -m restitution.fem.wall_reference OUT.json [NU:V[:THICKNESS[:FIRST_LEVEL]] ...]
         [--modulus-ratio E_W] [--density-ratio RHO_W] [--wall-nu NU_W] [--append]
+    python -m restitution.fem.wall_reference OUT.json --merge PART.json [PART.json ...]
 
-(``THICKNESS`` in ``R``, ``inf`` or nothing for the half-space.)
+(``THICKNESS`` in ``R``, ``inf`` or nothing for the half-space; ``--merge`` joins files computed
+by processes apart, :func:`merge_wall_references`.)
 """
 
 from __future__ import annotations
@@ -48,6 +50,7 @@ __all__ = [
     "WallReferencePoint",
     "compute_wall_reference",
     "load_wall_reference",
+    "merge_wall_references",
     "wall_from_dict",
 ]
 
@@ -194,6 +197,33 @@ def compute_wall_reference(
     return doc
 
 
+def merge_wall_references(path: str | Path, parts: Iterable[str | Path]) -> dict:
+    """One file at ``path`` from files computed apart (two processes, one point each): their
+    ``"runs"`` in order, each point naming its run anew; a point of the same key in a later
+    part replaces an earlier one."""
+    doc = None
+    for part in parts:
+        other = json.loads(Path(part).read_text())
+        if other.get("geometry") != "sphere-on-wall":
+            raise InputError(f"{part} is not an FEM reference of a sphere on a wall")
+        if doc is None:
+            doc = {**other, "runs": [], "points": []}
+        offset = len(doc["runs"])
+        doc["runs"].extend(other["runs"])
+        new = [{**p, "run": p["run"] + offset} for p in other["points"]]
+        keys = {_key(p) for p in new}
+        doc["points"] = [p for p in doc["points"] if _key(p) not in keys] + new
+    if doc is None:
+        raise InputError("give at least one file to merge")
+    doc["points"].sort(key=_key)
+    versions = sorted({r["code_version"] for r in doc["runs"]})
+    doc["code_version"] = versions[0] if len(versions) == 1 else versions
+    commits = sorted({r.get("git_commit", "unknown") for r in doc["runs"]})
+    doc["git_commit"] = commits[0] if len(commits) == 1 else commits
+    atomic.write_text(Path(path), json.dumps(doc, indent=1) + "\n")
+    return doc
+
+
 def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePoint, ...]:
     """The reference points from ``path`` (default the shipped file)."""
     if path is None:
@@ -263,7 +293,15 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--wall-nu", type=float, default=_GLASS_ON_STEEL[2],
                         help="the wall's Poisson number (default glass's)")  # fmt: skip
     parser.add_argument("--append", action="store_true", help="add to an existing OUT.json")
+    parser.add_argument(
+        "--merge", nargs="+", metavar="PART",
+        help="write OUT.json from files computed apart, and compute nothing",
+    )  # fmt: skip
     args = parser.parse_intermixed_args(argv)
+    if args.merge:
+        doc = merge_wall_references(args.out, args.merge)
+        print(f"wrote {args.out}: {len(doc['points'])} points from {len(doc['runs'])} runs")
+        return
     constants = (args.modulus_ratio, args.density_ratio, args.wall_nu)
     points = [_parse_point(p, constants) for p in args.points] or None
     try:

@@ -8,7 +8,10 @@ The curve is Zener's thin-plate model solved as the coupled equation
 (:mod:`restitution.quasistatic.plate`), drawn solid where its validity holds and dotted where
 it does not, with its error band; the horizontal line is the half-space
 (:mod:`restitution.quasistatic.half_space`: the ball's vibrations and the block's radiated
-waves) with its error. The finite elements that would judge both (issue 42) are not built yet.
+waves) with its error. The finite-element judge's stored points of this ball on glass
+(:mod:`restitution.fem.wall_reference`: plates and the block, both limits and both checks)
+are drawn where their speed is the figure's: the second figure, at :data:`FEM_SPEED_M_S`, holds
+them; at 1 m/s none is stored yet.
 """
 
 from __future__ import annotations
@@ -27,6 +30,8 @@ STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
 GLASS = {"E": 63e9, "nu": 0.2481, "rho": 2500.0}
 RADIUS_M = 2.5e-3
 SPEED_M_S = 1.0
+FEM_SPEED_M_S = 5e-4 * float(np.sqrt(STEEL["E"] / STEEL["rho"]))
+"""The speed of the judge's stored plate points, ``v = 5e-4 c`` (2.59 m/s)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -49,10 +54,28 @@ class ThicknessCurve:
     valid: np.ndarray
     half_space: float
     half_space_err: float
+    speed_m_s: float = SPEED_M_S
+    fem: tuple = ()
+    """``(thickness_mm, epsilon, epsilon_err)`` of the stored FEM points at this speed
+    (``inf`` for the block)."""
 
 
-def compute(thickness_mm=None) -> ThicknessCurve:
-    """Zener's model at each thickness and the half-space, at 1 m/s (module docs)."""
+def _fem_points(v: float, ratios) -> tuple:
+    """The judge's stored points of a steel ball on this glass at ``v`` (``c``)."""
+    from restitution.fem.wall_reference import load_wall_reference
+
+    out = []
+    for p in load_wall_reference():
+        w = p.wall
+        same = (w.modulus_ratio, w.density_ratio, w.nu) == tuple(ratios)
+        if same and p.nu == STEEL["nu"] and abs(p.v - v) <= 1e-9 * v:
+            mm = getattr(w, "thickness", np.inf) * RADIUS_M * 1e3
+            out.append((float(mm), p.epsilon, p.epsilon_err))
+    return tuple(sorted(out))
+
+
+def compute(thickness_mm=None, speed_m_s: float = SPEED_M_S) -> ThicknessCurve:
+    """Zener's model at each thickness and the half-space, at ``speed_m_s`` (module docs)."""
     from restitution.bodies.cache import get_modes
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.quasistatic.half_space import half_space_loss
@@ -62,7 +85,7 @@ def compute(thickness_mm=None) -> ThicknessCurve:
 
     h = np.geomspace(0.5, 100.0, 61) if thickness_mm is None else np.asarray(thickness_mm)
     ratios = (GLASS["E"] / STEEL["E"], GLASS["rho"] / STEEL["rho"], GLASS["nu"])
-    v = SPEED_M_S / np.sqrt(STEEL["E"] / STEEL["rho"])
+    v = speed_m_s / np.sqrt(STEEL["E"] / STEEL["rho"])
     eps, err, ok = [], [], []
     for mm in h:
         plate = Plate(*ratios, thickness=mm * 1e-3 / RADIUS_M)
@@ -76,7 +99,8 @@ def compute(thickness_mm=None) -> ThicknessCurve:
     modes = get_modes(STEEL["nu"], LOW_SPEED_MODES, geometry=SPHERE.geometry)
     block = half_space_loss(modes, v, HalfSpace(*ratios))
     return ThicknessCurve(np.asarray(h, dtype=float), np.array(eps), np.array(err),
-                          np.array(ok), block.epsilon, block.epsilon_err)  # fmt: skip
+                          np.array(ok), block.epsilon, block.epsilon_err, float(speed_m_s),
+                          _fem_points(v, ratios))  # fmt: skip
 
 
 def plot(c: ThicknessCurve, path=None, notes=()):
@@ -101,15 +125,25 @@ def plot(c: ThicknessCurve, path=None, notes=()):
                color="tab:red", alpha=0.2, lw=0)  # fmt: skip
     ax.axhline(c.half_space, color="tab:red", lw=1.0,
                label="half-space (ball's vibrations + radiated waves)")  # fmt: skip
+    plates = [p for p in c.fem if np.isfinite(p[0])]
+    if plates:
+        x, y, e = zip(*plates, strict=True)
+        ax.errorbar(x, y, e, fmt="o", color="k", ms=4, capsize=3, label="finite elements (plate)")
+    for _, eps, err in (p for p in c.fem if not np.isfinite(p[0])):
+        ax.errorbar([c.thickness_mm[-1]], [eps], [err], fmt="s", color="k", ms=4, capsize=3,
+                    label="finite elements (block)")  # fmt: skip
     ax.set_xscale("log")
     ax.set_ylim(0.0, 1.02)
     ax.set_xlabel("glass plate thickness h (mm)")
     ax.set_ylabel("epsilon")
-    ax.set_title("A 5 mm steel ball on glass at 1 m/s", fontsize=10)
+    ax.set_title(f"A 5 mm steel ball on glass at {c.speed_m_s:.3g} m/s", fontsize=10)
     ax.legend(fontsize=7, loc="lower right")
     add_notes(fig, ["bands: error estimates, cut to [0, 1]; Zener's plate has no radiation "
                     "into its depth: it tends to 1, not to the block (dotted: its model fails)",
-                    "no finite-element judge of the wall yet (issue 42)", *notes])  # fmt: skip
+                    *([] if c.fem else [f"no finite-element point is stored at "
+                                        f"{c.speed_m_s:.3g} m/s (they are at "
+                                        f"{FEM_SPEED_M_S:.3g} m/s: the second figure)"]),
+                    *notes])  # fmt: skip
     if path is not None:
         with replacing(path) as tmp:
             fig.savefig(tmp, dpi=110)
@@ -122,8 +156,16 @@ def main(argv=None) -> None:
         argv,
         "Draw epsilon against plate thickness.",
         "plate_thickness_steel_glass.png",
-        lambda args, path: plot(compute(), path),
+        _draw_both,
     )
+
+
+def _draw_both(args, path) -> None:
+    """The 1 m/s figure at ``path`` and the judge's speed beside it (``..._2.6ms.png``)."""
+    plot(compute(), path)
+    second = path.with_name(f"{path.stem}_{FEM_SPEED_M_S:.2g}ms.png")
+    plot(compute(speed_m_s=FEM_SPEED_M_S), second)
+    print(f"wrote {second}")
 
 
 if __name__ == "__main__":
