@@ -34,7 +34,7 @@ from skfem import MeshTri1, MeshTri2
 from restitution.bodies.material import Material
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
-from restitution.fem.mesh import ARC, DIAMETER
+from restitution.fem.mesh import ARC, DIAMETER, graded_refinement
 from restitution.fem.model import FemModel, model_of_mesh
 
 __all__ = ["block_model", "graded_block"]
@@ -91,20 +91,13 @@ def graded_block(
     # and so their refinement, do not depend on the block's size.
     xs = -np.unique(np.append(np.arange(0.0, depth, h_far), depth))[::-1]
     ys = np.unique(np.append(np.arange(0.0, radius, h_far), radius))
-    m = MeshTri1.init_tensor(np.sort(xs), ys)
     scale = 2.0**-refine
-    for _ in range(max_passes):
-        q = m.p[:, m.t]
-        edges = np.stack([q[:, 1] - q[:, 0], q[:, 2] - q[:, 1], q[:, 0] - q[:, 2]])
-        longest = np.sqrt((edges**2).sum(axis=1)).max(axis=0)
-        cx, cy = q.mean(axis=1)
-        d = np.maximum(_distance_to_contact(cx, cy, contact_width) - 0.5 * longest, 0.0)
-        target = scale * np.minimum(h_far, h_contact + grading * d)
-        marked = np.nonzero(longest > target)[0]
-        if marked.size == 0:
-            break
-        m = m.refined(marked)
-    else:
+    m = graded_refinement(
+        MeshTri1.init_tensor(np.sort(xs), ys),
+        lambda x, y: _distance_to_contact(x, y, contact_width),
+        scale * h_contact, scale * h_far, scale * grading, max_passes,
+    )  # fmt: skip
+    if m is None:
         raise InputError(
             f"the block's mesh did not reach its size function in {max_passes} passes; "
             "raise h_contact or h_far"

@@ -28,7 +28,7 @@ from skfem import MeshTri1, MeshTri2
 
 from restitution.errors import InputError
 
-__all__ = ["graded_half_disk", "uniform_half_disk", "ARC", "DIAMETER"]
+__all__ = ["graded_half_disk", "graded_refinement", "uniform_half_disk", "ARC", "DIAMETER"]
 
 ARC = "arc"
 """Name of the boundary part ``r = 1, y > 0``."""
@@ -146,22 +146,42 @@ def graded_half_disk(
         raise InputError(f"contact_angle must lie in [0, pi], got {contact_angle}")
     if not (0 < h_contact <= h_far):
         raise InputError(f"need 0 < h_contact <= h_far, got {h_contact}, {h_far}")
-    scale = 2.0**-refine
-    m = _project_arc(_coarse().refined())
+    m = graded_refinement(
+        _project_arc(_coarse().refined()),
+        lambda x, y: _distance_to_contact_arc(x, y, contact_angle),
+        2.0**-refine * h_contact, 2.0**-refine * h_far, 2.0**-refine * grading, max_passes,
+        _project_arc,
+    )  # fmt: skip
+    if m is None:
+        raise InputError(
+            f"the graded mesh did not reach its size function in {max_passes} passes; "
+            "raise max_passes or h_contact"
+        )
+    return _quadratic(m)
+
+
+def graded_refinement(
+    m: MeshTri1,
+    distance,
+    h_contact: float,
+    h_far: float,
+    grading: float,
+    max_passes: int,
+    after=lambda m: m,
+) -> MeshTri1 | None:
+    """``m`` bisected until every element's longest edge is below
+    ``min(h_far, h_contact + grading d)``, ``d = distance(x, y)`` of the element's nearest
+    point (its centroid's less half its longest edge); ``after`` is applied to every refined
+    mesh (the half disk projects its arc). ``None`` if ``max_passes`` passes do not reach it."""
     for _ in range(max_passes):
         p = m.p[:, m.t]
         edges = np.stack([p[:, 1] - p[:, 0], p[:, 2] - p[:, 1], p[:, 0] - p[:, 2]])
         longest = np.sqrt((edges**2).sum(axis=1)).max(axis=0)
         cx, cy = p.mean(axis=1)
-        d = _distance_to_contact_arc(cx, cy, contact_angle)
-        # Measure d from the element's nearest point, not its centroid.
-        d = np.maximum(d - 0.5 * longest, 0.0)
-        target = scale * np.minimum(h_far, h_contact + grading * d)
+        d = np.maximum(distance(cx, cy) - 0.5 * longest, 0.0)
+        target = np.minimum(h_far, h_contact + grading * d)
         marked = np.nonzero(longest > target)[0]
         if marked.size == 0:
-            return _quadratic(m)
-        m = _project_arc(m.refined(marked))
-    raise InputError(
-        f"the graded mesh did not reach its size function in {max_passes} passes; "
-        "raise max_passes or h_contact"
-    )
+            return m
+        m = after(m.refined(marked))
+    return None
