@@ -124,3 +124,15 @@ def test_the_plate_thickness_figure_is_drawn(tmp_path):
     assert 0.99 < c.half_space < c.epsilon[3]
     plate_thickness.plot(c, tmp_path / "f.png")
     assert (tmp_path / "f.png").stat().st_size > 10_000
+    assert c.fem == ()  # no finite-element point is stored at 1 m/s
+
+
+def test_the_judges_speed_has_its_figure_with_the_finite_elements_on_it(tmp_path):
+    """docs/figures/plate_thickness_steel_glass_2.6ms.png: at the speed of the stored FEM
+    points (``v = 5e-4 c``) the figure draws both plates (3 and 10 mm) and the block."""
+    from restitution.reproduction.figures import plate_thickness
+
+    c = plate_thickness.compute([3.0, 10.0], speed_m_s=plate_thickness.FEM_SPEED_M_S)
+    assert [round(p[0], 9) for p in c.fem] == [3.0, 10.0, math.inf]
+    plate_thickness.plot(c, tmp_path / "g.png")
+    assert (tmp_path / "g.png").stat().st_size > 10_000
