@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from restitution.errors import InputError
 
-__all__ = ["HalfSpace", "Plate"]
+__all__ = ["HalfSpace", "Plate", "wall_from_dict"]
 
 
 @dataclass(frozen=True)
@@ -108,3 +108,13 @@ class Plate(HalfSpace):
 
     def to_dict(self) -> dict:
         return {**super().to_dict(), "kind": "plate", "thickness": self.thickness}
+
+
+def wall_from_dict(d: dict) -> HalfSpace:
+    """The wall of a :meth:`HalfSpace.to_dict` (``"kind"`` ``"half-space"`` or ``"plate"``)."""
+    constants = (float(d["modulus_ratio"]), float(d["density_ratio"]), float(d["nu"]))
+    if d["kind"] == "plate":
+        return Plate(*constants, thickness=float(d["thickness"]))
+    if d["kind"] == "half-space":
+        return HalfSpace(*constants)
+    raise InputError(f"a wall's kind is 'half-space' or 'plate', got {d['kind']!r}")

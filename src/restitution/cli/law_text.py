@@ -167,6 +167,8 @@ def status_notes(a) -> list[str]:
     for p in a.points:
         if not getattr(p, "informative", True):
             out.append(f"note: at {p.speed_m_s:.4g} m/s: {_uninformative_part(p.note)}")
+        elif p.status != Status.OUTSIDE and "from the finite elements" in (p.note or ""):
+            out.append(f"note: at {p.speed_m_s:.4g} m/s: {p.note}")  # a stored FEM point
     return out
 
 

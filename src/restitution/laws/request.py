@@ -470,14 +470,13 @@ class LawRequest:
                 "--radius goes with --wall-thickness (a plate) or --relaxation-time; a "
                 "half-space needs no radius: leave it out"
             )
-        needs = [what for what, asked in (("--export", self.export_dir is not None),
-                 ("--reference-speed/--maxwell-temperature", self.constants),
-                 ("damping", self.damped), ("--law-file", self.law_file is not None),
+        needs = [what for what, asked in (("damping", self.damped),
+                 ("--law-file", self.law_file is not None),
                  ("--compute", self.compute)) if asked]  # fmt: skip
         if needs:
             raise InputError(
                 f"{' and '.join(needs)} with an elastic wall: not available yet (the wall's law "
-                "is computed at the asked speeds only); leave them out"
+                "comes from its routes, computed now); leave them out"
             )
 
     @property

@@ -14,7 +14,10 @@ A law defined at every speed, for exports, constants and plots, is the route's w
 
 :func:`wall_law` does the same for a sphere on an elastic wall (issue 42): a half-space (the
 ball's vibrations and the waves radiated into the block, up to the route's reach) or a thin
-plate (Zener's model, speed by speed where it holds; docs/walls.md).
+plate (Zener's model, speed by speed where it holds; docs/walls.md). Where neither route has a
+value (above the half-space's reach, a plate where Zener's model fails), a point of the finite
+elements' judge stored at the asked speed answers (:func:`restitution.laws.wall_points.
+stored_wall_point`); other speeds there are ``outside``.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from __future__ import annotations
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.production import low_speed_points, low_speed_record, route_reach
+from restitution.laws.wall_points import stored_wall_point
 
 __all__ = ["route_law", "route_serves", "wall_law"]
 
@@ -94,6 +98,8 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
         records.append(low_speed_record(v, r.epsilon, r.energy_loss, r.energy_loss_err,
                                         details={"shares": list(r.shares),
                                                  "band": list(r.band)}))  # fmt: skip
+    above = sorted({float(v) for v in speeds if float(v) > top})
+    records += [r for r in (stored_wall_point(nu, wall, v) for v in above) if r is not None]
     parameters = {
         "route": "the ball's modes driven by Hertz's pulse on the elastic half-space (Rayleigh's "
         "estimate) and the waves radiated into it (Lamb's point-force radiation; "
@@ -119,6 +125,7 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
     (``metadata["refused"]``), served as ``outside``."""
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.errors import InputError
+    from restitution.laws.wall_grid import route_top
     from restitution.quasistatic.hertz_sphere import SPHERE_MASS
     from restitution.quasistatic.plate import model_error, plate_impact, validity
 
@@ -129,7 +136,11 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
         if not r.rebounds:
             reasons.insert(0, "the ball does not rebound (it stays on the plate)")
         if reasons:
-            refused[repr(v)] = "; ".join(reasons)
+            stored = stored_wall_point(nu, plate, v)
+            if stored is None:
+                refused[repr(v)] = "; ".join(reasons)
+            else:
+                records.append({**stored, "model_refused": "; ".join(reasons)})
             continue
         records.append(low_speed_record(v, r.epsilon, 1.0 - r.epsilon**2, model_error(r, plate),
                                         details={"plate_energy": r.plate_energy,
@@ -139,8 +150,13 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
             "the thin-plate model serves none of the asked speeds: "
             + "; ".join(sorted(set(refused.values())))
         )
-    parameters = {"route": "Zener's thin plate, the coupled equation "
-                  "(restitution.quasistatic.plate)"}  # fmt: skip
+    parameters = {
+        "route": "Zener's thin plate, the coupled equation (restitution.quasistatic.plate)"
+    }
+    try:  # the fastest speed the model holds at (for the outside rows' note)
+        parameters["reach"] = route_top(nu, plate)
+    except InputError:
+        pass  # not even at the slowest grid speed: the asked speeds say why
     law = EpsilonLaw.from_records(
         nu, records, key="low_speed", parameters=parameters, geometry=SPHERE.geometry,
         at_points_only=True,

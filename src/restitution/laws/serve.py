@@ -133,6 +133,8 @@ def serve(
         grain = r.grain
         what = ("Zener's thin-plate model" if r.wall_thickness is not None
                 else "the ball's vibrations and the waves radiated into the wall")  # fmt: skip
+        if r.export_dir is not None or r.constants:
+            return _wall_grid_answer(r, note, progress)
         note(f"note: an elastic wall: each speed is computed now ({what}; seconds)")
         vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
         s = SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
@@ -185,6 +187,39 @@ def serve(
             note(f"note: no LAMMPS plugin tables written: {folder.no_plugin}")
         written = tuple(folder.paths)
     return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
+
+
+def _wall_grid_answer(r: LawRequest, note, progress: bool) -> LawAnswer:
+    """An elastic wall's answer with exports or constants: its route on a grid of speeds
+    (:func:`restitution.laws.wall_grid.wall_grid_law`), served at every speed of its range."""
+    from restitution import budget
+    from restitution.laws.wall_grid import grid_seconds, wall_grid_law
+
+    if r.plastic:
+        raise InputError(
+            "plastic flow with an elastic wall is answered at the asked speeds only; leave out "
+            "--export and --reference-speed/--maxwell-temperature"
+        )
+    if r.export_dir is not None:
+        check_output_dir(r.export_dir, "--export")  # before anything is computed
+    grain, wall = r.grain, r.elastic_wall
+    seconds = grid_seconds(grain.law_nu, wall)
+    what = "exports" if r.export_dir is not None else "constant"
+    note(f"note: an elastic wall: its law on a grid of speeds for the {what} is computed now "
+         f"(about {budget.format_duration(seconds)})")  # fmt: skip
+    s = SILaw(grain, "wall", wall_grid_law(grain.law_nu, wall, progress=progress))
+    points, _ = flag_points(s, s.points(list(r.speeds), note=note))
+    status, advice = overall_status(points)
+    constant, pairs = _constants(r, s)
+    written: tuple = ()
+    if r.export_dir is not None:
+        folder = exports.write_folder(s, pairs or constant, r.export_dir, None, r.friction)
+        if folder.no_closed_form is not None:
+            note(f"note: no closed form written: {folder.no_closed_form}")
+        if folder.no_plugin is not None:
+            note(f"note: no LAMMPS plugin tables written: {folder.no_plugin}")
+        written = tuple(folder.paths)
+    return LawAnswer(r, s, None, points, status, advice, constant, pairs, written)
 
 
 def _viscoelastic(r: LawRequest, damped: DampedLaw | None, note):

@@ -91,7 +91,7 @@ PLATE_QUASISTATIC_NOTE = (
     "from Zener's thin-plate model, not from collisions: Hertz's contact coupled to the plate's "
     "point impedance 8 sqrt(D rho h), solved as the coupled equation; the loss is the plate's "
     "flexural waves (the ball's own vibrations are not included); its error an estimate of the "
-    "model's neglected terms, not yet judged by the finite elements (docs/walls.md)"
+    "model's neglected terms, judged by the finite elements at 2.6 m/s (docs/walls.md)"
 )
 """What ``quasistatic`` means for a sphere on a thin plate."""
 
@@ -227,6 +227,17 @@ def _quasistatic_note(law) -> str:
     return _ROUTE_NOTES.get(route, STATUSES[Status.QUASISTATIC])
 
 
+def _stored_note(record: dict) -> str:
+    """What a stored finite-element point of an elastic wall is."""
+    why = record.get("model_refused")
+    return (
+        "from the finite elements, not from a route: the wall's judge stored at this speed "
+        f"(v = {float(record['v_stored']):.6g} c; ball and wall meshed, both limits; the "
+        "ball's vibrations and the wall's waves together, not split; docs/walls.md)"
+        + (f"; the thin-plate model does not hold here: {why}" if why else "")
+    )
+
+
 def _first_share(record: dict) -> float | None:
     """The first grain's fraction of the loss in a law point's record, if it holds the split."""
     shares = record.get("shares")
@@ -257,6 +268,20 @@ def _shares(law, v: float) -> tuple[float, float] | None:
     return None if first is None else (first, 1.0 - first)
 
 
+def _route_reach(law) -> float:
+    """The fastest speed (``c``) of a law served at its points only: its route's reach where
+    the law states one, else its fastest point of the route (points of the finite elements
+    stored beyond the route are not its reach)."""
+    if not isinstance(law, EpsilonLaw):
+        return float(law.v[-1])
+    reach = law.metadata.get("low_speed", {}).get("reach")
+    if reach is not None:
+        return float(reach)
+    routed = [float(r["v"]) for r in law._records()
+              if not str(r.get("route", "")).startswith("finite elements")]  # fmt: skip
+    return max(routed) if routed else float(law.v[-1])
+
+
 def _status(law, v: float) -> tuple[str, str]:
     pts = np.asarray(law.v, dtype=float)
     ok = np.asarray(law.asymptotic_ok, dtype=bool)
@@ -265,6 +290,10 @@ def _status(law, v: float) -> tuple[str, str]:
     if at.size:
         if quasi[at[0]]:
             return Status.QUASISTATIC, _quasistatic_note(law)
+        record = law._records()[at[0]] if isinstance(law, EpsilonLaw) else {}
+        if str(record.get("route", "")).startswith("finite elements"):
+            status = Status.COMPUTED if ok[at[0]] else Status.COMPUTED_NOT_ASYMPTOTIC
+            return status, _stored_note(record)
         if ok[at[0]]:
             return Status.COMPUTED, ""
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
@@ -273,11 +302,17 @@ def _status(law, v: float) -> tuple[str, str]:
         refused = next((why for at, why in law.metadata.get("refused", {}).items()
                         if abs(float(at) - v) <= _SAME * v), None)  # fmt: skip
         if refused:
-            return Status.OUTSIDE, f"v = {v:.3g} c: no value from the plate's model: {refused}"
-        if v > pts[-1]:
             return Status.OUTSIDE, (
-                f"v = {v:.3g} c is above the reach {pts[-1]:.4g} c of the {what}'s low-speed "
-                f"route, and faster collisions of this {what} are not computed"
+                f"v = {v:.3g} c: no value from the plate's model: {refused}; no "
+                "finite-element point of this plate is stored at this speed (docs/walls.md: "
+                "python -m restitution.fem.wall_reference computes one in 10-45 minutes)"
+            )
+        if v > _route_reach(law):
+            return Status.OUTSIDE, (
+                f"v = {v:.3g} c is above the reach {_route_reach(law):.4g} c of the {what}'s "
+                f"low-speed route, and no finite-element point of this {what} is stored at "
+                "this speed (docs/walls.md: python -m restitution.fem.wall_reference computes "
+                "one in 10-45 minutes)"
             )
         return Status.OUTSIDE, (
             f"v = {v:.3g} c: this law was computed at the asked speeds only (by the {what}'s "
@@ -542,7 +577,8 @@ class SILaw:
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
                 if getattr(self.law, "at_points_only", False):
-                    text += f"; the route reaches w = {hi:.4g} m/s"
+                    top = _route_reach(self.law) * self.speed_scale_m_s
+                    text += f"; the route reaches w = {top:.4g} m/s"
                 else:
                     text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
             else:

@@ -50,6 +50,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 from scipy.special import beta
@@ -57,9 +58,11 @@ from scipy.special import beta
 from restitution.errors import InputError
 
 __all__ = [
+    "HALF_SPACE_REACH_SPEED",
     "HERTZ_PULSE_FACTOR",
     "PULSE_EXPONENT",
     "RadiationIntegrals",
+    "ball_envelope",
     "half_space_loss",
     "half_space_reach",
     "radiated_fraction",
@@ -224,14 +227,42 @@ def half_space_loss(modes, v: float, wall):
     )
 
 
+def ball_envelope(modes, v: float, wall) -> float:
+    """An upper bound on the ball's own loss on the half-space at ``v`` (fraction of
+    ``(m/2) v^2``): Rayleigh's leading asymptotic term with every mode's phase factor
+    ``cos^2(omega tau / 2 - 5 pi / 4)`` set to 1 (:func:`restitution.quasistatic.hertz_sphere.
+    drive_asymptote`; up to its ``O(sqrt(delta_max))`` corrections and the modes beyond the
+    set). It grows like ``v``; between two speeds the loss may swing anywhere below it, so it
+    bounds what interpolating the ball's part can miss
+    (:mod:`restitution.laws.wall_grid`)."""
+    from dataclasses import replace
+
+    from restitution.quasistatic.hertz_sphere import sphere_contact_law
+
+    law = replace(sphere_contact_law(modes.nu), effective_modulus=wall.effective_modulus(modes.nu))
+    amp = law.K * v**1.5 * math.gamma(2.5) * modes.omega**-2.5
+    m = modes.mass
+    return float(np.sum(2.0 * modes.C**2 / m * amp**2) / (0.5 * m * v**2))
+
+
+HALF_SPACE_REACH_SPEED = 0.005
+"""The half-space route serves contacts as wide, for the ball, as the sphere's on the rigid
+wall at this speed (``c``): ``a / R = 0.155`` at ``nu = 0.3``. Sources: the ball's band holds
+the shipped modal law's points on the rigid wall up to ``v = 0.02`` (``a / R = 0.27``,
+tests/test_sphere_low_speed.py), so the ball's part reaches further; the wave part was judged
+by the finite elements up to ``a / R = 0.14`` (a steel ball on a glass block at 10 m/s,
+``laws/data/fem_reference_wall.json``, docs/walls.md). A steel ball on glass reaches 12.3
+m/s, on steel 18.3 m/s."""
+
+
 def half_space_reach(nu: float, wall) -> float:
     """The fastest speed (``c``) the half-space route serves: where the contact is as wide, for
-    the ball, as on the rigid wall at the reach of the sphere's own route
-    (:func:`restitution.quasistatic.low_speed.reach`: ``a / R`` fixes the band)."""
+    the ball, as on the rigid wall at :data:`HALF_SPACE_REACH_SPEED`
+    (:func:`restitution.quasistatic.low_speed.width_reach`: ``a / R`` fixes the band)."""
     from dataclasses import replace
 
     from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
     from restitution.quasistatic.low_speed import width_reach
 
     law = replace(sphere_contact_law(nu), effective_modulus=wall.effective_modulus(nu))
-    return width_reach(nu, law, 1.0, SPHERE_MASS)
+    return width_reach(nu, law, 1.0, SPHERE_MASS, at=HALF_SPACE_REACH_SPEED)

@@ -320,11 +320,13 @@ def _lowest_omega(nu: float, partner) -> float:
     return min(own, other * partner.speed_ratio / partner.radius_ratio)
 
 
-def width_reach(nu: float, law: SphereHertzLaw, smallest: float, mass: float) -> float:
+def width_reach(
+    nu: float, law: SphereHertzLaw, smallest: float, mass: float, at: float = REACH_WALL_SPEED
+) -> float:
     """The speed at which the contact of ``law`` (a body of ``mass``), relative to the smaller
-    radius ``smallest``, is as wide as the sphere's on the rigid wall at
-    :data:`REACH_WALL_SPEED`: ``a / R_min`` fixes the band's width (module docs)."""
-    a_max = math.sqrt(float(SPHERE.max_compression(REACH_WALL_SPEED, nu)))
+    radius ``smallest``, is as wide as the sphere's on the rigid wall at ``at`` (default
+    :data:`REACH_WALL_SPEED`): ``a / R_min`` fixes the band's width (module docs)."""
+    a_max = math.sqrt(float(SPHERE.max_compression(at, nu)))
     delta = (a_max * smallest) ** 2 / law.R
     return math.sqrt(2.0 * float(law.potential(delta)) / mass)
 

@@ -227,14 +227,17 @@ def check_bounce_time(
                                  **overrides)  # fmt: skip
 
 
-SEQUENCE_STEPS = 6.5
+SEQUENCE_STEPS = 8.0
 """Time steps of a collision of a sequence (every run of its step refinements counted) over the
 steps :func:`restitution.dynamics.steps.estimate_work` gives the first collision from rest.
 Measured with ``benchmarks/bench_bounce_estimate.py``: 8 collisions at N = 10, 40, 160, 640,
 v = 0.01 and 0.1, alpha = 500 and 2000, under gravity 1e-4 and between walls 2.5 apart (32
 sequences, nu = 0.33): 0.96-6.33, median 2.8 (largest at N = 10, v = 0.1, alpha = 2000 under
 gravity). A vibrating start needs a finer step than the estimate's from rest, and the step is
-refined by whole reruns. The largest, rounded up: the estimate is not optimistic there."""
+refined by whole reruns. The same largest sequence took 7.02 on a fresh install of newer
+libraries (numpy 2.4.6, scipy 1.17.1, numba 0.68.1): a drift check near its tolerance flips
+with the last bits of rounding, and a flipped check reruns a whole collision at half the step.
+8 covers the larger measurement by 14 %, so that one more flip does not make it optimistic."""
 
 
 def check_collisions_time(

@@ -22,12 +22,18 @@ viscous (damped law)   power, ``q = 1/5`` (Kelvin-       log, ``p = 1/2``, ``ws 
                                                          on ``1e-3 ... 1e-15 c``)
 radiation into an      power, ``q = 3/5`` (Hunter's      (no 2D elastic wall)
 elastic half-space     ``(v/c)^(3/5)``)
+a thin plate's         power, ``q = 1/5`` (Zener's        (no 2D elastic wall)
+flexural waves         parameter ``lambda ~ v^(1/5)``:
+                       the loss's first order,
+                       tests/test_plate.py)
 =====================  ================================  =========================================
 
 A damped law continues with the viscous form: at vanishing speed the viscous loss outgrows the
 elastic one in both dimensions (``v^(1/5)`` against ``v``; ``ln^(-1/2)`` against ``ln^(-2)``).
 A law on an elastic wall continues with the wall's radiation, which outgrows the ball's own
-vibrations the same way.
+vibrations the same way; on a plate the flexural waves outgrow the radiation into its depth
+(``v^(1/5)`` against ``v^(3/5)``), and Zener's model holds better the slower the impact (the
+pulse longer against the plate's thickness and transit).
 
 What the continuation is worth: the leading order only, so its error is stated as a bound equal
 to its own loss ``1 - epsilon`` (:attr:`SlowContinuation.error_bound`). Against the law's
@@ -136,8 +142,8 @@ def slow_continuation(s, w0_m_s: float, epsilon0: float) -> SlowContinuation:
     Raises
     ------
     InputError
-        For a law on a plate (no leading form derived: Zener's plate rings at every speed) or an
-        ``epsilon0`` outside ``(0, 1]``.
+        For a 2D body on an elastic wall (no leading form derived) or an ``epsilon0`` outside
+        ``(0, 1]``.
     """
     if not 0.0 < epsilon0 <= 1.0:
         raise InputError(
@@ -149,11 +155,13 @@ def slow_continuation(s, w0_m_s: float, epsilon0: float) -> SlowContinuation:
     # The mechanism that dominates the loss as w -> 0 (module docs): viscosity, else an elastic
     # wall's radiation, else the body's own vibrations.
     dominant = next(m for m in ("viscous", "wall", "waves") if m in names)
-    if dominant == "wall" and (planar or wall_of(s.law).get("kind") == "plate"):
+    if dominant == "wall" and planar:
         raise InputError(
-            "no slow-impact form is derived for this wall (a plate rings at every speed); "
-            "its exports stop at the law's slowest point"
+            "no slow-impact form is derived for a 2D body on an elastic wall; its exports stop "
+            "at the law's slowest point"
         )
+    if dominant == "wall" and wall_of(s.law).get("kind") == "plate":
+        dominant = "plate"
     form, exponent, why = _FORMS[dominant, planar]
     ws = float(s.speed_scale_m_s) if form == "log" else None
     if ws is not None and not ws > w0_m_s:
@@ -170,6 +178,11 @@ _FORMS = {
     ("viscous", False): ("power", 0.2, "viscous loss on Hertz's pulse, ~ v^(1/5)"),
     ("viscous", True): ("log", 0.5, "viscous loss of the 2D contact, ~ 1/sqrt(ln(1/v))"),
     ("wall", False): ("power", 0.6, "waves radiated into the half-space, ~ v^(3/5) (Hunter)"),
+    ("plate", False): (
+        "power",
+        0.2,
+        "flexural waves of Zener's thin plate, ~ lambda ~ v^(1/5) (its first order)",
+    ),
     ("waves", False): ("power", 1.0, "vibrations of the 3D body, ~ v (Rayleigh)"),
     ("waves", True): ("log", 2.0, "vibrations of the 2D body, ~ 1/ln^2(1/v)"),
 }

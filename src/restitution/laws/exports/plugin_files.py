@@ -23,6 +23,7 @@ from restitution.laws.exports.lammps_plugin import (
 )
 from restitution.laws.exports.pchip import pchip_table
 from restitution.laws.exports.type_pairs import TypePairs
+from restitution.laws.mechanisms import wall_of
 from restitution.laws.si_law import si_law
 
 __all__ = ["INPUT_NAME", "plugin_files"]
@@ -78,7 +79,10 @@ def plugin_files(s, c=None) -> dict[str, str]:
         if j == 0:
             a = grains[i]
             group, fix_id = (f"restitution_type{i}", f"wall{i}") if two else ("all", "wall")
-            estar = contact_modulus(a.E, a.nu)
+            elastic = wall_of(law.law)  # an elastic wall's material, else rigid
+            estar = (contact_modulus(a.E, a.nu) if elastic is None else
+                     contact_modulus(a.E, a.nu, float(elastic["modulus_ratio"]) * a.E,
+                                     float(elastic["nu"])))  # fmt: skip
             walls.append((i, PluginWall(estar, name, plane=plane, group=group, fix_id=fix_id)))
         else:
             a, b = grains[i], grains[j]

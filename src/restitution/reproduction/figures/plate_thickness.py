@@ -62,7 +62,7 @@ class ThicknessCurve:
 
 def _fem_points(v: float, ratios) -> tuple:
     """The judge's stored points of a steel ball on this glass at ``v`` (``c``)."""
-    from restitution.fem.wall_reference import load_wall_reference
+    from restitution.laws.wall_points import load_wall_reference
 
     out = []
     for p in load_wall_reference():

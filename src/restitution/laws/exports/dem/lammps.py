@@ -6,6 +6,8 @@ restitution; ``units si``. Registers itself as the DEM target ``lammps`` (``lamm
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import (
     _comment,
@@ -18,6 +20,7 @@ from restitution.laws.exports.dem._common import (
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
+from restitution.laws.mechanisms import wall_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "lammps_snippet", "lammps_viscoelastic"]
@@ -40,13 +43,12 @@ def _tangential(friction: float | None) -> str:
     return f"tangential linear_nohistory 1.0 {float(0.0 if friction is None else friction)!r}"
 
 
-def _lammps_model(g, eps: float, friction: float | None = None) -> str:
-    """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu``, epsilon as the
-    restitution coefficient, the tangential model of :func:`_tangential`."""
-    return (
-        f"hertz/material {g.E:.8g} {eps:.8f} {g.nu:.8g} "
-        f"{_tangential(friction)} damping coeff_restitution"
-    )
+def _lammps_model(g, eps: float, friction: float | None = None, material=None) -> str:
+    """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu`` (``material``, a
+    pair of strings, instead where given), epsilon as the restitution coefficient, the
+    tangential model of :func:`_tangential`."""
+    E, nu = material or (f"{g.E:.8g}", f"{g.nu:.8g}")
+    return f"hertz/material {E} {eps:.8f} {nu} {_tangential(friction)} damping coeff_restitution"
 
 
 def _lammps_mixed(g1, g2) -> str:
@@ -83,14 +85,25 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
         f"# {INSTALL_NOTE}",
     ]
     if s.against == "wall":
+        elastic = wall_of(s.law)
+        mixed, material = None, []
+        if elastic is not None:  # the wall's own material: E' = 2 E* and nu = 0 (as for 1-2)
+            E_w, nu_w = float(elastic["modulus_ratio"]) * g.E, float(elastic["nu"])
+            mixed = _lammps_mixed(g, SimpleNamespace(E=E_w, nu=nu_w))
+            material = [
+                f"# the elastic wall: E_w = {E_w:.6g} Pa, nu_w = {nu_w:g}; LAMMPS gives the wall "
+                "the fix's material, so hertz/material takes E' = 2 E* and nu = 0, 1/E* = "
+                "(1-nu^2)/E + (1-nu_w^2)/E_w: the Hertz stiffness of ball and wall"
+            ]
         return "\n".join(
             [
                 *head,
+                *material,
                 "# needs: units si, atom_style sphere, comm_modify vel yes",
                 "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
                 "wall); grain-grain contacts take the law of two grains (--against grain)",
                 "fix restitution_wall all wall/gran granular "
-                f"{_lammps_model(g, consts[1, 1].epsilon, friction)} zplane 0.0 NULL",
+                f"{_lammps_model(g, consts[1, 1].epsilon, friction, mixed)} zplane 0.0 NULL",
                 "",
             ]
         )

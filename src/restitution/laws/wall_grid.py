@@ -1,0 +1,195 @@
+"""A sphere's law on an elastic wall at every speed of its route's range, for exports and
+constants (issue 42).
+
+Units: the ball's reduced units (``E = rho = R = 1`` of its 3D constants); ``v`` in ``c``.
+
+:func:`restitution.laws.route_law.wall_law` computes the asked speeds alone, served there and
+nowhere between. Exports and constants need epsilon at every speed a grain meets, so
+:func:`wall_grid_law` computes the wall's route on a grid: :data:`PER_DECADE` speeds a decade,
+geometric, from :data:`SLOWEST` to the route's top (the half-space's reach,
+:func:`restitution.quasistatic.half_space.half_space_reach`; on a plate the fastest speed where
+Zener's model holds and the ball rebounds, found by bisection). Between two grid speeds the
+law interpolates (PCHIP in ``v``); what that misses is measured, as for the sphere's low-speed
+points (:func:`restitution.quasistatic.low_speed.interpolation_error`): the route is computed
+at :data:`INTERIOR` more speeds inside every interval and each point's error gains the larger
+deviation of PCHIP through the grid on its two sides. On the half-space the ball's own loss
+oscillates with the speed (Rayleigh's phases ``omega tau / 2``) faster than a few speeds an
+interval resolve: the interval's error gains the ball's envelope at its faster end
+(:func:`restitution.quasistatic.half_space.ball_envelope`, every phase factor 1), a bound on
+what PCHIP can miss of it (measured without it: deviations at speeds between the grid up to 3
+times the measured gap). Below the slowest speed the exports
+continue with the loss's leading form (:mod:`restitution.laws.exports.below`), above the top
+they have no value.
+
+The route's cost sets the grid: about 0.5 s a speed (the ball's Rayleigh estimate over its
+modes) on the half-space, milliseconds on a plate; :func:`grid_seconds` estimates it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.interpolate import PchipInterpolator
+
+from restitution.errors import InputError
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.production import low_speed_record
+
+__all__ = ["INTERIOR", "PER_DECADE", "SLOWEST", "grid_seconds", "grid_speeds", "wall_grid_law"]
+
+SLOWEST = 1e-6
+"""The slowest grid speed (``c``): the sphere's low-speed points start there (5 mm/s for
+steel); below it the exports' slow continuation carries the law to ``w = 0``."""
+
+PER_DECADE = 6
+"""Grid speeds per decade of ``v``."""
+
+INTERIOR = 2
+"""Speeds inside every grid interval at which the route is computed to measure what PCHIP
+misses."""
+
+HALF_SPACE_SECONDS = 0.6
+"""Wall time of one speed of the half-space route on one core, seconds (0.45-0.6 s measured on
+the project's 2-core machine, the ball's Rayleigh estimate over 20000 modes)."""
+
+_PLATE_TOP_SEARCH = 0.03
+"""The fastest speed (``c``) a plate's top is looked for below (the sphere's low-speed points
+end there)."""
+
+
+_PLATE_ROUTE = "Zener's thin plate, the coupled equation (restitution.quasistatic.plate)"
+_HALF_SPACE_ROUTE = (
+    "the ball's modes driven by Hertz's pulse on the elastic half-space (Rayleigh's estimate) "
+    "and the waves radiated into it (restitution.quasistatic.half_space)"
+)
+
+
+def _is_plate(wall) -> bool:
+    from restitution.bodies.wall import Plate
+
+    return isinstance(wall, Plate)
+
+
+def _plate_holds(nu: float, plate, v: float) -> bool:
+    from restitution.quasistatic.hertz_sphere import SPHERE_MASS
+    from restitution.quasistatic.plate import plate_impact, validity
+
+    r = plate_impact(v, plate, nu=nu, mass=SPHERE_MASS)
+    return bool(r.rebounds) and not validity(r, plate)
+
+
+def route_top(nu: float, wall) -> float:
+    """The fastest speed (``c``) the wall's route serves (module docs)."""
+    if not _is_plate(wall):
+        from restitution.quasistatic.half_space import half_space_reach
+
+        return float(half_space_reach(nu, wall))
+    if not _plate_holds(nu, wall, SLOWEST):
+        raise InputError(
+            f"Zener's thin-plate model does not hold on this plate even at v = {SLOWEST:g} c "
+            "(or the ball does not rebound): no law at every speed; ask for single speeds"
+        )
+    if _plate_holds(nu, wall, _PLATE_TOP_SEARCH):
+        return _PLATE_TOP_SEARCH
+    lo, hi = math.log(SLOWEST), math.log(_PLATE_TOP_SEARCH)
+    while hi - lo > 1e-3:  # the top to 0.1 %
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if _plate_holds(nu, wall, math.exp(mid)) else (lo, mid)
+    return math.exp(lo)
+
+
+def grid_speeds(top: float) -> np.ndarray:
+    """The grid from :data:`SLOWEST` to ``top`` (``c``), :data:`PER_DECADE` a decade."""
+    if not top > SLOWEST:
+        raise InputError(f"the route's top {top:g} c lies below its slowest grid speed {SLOWEST:g}")
+    n = max(2, math.ceil(PER_DECADE * math.log10(top / SLOWEST)) + 1)
+    return np.geomspace(SLOWEST, top, n)
+
+
+def grid_seconds(nu: float, wall) -> float:
+    """Estimated wall time of :func:`wall_grid_law`, seconds (module docs)."""
+    if _is_plate(wall):
+        return 5.0
+    n = grid_speeds(route_top(nu, wall)).size
+    return (n + INTERIOR * (n - 1)) * HALF_SPACE_SECONDS
+
+
+def _route(nu: float, wall):
+    """``v -> (epsilon, loss, loss_err, details)`` of the wall's route."""
+    if _is_plate(wall):
+        from restitution.quasistatic.hertz_sphere import SPHERE_MASS
+        from restitution.quasistatic.plate import model_error, plate_impact
+
+        def plate(v):
+            r = plate_impact(v, wall, nu=nu, mass=SPHERE_MASS)
+            details = {"plate_energy": r.plate_energy, "balance": r.balance}
+            return r.epsilon, 1.0 - r.epsilon**2, model_error(r, wall), details
+
+        return plate
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.quasistatic.half_space import ball_envelope, half_space_loss
+    from restitution.quasistatic.low_speed import LOW_SPEED_MODES
+
+    modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
+
+    def half_space(v):
+        r = half_space_loss(modes, v, wall)
+        details = {"shares": list(map(float, r.shares)), "band": list(map(float, r.band)),
+                   "ball_envelope": ball_envelope(modes, v, wall)}  # fmt: skip
+        return r.epsilon, r.energy_loss, r.energy_loss_err, details
+
+    return half_space
+
+
+def wall_grid_law(nu: float, wall, *, progress=False) -> EpsilonLaw:
+    """The law of a sphere (``nu``) on ``wall`` at every speed from :data:`SLOWEST` to its
+    route's top (module docs): quasistatic points, interpolated between them with the measured
+    PCHIP error in each point's error."""
+    from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.limits.run_options import progress_of
+
+    top = route_top(nu, wall)
+    v = grid_speeds(top)
+    frac = np.arange(1, INTERIOR + 1) / (INTERIOR + 1)
+    inside = (v[:-1, None] * (v[1:, None] / v[:-1, None]) ** frac[None, :]).ravel()
+    route = _route(nu, wall)
+    bars = progress_of(progress)
+    results = []
+    with bars.bar(v.size + inside.size, "speeds of the wall's route") as meter:
+        for x in (*v, *inside):
+            results.append(route(float(x)))
+            meter(1)
+    at, between = results[: v.size], results[v.size :]
+    loss = np.array([r[1] for r in at])
+    through = PchipInterpolator(v, loss)(inside)
+    gap = np.abs(through - np.array([r[1] for r in between])).reshape(-1, INTERIOR).max(axis=1)
+    # The ball's part swings between the grid speeds below its envelope (module docs).
+    gap = gap + np.array([r[3].get("ball_envelope", 0.0) for r in at[1:]])
+    gaps = np.zeros(v.size)
+    gaps[:-1] = gap
+    gaps[1:] = np.maximum(gaps[1:], gap)
+    records = [
+        low_speed_record(float(x), eps, lo, err, float(g), details)
+        for x, (eps, lo, err, details), g in zip(v, at, gaps, strict=True)
+    ]
+    what = _PLATE_ROUTE if _is_plate(wall) else _HALF_SPACE_ROUTE
+    parameters = {
+        "route": what,
+        "grid": {"slowest": SLOWEST, "per_decade": PER_DECADE, "interior": INTERIOR},
+        "top": top,
+        "largest_interpolation_gap": float(gap.max()) if gap.size else 0.0,
+        "v_min": float(v[0]),
+        "v_max": float(v[-1]),
+    }
+    law = EpsilonLaw.from_records(
+        nu, records, key="low_speed", parameters=parameters, geometry=SPHERE.geometry
+    )
+    law.metadata["wall"] = wall.to_dict()
+    law.metadata["source"] = (
+        f"computed now on a grid of {v.size} speeds ({PER_DECADE} a decade, the PCHIP error "
+        f"measured at {INTERIOR} speeds inside every interval): a sphere on an elastic "
+        + ("plate" if _is_plate(wall) else "half-space")
+    )
+    return law

@@ -1,0 +1,147 @@
+"""The finite elements' stored points of a sphere on an elastic wall: read, and served where the
+wall's routes have no value (issue 42).
+
+Units: the ball's, ``E = rho = R = 1`` of its three-dimensional constants; ``v`` in
+``c = sqrt(E / rho)``; the wall's constants as ratios to the ball's
+(:class:`restitution.bodies.wall.HalfSpace`, :class:`~restitution.bodies.wall.Plate`).
+
+The file ``restitution/laws/data/fem_reference_wall.json`` is written by
+:mod:`restitution.fem.wall_reference` (the judge of the half-space and thin-plate routes, with
+its provenance); :func:`load_wall_reference` reads it. Where the half-space route is beyond its
+reach or Zener's thin-plate model does not hold, the issue's answer is the finite elements';
+a run costs 10-45 minutes of one core, so a law served in seconds can only give the points
+already computed. :func:`stored_wall_point` finds one for the asked ball, wall and speed: the
+same ``nu`` and wall constants to a relative ``1e-6``, the speed within :data:`SPEED_MATCH`
+(relative). Its error is the stored one plus a bound on the change of epsilon between the two
+speeds: a loss ``L ~ v^p`` with ``p <= 1`` (``3/5`` on the half-space, ``1/5-3/5`` on a plate)
+changes by at most ``dL = L (exp|ln(v / v_stored)| - 1)`` (to first order ``L |ln(v /
+v_stored)|``), epsilon by at most ``epsilon - sqrt(epsilon^2 - dL)``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from restitution.bodies.wall import HalfSpace, wall_from_dict
+from restitution.errors import InputError
+from restitution.estimate import Estimate, estimate_of
+
+__all__ = [
+    "SPEED_MATCH",
+    "WALL_REFERENCE_FILENAME",
+    "WallReferencePoint",
+    "load_wall_reference",
+    "stored_wall_point",
+]
+
+WALL_REFERENCE_FILENAME = "fem_reference_wall.json"
+"""The shipped file, in ``restitution/laws/data``."""
+
+SPEED_MATCH = 1e-3
+"""The largest ``|ln(v / v_stored)|`` at which a stored point answers an asked speed: the user's
+``c`` from SI constants rounds a speed like 10 m/s to a ``v`` a few ``1e-6`` away from the
+stored one."""
+
+_SAME = 1e-6
+"""The relative tolerance of ``nu`` and the wall's constants (they come from SI ratios)."""
+
+
+@dataclass(frozen=True)
+class WallReferencePoint:
+    """One FEM reference value of a sphere on a wall (``nu`` the ball's, ``v`` in ``c``)."""
+
+    nu: float
+    wall: HalfSpace
+    v: float
+    epsilon: float
+    epsilon_err: float
+    energy_loss: float
+    energy_loss_err: float
+    asymptotic_ok: bool
+    message: str = ""
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok)
+
+
+def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePoint, ...]:
+    """The reference points from ``path`` (default the shipped file)."""
+    if path is None:
+        text = resources.files("restitution.laws").joinpath("data", WALL_REFERENCE_FILENAME)
+        text = text.read_text()
+    else:
+        text = Path(path).read_text()
+    name = path or WALL_REFERENCE_FILENAME
+
+    def number(x):
+        return math.nan if x is None else float(x)
+
+    try:
+        doc = json.loads(text)
+        if doc.get("geometry") != "sphere-on-wall":
+            raise InputError(f"{name} is not an FEM reference of a sphere on a wall")
+        return tuple(
+            WallReferencePoint(
+                nu=float(p["nu"]),
+                wall=wall_from_dict(p["wall"]),
+                v=float(p["v"]),
+                epsilon=number(p["epsilon"]),
+                epsilon_err=number(p["epsilon_err"]),
+                energy_loss=number(p["energy_loss"]),
+                energy_loss_err=number(p["energy_loss_err"]),
+                asymptotic_ok=bool(p["asymptotic_ok"]),
+                message=str(p.get("message", "")),
+            )
+            for p in doc["points"]
+        )
+    except (ValueError, KeyError, TypeError, AttributeError) as exc:
+        raise InputError(
+            f"{name} is not an FEM reference file of a sphere on a wall: {exc}"
+        ) from exc
+
+
+def _close(a: float, b: float) -> bool:
+    return abs(a - b) <= _SAME * max(abs(a), abs(b))
+
+
+def _same_wall(a: HalfSpace, b: HalfSpace) -> bool:
+    da, db = a.to_dict(), b.to_dict()
+    if da.keys() != db.keys() or da["kind"] != db["kind"]:
+        return False
+    return all(_close(float(da[k]), float(db[k])) for k in da if k != "kind")
+
+
+def stored_wall_point(nu: float, wall: HalfSpace, v: float, points=None) -> dict | None:
+    """The stored FEM point of a ball of ``nu`` on ``wall`` at the speed ``v`` (``c``), as a
+    law's record (``route`` ``"finite elements (stored point)"``, its error widened by the speed's
+    offset, module docs), or ``None`` when none is stored there. ``points`` default the shipped
+    file's (:func:`load_wall_reference`)."""
+    from restitution.status import Status
+
+    for p in load_wall_reference() if points is None else points:
+        offset = abs(math.log(v / p.v))
+        if not (_close(p.nu, nu) and _same_wall(p.wall, wall) and offset <= SPEED_MATCH):
+            continue
+        if not (math.isfinite(p.epsilon) and math.isfinite(p.epsilon_err)):
+            continue
+        change = p.energy_loss * math.expm1(offset)  # the largest |L(v) - L(v_stored)|
+        shift = p.epsilon - math.sqrt(max(p.epsilon**2 - change, 0.0))
+        return {
+            "v": float(v),
+            "v_stored": p.v,
+            "epsilon": p.epsilon,
+            "epsilon_err": p.epsilon_err + shift,
+            "energy_loss": p.energy_loss,
+            "energy_loss_err": p.energy_loss_err + 2.0 * p.epsilon * shift,
+            "asymptotic_ok": p.asymptotic_ok,
+            "status": Status.OK if p.asymptotic_ok else Status.NOT_ASYMPTOTIC,
+            "route": "finite elements (stored point)",
+            "message": p.message,
+        }
+    return None

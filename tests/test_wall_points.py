@@ -1,0 +1,60 @@
+"""The finite elements' stored points of a wall, served where the routes have no value
+(restitution.laws.wall_points, issue 42)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from restitution.bodies.wall import HalfSpace, Plate
+from restitution.laws.wall_points import (
+    SPEED_MATCH,
+    WallReferencePoint,
+    load_wall_reference,
+    stored_wall_point,
+)
+
+GLASS = (0.3, 2500.0 / 7850.0, 0.2481)
+
+
+def _point(wall, v=2e-3, eps=0.9, err=1e-5, ok=True):
+    loss = 1.0 - eps * eps
+    return WallReferencePoint(0.3, wall, v, eps, err, loss, 2.0 * eps * err, ok)
+
+
+def test_a_stored_point_answers_its_ball_wall_and_speed():
+    plate = Plate(*GLASS, thickness=4.0)
+    points = [_point(HalfSpace(*GLASS), eps=0.98), _point(plate)]
+    found = stored_wall_point(0.3, Plate(*GLASS, thickness=4.0), 2e-3, points)
+    assert found["epsilon"] == 0.9 and found["epsilon_err"] == pytest.approx(1e-5, rel=1e-12)
+    assert found["route"].startswith("finite elements") and found["status"] == "ok"
+    # the block is another wall; a thicker plate, another ball or speed: nothing stored
+    assert stored_wall_point(0.3, HalfSpace(*GLASS), 2e-3, points)["epsilon"] == 0.98
+    assert stored_wall_point(0.3, Plate(*GLASS, thickness=4.4), 2e-3, points) is None
+    assert stored_wall_point(0.25, plate, 2e-3, points) is None
+    assert stored_wall_point(0.3, plate, 2e-3 * (1.0 + 2.0 * SPEED_MATCH), points) is None
+    flagged = stored_wall_point(0.3, plate, 2e-3, [_point(plate, ok=False)])
+    assert flagged["status"] == "not-asymptotic"
+
+
+def test_a_nearby_speed_widens_the_error_by_the_bound_on_the_change():
+    """A loss L ~ v^p with p <= 1 moves epsilon by at most eps - sqrt(eps^2 - L (v/v_s - 1))
+    (to first order L / (2 eps) ln(v / v_s)); a loss that follows v^1 exactly (the bound's
+    edge) stays inside the widened error, one that follows v^(3/5) well inside."""
+    plate = Plate(*GLASS, thickness=4.0)
+    v_s, eps = 2e-3, 0.9
+    loss = 1.0 - eps * eps
+    v = v_s * math.exp(0.5 * SPEED_MATCH)
+    found = stored_wall_point(0.3, plate, v, [_point(plate, v=v_s, eps=eps, err=0.0)])
+    eps_at_v = math.sqrt(1.0 - loss * v / v_s)  # the steepest loss the bound allows
+    assert abs(eps_at_v - found["epsilon"]) <= found["epsilon_err"] * (1.0 + 1e-9)
+    half_space_like = math.sqrt(1.0 - loss * (v / v_s) ** 0.6)
+    assert abs(half_space_like - found["epsilon"]) < 0.7 * found["epsilon_err"]
+    assert found["epsilon_err"] == pytest.approx(loss / (2.0 * eps) * 0.5 * SPEED_MATCH, rel=1e-3)
+
+
+def test_the_shipped_points_load():
+    points = load_wall_reference()
+    assert len(points) >= 4
+    assert all(isinstance(p.wall, HalfSpace) and 0 < p.epsilon < 1 for p in points)
