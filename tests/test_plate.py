@@ -99,6 +99,9 @@ def test_a_steel_ball_on_glass_plates(cli):
                        "--speed", "0.1", "1", "9", "10")  # fmt: skip
     eps_thin = [p["epsilon"] for p in thin["points"]]
     assert all(p["status"] == "quasistatic" for p in thin["points"])
+    for p in thin["points"]:  # the split: the ball's vibrations are a tiny part on a plate
+        ball, wall = p["loss_shares"]
+        assert 0 < ball < 1e-4 and ball + wall == pytest.approx(1.0)
     assert 0.4 < eps_thin[2] < eps_thin[1] < eps_thin[0] < 0.9  # Raman's tens of percent
     assert thick["points"][0]["epsilon"] > eps_thin[0]
     at_nine, at_ten = thick["points"][2], thick["points"][3]
@@ -142,3 +145,26 @@ def test_the_judges_speed_has_its_figure_with_the_finite_elements_on_it(tmp_path
     assert [round(p[0], 9) for p in c.fem] == [3.0, 10.0, math.inf]
     plate_thickness.plot(c, tmp_path / "g.png")
     assert (tmp_path / "g.png").stat().st_size > 10_000
+
+
+def test_the_ball_s_vibrations_on_a_stiff_plate_are_rayleigh_s_on_its_material():
+    """The ball's modes driven by the plate's force history (ball_vibrations, the spectrum of
+    a pulse that need not be symmetric) against Rayleigh's estimate of the symmetric Hertz
+    pulse (Duhamel's integral over half the pulse, restitution.quasistatic.rayleigh): on a
+    plate of enormous impedance the force is Hertz's of the plate's E*, and the two agree
+    (measured 5e-8 and 2e-8 at v = 1e-4 and 1e-3; the plate's own loss is then 1e-8)."""
+    from dataclasses import replace
+
+    from restitution.bodies.cache import get_modes
+    from restitution.quasistatic.hertz_sphere import sphere_contact_law
+    from restitution.quasistatic.plate import ball_vibrations
+    from restitution.quasistatic.rayleigh import rayleigh_energy
+
+    modes = get_modes(NU, 400, geometry="sphere")
+    stiff = Plate(**GLASS, thickness=1e4)
+    law = replace(sphere_contact_law(NU), effective_modulus=stiff.effective_modulus(NU))
+    for v in (1e-4, 1e-3):
+        r = plate_impact(v, stiff, nu=NU, mass=SPHERE_MASS)
+        assert r.plate_energy < 1e-7
+        reference = rayleigh_energy(modes, v, law).energy_fraction
+        assert ball_vibrations(r, modes) == pytest.approx(reference, rel=1e-6)

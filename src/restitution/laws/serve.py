@@ -177,16 +177,21 @@ def serve(
         )
         s = damped.as_si_law(progress=bars)
     constant, pairs = _constants(r, s)
-    written: tuple = ()
-    if r.export_dir is not None:
-        model = _viscoelastic(r, damped, note)
-        folder = exports.write_folder(s, pairs or constant, r.export_dir, model, r.friction)
-        if folder.no_closed_form is not None:
-            note(f"note: no closed form written: {folder.no_closed_form}")
-        if folder.no_plugin is not None:
-            note(f"note: no LAMMPS plugin tables written: {folder.no_plugin}")
-        written = tuple(folder.paths)
+    model = None if r.export_dir is None else _viscoelastic(r, damped, note)
+    written = _write_exports(r, s, pairs or constant, model, note)
     return LawAnswer(r, s, damped, points, status, advice, constant, pairs, written)
+
+
+def _write_exports(r: LawRequest, s: SILaw, constant, model, note) -> tuple:
+    """The export folder of ``s`` when ``--export`` is asked (its paths), else ``()``."""
+    if r.export_dir is None:
+        return ()
+    folder = exports.write_folder(s, constant, r.export_dir, model, r.friction)
+    if folder.no_closed_form is not None:
+        note(f"note: no closed form written: {folder.no_closed_form}")
+    if folder.no_plugin is not None:
+        note(f"note: no LAMMPS plugin tables written: {folder.no_plugin}")
+    return tuple(folder.paths)
 
 
 def _wall_grid_answer(r: LawRequest, note, progress: bool) -> LawAnswer:
@@ -211,14 +216,7 @@ def _wall_grid_answer(r: LawRequest, note, progress: bool) -> LawAnswer:
     points, _ = flag_points(s, s.points(list(r.speeds), note=note))
     status, advice = overall_status(points)
     constant, pairs = _constants(r, s)
-    written: tuple = ()
-    if r.export_dir is not None:
-        folder = exports.write_folder(s, pairs or constant, r.export_dir, None, r.friction)
-        if folder.no_closed_form is not None:
-            note(f"note: no closed form written: {folder.no_closed_form}")
-        if folder.no_plugin is not None:
-            note(f"note: no LAMMPS plugin tables written: {folder.no_plugin}")
-        written = tuple(folder.paths)
+    written = _write_exports(r, s, pairs or constant, None, note)
     return LawAnswer(r, s, None, points, status, advice, constant, pairs, written)
 
 

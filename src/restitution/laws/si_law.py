@@ -90,8 +90,8 @@ ELASTIC_WALL_QUASISTATIC_NOTE = (
 PLATE_QUASISTATIC_NOTE = (
     "from Zener's thin-plate model, not from collisions: Hertz's contact coupled to the plate's "
     "point impedance 8 sqrt(D rho h), solved as the coupled equation; the loss is the plate's "
-    "flexural waves (the ball's own vibrations are not included); its error an estimate of the "
-    "model's neglected terms, judged by the finite elements at 2.6 m/s (docs/walls.md)"
+    "flexural waves plus the ball's own vibrations driven by the same force history; its error "
+    "an estimate of the model's neglected terms, judged by the finite elements (docs/walls.md)"
 )
 """What ``quasistatic`` means for a sphere on a thin plate."""
 

@@ -21,12 +21,13 @@ times the measured gap). Below the slowest speed the exports
 continue with the loss's leading form (:mod:`restitution.laws.exports.below`), above the top
 they have no value.
 
-The route's cost sets the grid: about 0.5 s a speed (the ball's Rayleigh estimate over its
-modes) on the half-space, milliseconds on a plate; :func:`grid_seconds` estimates it.
+The route's cost sets the grid: about 0.5 s a speed on the half-space and 0.3-1.5 s on a plate
+(the ball's modes driven by the pulse); :func:`grid_seconds` estimates it.
 """
 
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -52,6 +53,10 @@ misses."""
 HALF_SPACE_SECONDS = 0.6
 """Wall time of one speed of the half-space route on one core, seconds (0.45-0.6 s measured on
 the project's 2-core machine, the ball's Rayleigh estimate over 20000 modes)."""
+
+PLATE_SECONDS = 1.0
+"""The same on a plate, seconds (0.3-1.5 s measured: the ball's modes driven by the plate's
+force history, longest at the slowest speeds)."""
 
 _PLATE_TOP_SEARCH = 0.03
 """The fastest speed (``c``) a plate's top is looked for below (the sphere's low-speed points
@@ -109,30 +114,30 @@ def grid_speeds(top: float) -> np.ndarray:
 
 def grid_seconds(nu: float, wall) -> float:
     """Estimated wall time of :func:`wall_grid_law`, seconds (module docs)."""
-    if _is_plate(wall):
-        return 5.0
     n = grid_speeds(route_top(nu, wall)).size
-    return (n + INTERIOR * (n - 1)) * HALF_SPACE_SECONDS
+    per = PLATE_SECONDS if _is_plate(wall) else HALF_SPACE_SECONDS
+    return (n + INTERIOR * (n - 1)) * per
 
 
 def _route(nu: float, wall):
     """``v -> (epsilon, loss, loss_err, details)`` of the wall's route."""
-    if _is_plate(wall):
-        from restitution.quasistatic.hertz_sphere import SPHERE_MASS
-        from restitution.quasistatic.plate import model_error, plate_impact
-
-        def plate(v):
-            r = plate_impact(v, wall, nu=nu, mass=SPHERE_MASS)
-            details = {"plate_energy": r.plate_energy, "balance": r.balance}
-            return r.epsilon, 1.0 - r.epsilon**2, model_error(r, wall), details
-
-        return plate
     from restitution.bodies.cache import get_modes
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.quasistatic.half_space import ball_envelope, half_space_loss
     from restitution.quasistatic.low_speed import LOW_SPEED_MODES
 
     modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
+    if _is_plate(wall):
+        from restitution.laws.route_law import plate_record
+        from restitution.quasistatic.hertz_sphere import SPHERE_MASS
+        from restitution.quasistatic.plate import plate_impact
+
+        def plate(v):
+            r = plate_record(v, plate_impact(v, wall, nu=nu, mass=SPHERE_MASS), wall, modes)
+            details = {k: r[k] for k in ("plate_energy", "balance", "shares")}
+            return r["epsilon"], r["energy_loss"], r["estimate_err"], details
+
+        return plate
 
     def half_space(v):
         r = half_space_loss(modes, v, wall)
@@ -146,7 +151,21 @@ def _route(nu: float, wall):
 def wall_grid_law(nu: float, wall, *, progress=False) -> EpsilonLaw:
     """The law of a sphere (``nu``) on ``wall`` at every speed from :data:`SLOWEST` to its
     route's top (module docs): quasistatic points, interpolated between them with the measured
-    PCHIP error in each point's error."""
+    PCHIP error in each point's error. Kept for the process (a copy each call): a law of the
+    same ball and wall is not computed twice."""
+    key = (float(nu), wall)
+    if key not in _KEPT:
+        if len(_KEPT) >= 8:
+            _KEPT.pop(next(iter(_KEPT)))
+        _KEPT[key] = _grid_law(float(nu), wall, progress)
+    return copy.deepcopy(_KEPT[key])
+
+
+_KEPT: dict = {}
+"""The grid laws of this process, by ``(nu, wall)`` (walls are frozen dataclasses)."""
+
+
+def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.limits.run_options import progress_of
 

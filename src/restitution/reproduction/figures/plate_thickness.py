@@ -10,8 +10,9 @@ it does not, with its error band; the horizontal line is the half-space
 (:mod:`restitution.quasistatic.half_space`: the ball's vibrations and the block's radiated
 waves) with its error. The finite-element judge's stored points of this ball on glass
 (:mod:`restitution.fem.wall_reference`: plates and the block, both limits and both checks)
-are drawn where their speed is the figure's: the second figure, at :data:`FEM_SPEED_M_S`, holds
-them; at 1 m/s none is stored yet.
+are drawn where their speed is the figure's (within :data:`restitution.laws.wall_points.
+SPEED_MATCH`): at 1 m/s the two plates; the second figure, at :data:`FEM_SPEED_M_S`, holds both
+plates and the block.
 """
 
 from __future__ import annotations
@@ -62,13 +63,15 @@ class ThicknessCurve:
 
 def _fem_points(v: float, ratios) -> tuple:
     """The judge's stored points of a steel ball on this glass at ``v`` (``c``)."""
-    from restitution.laws.wall_points import load_wall_reference
+    import math
+
+    from restitution.laws.wall_points import SPEED_MATCH, load_wall_reference
 
     out = []
     for p in load_wall_reference():
         w = p.wall
         same = (w.modulus_ratio, w.density_ratio, w.nu) == tuple(ratios)
-        if same and p.nu == STEEL["nu"] and abs(p.v - v) <= 1e-9 * v:
+        if same and p.nu == STEEL["nu"] and abs(math.log(p.v / v)) <= SPEED_MATCH:
             mm = getattr(w, "thickness", np.inf) * RADIUS_M * 1e3
             out.append((float(mm), p.epsilon, p.epsilon_err))
     return tuple(sorted(out))
