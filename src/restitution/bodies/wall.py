@@ -57,6 +57,11 @@ class HalfSpace:
         """``c_T = sqrt(E_w / (2 (1 + nu_w) rho_w))``, ``c``."""
         return math.sqrt(self.modulus_ratio / (2.0 * (1.0 + self.nu) * self.density_ratio))
 
+    @property
+    def compressional_speed(self) -> float:
+        """``c_L = c_T sqrt(2 (1 - nu_w) / (1 - 2 nu_w))``, ``c``."""
+        return self.shear_speed * math.sqrt(2.0 * (1.0 - self.nu) / (1.0 - 2.0 * self.nu))
+
     def effective_modulus(self, nu_ball: float) -> float:
         """Hertz's ``E*``: ``1 / E* = (1 - nu^2) + (1 - nu_w^2) / E_w``, ``E``."""
         return 1.0 / ((1.0 - nu_ball**2) + (1.0 - self.nu**2) / self.modulus_ratio)

@@ -166,13 +166,6 @@ def _wall_material(wall: HalfSpace) -> Material:
     )
 
 
-def _speeds(wall: HalfSpace) -> tuple[float, float]:
-    """The wall's compressional and shear speeds, ``c``."""
-    nu = wall.nu
-    c_t = wall.shear_speed
-    return c_t * math.sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)), c_t
-
-
 @dataclass(frozen=True, eq=False)
 class WallModel:
     """The ball, the block and their composite (:func:`wall_model`); ``ball_mesh`` the ball's
@@ -221,7 +214,7 @@ def wall_model(
         fem_material(nu, SPHERE.geometry), 0, ball_mesh.contact_angle, h_contact,
         ball_mesh.h_far, ball_mesh.grading, int(n_gauss), SPHERE.geometry,
     )  # fmt: skip
-    c_l, c_t = _speeds(wall)
+    c_l, c_t = wall.compressional_speed, wall.shear_speed
     t_c = contact_time(nu, wall, v)
     radius = size * c_l * t_c
     h_far = bulk * c_t * t_c / BLOCK_WAVELENGTHS

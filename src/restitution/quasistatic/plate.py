@@ -187,9 +187,7 @@ def _neglected(impact: PlateImpact, plate) -> tuple[float, float, float]:
     radius over the thickness, the thickness over the flexural wavelength at ``pi / tau`` and
     the compressional transit across the thickness over the contact time."""
     h = plate.thickness
-    nu_w = plate.nu
-    c_l = math.sqrt(plate.modulus_ratio * (1 - nu_w) / (plate.density_ratio * (1 + nu_w)
-                                                       * (1 - 2 * nu_w)))  # fmt: skip
+    c_l = plate.compressional_speed
     omega = math.pi / impact.contact_time
     flexural = 2.0 * math.pi * (plate.bending_stiffness / (plate.density_ratio * h)) ** 0.25
     wavelength = flexural / math.sqrt(omega)
