@@ -133,7 +133,9 @@ def test_the_plate_thickness_figure_is_drawn(tmp_path):
     assert 0.99 < c.half_space < c.epsilon[3]
     plate_thickness.plot(c, tmp_path / "f.png")
     assert (tmp_path / "f.png").stat().st_size > 10_000
-    assert c.fem == ()  # no finite-element point is stored at 1 m/s
+    # the judge's points stored at 1 m/s: the 10 mm plate, within Zener's band there
+    assert [round(p[0], 9) for p in c.fem] == [10.0]
+    assert abs(c.fem[0][1] - c.epsilon[2]) < c.epsilon_err[2]
 
 
 def test_the_judges_speed_has_its_figure_with_the_finite_elements_on_it(tmp_path):
@@ -168,3 +170,34 @@ def test_the_ball_s_vibrations_on_a_stiff_plate_are_rayleigh_s_on_its_material()
         assert r.plate_energy < 1e-7
         reference = rayleigh_energy(modes, v, law).energy_fraction
         assert ball_vibrations(r, modes) == pytest.approx(reference, rel=1e-6)
+
+
+def test_a_plate_so_thin_that_the_ball_sticks_is_answered_without_integrating(cli):
+    """Hostile input: a glass plate 0.1 um thick. Zener's parameter is far above
+    STICKING_PARAMETER, where epsilon is below 1e-7 and the stiff equation would take minutes
+    (a plate of 1e-4 R took more than 45 s): no rebound, said in the error's line after the
+    note that the speed is computed."""
+    from restitution.quasistatic.plate import STICKING_PARAMETER
+
+    plate = Plate(**GLASS, thickness=1e-7 / R_BALL)
+    assert zener_parameter(1e-6, plate, nu=NU, mass=SPHERE_MASS) > STICKING_PARAMETER
+    r = plate_impact(1e-6, plate, nu=NU, mass=SPHERE_MASS)
+    assert not r.rebounds and r.epsilon is None and r.plate_energy == 1.0
+    code, _, err = _law(cli, "--wall-thickness", "1e-7", "--radius", "2.5e-3", "--speed", "1")
+    assert code == 2 and "Traceback" not in err
+    assert "does not rebound" in err.strip().splitlines()[-1]
+
+
+def test_just_below_the_sticking_parameter_epsilon_is_below_its_bound():
+    """The cut's premise, by the integration itself: at lambda = 20 (below the cut) epsilon is
+    already below 1e-6, and it falls with lambda."""
+    from restitution.quasistatic.plate import STICKING_PARAMETER
+
+    eps = []
+    for h in (0.0803, 0.0694):  # lambda 20.1 and 26.9 at v = 1e-6 on glass
+        plate = Plate(**GLASS, thickness=h)
+        lam = zener_parameter(1e-6, plate, nu=NU, mass=SPHERE_MASS)
+        if lam > STICKING_PARAMETER:
+            break
+        eps.append(plate_impact(1e-6, plate, nu=NU, mass=SPHERE_MASS).epsilon)
+    assert eps and eps[-1] < 1e-6

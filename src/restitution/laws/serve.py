@@ -205,10 +205,10 @@ def _wall_grid_answer(r: LawRequest, note, progress: bool) -> LawAnswer:
             "plastic flow with an elastic wall is answered at the asked speeds only; leave out "
             "--export and --reference-speed/--maxwell-temperature"
         )
+    grain, wall = r.grain, r.elastic_wall
+    seconds = grid_seconds(grain.law_nu, wall)  # refuses a plate without a range first
     if r.export_dir is not None:
         check_output_dir(r.export_dir, "--export")  # before anything is computed
-    grain, wall = r.grain, r.elastic_wall
-    seconds = grid_seconds(grain.law_nu, wall)
     what = "exports" if r.export_dir is not None else "constant"
     note(f"note: an elastic wall: its law on a grid of speeds for the {what} is computed now "
          f"(about {budget.format_duration(seconds)})")  # fmt: skip
