@@ -14,7 +14,8 @@ import pytest
 from restitution.bodies.wall import HalfSpace, Plate
 from restitution.laws.si_law import SILaw
 from restitution.laws.units import Grain
-from restitution.laws.wall_grid import SLOWEST, _route, grid_speeds, route_top, wall_grid_law
+from restitution.laws.wall_grid import SLOWEST, grid_speeds, wall_grid_law
+from restitution.laws.wall_route import route_at, route_top
 
 STEEL = (210e9, 0.3, 7850.0)
 GLASS = (63e9 / 210e9, 2500.0 / 7850.0, 0.2481)
@@ -41,7 +42,7 @@ def test_served_values_between_the_grid_speeds_keep_their_error(wall):
     in the gap (docs/walls.md: without it PCHIP strayed up to 3 times the measured gap)."""
     law = wall_grid_law(STEEL[1], wall)
     s = SILaw(Grain(*STEEL, "sphere"), "wall", law)
-    route = _route(STEEL[1], wall)
+    route = route_at(STEEL[1], wall)
     count = 8 if isinstance(wall, Plate) else 5
     for v in _between(law, count, seed=7):
         (p,) = s.points([v * s.speed_scale_m_s])
@@ -60,11 +61,13 @@ def test_the_grid_spans_the_route_and_a_plate_stops_where_zener_does():
     from restitution.quasistatic.plate import plate_impact, validity
 
     block = HalfSpace(*GLASS)
-    assert route_top(STEEL[1], block) == half_space_reach(STEEL[1], block)
-    v = grid_speeds(route_top(STEEL[1], block))
-    assert v[0] == SLOWEST and v[-1] == pytest.approx(route_top(STEEL[1], block), rel=1e-12)
+    assert route_top(STEEL[1], block, SLOWEST) == half_space_reach(STEEL[1], block)
+    v = grid_speeds(route_top(STEEL[1], block, SLOWEST))
+    assert v[0] == SLOWEST and v[-1] == pytest.approx(
+        route_top(STEEL[1], block, SLOWEST), rel=1e-12
+    )
     plate = Plate(*GLASS, thickness=4.0)
-    top = route_top(STEEL[1], plate)
+    top = route_top(STEEL[1], plate, SLOWEST)
     assert 5e-4 < top < 1e-3  # 10 mm glass: holds at 2.6 m/s, fails at 5.2 (docs/walls.md)
     for x, holds in ((top * 0.999, True), (top * 1.003, False)):
         r = plate_impact(x, plate, nu=STEEL[1], mass=SPHERE_MASS)

@@ -22,14 +22,12 @@ stored_wall_point`); other speeds there are ``outside``.
 
 from __future__ import annotations
 
-import math
-
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.production import low_speed_points, low_speed_record, route_reach
 from restitution.laws.wall_points import stored_wall_point
 
-__all__ = ["plate_record", "route_law", "route_serves", "wall_law"]
+__all__ = ["route_law", "route_serves", "wall_law"]
 
 
 def route_serves(geometry: str, nu: float, partner) -> bool:
@@ -120,22 +118,6 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     return law
 
 
-def plate_record(v: float, impact, plate, modes) -> dict:
-    """A plate's law point at ``v``: Zener's loss (the plate's flexural waves) and the ball's
-    vibrations driven by the same force history
-    (:func:`restitution.quasistatic.plate.ball_vibrations`), ``shares`` (ball, plate). Its
-    error is Zener's model error plus the ball's part itself (Rayleigh's estimate carries a
-    phase error of its order; it is below 1e-4 of the plate's loss here)."""
-    from restitution.quasistatic.plate import ball_vibrations, model_error
-
-    ball = ball_vibrations(impact, modes)
-    loss = impact.plate_energy + ball
-    eps = math.sqrt(max(impact.epsilon**2 - ball, 0.0))
-    details = {"plate_energy": impact.plate_energy, "balance": impact.balance,
-               "shares": [ball, impact.plate_energy]}  # fmt: skip
-    return low_speed_record(v, eps, loss, model_error(impact, plate) + ball, details=details)
-
-
 def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
     """A sphere on a thin plate at ``speeds`` (``c``), each by Zener's model solved as the
     coupled equation (:mod:`restitution.quasistatic.plate`); the speeds where the model does
@@ -144,7 +126,8 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
     from restitution.bodies.cache import get_modes
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.errors import InputError
-    from restitution.laws.wall_grid import route_top
+    from restitution.laws.wall_grid import SLOWEST
+    from restitution.laws.wall_route import plate_record, route_top
     from restitution.quasistatic.hertz_sphere import SPHERE_MASS
     from restitution.quasistatic.low_speed import LOW_SPEED_MODES
     from restitution.quasistatic.plate import plate_impact, validity
@@ -174,7 +157,7 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
         "route": "Zener's thin plate, the coupled equation (restitution.quasistatic.plate)"
     }
     try:  # the fastest speed the model holds at (for the outside rows' note)
-        parameters["reach"] = route_top(nu, plate)
+        parameters["reach"] = route_top(nu, plate, SLOWEST)
     except InputError:
         pass  # not even at the slowest grid speed: the asked speeds say why
     law = EpsilonLaw.from_records(

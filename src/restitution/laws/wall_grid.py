@@ -36,6 +36,13 @@ from scipy.interpolate import PchipInterpolator
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.production import low_speed_record
+from restitution.laws.wall_route import (
+    HALF_SPACE_ROUTE,
+    PLATE_ROUTE,
+    is_plate,
+    route_at,
+    route_top,
+)
 
 __all__ = ["INTERIOR", "PER_DECADE", "SLOWEST", "grid_seconds", "grid_speeds", "wall_grid_law"]
 
@@ -52,56 +59,11 @@ misses."""
 
 HALF_SPACE_SECONDS = 0.6
 """Wall time of one speed of the half-space route on one core, seconds (0.45-0.6 s measured on
-the project's 2-core machine, the ball's Rayleigh estimate over 20000 modes)."""
+the project's 2-core machine, the ball's Rayleigh estimate over its 1600 modes)."""
 
 PLATE_SECONDS = 1.0
 """The same on a plate, seconds (0.3-1.5 s measured: the ball's modes driven by the plate's
 force history, longest at the slowest speeds)."""
-
-_PLATE_TOP_SEARCH = 0.03
-"""The fastest speed (``c``) a plate's top is looked for below (the sphere's low-speed points
-end there)."""
-
-
-_PLATE_ROUTE = "Zener's thin plate, the coupled equation (restitution.quasistatic.plate)"
-_HALF_SPACE_ROUTE = (
-    "the ball's modes driven by Hertz's pulse on the elastic half-space (Rayleigh's estimate) "
-    "and the waves radiated into it (restitution.quasistatic.half_space)"
-)
-
-
-def _is_plate(wall) -> bool:
-    from restitution.bodies.wall import Plate
-
-    return isinstance(wall, Plate)
-
-
-def _plate_holds(nu: float, plate, v: float) -> bool:
-    from restitution.quasistatic.hertz_sphere import SPHERE_MASS
-    from restitution.quasistatic.plate import plate_impact, validity
-
-    r = plate_impact(v, plate, nu=nu, mass=SPHERE_MASS)
-    return bool(r.rebounds) and not validity(r, plate)
-
-
-def route_top(nu: float, wall) -> float:
-    """The fastest speed (``c``) the wall's route serves (module docs)."""
-    if not _is_plate(wall):
-        from restitution.quasistatic.half_space import half_space_reach
-
-        return float(half_space_reach(nu, wall))
-    if not _plate_holds(nu, wall, SLOWEST):
-        raise InputError(
-            f"Zener's thin-plate model does not hold on this plate even at v = {SLOWEST:g} c "
-            "(or the ball does not rebound): no law at every speed; ask for single speeds"
-        )
-    if _plate_holds(nu, wall, _PLATE_TOP_SEARCH):
-        return _PLATE_TOP_SEARCH
-    lo, hi = math.log(SLOWEST), math.log(_PLATE_TOP_SEARCH)
-    while hi - lo > 1e-3:  # the top to 0.1 %
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if _plate_holds(nu, wall, math.exp(mid)) else (lo, mid)
-    return math.exp(lo)
 
 
 def grid_speeds(top: float) -> np.ndarray:
@@ -114,38 +76,9 @@ def grid_speeds(top: float) -> np.ndarray:
 
 def grid_seconds(nu: float, wall) -> float:
     """Estimated wall time of :func:`wall_grid_law`, seconds (module docs)."""
-    n = grid_speeds(route_top(nu, wall)).size
-    per = PLATE_SECONDS if _is_plate(wall) else HALF_SPACE_SECONDS
+    n = grid_speeds(route_top(nu, wall, SLOWEST)).size
+    per = PLATE_SECONDS if is_plate(wall) else HALF_SPACE_SECONDS
     return (n + INTERIOR * (n - 1)) * per
-
-
-def _route(nu: float, wall):
-    """``v -> (epsilon, loss, loss_err, details)`` of the wall's route."""
-    from restitution.bodies.cache import get_modes
-    from restitution.bodies.sphere.kind import KIND as SPHERE
-    from restitution.quasistatic.half_space import ball_envelope, half_space_loss
-    from restitution.quasistatic.low_speed import LOW_SPEED_MODES
-
-    modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
-    if _is_plate(wall):
-        from restitution.laws.route_law import plate_record
-        from restitution.quasistatic.hertz_sphere import SPHERE_MASS
-        from restitution.quasistatic.plate import plate_impact
-
-        def plate(v):
-            r = plate_record(v, plate_impact(v, wall, nu=nu, mass=SPHERE_MASS), wall, modes)
-            details = {k: r[k] for k in ("plate_energy", "balance", "shares")}
-            return r["epsilon"], r["energy_loss"], r["estimate_err"], details
-
-        return plate
-
-    def half_space(v):
-        r = half_space_loss(modes, v, wall)
-        details = {"shares": list(map(float, r.shares)), "band": list(map(float, r.band)),
-                   "ball_envelope": ball_envelope(modes, v, wall)}  # fmt: skip
-        return r.epsilon, r.energy_loss, r.energy_loss_err, details
-
-    return half_space
 
 
 def wall_grid_law(nu: float, wall, *, progress=False) -> EpsilonLaw:
@@ -169,11 +102,11 @@ def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.limits.run_options import progress_of
 
-    top = route_top(nu, wall)
+    top = route_top(nu, wall, SLOWEST)
     v = grid_speeds(top)
     frac = np.arange(1, INTERIOR + 1) / (INTERIOR + 1)
     inside = (v[:-1, None] * (v[1:, None] / v[:-1, None]) ** frac[None, :]).ravel()
-    route = _route(nu, wall)
+    route = route_at(nu, wall)
     bars = progress_of(progress)
     results = []
     with bars.bar(v.size + inside.size, "speeds of the wall's route") as meter:
@@ -193,7 +126,7 @@ def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
         low_speed_record(float(x), eps, lo, err, float(g), details)
         for x, (eps, lo, err, details), g in zip(v, at, gaps, strict=True)
     ]
-    what = _PLATE_ROUTE if _is_plate(wall) else _HALF_SPACE_ROUTE
+    what = PLATE_ROUTE if is_plate(wall) else HALF_SPACE_ROUTE
     parameters = {
         "route": what,
         "grid": {"slowest": SLOWEST, "per_decade": PER_DECADE, "interior": INTERIOR},
@@ -209,6 +142,6 @@ def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
     law.metadata["source"] = (
         f"computed now on a grid of {v.size} speeds ({PER_DECADE} a decade, the PCHIP error "
         f"measured at {INTERIOR} speeds inside every interval): a sphere on an elastic "
-        + ("plate" if _is_plate(wall) else "half-space")
+        + ("plate" if is_plate(wall) else "half-space")
     )
     return law
