@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -58,3 +59,35 @@ def test_the_shipped_points_load():
     points = load_wall_reference()
     assert len(points) >= 4
     assert all(isinstance(p.wall, HalfSpace) and 0 < p.epsilon < 1 for p in points)
+
+
+def test_the_advice_s_command_computes_the_point_the_next_call_serves(tmp_path, monkeypatch):
+    """The advice of an outside plate speed (`compute_command`) names a file in the user's
+    point folder and a point the FEM command line parses back into the same ball, wall and
+    speed; a file of that form placed there (here a shipped plate point, moved to 9
+    m/s: plumbing only, not a physical value) is served by the next call."""
+    import json
+    import shlex
+    from importlib import resources
+
+    from restitution.fem.wall_reference import _parse_point
+    from restitution.laws.wall_points import compute_command, user_points_dir
+
+    monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(tmp_path))
+    plate = Plate(*GLASS, thickness=4.0)
+    v = 9.0 / math.sqrt(210e9 / 7850.0)
+    assert stored_wall_point(0.3, plate, v) is None
+    words = shlex.split(compute_command(0.3, plate.to_dict(), v))
+    out, point = Path(words[3]), words[4]
+    assert out.parent == user_points_dir() == tmp_path / "fem_wall"
+    ratios = tuple(float(words[i + 1]) for i in (5, 7, 9))
+    nu, wall, v_parsed = _parse_point(point, ratios)[:3]
+    assert (nu, wall) == (0.3, plate) and v_parsed == pytest.approx(v, rel=1e-12)
+    shipped = json.loads(
+        resources.files("restitution.laws").joinpath("data", "fem_reference_wall.json").read_text()
+    )
+    doc = {**shipped, "points": [dict(shipped["points"][-1], v=v_parsed, wall=plate.to_dict())]}
+    out.parent.mkdir(parents=True)
+    out.write_text(json.dumps(doc))
+    found = stored_wall_point(0.3, plate, v)
+    assert found is not None and found["epsilon"] == doc["points"][0]["epsilon"]

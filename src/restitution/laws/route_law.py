@@ -25,7 +25,7 @@ from __future__ import annotations
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.production import low_speed_points, low_speed_record, route_reach
-from restitution.laws.wall_points import stored_wall_point
+from restitution.laws.wall_points import compute_command, stored_wall_point
 
 __all__ = ["route_law", "route_serves", "wall_law"]
 
@@ -149,10 +149,16 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
             continue
         records.append(plate_record(v, r, plate, modes))
     if not records:
-        raise InputError(
-            "the thin-plate model serves none of the asked speeds: "
-            + "; ".join(sorted(set(refused.values())))
+        reasons = "; ".join(sorted(set(refused.values())))
+        fastest = max(float(v) for v in refused)
+        command = compute_command(nu, plate.to_dict(), fastest)
+        advice = (
+            ""
+            if "does not rebound" in reasons
+            else f"; a finite-element point answers instead (10-45 minutes of one core): "
+            f"{command}; the next call serves it"
         )
+        raise InputError(f"the thin-plate model serves none of the asked speeds: {reasons}{advice}")
     parameters = {
         "route": "Zener's thin plate, the coupled equation (restitution.quasistatic.plate)"
     }

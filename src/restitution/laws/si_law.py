@@ -268,6 +268,19 @@ def _shares(law, v: float) -> tuple[float, float] | None:
     return None if first is None else (first, 1.0 - first)
 
 
+def _compute(law, v: float) -> str:
+    """How to compute the missing finite-element point of an elastic wall's law at ``v``."""
+    wall = law.metadata.get("wall") if isinstance(law, EpsilonLaw) else None
+    if wall is None:
+        return ""
+    from restitution.laws.wall_points import compute_command
+
+    return (
+        f" (docs/walls.md; 10-45 minutes of one core: {compute_command(law.nu, wall, v)}; the "
+        "next call serves it)"
+    )
+
+
 def _route_reach(law) -> float:
     """The fastest speed (``c``) of a law served at its points only: its route's reach where
     the law states one, else its fastest point of the route (points of the finite elements
@@ -304,15 +317,13 @@ def _status(law, v: float) -> tuple[str, str]:
         if refused:
             return Status.OUTSIDE, (
                 f"v = {v:.3g} c: no value from the plate's model: {refused}; no "
-                "finite-element point of this plate is stored at this speed (docs/walls.md: "
-                "python -m restitution.fem.wall_reference computes one in 10-45 minutes)"
+                f"finite-element point of this plate is stored at this speed{_compute(law, v)}"
             )
         if v > _route_reach(law):
             return Status.OUTSIDE, (
                 f"v = {v:.3g} c is above the reach {_route_reach(law):.4g} c of the {what}'s "
                 f"low-speed route, and no finite-element point of this {what} is stored at "
-                "this speed (docs/walls.md: python -m restitution.fem.wall_reference computes "
-                "one in 10-45 minutes)"
+                f"this speed{_compute(law, v)}"
             )
         return Status.OUTSIDE, (
             f"v = {v:.3g} c: this law was computed at the asked speeds only (by the {what}'s "

@@ -12,10 +12,13 @@ reach or Zener's thin-plate model does not hold, the issue's answer is the finit
 a run costs 10-45 minutes of one core, so a law served in seconds can only give the points
 already computed. :func:`stored_wall_point` finds one for the asked ball, wall and speed: the
 same ``nu`` and wall constants to a relative ``1e-6``, the speed within :data:`SPEED_MATCH`
-(relative). Its error is the stored one plus a bound on the change of epsilon between the two
-speeds: a loss ``L ~ v^p`` with ``p <= 1`` (``3/5`` on the half-space, ``1/5-3/5`` on a plate)
-changes by at most ``dL = L (exp|ln(v / v_stored)| - 1)`` (to first order ``L |ln(v /
-v_stored)|``), epsilon by at most ``epsilon - sqrt(epsilon^2 - dL)``.
+(relative). Besides the shipped file it reads every file a user computed into
+``<cache>/fem_wall`` (:func:`user_points_dir`, :func:`compute_command` says how), so that a
+point computed once is served from then on. Its error is the stored one plus a bound on the
+change of epsilon between the two speeds: a loss ``L ~ v^p`` with ``p <= 1`` (``3/5`` on the
+half-space, ``1/5-3/5`` on a plate) changes by at most ``dL = L (exp|ln(v / v_stored)| - 1)``
+(to first order ``L |ln(v / v_stored)|``), epsilon by at most ``epsilon - sqrt(epsilon^2 -
+dL)``.
 """
 
 from __future__ import annotations
@@ -34,8 +37,10 @@ __all__ = [
     "SPEED_MATCH",
     "WALL_REFERENCE_FILENAME",
     "WallReferencePoint",
+    "compute_command",
     "load_wall_reference",
     "stored_wall_point",
+    "user_points_dir",
 ]
 
 WALL_REFERENCE_FILENAME = "fem_reference_wall.json"
@@ -106,6 +111,38 @@ def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePo
         ) from exc
 
 
+def user_points_dir() -> Path:
+    """Where a user's computed wall points are read from: ``<cache>/fem_wall``
+    (:func:`restitution._paths.cache_root`)."""
+    from restitution._paths import cache_root
+
+    return cache_root() / "fem_wall"
+
+
+def compute_command(nu: float, wall: dict, v: float) -> str:
+    """The command that computes the FEM point of a ball of ``nu`` on ``wall`` (its
+    ``to_dict``) at ``v`` (``c``) into :func:`user_points_dir`, where the next call finds it."""
+    thickness = wall.get("thickness", "inf")
+    out = user_points_dir() / f"wall_{wall['kind']}_{thickness}_v{v:.6g}.json"
+    return (
+        f"python -m restitution.fem.wall_reference {out} {nu:.12g}:{v:.12g}:{thickness} "
+        f"--modulus-ratio {wall['modulus_ratio']!r} --density-ratio {wall['density_ratio']!r} "
+        f"--wall-nu {wall['nu']!r}"
+    )
+
+
+def _all_points() -> list[WallReferencePoint]:
+    """The shipped points and those in :func:`user_points_dir` (unreadable files skipped)."""
+    points = list(load_wall_reference())
+    folder = user_points_dir()
+    for path in sorted(folder.glob("*.json")) if folder.is_dir() else ():
+        try:
+            points += load_wall_reference(path)
+        except (InputError, OSError):
+            continue  # a file being written, or not a wall reference: not a point
+    return points
+
+
 def _close(a: float, b: float) -> bool:
     return abs(a - b) <= _SAME * max(abs(a), abs(b))
 
@@ -121,10 +158,10 @@ def stored_wall_point(nu: float, wall: HalfSpace, v: float, points=None) -> dict
     """The stored FEM point of a ball of ``nu`` on ``wall`` at the speed ``v`` (``c``), as a
     law's record (``route`` ``"finite elements (stored point)"``, its error widened by the speed's
     offset, module docs), or ``None`` when none is stored there. ``points`` default the shipped
-    file's (:func:`load_wall_reference`)."""
+    file's and the user's (module docs)."""
     from restitution.status import Status
 
-    for p in load_wall_reference() if points is None else points:
+    for p in _all_points() if points is None else points:
         offset = abs(math.log(v / p.v))
         if not (_close(p.nu, nu) and _same_wall(p.wall, wall) and offset <= SPEED_MATCH):
             continue
