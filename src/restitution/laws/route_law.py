@@ -79,11 +79,11 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     alone (:func:`restitution.quasistatic.half_space.half_space_loss`, the ball's vibrations and
     the waves radiated into the wall, ``shares`` in that order), served at its points only
     (speeds above the reach are ``outside``)."""
-    from restitution.bodies.cache import get_modes
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.bodies.wall import Plate
+    from restitution.laws.wall_route import route_at
     from restitution.provenance import quasistatic_code_version
-    from restitution.quasistatic.half_space import half_space_loss, half_space_reach
+    from restitution.quasistatic.half_space import half_space_reach
     from restitution.quasistatic.low_speed import CONTACT_TIME_SPREAD, LOW_SPEED_MODES
 
     if isinstance(wall, Plate):
@@ -91,13 +91,11 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     top = float(half_space_reach(nu, wall))
     inside = sorted({float(v) for v in speeds if 0.0 < float(v) < top})
     points = [*(inside or [0.5 * top]), top]
-    modes = get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry)
+    route = route_at(nu, wall)  # the grid law's route, speed by speed
     records = []
     for v in points:
-        r = half_space_loss(modes, v, wall)
-        records.append(low_speed_record(v, r.epsilon, r.energy_loss, r.energy_loss_err,
-                                        details={"shares": list(r.shares),
-                                                 "band": list(r.band)}))  # fmt: skip
+        eps, loss, err, details = route(v)
+        records.append(low_speed_record(v, eps, loss, err, details=details))
     above = sorted({float(v) for v in speeds if float(v) > top})
     records += [r for r in (stored_wall_point(nu, wall, v) for v in above) if r is not None]
     parameters = {

@@ -268,6 +268,11 @@ def _shares(law, v: float) -> tuple[float, float] | None:
     return None if first is None else (first, 1.0 - first)
 
 
+def _is_stored(record: dict) -> bool:
+    """Whether a law point is a stored finite-element point (not the route's)."""
+    return str(record.get("route", "")).startswith("finite elements")
+
+
 def _compute(law, v: float) -> str:
     """How to compute the missing finite-element point of an elastic wall's law at ``v``."""
     wall = law.metadata.get("wall") if isinstance(law, EpsilonLaw) else None
@@ -290,8 +295,7 @@ def _route_reach(law) -> float:
     reach = law.metadata.get("low_speed", {}).get("reach")
     if reach is not None:
         return float(reach)
-    routed = [float(r["v"]) for r in law._records()
-              if not str(r.get("route", "")).startswith("finite elements")]  # fmt: skip
+    routed = [float(r["v"]) for r in law._records() if not _is_stored(r)]
     return max(routed) if routed else float(law.v[-1])
 
 
@@ -304,7 +308,7 @@ def _status(law, v: float) -> tuple[str, str]:
         if quasi[at[0]]:
             return Status.QUASISTATIC, _quasistatic_note(law)
         record = law._records()[at[0]] if isinstance(law, EpsilonLaw) else {}
-        if str(record.get("route", "")).startswith("finite elements"):
+        if _is_stored(record):
             status = Status.COMPUTED if ok[at[0]] else Status.COMPUTED_NOT_ASYMPTOTIC
             return status, _stored_note(record)
         if ok[at[0]]:
