@@ -34,7 +34,7 @@ from scipy.optimize import brentq
 from scipy.special import jv
 
 from restitution.bodies.base import SurfaceQuadrature, check_mode_selection
-from restitution.bodies.disk import contact, surface
+from restitution.bodies.disk import contact, static, surface
 from restitution.bodies.disk.bessel_ratio import scaled_pairs
 from restitution.bodies.disk.frequency_equation import (
     bessel_and_derivative,
@@ -143,6 +143,12 @@ class ModeSet:
         """``int exp(-s (1 - cos phi)) dphi`` over the edge, ``R``
         (:func:`restitution.bodies.disk.surface.depth_transform`)."""
         return surface.depth_transform(s)
+
+    def residual_flexibility(self, quad: SurfaceQuadrature, count: int) -> np.ndarray:
+        """The static flexibility of the modes above this set on the first ``count`` nodes of
+        the edge quadrature ``quad``, shape (count, count)
+        (:func:`restitution.bodies.disk.static.residual_flexibility`)."""
+        return static.residual_flexibility(self, count, float(quad.nodes[1] - quad.nodes[0]))
 
     def take(self, index: np.ndarray) -> ModeSet:
         """Subset of modes at ``index`` (integer or boolean array), in the order given."""

@@ -1,0 +1,107 @@
+"""How the collision converges in the number of kept modes, with and without the static
+residual (issue 46, item 2): the measurement behind docs/numerics.md's "Fewer modes: a static
+residual" and its figure.
+
+Units: the disk's ``E = rho = R = 1``; ``v`` in ``c``; walls ``alpha delta_max(v)`` as the laws
+use them (:func:`restitution.limits.defaults.walls_at`, compression scale).
+
+For every ``(nu, v, wall)``: epsilon of the collision with the static residual
+(:func:`restitution.dynamics.residual.collide_residual`, its Richardson step error beside it)
+for ``N = 25 ... 1600`` kept modes, and epsilon of the plain modal collision
+(:func:`restitution.dynamics.collision.collide`, held to an energy drift of 1e-9) for
+``N = 100 ... 25600``. Every point is appended to the JSON file as it is done (written whole,
+:mod:`restitution.atomic`); a rerun skips what the file holds.
+
+Command line::
+
+    python -m restitution.reproduction.residual_study OUT.json [--nu 0.33 0.9]
+        [--v 0.001 0.01 0.1] [--walls 40 80 160]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import time
+from pathlib import Path
+
+from restitution import atomic
+from restitution.bodies.cache import get_modes
+from restitution.bodies.disk.contact import max_compression_estimate
+from restitution.dynamics.collision import collide
+from restitution.dynamics.residual import collide_residual
+
+__all__ = ["MODAL_MODES", "RESIDUAL_MODES", "compute"]
+
+RESIDUAL_MODES = (25, 50, 100, 200, 400, 800, 1600)
+"""Kept modes of the residual collisions."""
+
+MODAL_MODES = (100, 400, 1600, 6400, 25600)
+"""Modes of the plain modal collisions (the laws' production reaches 102400)."""
+
+MODAL_DRIFT = 1e-9
+"""Energy tolerance of the plain modal collisions: their step error far below the N error."""
+
+
+def _key(route: str, nu: float, v: float, wall: float, n: int) -> str:
+    return f"{route}:{nu:g}:{v:g}:{wall:g}:{n}"
+
+
+def _load(path: Path) -> dict:
+    if path.exists():
+        return json.loads(path.read_text())
+    return {"description": __doc__.split("\n\n")[0], "units": "disk E = rho = R = 1; v in c",
+            "points": {}}  # fmt: skip
+
+
+def compute(path, nus, speeds, walls, residual_modes=RESIDUAL_MODES, modal_modes=MODAL_MODES):
+    """Run every missing point and append it to ``path`` (JSON), printing one line each."""
+    path = Path(path)
+    data = _load(path)
+    points = data["points"]
+    for nu in nus:
+        for v in speeds:
+            for wall in walls:
+                alpha = wall / float(max_compression_estimate(v))
+                jobs = [("residual", n) for n in residual_modes]
+                jobs += [("modal", n) for n in modal_modes]
+                for route, n in jobs:
+                    key = _key(route, nu, v, wall, n)
+                    if key in points:
+                        continue
+                    body = get_modes(nu, count=n)
+                    start = time.perf_counter()
+                    if route == "residual":
+                        r = collide_residual(body, v, alpha, richardson=True, step_factor=0.1)
+                        point = {"epsilon": r.epsilon, "step_error": r.step_error,
+                                 "drift": r.drift, "nodes": r.nodes,
+                                 "active": r.active}  # fmt: skip
+                    else:
+                        r = collide(body, v, alpha, energy_tol=MODAL_DRIFT)
+                        point = {"epsilon": r.epsilon, "drift": r.energy_drift}
+                    point.update(route=route, nu=nu, v=v, wall=wall, alpha=alpha, modes=n,
+                                 seconds=time.perf_counter() - start)  # fmt: skip
+                    points[key] = point
+                    atomic.write_text(path, json.dumps(data, indent=1))
+                    line = f"{route:8s} nu={nu:g} v={v:g} wall={wall:g} N={n}: "
+                    print(
+                        line + f"eps={point['epsilon']:.9f} ({point['seconds']:.1f} s)", flush=True
+                    )
+    return data
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("out", type=Path)
+    parser.add_argument("--nu", type=float, nargs="+", default=[0.33, 0.9])
+    parser.add_argument("--v", type=float, nargs="+", default=[0.1, 0.01, 0.001])
+    parser.add_argument("--walls", type=float, nargs="+", default=[40.0, 80.0, 160.0])
+    args = parser.parse_args(argv)
+    if not all(math.isfinite(x) and x > 0 for x in [*args.nu, *args.v, *args.walls]):
+        parser.error("every nu, v and wall must be a positive number")
+    compute(args.out, args.nu, args.v, args.walls)
+
+
+if __name__ == "__main__":
+    main()
