@@ -51,6 +51,14 @@ from scipy.linalg import cho_factor, cho_solve
 from restitution.bodies.base import ModalBody
 from restitution.dynamics.contact.base import CONTACT_TOL
 from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL, NEGLIGIBLE, STOP_LOG
+from restitution.dynamics.residual_kernel import (
+    NEWTON_FAILED,
+    NODES_EXHAUSTED,
+    OK,
+    OVERFLOW,
+    STEPS_EXHAUSTED,
+    run_residual,
+)
 from restitution.errors import InputError, RestitutionError
 
 __all__ = ["ResidualCollision", "collide_residual", "supports_residual"]
@@ -62,6 +70,20 @@ step for the fourth-order splitting (docs/numerics.md, "Automatic step")."""
 DEPTH_MARGIN = 2.0
 """The residual's nodes reach ``DEPTH_MARGIN`` times the quasistatic largest compression (plus
 the wall's reach) below the tip; a contact that reaches the last of them is refused."""
+
+WALL_SPACING = 0.12
+"""The bodies' node rule: a spacing ``WALL_SPACING / sqrt(s)`` for a contact of depth ``1/s``
+(:meth:`~restitution.bodies.base.ModalBody.contact_nodes`); ``nodes_per_contact`` asks it for
+the ``s`` that puts that many nodes across the contact's half-width."""
+
+_KERNEL_FAILURES = {
+    NEWTON_FAILED: "the residual's contact solve did not converge; this is a bug",
+    NODES_EXHAUSTED: "the contact reached the last of the residual's {count} nodes; raise "
+    "DEPTH_MARGIN (a bug for a body at rest)",
+    STEPS_EXHAUSTED: "the collision did not end within max_steps steps of {dt:.3g}; raise "
+    "max_steps",
+    OVERFLOW: "the integration overflowed with dt = {dt:.3g}: reduce the step",
+}
 
 _NEWTON_TOL = 1e-13
 """Newton's step on ``u`` ends once it is below this times the wall's decay length ``1/alpha``."""
@@ -223,6 +245,8 @@ def collide_residual(
     n_nodes: int | None = None,
     richardson: bool = False,
     max_steps: int = 2_000_000,
+    nodes_per_contact: float | None = None,
+    backend: str = "compiled",
 ) -> ResidualCollision:
     """One collision of ``body`` (at rest, speed ``v`` in ``c``) with the exponential wall of
     hardness ``alpha`` (``1 / R``), its modes above the set following the contact statically.
@@ -230,18 +254,30 @@ def collide_residual(
     ``n_nodes``: the surface quadrature's nodes (default the body's own for ``alpha``);
     ``dt``: a fixed step (default ``step_factor * min(1/(alpha v), 1/omega_max)``);
     ``richardson``: also run at ``dt / 2`` and report the step error (the result is the
-    finer run's).
+    finer run's); ``nodes_per_contact``: instead of the wall's node spacing, about this many
+    nodes across the contact's half-width ``sqrt(2 delta_max)`` (never more nodes than the
+    wall's rule; the residual resolves the contact, not the wall's decay length);
+    ``backend``: ``"compiled"`` (:mod:`restitution.dynamics.residual_kernel`) or ``"numpy"``
+    (the reference loop).
     """
+    if backend not in ("compiled", "numpy"):
+        raise InputError(f"backend must be 'compiled' or 'numpy', got {backend!r}")
     if not (math.isfinite(v) and v > 0.0 and math.isfinite(alpha) and alpha > 0.0):
         raise InputError(f"v and alpha must be positive numbers, got v = {v}, alpha = {alpha}")
     if residual and not supports_residual(body):
         raise InputError(
             f"the {body.geometry} has no static residual yet: run it with residual=False"
         )
-    quad = body.surface_quadrature(n_nodes or body.contact_nodes(alpha))
+    compression = v * body.contact_time_estimate(v) / math.pi
+    if n_nodes is None:
+        s = alpha
+        if nodes_per_contact is not None:
+            s = min(alpha, (WALL_SPACING * nodes_per_contact) ** 2 / (2.0 * compression))
+        n_nodes = body.contact_nodes(s)
+    quad = body.surface_quadrature(n_nodes)
     e0 = 0.5 * body.mass * v * v
     x_start = float(EXPONENTIAL_WALL.start_position(np.array([alpha]), np.array([e0]), quad)[0])
-    depth = DEPTH_MARGIN * v * body.contact_time_estimate(v) / math.pi + (NEGLIGIBLE + 20.0) / alpha
+    depth = DEPTH_MARGIN * compression + (NEGLIGIBLE + 20.0) / alpha
     count = int(np.searchsorted(-quad.height, -(1.0 - depth), side="right")) + 1
     count = min(count, quad.nodes.size)
     if residual:
@@ -254,10 +290,23 @@ def collide_residual(
         else step_factor * min(1.0 / (alpha * v), 1.0 / float(body.omega.max()))
     )
 
+    g = np.ascontiguousarray(quad.basis[:count] @ quad.edge_t.toarray())
+
     def once(step):
-        contact = _Contact(quad, count, G, alpha)
-        eps, mode_loss, drift, steps = _run(body, v, alpha, step, contact, x_start, max_steps)
-        return eps, mode_loss, drift, steps, contact.most
+        if backend == "numpy":
+            contact = _Contact(quad, count, G, alpha)
+            eps, mode_loss, drift, steps = _run(body, v, alpha, step, contact, x_start, max_steps)
+            return eps, mode_loss, drift, steps, contact.most
+        out = run_residual(
+            x_start, v, float(body.mass), np.ascontiguousarray(body.omega, dtype=float), g,
+            np.ascontiguousarray(quad.height[:count]), np.ascontiguousarray(quad.weight[:count]),
+            np.ascontiguousarray(G), float(alpha), float(step), int(max_steps), CONTACT_TOL,
+            STOP_LOG, -(NEGLIGIBLE + 5.0) / alpha, _NEWTON_TOL,
+        )  # fmt: skip
+        eps, mode_loss, drift, steps, most, status = out
+        if status != OK:
+            raise RestitutionError(_KERNEL_FAILURES[status].format(count=count, dt=step))
+        return eps, mode_loss, drift, steps, most
 
     eps, mode_loss, drift, steps, most = once(step)
     error = None

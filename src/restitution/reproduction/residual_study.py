@@ -28,7 +28,7 @@ from pathlib import Path
 
 from restitution import atomic
 from restitution.bodies.cache import get_modes
-from restitution.bodies.disk.contact import max_compression_estimate
+from restitution.bodies.kinds import body_kind
 from restitution.dynamics.collision import collide
 from restitution.dynamics.residual import collide_residual
 
@@ -40,12 +40,16 @@ RESIDUAL_MODES = (25, 50, 100, 200, 400, 800, 1600)
 MODAL_MODES = (100, 400, 1600, 6400, 25600)
 """Modes of the plain modal collisions (the laws' production reaches 102400)."""
 
+STEP_FACTOR = 0.2
+"""The residual collisions' step factor (:data:`restitution.dynamics.residual.STEP_FACTOR`);
+each runs at it and at half of it (Richardson's estimate of the step error is stored)."""
+
 MODAL_DRIFT = 1e-9
 """Energy tolerance of the plain modal collisions: their step error far below the N error."""
 
 
-def _key(route: str, nu: float, v: float, wall: float, n: int) -> str:
-    return f"{route}:{nu:g}:{v:g}:{wall:g}:{n}"
+def _key(geometry: str, route: str, nu: float, v: float, wall: float, n: int) -> str:
+    return f"{geometry}:{route}:{nu:g}:{v:g}:{wall:g}:{n}"
 
 
 def _load(path: Path) -> dict:
@@ -55,32 +59,44 @@ def _load(path: Path) -> dict:
             "points": {}}  # fmt: skip
 
 
-def compute(path, nus, speeds, walls, residual_modes=RESIDUAL_MODES, modal_modes=MODAL_MODES):
+def compute(
+    path,
+    nus,
+    speeds,
+    walls,
+    residual_modes=RESIDUAL_MODES,
+    modal_modes=MODAL_MODES,
+    geometry: str = "disk",
+    step_factor: float = STEP_FACTOR,
+):
     """Run every missing point and append it to ``path`` (JSON), printing one line each."""
     path = Path(path)
+    kind = body_kind(geometry)
     data = _load(path)
     points = data["points"]
     for nu in nus:
         for v in speeds:
             for wall in walls:
-                alpha = wall / float(max_compression_estimate(v))
+                alpha = wall / float(kind.max_compression(v, nu))
                 jobs = [("residual", n) for n in residual_modes]
                 jobs += [("modal", n) for n in modal_modes]
                 for route, n in jobs:
-                    key = _key(route, nu, v, wall, n)
+                    key = _key(geometry, route, nu, v, wall, n)
                     if key in points:
                         continue
-                    body = get_modes(nu, count=n)
+                    body = get_modes(nu, count=n, geometry=geometry)
                     start = time.perf_counter()
                     if route == "residual":
-                        r = collide_residual(body, v, alpha, richardson=True, step_factor=0.1)
+                        r = collide_residual(body, v, alpha, richardson=True,
+                                             step_factor=step_factor)  # fmt: skip
                         point = {"epsilon": r.epsilon, "step_error": r.step_error,
                                  "drift": r.drift, "nodes": r.nodes,
-                                 "active": r.active}  # fmt: skip
+                                 "active": r.active, "step_factor": step_factor}  # fmt: skip
                     else:
                         r = collide(body, v, alpha, energy_tol=MODAL_DRIFT)
                         point = {"epsilon": r.epsilon, "drift": r.energy_drift}
-                    point.update(route=route, nu=nu, v=v, wall=wall, alpha=alpha, modes=n,
+                    point.update(geometry=geometry, route=route, nu=nu, v=v, wall=wall,
+                                 alpha=alpha, modes=n,
                                  seconds=time.perf_counter() - start)  # fmt: skip
                     points[key] = point
                     atomic.write_text(path, json.dumps(data, indent=1))
@@ -97,10 +113,15 @@ def main(argv=None) -> None:
     parser.add_argument("--nu", type=float, nargs="+", default=[0.33, 0.9])
     parser.add_argument("--v", type=float, nargs="+", default=[0.1, 0.01, 0.001])
     parser.add_argument("--walls", type=float, nargs="+", default=[40.0, 80.0, 160.0])
+    parser.add_argument("--geometry", default="disk")
+    parser.add_argument("--step-factor", type=float, default=STEP_FACTOR)
+    parser.add_argument("--residual-modes", type=int, nargs="*", default=list(RESIDUAL_MODES))
+    parser.add_argument("--modal-modes", type=int, nargs="*", default=list(MODAL_MODES))
     args = parser.parse_args(argv)
     if not all(math.isfinite(x) and x > 0 for x in [*args.nu, *args.v, *args.walls]):
         parser.error("every nu, v and wall must be a positive number")
-    compute(args.out, args.nu, args.v, args.walls)
+    compute(args.out, args.nu, args.v, args.walls, args.residual_modes, args.modal_modes,
+            args.geometry, args.step_factor)  # fmt: skip
 
 
 if __name__ == "__main__":

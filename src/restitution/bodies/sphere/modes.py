@@ -54,7 +54,7 @@ from scipy.special import roots_legendre, spherical_jn
 
 from restitution.bodies.base import SurfaceQuadrature, check_mode_selection
 from restitution.bodies.roots import bracket_and_polish, null_vector
-from restitution.bodies.sphere import surface
+from restitution.bodies.sphere import static, surface
 from restitution.errors import (
     InputError,
     RestitutionError,
@@ -352,6 +352,12 @@ class SphereModes:
         to ``|basis| <= 1`` with ``S`` compensating
         (:func:`restitution.bodies.sphere.surface.sphere_quadrature`)."""
         return surface.sphere_quadrature(self, n_nodes)
+
+    def residual_flexibility(self, quad: SurfaceQuadrature, count: int) -> np.ndarray:
+        """The static flexibility of the modes above this set between the first ``count``
+        nodes of the surface quadrature ``quad``, shape (count, count)
+        (:func:`restitution.bodies.sphere.static.residual_flexibility`)."""
+        return static.residual_flexibility(self, quad.nodes, count)
 
     def surface_matrix(self, nodes: np.ndarray) -> np.ndarray:
         """``u_r cos(theta) - u_theta sin(theta)`` per unit ``Q_k`` at ``nodes``, shape (M, N)."""
