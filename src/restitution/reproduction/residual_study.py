@@ -28,7 +28,7 @@ from pathlib import Path
 
 from restitution import atomic
 from restitution.bodies.cache import get_modes
-from restitution.bodies.kinds import body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.dynamics.collision import collide
 from restitution.dynamics.residual import collide_residual
 
@@ -66,7 +66,7 @@ def compute(
     walls,
     residual_modes=RESIDUAL_MODES,
     modal_modes=MODAL_MODES,
-    geometry: str = "disk",
+    geometry: str = DEFAULT_GEOMETRY,
     step_factor: float = STEP_FACTOR,
 ):
     """Run every missing point and append it to ``path`` (JSON), printing one line each."""
@@ -113,7 +113,7 @@ def main(argv=None) -> None:
     parser.add_argument("--nu", type=float, nargs="+", default=[0.33, 0.9])
     parser.add_argument("--v", type=float, nargs="+", default=[0.1, 0.01, 0.001])
     parser.add_argument("--walls", type=float, nargs="+", default=[40.0, 80.0, 160.0])
-    parser.add_argument("--geometry", default="disk")
+    parser.add_argument("--geometry", default=DEFAULT_GEOMETRY)
     parser.add_argument("--step-factor", type=float, default=STEP_FACTOR)
     parser.add_argument("--residual-modes", type=int, nargs="*", default=list(RESIDUAL_MODES))
     parser.add_argument("--modal-modes", type=int, nargs="*", default=list(MODAL_MODES))

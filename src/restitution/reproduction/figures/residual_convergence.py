@@ -25,6 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from restitution.atomic import replacing
+from restitution.bodies.disk.kind import KIND as DISK
+from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.reproduction.figures._style import add_notes
 
 __all__ = ["DATA", "curves", "main", "plot", "summary"]
@@ -134,7 +136,7 @@ def plot(points, geometry: str, nu: float, path=None):
     return fig
 
 
-BODIES = (("disk", 0.33), ("disk", 0.9), ("sphere", 0.3))
+BODIES = ((DISK.geometry, 0.33), (DISK.geometry, 0.9), (SPHERE.geometry, 0.3))
 """The bodies of the figures: issue 46's disk at 0.33 and 0.9 and sphere at 0.3."""
 
 
