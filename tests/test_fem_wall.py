@@ -175,8 +175,8 @@ def _route(point):
 
 def test_the_shipped_wall_reference_holds_the_asked_points():
     """A steel ball on a glass block at 2.6, 5.2 and 10 m/s and on glass plates 3 mm and 10 mm
-    thick (issue 42's four points, the block and the 10 mm plate at 10 m/s, both plates and
-    the block at 1 m/s), every one with both limits taken and both checks."""
+    thick (issue 42's four points, the block and the 10 mm plate at 10 m/s, both plates, the
+    block and a 30 mm plate at 1 m/s), every one with both limits taken and both checks."""
     points = load_wall_reference()
     kinds = sorted((p.wall.to_dict()["kind"], getattr(p.wall, "thickness", 0.0), p.v)
                    for p in points)  # fmt: skip
@@ -193,7 +193,8 @@ def test_the_routes_lie_within_two_combined_errors_of_the_finite_elements():
     coupled equation on the plates, within 2 combined errors (the other judges' criterion).
     Measured sigmas: +0.12, +0.10 and +0.08 (block at v = 5e-4, 1e-3, 1.93e-3), +0.48 and +0.80
     (plates 3 and 10 mm at v = 5e-4), +0.61 and +0.88 (3 and 10 mm at 1.93e-4, 1 m/s), +0.15
-    (the block at 1 m/s); before
+    (the block at 1 m/s), +0.51 (30 mm at 1 m/s, where Zener's model fails and its band is
+    wide: FEM loss 0.01452, Zener 0.0089 +- 0.011); before
     the depth term of
     Zener's error the 10 mm plate at v = 5e-4 had +2.29. The 10 mm plate at v = 1.93e-3
     (10 m/s) lies outside Zener's model (the package serves the stored point there); its

@@ -133,12 +133,14 @@ def test_the_plate_thickness_figure_is_drawn(tmp_path):
     assert 0.99 < c.half_space < c.epsilon[3]
     plate_thickness.plot(c, tmp_path / "f.png")
     assert (tmp_path / "f.png").stat().st_size > 10_000
-    # the judge's points stored at 1 m/s: both plates, each within Zener's band there, and the
-    # block, within the half-space route's band
-    assert [round(p[0], 9) for p in c.fem] == [3.0, 10.0, math.inf]
+    # the judge's points stored at 1 m/s: the 3 and 10 mm plates, each within Zener's band
+    # there; the 30 mm plate, where neither route holds, between the 10 mm plate and the block;
+    # the block, within the half-space route's band
+    assert [round(p[0], 9) for p in c.fem] == [3.0, 10.0, 30.0, math.inf]
     for (_, eps, _), i in zip(c.fem[:2], (1, 2), strict=True):
         assert abs(eps - c.epsilon[i]) < c.epsilon_err[i]
-    assert abs(c.fem[2][1] - c.half_space) < c.half_space_err
+    assert c.fem[1][1] < c.fem[2][1] < c.fem[3][1]
+    assert abs(c.fem[3][1] - c.half_space) < c.half_space_err
 
 
 def test_the_judges_speed_has_its_figure_with_the_finite_elements_on_it(tmp_path):
