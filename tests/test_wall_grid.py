@@ -100,6 +100,19 @@ def test_the_block_exports_with_the_wall_in_every_form(cli, tmp_path):
     assert float(re.search(r"wall/restitution (\S+) ", plugin).group(1)) == pytest.approx(
         e_star, rel=1e-9
     )
+    # LIGGGHTS: the wall its own atom type with glass's constants, which LIGGGHTS mixes into
+    # the same E*; YADE: a wall material of glass; MercuryDPM: no modulus, and it says so
+    liggghts = (out / "epsilon_liggghts.in").read_text()
+    moduli = re.search(r"youngsModulus peratomtype (\S+) (\S+)", liggghts).groups()
+    poisson = re.search(r"poissonsRatio peratomtype (\S+) (\S+)", liggghts).groups()
+    mixed = 1.0 / sum((1 - float(n) ** 2) / float(E) for E, n in zip(moduli, poisson))
+    assert mixed == pytest.approx(e_star, rel=1e-7)
+    assert "primitive type 2 zplane" in liggghts
+    assert "coefficientRestitution peratomtypepair 2" in liggghts
+    yade = (out / "epsilon_yade.py").read_text()
+    wall = re.search(r"wallMat = .*young=(\S+), poisson=(\S+), density=(\S+),", yade).groups()
+    assert [float(x) for x in wall] == pytest.approx([63e9, 0.2481, 2500.0], rel=1e-7)
+    assert "no modulus" in (out / "epsilon_mercurydpm.cpp").read_text()
 
 
 def test_a_plate_gives_a_constant_at_a_reference_speed(cli):

@@ -22,6 +22,7 @@ from restitution.laws.exports.dem._common import (
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
+from restitution.laws.mechanisms import wall_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "liggghts_snippet", "liggghts_viscoelastic"]
@@ -37,22 +38,40 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None =
         consts[min(i, j), max(i, j)].epsilon for i in range(1, n + 1) for j in range(1, n + 1)
     ]
     grains = [_grain_of(s, c, i) for i in range(1, n + 1)]
-    moduli = " ".join(f"{g.E:.8g}" for g in grains)
-    poisson = " ".join(f"{g.nu:.8g}" for g in grains)
+    moduli = [g.E for g in grains]
+    poisson = [g.nu for g in grains]
+    elastic = wall_of(s.law) if s.against == "wall" and n == 1 else None
+    wall_lines = []
+    if elastic is not None:  # the wall its own atom type: LIGGGHTS mixes E* of the two types
+        n = 2
+        matrix = matrix * 4
+        moduli.append(float(elastic["modulus_ratio"]) * s.grain.E)
+        poisson.append(float(elastic["nu"]))
+        wall_lines = [
+            f"# the elastic wall: atom type 2 (E_w = {moduli[1]:.6g} Pa, nu_w = {poisson[1]:g}); "
+            "LIGGGHTS's Hertz takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w of the two types, the "
+            "stiffness of ball and wall (the matrix's 1-1 entry is this wall law's constant "
+            "too: grain-grain contacts take the law of two grains)",
+            "fix restitution_wall all wall/gran model hertz tangential history primitive type 2 "
+            "zplane 0.0",
+        ]
     return "\n".join(
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
             *([f"# {WALL_NOTE}"] if s.against == "wall" else []),
             f"# {friction_line(friction, 'coefficientFriction')}",
-            f"fix m1 all property/global youngsModulus peratomtype {moduli}",
-            f"fix m2 all property/global poissonsRatio peratomtype {poisson}",
+            "fix m1 all property/global youngsModulus peratomtype "
+            + " ".join(f"{E:.8g}" for E in moduli),
+            "fix m2 all property/global poissonsRatio peratomtype "
+            + " ".join(f"{x:.8g}" for x in poisson),
             f"fix m3 all property/global coefficientRestitution peratomtypepair {n} "
             + " ".join(f"{e:.8f}" for e in matrix),
             f"fix m4 all property/global coefficientFriction peratomtypepair {n} "
             + " ".join([repr(float(0.0 if friction is None else friction))] * (n * n)),
             "pair_style gran model hertz tangential history",
             "pair_coeff * *",
+            *wall_lines,
             "",
         ]
     )

@@ -19,6 +19,7 @@ from restitution.laws.exports.dem._common import (
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
+from restitution.laws.mechanisms import wall_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "mercurydpm_snippet", "mercurydpm_viscoelastic"]
@@ -124,6 +125,19 @@ def _mercury_species(
     ]
 
 
+def _mercury_wall(s: SILaw) -> list[str]:
+    """The comment an elastic wall needs: the linear species has no modulus to give it."""
+    elastic = wall_of(s.law) if s.against == "wall" else None
+    if elastic is None:
+        return []
+    E_w = float(elastic["modulus_ratio"]) * s.grain.E
+    return [
+        f"// the elastic wall (E_w = {E_w:.6g} Pa, nu_w = {float(elastic['nu']):g}) is in "
+        "epsilon; a linear species has no modulus, so tc alone sets the grain-wall stiffness: "
+        "take your grains' collision time on this wall"
+    ]
+
+
 def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
     """C++ lines for MercuryDPM (``LinearViscoelasticSpecies``; choose the collision time). A
     :class:`TypePairs` gives a species per type (``species1`` the small grains, ``species2`` the
@@ -152,6 +166,7 @@ def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None
             _comment(s, c, "//"),
             f"// {_particles(s)}",
             *([f"// {WALL_NOTE}"] if s.against == "wall" else []),
+            *_mercury_wall(s),
             f"// {friction_line(friction, 'a sliding-friction species')}",
             f"// tc: your collision time (s); {_mercury_mass(s, c)}",
             *_mercury_declarations(s, c),

@@ -8,6 +8,7 @@ Young's modulus (Pa), Poisson number and density (kg/m^3) per material, epsilon 
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import (
@@ -21,6 +22,7 @@ from restitution.laws.exports.dem._common import (
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
+from restitution.laws.mechanisms import wall_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "yade_snippet", "yade_viscoelastic"]
@@ -48,6 +50,16 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = Non
             mat(s.grain),
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})",
         ]
+        elastic = wall_of(s.law) if s.against == "wall" else None
+        if elastic is not None:  # the wall's material: YADE's Hertz takes E* of both
+            wall = SimpleNamespace(E=float(elastic["modulus_ratio"]) * s.grain.E,
+                                   nu=float(elastic["nu"]),
+                                   rho=float(elastic["density_ratio"]) * s.grain.rho)  # fmt: skip
+            body[1:1] = [
+                f"wallMat = {mat(wall)}  # the elastic wall (E_w, nu_w, rho_w): give your walls "
+                "material=wallMat; Hertz-Mindlin takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w, "
+                "the stiffness of ball and wall",
+            ]
     else:
         matches = ", ".join(f"(mat{i}, mat{j}, {k.epsilon:.8f})" for (i, j), k in consts.items())
         two = c.two_materials
