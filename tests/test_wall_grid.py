@@ -105,7 +105,7 @@ def test_the_block_exports_with_the_wall_in_every_form(cli, tmp_path):
     liggghts = (out / "epsilon_liggghts.in").read_text()
     moduli = re.search(r"youngsModulus peratomtype (\S+) (\S+)", liggghts).groups()
     poisson = re.search(r"poissonsRatio peratomtype (\S+) (\S+)", liggghts).groups()
-    mixed = 1.0 / sum((1 - float(n) ** 2) / float(E) for E, n in zip(moduli, poisson))
+    mixed = 1.0 / sum((1 - float(n) ** 2) / float(E) for E, n in zip(moduli, poisson, strict=True))
     assert mixed == pytest.approx(e_star, rel=1e-7)
     assert "primitive type 2 zplane" in liggghts
     assert "coefficientRestitution peratomtypepair 2" in liggghts
