@@ -283,3 +283,23 @@ def test_sphere_residual_collision_converges_in_few_modes():
     coarse = collide_residual(get_modes(nu, count=100, geometry="sphere"), v, alpha,
                               nodes_per_contact=80)  # fmt: skip
     assert coarse.nodes < few.nodes and abs(coarse.epsilon - few.epsilon) < 1e-5
+
+
+def test_a_law_point_by_the_residual_route_meets_the_shipped_law():
+    """:func:`restitution.limits.residual_point.residual_point` at one computed speed of the
+    shipped sphere law (``nu = 0.3``, ``v = 0.0329``, status ok): 400 and 800 kept modes, the
+    law's walls 80-320, the same hard-wall extrapolation. Measured 0.9945111 +- 1.7e-5 against
+    the law's 0.9945147 +- 2.0e-5 (-0.14 combined errors); asserted within 2. Its error budget
+    is whole: every term finite and the modes' term below the wall's."""
+    from restitution.laws.law import law
+    from restitution.limits.residual_point import residual_point
+
+    v = 0.0329
+    shipped = next(p for p in law(0.3, geometry="sphere").metadata["points"] if p["v"] == v)
+    point = residual_point("sphere", 0.3, v)
+    sigma = (point.epsilon - shipped["epsilon"]) / math.hypot(
+        point.epsilon_err, shipped["epsilon_err"]
+    )
+    assert abs(sigma) < 2.0
+    assert point.asymptotic_ok and np.all(np.isfinite(point.losses))
+    assert point.mode_err.max() < point.energy_loss_err
