@@ -279,7 +279,7 @@ def collide_residual(
     x_start = float(EXPONENTIAL_WALL.start_position(np.array([alpha]), np.array([e0]), quad)[0])
     depth = DEPTH_MARGIN * compression + (NEGLIGIBLE + 20.0) / alpha
     count = int(np.searchsorted(-quad.height, -(1.0 - depth), side="right")) + 1
-    count = min(count, quad.nodes.size)
+    count = min(count, quad.nodes.size - 1)  # the hats need one node beyond the last
     if residual:
         G = body.residual_flexibility(quad, count)
     else:
