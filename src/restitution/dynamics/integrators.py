@@ -227,6 +227,8 @@ class StrangSplit:
 
 _W1 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
 _W0 = 1.0 - 2.0 * _W1
+YOSHIDA = (_W1, _W0, _W1)
+"""Yoshida's weights of three Strang steps: the fourth-order composition of ``split4``."""
 
 
 @dataclass(frozen=True)

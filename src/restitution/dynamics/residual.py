@@ -51,6 +51,7 @@ from scipy.linalg import cho_factor, cho_solve
 from restitution.bodies.base import ModalBody
 from restitution.dynamics.contact.base import CONTACT_TOL
 from restitution.dynamics.contact.exponential import EXPONENTIAL_WALL, NEGLIGIBLE, STOP_LOG
+from restitution.dynamics.integrators import YOSHIDA, free_modes
 from restitution.dynamics.residual_kernel import (
     NEWTON_FAILED,
     NODES_EXHAUSTED,
@@ -87,9 +88,6 @@ _KERNEL_FAILURES = {
 
 _NEWTON_TOL = 1e-13
 """Newton's step on ``u`` ends once it is below this times the wall's decay length ``1/alpha``."""
-
-_YOSHIDA = (1.0 / (2.0 - 2.0 ** (1.0 / 3.0)),)
-_YOSHIDA = (_YOSHIDA[0], 1.0 - 2.0 * _YOSHIDA[0], _YOSHIDA[0])
 
 
 def supports_residual(body: ModalBody) -> bool:
@@ -204,11 +202,10 @@ def _run(
     drift, steps, touched = 0.0, 0, False
 
     def free(x0, Q, P, tau):
-        c, s = np.cos(w * tau), np.sin(w * tau)
-        return x0 + p0 * tau / m, Q * c + P * s / (m * w), P * c - m * w * Q * s
+        return (x0 + p0 * tau / m, *free_modes(w, m, Q, P, tau))
 
     while True:
-        for weight in _YOSHIDA:
+        for weight in YOSHIDA:
             tau = weight * dt
             x0, Q, P = free(x0, Q, P, 0.5 * tau)
             f, V, _ = contact.forces(x0, Q)
@@ -290,13 +287,12 @@ def collide_residual(
         else step_factor * min(1.0 / (alpha * v), 1.0 / float(body.omega.max()))
     )
 
-    g = np.ascontiguousarray(quad.basis[:count] @ quad.edge_t.toarray())
-
     def once(step):
         if backend == "numpy":
             contact = _Contact(quad, count, G, alpha)
             eps, mode_loss, drift, steps = _run(body, v, alpha, step, contact, x_start, max_steps)
             return eps, mode_loss, drift, steps, contact.most
+        g = np.ascontiguousarray(quad.basis[:count] @ quad.edge_t.toarray())
         out = run_residual(
             x_start, v, float(body.mass), np.ascontiguousarray(body.omega, dtype=float), g,
             np.ascontiguousarray(quad.height[:count]), np.ascontiguousarray(quad.weight[:count]),

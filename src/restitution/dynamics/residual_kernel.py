@@ -20,13 +20,12 @@ import math
 import numba
 import numpy as np
 
+from restitution.dynamics.integrators import YOSHIDA
+
 __all__ = ["NEWTON_FAILED", "NODES_EXHAUSTED", "OK", "OVERFLOW", "STEPS_EXHAUSTED", "run_residual"]
 
 OK, NEWTON_FAILED, NODES_EXHAUSTED, STEPS_EXHAUSTED, OVERFLOW = 0, 1, 2, 3, 4
 """Status codes of :func:`run_residual`."""
-
-_YOSHIDA_1 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
-_YOSHIDA_0 = 1.0 - 2.0 * _YOSHIDA_1
 
 
 @numba.njit(cache=True)
@@ -150,7 +149,7 @@ def run_residual(x_start, v, m, omega, g, height, w, G, a, dt, max_steps, contac
     gbuf = np.zeros(count * count)
     bbuf = np.zeros(count * count)
     state = np.zeros(1, dtype=np.int64)
-    weights = (_YOSHIDA_1, _YOSHIDA_0, _YOSHIDA_1)
+    weights = YOSHIDA
     cs = np.empty((3, N))
     sn = np.empty((3, N))
     for i in range(3):
