@@ -97,8 +97,8 @@ def test_a_computation_beyond_the_time_bound_is_refused_unless_forced(cli, tiny,
 @pytest.mark.parametrize(
     "extra, words",
     [
-        (("--store", "x.sqlite"), "--store and --force belong to --compute"),
-        (("--force",), "--store and --force belong to --compute"),
+        (("--store", "x.sqlite"), "--store, --force and --route belong to --compute"),
+        (("--force",), "--store, --force and --route belong to --compute"),
     ],
 )
 def test_compute_options_without_compute_are_refused(cli, extra, words):

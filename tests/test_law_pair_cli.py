@@ -140,7 +140,8 @@ def _argv(inputs: dict) -> list[str]:
              "limiting_pressure_pa": "--limiting-pressure",
              "measured_fixes": "--measured-fixes",
              "second_measured_epsilon": "--second-measured-epsilon",
-             "second_measured_speed_m_s": "--second-measured-speed"}  # fmt: skip
+             "second_measured_speed_m_s": "--second-measured-speed",
+             "route": "--route"}  # fmt: skip
     argv = ["law", "--json", "--speed", *map(repr, inputs["speeds_m_s"])]
     assert set(inputs) == {*flags, "speeds_m_s"}
     for key, flag in flags.items():

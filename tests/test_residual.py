@@ -175,20 +175,63 @@ def test_sphere_residual_meets_the_modal_limit():
 
 
 def test_bodies_without_a_residual_are_refused():
-    """A body that cannot give its static residual (here a pair of two bodies, which does not
-    implement it yet) is refused with a one-line error; bad inputs too."""
+    """A body that cannot give its static residual is refused with a one-line error, and so is
+    a pair of unequal radii (its bodies' surface nodes differ); bad inputs too."""
     from restitution.bodies.pair.body import pair_of
 
     disk = get_modes(0.33, count=20)
-    pair = pair_of(disk, radius_ratio=2.0)
     assert supports_residual(disk) and supports_residual(
         get_modes(0.3, count=20, geometry="sphere")
     )
-    assert not supports_residual(pair)
-    with pytest.raises(InputError, match="no static residual yet"):
-        collide_residual(pair, 0.1, 500.0)
+    assert not supports_residual(object())
+    with pytest.raises(InputError, match="equal radii"):
+        collide_residual(pair_of(disk, radius_ratio=2.0), 0.1, 500.0)
     with pytest.raises(InputError, match="positive"):
         collide_residual(disk, -0.1, 500.0)
+
+
+def test_identical_pair_with_the_residual_is_the_body_on_the_wall():
+    """Two identical disks at relative speed ``w`` and hardness ``alpha`` are the disk on the
+    wall at ``w / 2`` and ``2 alpha`` (docs/two-disks.md); with the residual the pair's
+    flexibility is the sum of both bodies' and the identity must still hold: same nodes, same
+    steps, epsilon equal to round-off (measured 3e-15)."""
+    from restitution.bodies.pair.body import pair_of
+    from restitution.bodies.pair.partner import Partner
+
+    nu, w = 0.33, 0.2
+    disk = get_modes(nu, count=200)
+    alpha = 80.0 / Partner().max_compression(w, "disk", nu)
+    a = collide_residual(pair_of(disk), w, alpha)
+    b = collide_residual(disk, w / 2, 2.0 * alpha)
+    assert a.nodes == b.nodes and a.steps == b.steps
+    assert abs(a.epsilon - b.epsilon) < 1e-12
+
+
+def test_a_pair_of_two_materials_is_the_same_pair_from_the_other_side():
+    """Two disks of two materials (``nu`` 0.33 and 0.25, the second 3 times as stiff and twice
+    as dense) described in the first's units and in the second's (first and second swapped,
+    ratios inverted, the speed and hardness carried over): one physical collision, so one
+    epsilon. The second body's residual enters in the first's units through ``1 / E2`` and the
+    first's in the second's through ``E2``; a wrong conversion would show here. Measured equal
+    to 2e-14 (the same physical step; the runs end a few steps apart, after the
+    contact); asserted 1e-10 (the two runs add the same terms in other units)."""
+    import math
+
+    from restitution.bodies.pair.body import pair_of
+    from restitution.bodies.pair.partner import Partner
+
+    a, b = get_modes(0.33, count=150), get_modes(0.25, count=150)
+    E, rho, w = 3.0, 2.0, 0.1
+    alpha = 80.0 / Partner(modulus_ratio=E, density_ratio=rho, nu=0.25).max_compression(
+        w, "disk", 0.33
+    )
+    one = collide_residual(pair_of(a, b, modulus_ratio=E, density_ratio=rho), w, alpha)
+    c = math.sqrt(E / rho)  # c2 / c1: the speed in the second body's units is w / c
+    other = collide_residual(
+        pair_of(b, a, modulus_ratio=1.0 / E, density_ratio=1.0 / rho), w / c, alpha
+    )
+    assert one.nodes == other.nodes and one.dt * c == pytest.approx(other.dt, rel=1e-12)
+    assert one.loss > 0.01 and abs(one.epsilon - other.epsilon) < 1e-10
 
 
 def test_the_compiled_loop_is_the_numpy_loop():
@@ -287,10 +330,11 @@ def test_sphere_residual_collision_converges_in_few_modes():
 
 def test_a_law_point_by_the_residual_route_meets_the_shipped_law():
     """:func:`restitution.limits.residual_point.residual_point` at one computed speed of the
-    shipped sphere law (``nu = 0.3``, ``v = 0.0329``, status ok): 400 and 800 kept modes, the
-    law's walls 80-320, the same hard-wall extrapolation. Measured 0.9945111 +- 1.7e-5 against
-    the law's 0.9945147 +- 2.0e-5 (-0.14 combined errors); asserted within 2. Its error budget
-    is whole: every term finite and the modes' term below the wall's."""
+    shipped sphere law (``nu = 0.3``, ``v = 0.0329``, status ok): 200, 400 and 800 kept modes,
+    the law's walls 80-320, the same hard-wall extrapolation. Measured 0.9945111 +- 1.7e-5
+    against the law's 0.9945147 +- 2.0e-5 (-0.14 combined errors); asserted within 2. Its error
+    budget is whole: every term finite and the modes' term (3.7e-6 - 8.5e-6) below the wall's
+    (2.1e-5)."""
     from restitution.laws.law import law
     from restitution.limits.residual_point import residual_point
 
@@ -324,3 +368,33 @@ def test_the_stored_study_draws_and_holds_what_the_docs_say(tmp_path):
     for r in full:
         assert abs(r["residual"][400] - r["modal_limit"]) < 2e-5, r
         assert r["residual_order"] > max(0.9, r["modal_order"]), r
+
+
+def test_the_kernel_of_fewer_nodes_is_the_leading_block():
+    """What :class:`restitution.bodies.blocks.LeadingBlocks` relies on to serve every wall and
+    kept set of a point from one kernel: the static kernel between the first ``count`` nodes'
+    hats depends on those nodes alone (measured: 6e-17 relative on the disk, exact on the
+    sphere), and a residual asked after a larger one equals the one built afresh."""
+    from restitution.bodies.disk import static as disk_static
+    from restitution.bodies.sphere import static as sphere_static
+
+    disk = get_modes(0.33, count=200)
+    h = float(disk.surface_quadrature(400).nodes[1])
+    big = disk_static._full_kernel(0.33, 120, h, 20000)
+    small = disk_static._full_kernel(0.33, 60, h, 20000)
+    assert np.abs(big[:60, :60] - small).max() <= 1e-14 * np.abs(small).max()
+    sphere = get_modes(0.3, count=100, geometry="sphere")
+    nodes = tuple(sphere.surface_quadrature(300).nodes)
+    big, small = (
+        sphere_static._build_kernel(0.3, nodes, 80),
+        sphere_static._build_kernel(0.3, nodes, 40),
+    )
+    assert np.array_equal(big[0][:40, :40], small[0]) and np.array_equal(
+        big[1][:, :, :40], small[1]
+    )
+    quad = disk.surface_quadrature(400)
+    disk_static._KERNELS.cache_clear()
+    fresh = disk.residual_flexibility(quad, 50)
+    disk.residual_flexibility(quad, 150)
+    again = disk.residual_flexibility(quad, 50)
+    assert np.abs(again - fresh).max() <= 1e-14 * np.abs(fresh).max()  # other BLAS blocking

@@ -96,6 +96,10 @@ class ProductionPlan:
         Measured wall time of one production collision on one core, s.
     seconds_per_low_point : float
         Measured wall time of one low-speed point, s.
+    residual_seconds_per_point : float or None
+        Measured wall time of one point by the residual route
+        (:mod:`restitution.laws.residual_law`) on one core, s; ``None``: the kind has no
+        static residual.
     """
 
     nus: tuple[float, ...]
@@ -103,6 +107,7 @@ class ProductionPlan:
     low_speeds: tuple[float, ...] = ()
     seconds_per_collision: float = 1.0
     seconds_per_low_point: float = 1.0
+    residual_seconds_per_point: float | None = None
 
 
 @dataclass(frozen=True)
@@ -125,6 +130,9 @@ class PairPlan:
         ``scale`` its windows over the wall's (never below the body's own on the wall).
     seconds_per_low_point : float
         Wall time of one of the pairs' low-speed points, s.
+    residual_seconds_per_point : float or None
+        One point of a pair by the residual route on one core at window scale 1, s (times the
+        pair's window scale); ``None``: none.
     """
 
     radius_ratios: tuple[float, ...]
@@ -134,6 +142,7 @@ class PairPlan:
     seconds_at_5: float = 1.0
     cost_power: float = 2.0
     seconds_per_low_point: float = 1.0
+    residual_seconds_per_point: float | None = None
 
 
 @dataclass(frozen=True)

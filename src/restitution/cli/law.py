@@ -89,9 +89,10 @@ def law(fmt, as_json, plot_file, **options):
         --against grain --partner-radius-ratio 1.4 --partner-E 63e9 \\
         --partner-nu 0.2481 --partner-rho 2500 --speed 0.1 1 10
 
-    Any other pair of materials is computed on demand with --compute (10-30 minutes on two
-    cores, estimated before it starts). Two spheres of any sizes and materials are answered at
-    the asked speeds by their low-speed route (up to about 15 m/s for steel), in seconds:
+    Any other pair of materials is computed on demand with --compute (minutes, estimated before
+    it starts; --route residual for equal radii: about half). Two spheres of any sizes and
+    materials are answered at the asked speeds by their low-speed route (up to about 15 m/s for
+    steel), in seconds:
 
     \b
     restitution law --E 210e9 --nu 0.3 --rho 7850 --shape sphere \\

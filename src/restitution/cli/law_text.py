@@ -15,6 +15,14 @@ def _constant_text(c) -> str:
     return f"epsilon = {c.epsilon:.6f} +- {c.epsilon_err:.2g} ({c.how}; {c.status})"
 
 
+_ROUTE_WORDS = {
+    "modal": "collisions extrapolated in N",
+    "residual": "collisions with a static residual",
+    "quasistatic": "the low-speed theory",
+}
+"""The law's routes (:attr:`restitution.laws.law.EpsilonLaw.routes`) in words."""
+
+
 def text_lines(a) -> list[str]:
     """The answer for people: the grain, the law, a row per speed, the constants, the files."""
     from restitution.laws.exports import SAME_SIZE_NOTE
@@ -25,9 +33,11 @@ def text_lines(a) -> list[str]:
     if other is not None:
         lines.append(f"partner: {other.describe()}")
     body = g.body if pair is None else f"{g.body} pair (R2/R1 = {pair.radius_ratio:g})"
+    routes = [_ROUTE_WORDS.get(r, r) for r in result["law"]["routes"]]
+    made = f"; its points from {', '.join(routes)}" if routes else ""
     lines.append(
         f"against {r.against}: {result['against_meaning']}; {body} law "
-        f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']})"
+        f"{g.law_nu_name} = {float(s.law.nu):g} ({result['law']['source']}{made})"
     )
     if pair is not None and pair.same_material and r.partner_radius_ratio < 1.0:
         lines.append(

@@ -46,6 +46,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import sparse
 from scipy.linalg import cho_factor, cho_solve
 
 from restitution.bodies.base import ModalBody
@@ -292,9 +293,12 @@ def collide_residual(
             contact = _Contact(quad, count, G, alpha)
             eps, mode_loss, drift, steps = _run(body, v, alpha, step, contact, x_start, max_steps)
             return eps, mode_loss, drift, steps, contact.most
-        g = np.ascontiguousarray(quad.basis[:count] @ quad.edge_t.toarray())
+        edge = sparse.csr_matrix(quad.edge_t)
         out = run_residual(
-            x_start, v, float(body.mass), np.ascontiguousarray(body.omega, dtype=float), g,
+            x_start, v, float(body.mass), np.ascontiguousarray(body.omega, dtype=float),
+            np.ascontiguousarray(quad.basis[:count], dtype=float),
+            edge.indptr.astype(np.int64), edge.indices.astype(np.int64),
+            np.ascontiguousarray(edge.data, dtype=float),
             np.ascontiguousarray(quad.height[:count]), np.ascontiguousarray(quad.weight[:count]),
             np.ascontiguousarray(G), float(alpha), float(step), int(max_steps), CONTACT_TOL,
             STOP_LOG, -(NEGLIGIBLE + 5.0) / alpha, _NEWTON_TOL,

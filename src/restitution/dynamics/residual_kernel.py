@@ -96,11 +96,34 @@ def _newton(xk, w, G, a, n, u, tol, gbuf, bbuf, state):
 
 
 @numba.njit(cache=True)
-def _forces(x0, Q, height, w, g, G, a, cut, tol, u, xk, f, gbuf, bbuf, state):
+def _edge(Q, indptr, indices, data, c):
+    """``c = E Q`` for the sparse edge map ``E`` (CSR: ``indptr, indices, data``; rows the
+    surface basis's columns, columns the modes)."""
+    for r in range(c.size):
+        acc = 0.0
+        for k in range(indptr[r], indptr[r + 1]):
+            acc += data[k] * Q[indices[k]]
+        c[r] = acc
+
+
+@numba.njit(cache=True)
+def _edge_back(b, indptr, indices, data, scale, P):
+    """``P += scale E^T b`` (``E`` as in :func:`_edge`)."""
+    for r in range(b.size):
+        br = scale * b[r]
+        for k in range(indptr[r], indptr[r + 1]):
+            P[indices[k]] += data[k] * br
+
+
+@numba.njit(cache=True)
+def _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf, bbuf, state):
     """Node forces (``f``, all nodes), the condensed potential; ``u`` updated. Returns
-    ``(V, n, status)``."""
+    ``(V, n, status)``. The kept positions are ``basis (E Q)``: the modes summed per column
+    of the surface basis first (``edge = (indptr, indices, data, c)``, ``c`` a buffer)."""
     count = height.size
-    xk[:] = x0 + height + np.dot(g, Q)
+    indptr, indices, data, c = edge
+    _edge(Q, indptr, indices, data, c)
+    xk[:] = x0 + height + np.dot(basis, c)
     n = 0
     for j in range(count):
         if xk[j] + u[j] > cut:
@@ -132,12 +155,17 @@ def _forces(x0, Q, height, w, g, G, a, cut, tol, u, xk, f, gbuf, bbuf, state):
 
 
 @numba.njit(cache=True)
-def run_residual(x_start, v, m, omega, g, height, w, G, a, dt, max_steps, contact_tol,
-                 stop_log, cut, tol):  # fmt: skip
+def run_residual(x_start, v, m, omega, basis, indptr, indices, data, height, w, G, a, dt,
+                 max_steps, contact_tol, stop_log, cut, tol):  # fmt: skip
     """One collision; returns ``(epsilon, modal energy / E0, drift, steps, most active nodes,
-    status)`` (status :data:`OK` or the reason it stopped)."""
+    status)`` (status :data:`OK` or the reason it stopped). ``basis`` (count x K) and the
+    sparse edge map (CSR ``indptr, indices, data``, K x N) give the nodes' displacement per
+    mode coordinate as ``basis E``, never formed densely: a step costs ``count K`` and the
+    map's entries, not ``count N``."""
     N = omega.size
     count = height.size
+    K = basis.shape[1]
+    edge = (indptr, indices, data, np.empty(K))
     e0 = 0.5 * m * v * v
     x0 = x_start
     p0 = m * v
@@ -157,7 +185,8 @@ def run_residual(x_start, v, m, omega, g, height, w, G, a, dt, max_steps, contac
             cs[i, k] = math.cos(omega[k] * 0.5 * weights[i] * dt)
             sn[i, k] = math.sin(omega[k] * 0.5 * weights[i] * dt)
     mw = m * omega
-    V, n, status = _forces(x0, Q, height, w, g, G, a, cut, tol, u, xk, f, gbuf, bbuf, state)
+    V, n, status = _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf,
+                               bbuf, state)  # fmt: skip
     h0 = p0 * p0 / (2.0 * m) + V
     drift = 0.0
     most = n
@@ -172,15 +201,17 @@ def run_residual(x_start, v, m, omega, g, height, w, G, a, dt, max_steps, contac
                 Q[:] = q * cs[i] + P * sn[i] / mw
                 P[:] = P * cs[i] - mw * q * sn[i]
                 if half == 0:
-                    V, n, status = _forces(x0, Q, height, w, g, G, a, cut, tol, u, xk, f,
-                                           gbuf, bbuf, state)  # fmt: skip
+                    V, n, status = _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u,
+                                           xk, f, gbuf, bbuf, state)  # fmt: skip
                     if status != OK:
                         return 0.0, 0.0, drift, step, n, status
                     most = max(most, n)
                     if n > 0:
                         p0 -= tau * np.sum(f[:n])
-                        P -= tau * np.dot(f[:n], g.ravel()[: n * N].reshape((n, N)))
-        V, n, status = _forces(x0, Q, height, w, g, G, a, cut, tol, u, xk, f, gbuf, bbuf, state)
+                        b = np.dot(f[:n], basis[:n])
+                        _edge_back(b, indptr, indices, data, -tau, P)
+        V, n, status = _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf,
+                               bbuf, state)  # fmt: skip
         if status != OK:
             return 0.0, 0.0, drift, step, n, status
         modal = np.sum(P * P) / (2.0 * m) + 0.5 * m * np.sum((omega * Q) ** 2)

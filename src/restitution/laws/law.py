@@ -474,6 +474,14 @@ class EpsilonLaw:
         return np.array([r.get("route") == QUASISTATIC_ROUTE for r in self._records()], bool)
 
     @property
+    def routes(self) -> tuple[str, ...]:
+        """Which routes made the law's points, sorted: ``"modal"`` (collisions extrapolated in
+        ``N``; a point without a ``route`` is one), ``"residual"`` (collisions with a static
+        residual, :mod:`restitution.laws.residual_law`), ``"quasistatic"`` (the low-speed
+        theory)."""
+        return tuple(sorted({r.get("route") or "modal" for r in self._records()}))
+
+    @property
     def points(self) -> tuple[LawPoint, ...]:
         """The computed points with their status (``ok``, ``not-asymptotic`` or
         ``quasistatic``) and message."""

@@ -123,6 +123,11 @@ class NuInterpolatedLaw:
         return self.nodes[0].partner
 
     @property
+    def routes(self) -> tuple[str, ...]:
+        """The routes that made the grid laws' points (:attr:`EpsilonLaw.routes`)."""
+        return tuple(sorted({r for law_ in self.nodes for r in law_.routes}))
+
+    @property
     def grid(self) -> np.ndarray:
         """The grid's Poisson numbers, shape (M,)."""
         return np.array([n.nu for n in self.nodes])

@@ -29,6 +29,10 @@ DEFAULT_SPEEDS_M_S: tuple[float, ...] = (0.1, 0.5, 1.0, 5.0, 10.0)
 """Impact speeds (m/s) of a request that names none."""
 
 MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
+
+ROUTES = ("modal", "residual")
+"""``--route`` of ``--compute``: the modal production or the static residual
+(:mod:`restitution.laws.residual_law`)."""
 """What one measured epsilon may fix (``--measured-fixes``)."""
 
 
@@ -306,6 +310,18 @@ class LawRequest:
             "flag",
         ),
     )
+    route: str | None = field(
+        default=None,
+        metadata=_option(
+            "--route",
+            "With --compute: how the collisions reach many modes: 'modal' (default; windows of "
+            "up to 10^5 modes extrapolated in N, as the shipped laws) or 'residual' (200-800 "
+            "kept modes, the faster ones static: a few minutes on two cores; docs/numerics.md). "
+            "The law says which route made it.",
+            "choice",
+            choices=lambda: list(ROUTES),
+        ),
+    )
     store: Path | None = field(
         default=None,
         metadata=_option(
@@ -366,9 +382,16 @@ class LawRequest:
             self._check_plastic()
         if self.compute and self.law_file is not None:
             raise InputError("give --law-file or --compute, not both")
-        if not self.compute and (self.store is not None or self.force):
+        if not self.compute and (self.store is not None or self.force or self.route):
             raise InputError(
-                "--store and --force belong to --compute; add --compute or leave them out"
+                "--store, --force and --route belong to --compute; add --compute or leave them out"
+            )
+        if self.route is not None and self.route not in ROUTES:
+            raise InputError(f"--route must be one of {', '.join(ROUTES)}, got {self.route!r}")
+        if self.route == "residual" and self.store is not None:
+            raise InputError(
+                "--store holds the modal route's collisions; the residual route keeps its "
+                "points in the cache: leave out --store or --route residual"
             )
 
     # -- what the options amount to -------------------------------------------------------------
@@ -634,6 +657,7 @@ class LawRequest:
             "second_measured_epsilon": self.second_measured_epsilon,
             "second_measured_speed_m_s": self.second_measured_speed,
             "compute": self.compute,
+            "route": self.route,
         }  # fmt: skip
 
     # -- refusals -------------------------------------------------------------------------------

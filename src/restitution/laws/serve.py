@@ -430,6 +430,12 @@ def _computed(r: LawRequest, note, progress: bool):
     if shipped_match(law_nu, body, partner) is not None:
         note(f"note: a shipped law serves nu = {law_nu:.6g}; nothing to compute")
         return None
+    if r.route == "residual":
+        from restitution.laws.residual_law import residual_law, residual_plan
+
+        p = residual_plan(law_nu, body, partner)
+        note(f"note: {p.words()}")
+        return residual_law(law_nu, body, partner, progress=progress, force=r.force)
     if r.store is not None:
         check_output_file(r.store, "--store")
     p = plan(law_nu, body, partner)

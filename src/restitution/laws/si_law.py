@@ -691,6 +691,7 @@ class SILaw:
             "law": {
                 **law,
                 "source": self.law_source,
+                "routes": list(getattr(self.law, "routes", ())),
                 "computed_speeds_m_s": [lo, hi],
                 "v_units": (
                     "v = w / c, the relative speed of the two grains in units of c of "

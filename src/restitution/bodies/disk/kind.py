@@ -62,6 +62,9 @@ PRODUCTION = ProductionPlan(
     seconds_per_collision=1.1,
     # 100 points for each of nine laws took 1838 s (two runs side by side, 26 Nov 2026).
     seconds_per_low_point=2.05,
+    # The residual route (issue 46): points of nu = 0.33 at 1e-4, 1e-3, 0.02 and 0.3 took 13.9,
+    # 7.9, 4.6 and 13.9 s on one core each (200, 400 and 800 kept modes; 29 Nov 2026).
+    residual_seconds_per_point=10.0,
 )
 
 # A direct point at w = 0.02 (R2/R1 = 1.4, nu = 0.33, the windows of v = 5e-3) gave epsilon =
@@ -84,6 +87,9 @@ PAIR_PRODUCTION = PairPlan(
     cost_power=2.25,
     # 91 points for each of nine laws took 1925 s.
     seconds_per_low_point=2.35,
+    # The residual route: the law of two disks of steel and glass (window scale 2.09), 24 points,
+    # took 2.48 min on two workers (29 Nov 2026): 12.4 s a point, 5.9 per unit of window scale.
+    residual_seconds_per_point=6.0,
 )
 
 KIND = register(

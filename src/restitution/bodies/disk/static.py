@@ -45,6 +45,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from restitution.bodies.blocks import LeadingBlocks
 from restitution.errors import InputError
 
 if TYPE_CHECKING:
@@ -122,6 +123,16 @@ def _full_kernel(nu: float, count: int, h: float, n_top: int) -> np.ndarray:
     return G
 
 
+_KERNELS = LeadingBlocks(
+    lambda key, count: _full_kernel(key[0], count, key[1], key[2]),
+    lambda G, count: G[:count, :count],
+    lambda G: G.shape[0],
+)
+"""The full kernel per ``(nu, h, n_top)``, built once at the largest node count asked
+(:class:`~restitution.bodies.blocks.LeadingBlocks`: every entry depends on its two nodes
+alone)."""
+
+
 def residual_flexibility(modes: ModeSet, count: int, h: float) -> np.ndarray:
     """The static flexibility the modes of ``modes`` leave out, on the edge nodes
     ``phi_i = i h`` (``i < count``), hat-averaged; shape (count, count), symmetric.
@@ -139,7 +150,7 @@ def residual_flexibility(modes: ModeSet, count: int, h: float) -> np.ndarray:
             f"{int(modes.n.max())}: use more than "
             f"{int(modes.n.max()) * h / ORDERS_PER_SPACING:.1f} times as many nodes"
         )
-    G = _full_kernel(modes.nu, count, h, n_top)
+    G = _KERNELS((float(modes.nu), float(h), n_top), int(count))
     phi = np.arange(count) * h
     n = modes.n
     cp = np.cos(np.outer(phi, n + 1)) * hat_transform(n + 1, h)

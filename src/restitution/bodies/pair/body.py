@@ -305,6 +305,35 @@ class BodyPair:
         basis = np.hstack(normal + tangential)
         return surface_quadrature(psi, weight, height, basis, column, C, S)
 
+    def residual_flexibility(self, quad: SurfaceQuadrature, count: int) -> np.ndarray:
+        """The static flexibility of both bodies' modes above the pair's set on the first
+        ``count`` nodes of the pair's quadrature ``quad``, shape (count, count), first body's
+        units (the static residual, :mod:`restitution.dynamics.residual`).
+
+        One force on the gap compresses both bodies, and the gap closes by the sum of their
+        displacements: the pair's flexibility is the sum of each body's own residual (its
+        :meth:`~restitution.bodies.base.ModalBody.residual_flexibility` with the modes the
+        pair keeps of it), the second body's carried to the first's units by
+        ``R2^(2-d) / E2`` (a displacement in ``R``, a force in ``E R^(d-1)``). Both bodies
+        must share the nodes: equal radii only."""
+        if self.radius_ratio != 1.0:
+            raise InputError(
+                f"the static residual of a pair needs equal radii (got R2/R1 = "
+                f"{self.radius_ratio:g}): the bodies' surface nodes differ; collide the pair "
+                "without the residual"
+            )
+        d = _kind(self.kind).dimension
+        factors = (1.0, self.radius_ratio ** (2 - d) / self.modulus_ratio)
+        total = np.zeros((int(count), int(count)))
+        for body, member, factor in zip(
+            (self.first, self.second), self._members(), factors, strict=True
+        ):
+            own = getattr(body, "residual_flexibility", None)
+            if not callable(own):
+                raise InputError(f"the {body.geometry} has no static residual yet")
+            total += factor * member.residual_flexibility(quad, count)
+        return total
+
     def _scales(self) -> tuple[float, float]:
         """``sqrt(mu / m_i)``: what each body's amplitudes are multiplied by (module docs)."""
         m1, m2 = self.member_masses

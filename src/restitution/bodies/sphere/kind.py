@@ -54,6 +54,9 @@ PRODUCTION = ProductionPlan(
     seconds_per_collision=1.0,
     # 404 points for six laws took about 10 minutes (docs/spheres.md).
     seconds_per_low_point=0.25,
+    # The residual route (issue 46): the 44 modal speeds of nu = 0.3 took 197 s on two
+    # processes (200, 400 and 800 kept modes; 29 Nov 2026): 8.9 s a point on one core.
+    residual_seconds_per_point=9.0,
 )
 
 # Two spheres: their low-speed route up to its reach (restitution.quasistatic.low_speed.reach,

@@ -44,12 +44,12 @@ The residual is this full kernel less the kept modes' own part between the same 
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.polynomial.legendre import leggauss
 
+from restitution.bodies.blocks import LeadingBlocks
 from restitution.errors import InputError
 
 if TYPE_CHECKING:
@@ -138,10 +138,8 @@ def hat_projections(theta: np.ndarray, count: int, l_top: int) -> np.ndarray:
     return out
 
 
-@lru_cache(maxsize=8)
-def _full_kernel(nu: float, theta: tuple, count: int) -> tuple[np.ndarray, np.ndarray]:
-    """The hat-averaged static kernel of all orders, and the projections (memoised: one
-    quadrature serves every kept set)."""
+def _build_kernel(nu: float, theta: tuple, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """The hat-averaged static kernel of all orders, and the projections."""
     theta = np.asarray(theta)
     h = float(theta[1] - theta[0])
     l_top = int(math.ceil(ORDERS_PER_SPACING / h))
@@ -154,10 +152,21 @@ def _full_kernel(nu: float, theta: tuple, count: int) -> tuple[np.ndarray, np.nd
     return G, a
 
 
+_full_kernel = LeadingBlocks(
+    lambda key, count: _build_kernel(key[0], key[1], count),
+    lambda value, count: (value[0][:count, :count], value[1][:, :, :count]),
+    lambda value: value[0].shape[0],
+)
+"""The kernel and projections per ``(nu, nodes, ORDERS_PER_SPACING)``, built once at the
+largest node count asked (:class:`~restitution.bodies.blocks.LeadingBlocks`: one quadrature
+serves every kept set and wall; each hat's projections depend on its own nodes alone)."""
+
+
 def residual_flexibility(modes: SphereModes, theta: np.ndarray, count: int) -> np.ndarray:
     """The static flexibility the modes of ``modes`` leave out, between the hats of the first
     ``count`` surface nodes ``theta``; shape (count, count), symmetric (module docstring)."""
-    G, a = _full_kernel(float(modes.nu), tuple(np.asarray(theta, dtype=float)), int(count))
+    key = (float(modes.nu), tuple(np.asarray(theta, dtype=float)), ORDERS_PER_SPACING)
+    G, a = _full_kernel(key, int(count))
     l_top = a.shape[1] - 1
     if int(modes.l.max(initial=0)) > l_top:
         raise InputError(

@@ -1,0 +1,288 @@
+"""A law through the static residual (issue 46): the production's speeds, each by the residual
+route, joined with the low-speed points.
+
+Units: the body's reduced units (``E = rho = R = 1``; a pair's: the first body's); speeds in
+``c`` (a pair's relative speed); times in seconds of wall time.
+
+Today's production (:func:`restitution.laws.compute.computed_law`) reaches ``N -> infinity`` by
+extrapolating windows of up to 10^4-10^5 modes. This route computes the same speeds (the modal
+groups' speeds, :func:`residual_speeds`) with 200, 400 and 800 kept modes (a pair's times its
+window scale) whose dropped modes follow the contact statically
+(:func:`restitution.limits.residual_point.residual_point`: the same walls and hard-wall limit,
+the mode error from the last two doublings), then one round of the laws' refinement
+(:func:`restitution.laws.refine.turning_speeds`: a point wherever PCHIP and a spline disagree
+between two speeds by more than the points' errors) by the same route, and joins the kind's
+low-speed points as the production does. Every point says where it comes from: ``route`` is
+``"residual"`` (the modal production's points: ``"modal"`` or none; the low-speed theory's
+``"quasistatic"``), and the law's ``metadata["residual"]`` holds the route's settings.
+
+The file is the modal route's name with ``_residual`` (:func:`residual_filename`): the two
+routes' laws of one body never replace each other. Interrupted runs resume: every finished point
+is kept in ``<cache>/residual_points/<law file>`` (written whole), keyed by speed and code
+version.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from restitution import atomic, budget
+from restitution._paths import cache_root
+from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
+from restitution.errors import InputError
+from restitution.laws.compute import law_dir, production_groups
+from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.production import low_speed_points, low_speeds_of
+from restitution.laws.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
+from restitution.limits.residual_point import NODES_PER_CONTACT, RESIDUAL_MODES, residual_point
+from restitution.limits.run_options import Executor, progress_of
+from restitution.limits.sweep import window_scale
+from restitution.provenance import code_version
+from restitution.status import Status
+
+__all__ = [
+    "RESIDUAL_ROUTE",
+    "ResidualPlan",
+    "check_route",
+    "residual_law",
+    "residual_plan",
+    "residual_filename",
+    "residual_record",
+    "residual_speeds",
+]
+
+RESIDUAL_ROUTE = "residual"
+"""``route`` of a law point computed with the static residual."""
+
+ROUTE_TEXT = (
+    "the kept modes in motion, the modes above them static (residual flexibility) at 200, 400 "
+    "and 800 kept modes, the mode error the larger change of the last two doublings; energy loss "
+    "1 - epsilon^2 extrapolated linearly in 1/alpha (alpha -> infinity) "
+    "(restitution.limits.residual_point)"
+)
+
+
+def _model(model: str) -> str:
+    """The kind's model sentence with its modal extrapolation replaced by this route's."""
+    head, marker, _ = model.partition("energy loss 1 - epsilon^2")
+    return f"{head if marker else model + ' '}{ROUTE_TEXT}."
+
+
+def check_route(geometry: str, partner=None) -> None:
+    """Refuse, in one line, a body the residual route does not take: a kind without the plan
+    (its measured cost) or a pair of unequal radii (its bodies' nodes differ)."""
+    kind = body_kind(geometry)
+    plan = kind.production if partner is None else kind.pair_production
+    if plan is None or plan.residual_seconds_per_point is None or not plan.groups:
+        who = f"two {geometry}s" if partner is not None else f"the {geometry}"
+        raise InputError(
+            f"the residual route has no production plan for {who}; leave out --route residual "
+            "(the modal route)"
+        )
+    if partner is not None and partner.radius_ratio != 1.0:
+        raise InputError(
+            f"the residual route takes pairs of equal radii (got R2/R1 = "
+            f"{partner.radius_ratio:g}); leave out --route residual (the modal route)"
+        )
+
+
+def residual_filename(nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None) -> str:
+    """The law file's name: the modal route's (:func:`~restitution.laws.law.law_filename`) with
+    ``_residual`` before ``.json``, so that a law of either route never replaces the other's."""
+    name = law_filename(nu, geometry, partner)
+    return f"{name.removesuffix('.json')}_{RESIDUAL_ROUTE}.json"
+
+
+def residual_speeds(geometry: str = DEFAULT_GEOMETRY, partner=None) -> tuple[float, ...]:
+    """The speeds of the modal production of the body (with ``partner``: of the pair), which
+    this route computes."""
+    groups = production_groups(geometry, partner)
+    return tuple(sorted({float(v) for g in groups for v in g.velocities}))
+
+
+def _seconds_per_point(geometry: str, partner=None) -> float:
+    kind = body_kind(geometry)
+    if partner is None:
+        return kind.production.residual_seconds_per_point
+    return kind.pair_production.residual_seconds_per_point * window_scale(partner, geometry)
+
+
+@dataclass(frozen=True)
+class ResidualPlan:
+    """What :func:`residual_law` will do: the file, the speeds and the estimated time.
+
+    ``seconds``: on one core, the production's speeds, at most one refining point per interval
+    and the low-speed points; ``workers``: processes the points run on.
+    """
+
+    path: Path
+    exists: bool
+    speeds: int
+    low_points: int
+    seconds: float
+
+    def words(self) -> str:
+        if self.exists:
+            return f"using the law computed before, {self.path}"
+        return (
+            f"computing the law by the residual route: {self.speeds} speeds (and at most "
+            f"{max(self.speeds - 1, 0)} refining ones), {self.low_points} low-speed points, "
+            f"about {budget.format_duration(self.seconds)} on one core (finished points are "
+            f"kept; an interrupted run resumes), into {self.path}"
+        )
+
+
+def residual_plan(
+    nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None, out_dir=None, *, reuse=True
+) -> ResidualPlan:
+    """The plan of :func:`residual_law` with the same arguments (nothing is computed)."""
+    from restitution.laws.compute import _usable, seconds_per_low_point
+
+    check_route(geometry, partner)
+    path = Path(out_dir or law_dir()) / residual_filename(nu, geometry, partner)
+    speeds = residual_speeds(geometry, partner)
+    low = low_speeds_of(geometry, partner, nu)
+    seconds = (2 * len(speeds) - 1) * _seconds_per_point(geometry, partner)
+    seconds += len(low) * seconds_per_low_point(geometry, partner)
+    return ResidualPlan(path, reuse and _usable(path), len(speeds), len(low), seconds)
+
+
+def residual_record(point) -> dict:
+    """One :class:`~restitution.limits.residual_point.ResidualPoint` as a law's
+    ``metadata["points"]`` holds it (``route`` ``"residual"``; status ``ok`` where the hard-wall
+    fit passed its checks, else ``not-asymptotic``)."""
+    return {
+        "v": point.v,
+        "epsilon": point.epsilon,
+        "epsilon_err": point.epsilon_err,
+        "energy_loss": point.energy_loss,
+        "energy_loss_err": point.energy_loss_err,
+        "asymptotic_ok": point.asymptotic_ok,
+        "status": Status.OK if point.asymptotic_ok else Status.NOT_ASYMPTOTIC,
+        "route": RESIDUAL_ROUTE,
+        "message": point.message,
+        "residual": {
+            "walls": list(point.walls),
+            "alpha": list(point.alphas),
+            "n_modes": list(point.modes),
+            "energy_loss_grid": point.losses.tolist(),
+            "mode_err": point.mode_err.tolist(),
+            "step_err": point.step_err.tolist(),
+            "alpha_err": point.alpha_err,
+            "curvature": point.curvature,
+            "seconds": round(point.seconds, 2),
+        },
+    }
+
+
+def _point(task) -> dict:
+    geometry, nu, v, partner = task
+    return residual_record(residual_point(geometry, nu, v, partner=partner))
+
+
+class _Kept:
+    """The finished points of one law, kept whole in a JSON file (module docs)."""
+
+    def __init__(self, path: Path, version: str) -> None:
+        self.path, self.version = path, version
+        self.points: dict[str, dict] = {}
+        try:
+            stored = json.loads(path.read_text())
+            if stored.get("code_version") == version:
+                self.points = dict(stored["points"])
+        except (OSError, ValueError, KeyError, TypeError, AttributeError):
+            pass
+
+    def add(self, record: dict) -> None:
+        self.points[repr(float(record["v"]))] = record
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        atomic.write_text(
+            self.path, json.dumps({"code_version": self.version, "points": self.points})
+        )
+
+
+def _compute(tasks, kept: _Kept, executor: Executor, meter) -> list[dict]:
+    from restitution.limits.executors import executor as pool_of
+
+    todo = [t for t in tasks if repr(float(t[2])) not in kept.points]
+    if todo:
+        with pool_of(**executor.keywords()) as (pool, _), meter.bar(len(tasks), "speeds") as bar:
+            bar(len(tasks) - len(todo))
+            for record in pool.map(_point, todo):
+                kept.add(record)
+                bar(1)
+    return [kept.points[repr(float(t[2]))] for t in tasks]
+
+
+def residual_law(
+    nu: float,
+    geometry: str = DEFAULT_GEOMETRY,
+    partner=None,
+    *,
+    out_dir=None,
+    executor: Executor | None = None,
+    progress=None,
+    force: bool = False,
+    speeds=None,
+    low_speeds=None,
+    refine_rounds: int = 1,
+) -> Path:
+    """The law file of ``nu`` by the residual route (module docs), unless it is in ``out_dir``
+    already; refused beyond :data:`restitution.budget.TIME_BOUND_S` unless ``force``.
+
+    ``speeds``/``low_speeds``: instead of the production's (:func:`residual_speeds`,
+    :func:`~restitution.laws.production.low_speeds_of`; ``()`` for none);
+    ``refine_rounds``: rounds of refining points (``0``: none); ``executor``: where the points
+    run (:class:`~restitution.limits.run_options.Executor`, default local processes on every
+    core)."""
+    p = residual_plan(nu, geometry, partner, out_dir)
+    if p.exists:
+        return p.path
+    budget.check_time_total(
+        "--route residual", f"for {p.path.name}", p.seconds, f"{p.speeds} speeds",
+        lambda bound: f"about {int(bound // max(p.seconds / max(p.speeds, 1), 1e-9))} speeds fit",
+        force=force, override="--force",
+    )  # fmt: skip
+    meter = progress_of(progress)
+    executor = executor or Executor()
+    pair = partner is not None
+    version = code_version(geometry, pair=pair)
+    kept = _Kept(cache_root() / "residual_points" / p.path.name, version)
+    speeds = residual_speeds(geometry, partner) if speeds is None else tuple(speeds)
+    records = _compute([(geometry, nu, float(v), partner) for v in speeds], kept, executor, meter)
+    parameters = {
+        "route": ROUTE_TEXT,
+        "n_modes": list(RESIDUAL_MODES),
+        "window_scale": window_scale(partner, geometry) if pair else 1.0,
+        "nodes_per_contact": NODES_PER_CONTACT,
+        "walls": list(body_kind(geometry).alpha_products),
+        "code_version": version,
+    }
+    law_ = EpsilonLaw.from_records(
+        nu, records, key=RESIDUAL_ROUTE, parameters=parameters, geometry=geometry,
+        partner=partner,
+    )  # fmt: skip
+    law_.metadata["model"] = _model(law_.metadata["model"])
+    done = []
+    for _ in range(refine_rounds):
+        flagged = turning_speeds(law_)
+        if not flagged:
+            break
+        tasks = [(geometry, nu, v, partner) for v, _ in flagged]
+        new = _compute(tasks, kept, executor, meter)
+        done.append({"speeds": [v for v, _ in flagged],
+                     "ratios": [round(r, 3) for _, r in flagged], "dropped": []})  # fmt: skip
+        law_ = law_.joined(new, key="refined", parameters={
+            "rule": RULE, "factor": FACTOR, "per_interval": PER_INTERVAL, "rounds": done,
+            "code_version": version,
+        })  # fmt: skip
+    low = tuple(low_speeds_of(geometry, partner, nu) if low_speeds is None else low_speeds)
+    if low:
+        records, parameters = low_speed_points(
+            nu, low, geometry=geometry, partner=partner, progress=meter
+        )
+        law_ = law_.joined(records, key="low_speed", parameters=parameters)
+    p.path.parent.mkdir(parents=True, exist_ok=True)
+    return law_.to_json(p.path)
