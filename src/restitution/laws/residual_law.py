@@ -19,7 +19,7 @@ low-speed points as the production does. Every point says where it comes from: `
 The file is the modal route's name with ``_residual`` (:func:`residual_filename`): the two
 routes' laws of one body never replace each other. Interrupted runs resume: every finished point
 is kept in ``<cache>/residual_points/<law file>`` (written whole), keyed by speed and code
-version.
+version (the solver's and the route's own modules', :data:`ROUTE_MODULES`).
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ from restitution.laws.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
 from restitution.limits.residual_point import NODES_PER_CONTACT, RESIDUAL_MODES, residual_point
 from restitution.limits.run_options import Executor, progress_of
 from restitution.limits.sweep import window_scale
-from restitution.provenance import code_version
+from restitution.provenance import code_version, source_digest
 from restitution.status import Status
 
 __all__ = [
@@ -177,6 +177,18 @@ def residual_record(point) -> dict:
     }
 
 
+ROUTE_MODULES = ("restitution.limits.residual_point", "restitution.limits.extrapolation")
+"""Modules outside the solver's code version that make a point's numbers (its kept sets, walls
+and error budget): part of the version of kept points and of the law."""
+
+
+def _version(geometry: str, pair: bool) -> str:
+    """The solver's code version (:func:`~restitution.provenance.code_version`) and the
+    route's own modules' digest."""
+    route = source_digest(ROUTE_MODULES, tag="residual.").partition("+")[2]
+    return f"{code_version(geometry, pair=pair)}/{route}"
+
+
 def _point(task) -> dict:
     geometry, nu, v, partner = task
     return residual_record(residual_point(geometry, nu, v, partner=partner))
@@ -248,7 +260,7 @@ def residual_law(
     meter = progress_of(progress)
     executor = executor or Executor()
     pair = partner is not None
-    version = code_version(geometry, pair=pair)
+    version = _version(geometry, pair)
     kept = _Kept(cache_root() / "residual_points" / p.path.name, version)
     speeds = residual_speeds(geometry, partner) if speeds is None else tuple(speeds)
     records = _compute([(geometry, nu, float(v), partner) for v in speeds], kept, executor, meter)
