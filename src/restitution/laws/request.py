@@ -29,11 +29,11 @@ DEFAULT_SPEEDS_M_S: tuple[float, ...] = (0.1, 0.5, 1.0, 5.0, 10.0)
 """Impact speeds (m/s) of a request that names none."""
 
 MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
+"""What one measured epsilon may fix (``--measured-fixes``)."""
 
 ROUTES = ("modal", "residual")
 """``--route`` of ``--compute``: the modal production or the static residual
 (:mod:`restitution.laws.residual_law`)."""
-"""What one measured epsilon may fix (``--measured-fixes``)."""
 
 
 def _option(name: str, help: str, type: str = "float", **extra) -> dict:
