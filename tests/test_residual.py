@@ -398,3 +398,21 @@ def test_the_kernel_of_fewer_nodes_is_the_leading_block():
     disk.residual_flexibility(quad, 150)
     again = disk.residual_flexibility(quad, 50)
     assert np.abs(again - fresh).max() <= 1e-14 * np.abs(fresh).max()  # other BLAS blocking
+
+
+def test_a_soft_wall_may_reach_the_end_of_the_surface():
+    """The disk at ``nu = 0.2``, ``v = 0.3`` on the softest wall (``alpha delta_max = 40``,
+    ``delta_max = 0.48``): the wall's reach (``NEGLIGIBLE + 5`` decay lengths) spans the whole
+    quarter edge, so the contact's active prefix reaches the surface's last hat (the node at
+    ``pi/2`` whose exponent is -45, a force below ``exp(-40)``). It was refused as "the contact
+    reached the last node" and stopped the law of ``nu = 0.2``. Now taken: both paths agree
+    (measured 1e-16), and without the residual at a fine step the collision meets the package's
+    own kernel (measured 3.5e-9; asserted 1e-8), so leaving out the last hat loses nothing."""
+    modes = get_modes(0.2, count=200)
+    v = 0.3
+    alpha = 40.0 / body_kind("disk").max_compression(v, 0.2)
+    a = collide_residual(modes, v, alpha, nodes_per_contact=80)
+    b = collide_residual(modes, v, alpha, nodes_per_contact=80, backend="numpy")
+    assert a.active == a.nodes and abs(a.epsilon - b.epsilon) < 1e-10
+    plain = collide_residual(modes, v, alpha, residual=False, step_factor=0.05)
+    assert abs(plain.epsilon - collide(modes, v, alpha, energy_tol=1e-10).epsilon) < 1e-8

@@ -116,7 +116,8 @@ def _edge_back(b, indptr, indices, data, scale, P):
 
 
 @numba.njit(cache=True)
-def _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf, bbuf, state):
+def _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf, bbuf, state,
+            end_cut):  # fmt: skip
     """Node forces (``f``, all nodes), the condensed potential; ``u`` updated. Returns
     ``(V, n, status)``. The kept positions are ``basis (E Q)``: the modes summed per column
     of the surface basis first (``edge = (indptr, indices, data, c)``, ``c`` a buffer)."""
@@ -130,7 +131,7 @@ def _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf, bbuf,
             n = j + 1
     f[:] = 0.0
     while n > 0:
-        if n >= count:
+        if n > count or (n == count and a * (xk[count - 1] + u[count - 1]) > end_cut):
             return 0.0, n, NODES_EXHAUSTED
         if not _newton(xk, w, G, a, n, u, tol, gbuf, bbuf, state):
             return 0.0, n, NEWTON_FAILED
@@ -156,12 +157,13 @@ def _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf, bbuf,
 
 @numba.njit(cache=True)
 def run_residual(x_start, v, m, omega, basis, indptr, indices, data, height, w, G, a, dt,
-                 max_steps, contact_tol, stop_log, cut, tol):  # fmt: skip
+                 max_steps, contact_tol, stop_log, cut, tol, end_cut):  # fmt: skip
     """One collision; returns ``(epsilon, modal energy / E0, drift, steps, most active nodes,
     status)`` (status :data:`OK` or the reason it stopped). ``basis`` (count x K) and the
     sparse edge map (CSR ``indptr, indices, data``, K x N) give the nodes' displacement per
     mode coordinate as ``basis E``, never formed densely: a step costs ``count K`` and the
-    map's entries, not ``count N``."""
+    map's entries, not ``count N``. A contact over all ``count`` nodes is refused unless the
+    last node's exponent ``a (x + u)`` is below ``end_cut`` (``-inf``: always refused)."""
     N = omega.size
     count = height.size
     K = basis.shape[1]
@@ -186,7 +188,7 @@ def run_residual(x_start, v, m, omega, basis, indptr, indices, data, height, w, 
             sn[i, k] = math.sin(omega[k] * 0.5 * weights[i] * dt)
     mw = m * omega
     V, n, status = _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf,
-                               bbuf, state)  # fmt: skip
+                               bbuf, state, end_cut)  # fmt: skip
     h0 = p0 * p0 / (2.0 * m) + V
     drift = 0.0
     most = n
@@ -202,7 +204,7 @@ def run_residual(x_start, v, m, omega, basis, indptr, indices, data, height, w, 
                 P[:] = P * cs[i] - mw * q * sn[i]
                 if half == 0:
                     V, n, status = _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u,
-                                           xk, f, gbuf, bbuf, state)  # fmt: skip
+                                           xk, f, gbuf, bbuf, state, end_cut)  # fmt: skip
                     if status != OK:
                         return 0.0, 0.0, drift, step, n, status
                     most = max(most, n)
@@ -211,7 +213,7 @@ def run_residual(x_start, v, m, omega, basis, indptr, indices, data, height, w, 
                         b = np.dot(f[:n], basis[:n])
                         _edge_back(b, indptr, indices, data, -tau, P)
         V, n, status = _forces(x0, Q, height, w, basis, edge, G, a, cut, tol, u, xk, f, gbuf,
-                               bbuf, state)  # fmt: skip
+                               bbuf, state, end_cut)  # fmt: skip
         if status != OK:
             return 0.0, 0.0, drift, step, n, status
         modal = np.sum(P * P) / (2.0 * m) + 0.5 * m * np.sum((omega * Q) ** 2)
