@@ -50,7 +50,7 @@ from pathlib import Path
 from restitution._paths import cache_root
 from restitution.laws.compute import production_groups, seconds_per_low_point
 from restitution.laws.law import law
-from restitution.laws.production import low_speeds_of
+from restitution.laws.production import _steel_glass, low_speeds_of
 from restitution.laws.residual_law import residual_filename, residual_law, residual_speeds
 from restitution.limits.curves import compute_curves
 from restitution.limits.residual_point import residual_point
@@ -86,15 +86,6 @@ def _baseline(geometry, nu, speeds, workers, partner):
 
 def _sigma(a, a_err, b, b_err) -> float:
     return (b - a) / math.hypot(a_err, b_err)
-
-
-def _steel_glass():
-    from restitution.laws.si_law import pair_partner
-    from restitution.laws.units import Grain
-
-    steel = Grain(E=210e9, nu=0.3, rho=7850.0, shape="cylinder")
-    glass = Grain(E=63e9, nu=0.2481, rho=2500.0, shape="cylinder")
-    return steel.law_nu, pair_partner(steel, glass, 1.0)
 
 
 def _values(args, partner) -> None:
@@ -204,7 +195,7 @@ def main(argv=None) -> None:
     partner = None
     if args.pair:
         args.geometry = "disk"
-        args.nu, partner = _steel_glass()
+        args.nu, partner = _steel_glass("cylinder", 1.0)  # the shipped pair's materials
     print(f"load average at start: {os.getloadavg()}", flush=True)
     if not args.skip_values and partner is None:
         _values(args, partner)
