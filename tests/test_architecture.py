@@ -25,6 +25,7 @@ RANK = {
     "jsonable": 0,
     "provenance": 0,
     "atomic": 0,
+    "file_set": 0,
     "estimate": 0,
     "budget": 0,
     "bodies": 1,

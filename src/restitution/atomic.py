@@ -10,6 +10,7 @@ removed).
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import tempfile
 from collections.abc import Iterator
@@ -20,7 +21,6 @@ from restitution.errors import OutputError
 __all__ = [
     "check_output_dir",
     "check_output_file",
-    "file_set",
     "replacing",
     "write_text",
     "writing",
@@ -71,38 +71,6 @@ def write_text(path: str | os.PathLike, text: str, *, newline: str | None = None
         fh.write(text)
 
 
-@contextlib.contextmanager
-def file_set(folder: str | os.PathLike, family: tuple[str, ...] = ()) -> Iterator[Path]:
-    """Write a set of files into ``folder`` as one unit: yield a staging folder inside it to
-    write every file of the set into (by its final name); on success each staged file is
-    renamed into ``folder`` and the files of ``folder`` that match a ``family`` glob but are
-    not in the set (left by an earlier run: a closed form this run could not fit, the snippets
-    of a run with a constant) are removed, so the folder never mixes two runs.
-
-    A full disk, an error or Ctrl-C while the set is written leaves the folder as it was (the
-    staging folder is removed); the renames that follow need no space. The staging folder is
-    named ``.restitution-staging-*``, on the folder's file system.
-    """
-    out = Path(folder)
-    out.mkdir(parents=True, exist_ok=True)
-    stage = Path(tempfile.mkdtemp(prefix=".restitution-staging-", dir=out))
-    try:
-        yield stage
-        names = sorted(p.name for p in stage.iterdir() if p.is_file())
-        stale = {p for pattern in family for p in out.glob(pattern) if p.is_file()}
-        for name in names:
-            os.replace(stage / name, out / name)
-        for path in sorted(stale - {out / name for name in names}):
-            with contextlib.suppress(FileNotFoundError):
-                path.unlink()
-    finally:
-        for leftover in stage.iterdir() if stage.exists() else ():
-            with contextlib.suppress(OSError):
-                leftover.unlink()
-        with contextlib.suppress(OSError):
-            stage.rmdir()
-
-
 # -- checks before anything is computed ----------------------------------------------------
 
 
@@ -116,9 +84,10 @@ def writing(path: Path, option: str) -> Iterator[None]:
     try:
         yield
     except OSError as exc:
-        raise OutputError(
-            f"cannot write {option} {path}: {_reason(exc)}; choose a writable location"
-        ) from None
+        advice = "choose a writable location"
+        if exc.errno in (errno.ENOSPC, errno.EDQUOT):
+            advice = "its disk is full: free some space there, or choose another location"
+        raise OutputError(f"cannot write {option} {path}: {_reason(exc)}; {advice}") from None
 
 
 def check_output_file(path: Path, option: str) -> None:

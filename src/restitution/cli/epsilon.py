@@ -13,7 +13,6 @@ from pathlib import Path
 
 import click
 
-from restitution.atomic import file_set
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
@@ -44,6 +43,8 @@ from restitution.cli.report import (
 )
 from restitution.cli.words import current_command, in_command_words
 from restitution.errors import InputError
+from restitution.file_set import file_set
+from restitution.limits.grid_check import check_grid
 from restitution.limits.sweep import (
     DEFAULTS,
     SweepSettings,
@@ -258,7 +259,9 @@ def epsilon(
     swept = replace(settings, velocities=(float(v),))
     if alpha is not None:  # SweepSettings refuses a wall hardness that is not positive
         swept = replace(swept, alphas=(float(alpha),), alpha_scale="absolute")
-    report = _sweep(grid([nu], swept), swept, store, workers, scheduler, progress, retry_failed)
+    points = grid([nu], swept)
+    check_grid(points)  # in seconds, not after a cluster has failed every point
+    report = _sweep(points, swept, store, workers, scheduler, progress, retry_failed)
     result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
     failed = len(result.failures) + len(report.lost)
     status, advice = _status(result.asymptotic_ok, result.message, failed)
@@ -557,6 +560,7 @@ def curve(
         )
     check_output_dir(out, "--out")  # before the sweep, not after it
     points = grid(nus, settings)
+    check_grid(points)
     report = _sweep(points, settings, store, workers, scheduler, progress, retry_failed)
     curves = compute_curves(nus, settings, store=store, run=False)
     with Store(store) as db:
@@ -566,7 +570,7 @@ def curve(
     lines, rows, laws = [], [], []
     # The run's figures and laws appear together or not at all (issue 47: a folder mixing two
     # runs' files after a full disk).
-    with writing(out, "--out"), file_set(out) as stage:
+    with writing(out, "--out"), file_set(out, "curve", prune=False) as stage:
         written = [
             fig01_epsilon.plot(
                 fig01_epsilon.compute(nus, curves=curves),
@@ -699,7 +703,7 @@ def _production(ctx, nus, geometry, partner, out, store, workers, progress, forc
         note(f"note: nu = {nu:g}: {p.words()}")
         low = low_speeds_of(geometry, partner, nu)
         # The law's three files appear together or not at all (issue 47).
-        with writing(out, "--out"), file_set(out) as stage:
+        with writing(out, "--out"), file_set(out, "curve", prune=False) as stage:
             (path,) = build(stage, [nu], groups, store=store, workers=workers,
                             progress=False if quiet() else progress, low_speeds=low,
                             geometry=geometry, partner=partner)  # fmt: skip

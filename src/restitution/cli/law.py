@@ -13,6 +13,7 @@ from pathlib import Path
 
 import click
 
+from restitution.atomic import writing
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     PathOption,
@@ -120,7 +121,8 @@ def law(fmt, as_json, plot_file, **options):
     answer = serve(request, note=note, progress=not quiet())
     r = answer.request
     if plot_file is not None:
-        answer.law.plot(plot_file, marks=answer.points)
+        with writing(plot_file, "--plot"):  # a full disk names the option and the file
+            answer.law.plot(plot_file, marks=answer.points)
         note(f"wrote {plot_file}")
     emit(Report("law", r.inputs(), answer.to_dict(), answer.status, answer.advice,
                 answer.units, lambda: "\n".join(text_lines(answer)),

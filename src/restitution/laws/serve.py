@@ -23,7 +23,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from restitution.atomic import check_output_dir, check_output_file
+from restitution.atomic import check_output_dir, check_output_file, writing
 from restitution.errors import InputError
 from restitution.laws import exports
 from restitution.laws.damped import DampedLaw, damped_law
@@ -186,7 +186,8 @@ def _write_exports(r: LawRequest, s: SILaw, constant, model, note) -> tuple:
     """The export folder of ``s`` when ``--export`` is asked (its paths), else ``()``."""
     if r.export_dir is None:
         return ()
-    folder = exports.write_folder(s, constant, r.export_dir, model, r.friction)
+    with writing(r.export_dir, "--export"):  # a full disk names the option and the folder
+        folder = exports.write_folder(s, constant, r.export_dir, model, r.friction)
     if folder.no_closed_form is not None:
         note(f"note: no closed form written: {folder.no_closed_form}")
     if folder.no_plugin is not None:

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from restitution import atomic
+from restitution.file_set import file_set
 from restitution.errors import InputError, RestitutionError
 from restitution.laws.exports.c_fortran import c_header, fortran_include
 from restitution.laws.exports.closed_form import ClosedForm, fit_closed_form
@@ -78,9 +79,11 @@ def write_folder(
     ``TypePairs`` of ``s``) or ``viscoelastic`` (a damped sphere law's
     :class:`~restitution.laws.exports.viscoelastic.Viscoelastic`, which a code with its own
     viscoelastic contact takes instead), a snippet per registered DEM target into ``out``
-    (created if missing), as one set (:func:`restitution.atomic.file_set`): a failure leaves
-    the folder as it was, and files of an earlier export this one does not write (a closed
-    form, snippets) are removed, so the folder holds one law's files only."""
+    (created if missing), as one set (:func:`restitution.file_set.file_set`): a failure leaves
+    the folder as it was; files of an earlier export this one does not write (a closed form,
+    snippets) are removed when they are unchanged, so the folder holds one law's files only;
+    a file the package did not write (or one changed since) is never replaced or removed: the
+    export is refused, naming it."""
     out = Path(out)
     # The three-parameter form exists only where it follows the points within their errors;
     # the C and Fortran evaluate the law's table either way.
@@ -96,7 +99,7 @@ def write_folder(
         plugin, no_plugin = {}, str(exc)
     stem = "epsilon"
     names = [f"{stem}_table.txt", f"{stem}.csv"]
-    with atomic.file_set(out, family=(f"{stem}_*", f"{stem}.*")) as stage:
+    with file_set(out, "export") as stage:
         write_table(s, stage / names[0])
         write_csv(s, stage / names[1])
         if fit is not None:
