@@ -18,7 +18,10 @@ with two jobs), for the note before it starts."""
     "--out",
     type=PathOption(file_okay=False, path_type=Path),
     required=True,
-    help="Folder to build into (created if missing); the plugin is OUT/restitutionplugin.so.",
+    help="Folder for the plugin (created if missing): OUT/restitutionplugin.so, "
+    "OUT/restitution_table_probe and the log OUT/restitution-plugin-build.log are written; "
+    "the build runs in a folder of its own inside OUT, removed after, and nothing else in OUT "
+    "is touched.",
 )
 @quiet_option
 def lammps_plugin(out: Path) -> None:

