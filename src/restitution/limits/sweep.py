@@ -67,6 +67,7 @@ __all__ = [
     "grid",
     "load_grid",
     "pair_settings",
+    "point_modes",
     "run_sweep",
     "window_scale",
 ]
@@ -384,6 +385,21 @@ def grid(
 # -- the work done by one task -------------------------------------------------------------
 
 
+def point_modes(spec: PointSpec):
+    """The modes a point's collisions run with (its ``N`` lowest; of both bodies of a pair;
+    damped for a viscoelastic body); ``select="ranked"`` draws from a pool instead
+    (:func:`collide_points`)."""
+    from restitution.bodies.cache import get_modes
+
+    if spec.partner is not None:
+        modes = spec.partner.pair(spec.nu, spec.n_modes, spec.geometry, get_modes)
+    else:
+        modes = get_modes(spec.nu, count=spec.n_modes, geometry=spec.geometry)
+    if spec.relaxation_time:
+        modes = Viscoelastic(modes, spec.relaxation_time)
+    return modes
+
+
 def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
     """Run collisions that share one mode set; the default work of a sweep task.
 
@@ -425,12 +441,7 @@ def collide_points(specs: Sequence[PointSpec]) -> list[tuple[str, Any]]:
                 )
             )
         return out
-    if first.partner is not None:
-        modes = first.partner.pair(first.nu, first.n_modes, first.geometry, get_modes)
-    else:
-        modes = get_modes(first.nu, count=first.n_modes, geometry=first.geometry)
-    if first.relaxation_time:
-        modes = Viscoelastic(modes, first.relaxation_time)
+    modes = point_modes(first)
     if len(specs) > 1:
         try:
             results = collide_batch(

@@ -1,0 +1,46 @@
+"""A grid no collision can resolve is refused before any worker starts (restitution.limits.
+grid_check; issue 64: `epsilon --nu 0.33 --v 1e-9` ran ten failing collisions and 5 GB)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from _cli_checks import one_line_error
+
+from restitution.bodies.cache import get_modes
+from restitution.dynamics.collision import CollisionSettings
+from restitution.dynamics.steps import estimate_work
+from restitution.errors import InputError
+from restitution.limits.grid_check import check_grid
+from restitution.limits.sweep import defaults_for, grid
+
+
+def test_a_speed_below_the_collisions_is_refused_in_one_line(cli, tmp_path):
+    code, out, err = cli("epsilon", "--nu", "0.33", "--v", "1e-9", "--store",
+                         str(tmp_path / "s.sqlite"))  # fmt: skip
+    line = one_line_error(code, err, "--v 1e-09", "restitution quasistatic", "--nu 0.33")
+    assert "GiB" in line  # the estimate's numbers, not only a verdict
+    assert not (tmp_path / "s.sqlite").exists()  # refused before the store was opened
+
+
+def test_the_check_is_the_collisions_own_refusal():
+    """check_grid raises exactly where a collision of the grid's smallest N would refuse
+    itself (restitution.dynamics.steps.check_work), at the same estimate."""
+    settings = replace(defaults_for("disk"), velocities=(1e-9,))
+    specs = grid([0.33], settings)
+    with pytest.raises(InputError, match=r"edge quadrature nodes"):
+        check_grid(specs)
+    check_grid(grid([0.33], replace(settings, velocities=(0.1,))))  # the paper's speeds run
+
+
+def test_the_fastest_modes_step_grows_as_weyl_says():
+    """The check scales the body-limited step count from the smallest N to the largest as
+    N^(1/d); the disk's modes (d = 2) at N = 300 and 940 bear it out within 2 %."""
+    omega = [float(get_modes(0.33, count=n).omega.max()) for n in (300, 940)]
+    assert omega[1] / omega[0] == pytest.approx((940 / 300) ** 0.5, rel=0.02)
+    settings = CollisionSettings(energy_tol=1e-5)
+    v, alpha = np.array([0.3]), np.array([40.0])
+    steps = [estimate_work(get_modes(0.33, count=n), v, alpha, settings).steps for n in (300, 940)]
+    assert steps[1] / steps[0] == pytest.approx((940 / 300) ** 0.5, rel=0.02)
