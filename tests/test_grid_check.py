@@ -22,17 +22,17 @@ def test_a_speed_below_the_collisions_is_refused_in_one_line(cli, tmp_path):
                          str(tmp_path / "s.sqlite"))  # fmt: skip
     line = one_line_error(code, err, "--v 1e-09", "restitution quasistatic", "--nu 0.33")
     assert "GiB" in line  # the estimate's numbers, not only a verdict
-    assert not (tmp_path / "s.sqlite").exists()  # refused before the store was opened
 
 
-def test_the_check_is_the_collisions_own_refusal():
+def test_the_check_is_the_collisions_own_refusal(tmp_path):
     """check_grid raises exactly where a collision of the grid's smallest N would refuse
     itself (restitution.dynamics.steps.check_work), at the same estimate."""
+    store = tmp_path / "s.sqlite"
     settings = replace(defaults_for("disk"), velocities=(1e-9,))
     specs = grid([0.33], settings)
     with pytest.raises(InputError, match=r"edge quadrature nodes"):
-        check_grid(specs)
-    check_grid(grid([0.33], replace(settings, velocities=(0.1,))))  # the paper's speeds run
+        check_grid(specs, store)
+    check_grid(grid([0.33], replace(settings, velocities=(0.1,))), store)  # the paper's speeds
 
 
 def test_the_fastest_modes_step_grows_as_weyl_says():

@@ -427,7 +427,7 @@ def test_export_without_a_closed_form_still_writes_the_table_and_the_code(
                          "cylinder", "--against", "wall", "--speed", "100", "--export",
                          str(tmp_path / "x"))  # fmt: skip
     assert code == 0, err
-    names = sorted(p.name for p in (tmp_path / "x").iterdir())
+    names = sorted(p.name for p in (tmp_path / "x").iterdir() if not p.name.startswith("."))
     assert names == ["epsilon.csv", "epsilon.f90", "epsilon.h", "epsilon_lammps_plugin.in",
                      "epsilon_lammps_plugin_wall1.table", "epsilon_table.txt"]  # fmt: skip
     assert "no closed form written: no run of 4 points" in err

@@ -158,7 +158,7 @@ def test_files_without_a_body_are_disks(tmp_path):
     """Law files written before the sphere carry no ``geometry``: they are disks."""
     path = synthetic(0.33, "disk").to_json(tmp_path / "old.json")
     d = json.loads(path.read_text())
-    del d["metadata"]["geometry"]
+    del d["metadata"]["geometry"], d["digest"]  # nor a digest, which came later still
     path.write_text(json.dumps(d))
     old = law(0.33, path=path)
     assert old.geometry == "disk"
@@ -449,10 +449,12 @@ def test_cli_law_exports_a_sphere_law_file(tmp_path, capsys):
         "--export", out_dir, "--reference-speed", 0.1 * 2 * C_STEEL,
     )  # fmt: skip
     assert code == 0, err
-    files = sorted(out_dir.iterdir())
+    manifest = out_dir / ".restitution-export.json"
+    files = sorted(p for p in out_dir.iterdir() if p != manifest)
     # 5 tables and codes, 4 snippets, the plugin's tables (the grains', the grain on the wall)
-    # and its input lines.
+    # and its input lines; the manifest (restitution.file_set) names exactly them.
     assert len(files) == 12
+    assert sorted(json.loads(manifest.read_text())["files"]) == [p.name for p in files]
     for p in files:
         if p.suffix != ".json":
             assert "grain: sphere: elastic sphere (3D)" in p.read_text(), p.name

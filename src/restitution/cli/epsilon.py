@@ -260,7 +260,7 @@ def epsilon(
     if alpha is not None:  # SweepSettings refuses a wall hardness that is not positive
         swept = replace(swept, alphas=(float(alpha),), alpha_scale="absolute")
     points = grid([nu], swept)
-    check_grid(points)  # in seconds, not after a cluster has failed every point
+    check_grid(points, store)  # in seconds, not after a cluster has failed every point
     report = _sweep(points, swept, store, workers, scheduler, progress, retry_failed)
     result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
     failed = len(result.failures) + len(report.lost)
@@ -560,7 +560,7 @@ def curve(
         )
     check_output_dir(out, "--out")  # before the sweep, not after it
     points = grid(nus, settings)
-    check_grid(points)
+    check_grid(points, store)
     report = _sweep(points, settings, store, workers, scheduler, progress, retry_failed)
     curves = compute_curves(nus, settings, store=store, run=False)
     with Store(store) as db:

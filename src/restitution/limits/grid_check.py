@@ -16,7 +16,7 @@ import numpy as np
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
-from restitution.limits.store import PointSpec
+from restitution.limits.store import PointSpec, Store
 from restitution.limits.sweep import point_modes
 
 __all__ = ["SLOWEST_COLLISION", "check_grid"]
@@ -26,18 +26,27 @@ SLOWEST_COLLISION = 1e-4
 theory's (``restitution quasistatic``, and ``restitution law``, which serves them)."""
 
 
-def check_grid(specs: Sequence[PointSpec], option: str = "--v") -> None:
+def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> None:
     """Refuse the grid ``specs`` when a collision of its smallest mode count would exceed its
-    step or memory bound (:func:`restitution.dynamics.steps.check_work`).
+    step or memory bound (:func:`restitution.dynamics.steps.check_work`). The store is checked
+    first (a store that cannot be written is the first thing to fix), and only the points it
+    does not hold yet are checked.
 
     Raises
     ------
     InputError
         Naming ``option`` (the speed's option), the point, the estimate and what to do.
+    StoreError, CacheError
+        When the store cannot be written (the message says what to do).
     """
     from restitution.dynamics.collision import CollisionSettings
     from restitution.dynamics.steps import check_work
 
+    with Store(store) as db:
+        status = db.status(list(dict.fromkeys(specs)))
+        specs = [s for s in specs if status.get(s.key()) is None]
+        if specs:
+            db.check_writable()
     if not specs:
         return
     smallest = min(s.n_modes for s in specs)

@@ -342,12 +342,26 @@ def _force_stiffness(law, d: float) -> tuple[float, float]:
     return math.pi * law.E * d / lam, stiff
 
 
+_K_MAX = 1e12
+"""Largest ``tau v / xi_max`` integrated: far beyond it the damping force overflows in double
+precision (tau = 1e150 R/c at v = 2e-4), and at 1e7 the grain hardly rebounds (the sphere at
+v = 2e-4: epsilon = 1.1e-12)."""
+
+
 def _collide_one(law, v: float, tau: float, mass: float, dmax: float, separation: str, rtol):
     """Integrate one collision in the scaled variables ``x = xi / xi_max``, ``s = t v / xi_max``
     (``xi_max`` the elastic one), with the scaled dissipated work ``w`` as a third component."""
     g = dmax / (mass * v * v)
     k = tau * v / dmax
     dlim = law.max_compression / dmax
+    if not k <= _K_MAX:
+        # tau = 1e300 overflowed the damping term and DOP853 never reached the separation.
+        raise QuasistaticError(
+            f"tau = {tau:g} is {k:.3g} times the compression time at v = {v:g} (at most "
+            f"{_K_MAX:g} is integrated; the damping force would overflow and the grain does not "
+            "rebound); give a relaxation time of a solid, far below the contact time (e.g. "
+            "1e-9 to 1e-3 s)"
+        )
 
     def rhs(s, y):
         x, xs = y[0], y[1]
