@@ -15,6 +15,7 @@ import numpy as np
 
 __all__ = [
     "RestitutionError",
+    "CorruptFileError",
     "InputError",
     "OutputError",
     "SchedulerError",
@@ -34,6 +35,17 @@ class RestitutionError(Exception):
 
 class InputError(RestitutionError, ValueError):
     """An input is outside its allowed range; the message names the range."""
+
+
+class CorruptFileError(InputError):
+    """A file the package wrote was changed after it was written (its content digest,
+    :func:`restitution.jsonable.content_digest`, does not match), or carries no digest where one
+    is required; the message names the file and what to do, ``reason`` says which in a few
+    words (for a cache's warning)."""
+
+    def __init__(self, message: str, reason: str = "it was changed after it was written") -> None:
+        super().__init__(message)
+        self.reason = reason
 
 
 class SchedulerError(RestitutionError):

@@ -12,7 +12,9 @@ is one entry of ``"runs"`` (its time, code version, git commit, package versions
 point names its run. The code version digests the FEM route's sources and the wall's modules
 (:data:`WALL_MODULES`). The shipped file is ``restitution/laws/data/fem_reference_wall.json``
 (:data:`WALL_REFERENCE_POINTS`); :func:`restitution.laws.wall_points.load_wall_reference` reads
-it.
+it. Every file written carries a content digest (:func:`restitution.jsonable.signed`): a file
+changed after it was written is not served (:mod:`restitution.laws.wall_points`) and not
+carried into a new one (``--append``, ``--merge``).
 
 Command line (one process, one point after the other)::
 
@@ -34,10 +36,11 @@ from pathlib import Path
 
 from restitution import atomic
 from restitution.bodies.wall import HalfSpace, Plate
-from restitution.errors import InputError
+from restitution.errors import CorruptFileError, InputError
 from restitution.fem.limits import LEVELS, FemRun
 from restitution.fem.reference import _environment
 from restitution.fem.wall_limits import fem_wall_epsilon
+from restitution.jsonable import DIGEST_KEY, digest_matches, signed
 from restitution.provenance import FEM_MODULES, source_digest
 
 __all__ = [
@@ -121,9 +124,7 @@ def compute_wall_reference(
     the same ``nu``, wall kind, thickness and ``v`` is replaced)."""
     path = Path(path)
     if append and path.exists():
-        doc = json.loads(path.read_text())
-        if doc.get("geometry") != "sphere-on-wall":
-            raise InputError(f"{path} is not an FEM reference of a sphere on a wall")
+        doc = _read(path)
     else:
         doc = {
             "description": (
@@ -166,7 +167,22 @@ def compute_wall_reference(
         new = {**result.to_dict(), "run": index}
         doc["points"] = [p for p in doc["points"] if _key(p) != _key(new)] + [new]
         doc["points"].sort(key=_key)
-        atomic.write_text(path, json.dumps(doc, indent=1) + "\n")
+        atomic.write_text(path, json.dumps(signed(doc), indent=1) + "\n")
+    return doc
+
+
+def _read(path: str | Path) -> dict:
+    """A reference file to add to: refused when it is not one, or was changed after it was
+    written (its content digest does not match; one without a digest, older, is taken)."""
+    doc = json.loads(Path(path).read_text())
+    if not isinstance(doc, dict) or doc.get("geometry") != "sphere-on-wall":
+        raise InputError(f"{path} is not an FEM reference of a sphere on a wall")
+    if digest_matches(doc) is False:
+        raise CorruptFileError(
+            f"{path} was changed after it was written (its content no longer matches its "
+            "digest); compute its points again into a new file instead of adding to it"
+        )
+    doc.pop(DIGEST_KEY, None)
     return doc
 
 
@@ -176,9 +192,7 @@ def merge_wall_references(path: str | Path, parts: Iterable[str | Path]) -> dict
     part replaces an earlier one."""
     doc = None
     for part in parts:
-        other = json.loads(Path(part).read_text())
-        if other.get("geometry") != "sphere-on-wall":
-            raise InputError(f"{part} is not an FEM reference of a sphere on a wall")
+        other = _read(part)
         if doc is None:
             doc = {**other, "runs": [], "points": []}
         offset = len(doc["runs"])
@@ -193,7 +207,7 @@ def merge_wall_references(path: str | Path, parts: Iterable[str | Path]) -> dict
     doc["code_version"] = versions[0] if len(versions) == 1 else versions
     commits = sorted({r.get("git_commit", "unknown") for r in doc["runs"]})
     doc["git_commit"] = commits[0] if len(commits) == 1 else commits
-    atomic.write_text(Path(path), json.dumps(doc, indent=1) + "\n")
+    atomic.write_text(Path(path), json.dumps(signed(doc), indent=1) + "\n")
     return doc
 
 

@@ -8,22 +8,27 @@ through the same sweeps as the shipped laws (:mod:`restitution.laws.production`:
 groups, the sphere's with its low-speed points, a pair's carried over from the disk's, also of
 two materials, with the window scaled by :func:`restitution.limits.sweep.window_scale`), stores
 every collision in the user's result store (an interrupted run resumes) and writes the law file
-into the cache (``<cache>/laws``), where the next call finds it. Before it starts it states the
-work: the collisions and the time they took in the shipped production, per body, and refuses
-what would take longer than :data:`restitution.budget.TIME_BOUND_S` unless ``force``.
+into the cache (``<cache>/laws``), where the next call finds it: a file there is served only
+when this package wrote it and nothing changed it since (its content digest matches,
+:meth:`~restitution.laws.law.EpsilonLaw.to_json`); any other (edited, damaged, or written
+before files carried a digest) is moved to ``<name>.corrupt`` with a warning and the law is
+computed again (:func:`set_aside`), its collisions from the result store. Before it starts it
+states the work: the collisions and the time they took in the shipped production, per body, and
+refuses what would take longer than :data:`restitution.budget.TIME_BOUND_S` unless ``force``.
 """
 
 from __future__ import annotations
 
-import json
+import os
+import warnings
 from pathlib import Path
 
 from restitution import budget
 from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
-from restitution.errors import InputError
+from restitution.errors import CorruptFileError, InputError
 from restitution.laws import production
-from restitution.laws.law import law_filename
+from restitution.laws.law import EpsilonLaw, law_filename
 from restitution.laws.production import low_speeds_of, pair_groups
 from restitution.limits.sweep import window_scale
 
@@ -37,6 +42,7 @@ __all__ = [
     "production_groups",
     "seconds_per_collision",
     "seconds_per_low_point",
+    "set_aside",
 ]
 
 
@@ -108,7 +114,8 @@ class ComputePlan:
     path : Path
         The law file in :func:`law_dir`.
     exists : bool
-        Whether it is there already (then nothing is computed).
+        Whether it is there already, as this package wrote it (its content digest matches;
+        then nothing is computed). A file there that is not is computed again.
     collisions : int
         Collisions of the production sweeps and of at most one refining point per interval
         of their speeds (stored ones are reused, so this is an upper bound).
@@ -141,13 +148,44 @@ class ComputePlan:
         )
 
 
-def _usable(path: Path) -> bool:
-    """Whether ``path`` holds a law file that loads (a damaged one is computed again)."""
+def _unusable(path: Path) -> str | None:
+    """Why the law file ``path`` is not served from the cache, in a few words, or ``None`` when
+    it is: a file this package wrote (:meth:`~restitution.laws.law.EpsilonLaw.to_json`), unchanged
+    since (its content digest matches) and a valid law. A file without a digest (written by
+    hand or by an older version) cannot be verified: it is computed again, from the result
+    store's collisions (or the residual route's kept points), not served."""
     try:
-        json.loads(path.read_text())["metadata"]["points"]
-    except (OSError, ValueError, KeyError, TypeError):
-        return False
-    return True
+        EpsilonLaw.from_json(path, require_digest=True)
+    except CorruptFileError as exc:
+        return exc.reason
+    except InputError:
+        return "it is not a valid law file"
+    return None
+
+
+def _usable(path: Path) -> bool:
+    """Whether ``path`` holds a law this package wrote, unchanged (:func:`_unusable`)."""
+    return _unusable(path) is None
+
+
+def set_aside(path: Path) -> None:
+    """Move a law file of the cache that is not served (:func:`_unusable`: changed after it was
+    written, without a digest, not a valid law) to ``<name>.corrupt`` before the law is
+    computed again, with one warning that says so (nothing when ``path`` is absent or
+    served)."""
+    why = _unusable(path)
+    if why is None or not (path.exists() or path.is_symlink()):
+        return
+    aside = path.with_name(path.name + ".corrupt")
+    try:
+        os.replace(path, aside)
+        where = f"moved to {aside.name}"
+    except OSError:  # the computed law replaces it
+        where = "it is replaced"
+    warnings.warn(
+        f"the cached law {path} is not served ({why}); {where}, and the law is computed again",
+        stacklevel=3,
+    )
 
 
 def plan(
@@ -231,6 +269,7 @@ def computed_law(
     if p.exists:
         return p.path
     check_plan(p, force)
+    set_aside(p.path)
     groups = production_groups(geometry, partner)
     (written,) = build(p.path.parent, [nu], groups, store=store, executor=executor,
                        workers=workers, progress=progress,

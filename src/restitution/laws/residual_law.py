@@ -19,20 +19,26 @@ low-speed points as the production does. Every point says where it comes from: `
 The file is the modal route's name with ``_residual`` (:func:`residual_filename`): the two
 routes' laws of one body never replace each other. Interrupted runs resume: every finished point
 is kept in ``<cache>/residual_points/<law file>`` (written whole), keyed by speed and code
-version (the solver's and the route's own modules', :data:`ROUTE_MODULES`).
+version (the solver's and the route's own modules', :data:`ROUTE_MODULES`), each with a content
+digest: a kept point changed after it was written, or holding an impossible value, is computed
+again, never used (:class:`_Kept`). A law file found in the cache is served only when its own
+digest matches (:func:`restitution.laws.compute.set_aside`).
 """
 
 from __future__ import annotations
 
 import json
+import math
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
 from restitution import atomic, budget
 from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
-from restitution.errors import InputError
-from restitution.laws.compute import law_dir, production_groups
+from restitution.errors import InputError, is_real
+from restitution.jsonable import content_digest, json_default
+from restitution.laws.compute import law_dir, production_groups, set_aside
 from restitution.laws.law import EpsilonLaw, law_filename
 from restitution.laws.production import low_speed_points, low_speeds_of
 from restitution.laws.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
@@ -194,25 +200,75 @@ def _point(task) -> dict:
     return residual_record(residual_point(geometry, nu, v, partner=partner))
 
 
+def _impossible(record) -> str | None:
+    """Why a kept point's values cannot be a point of a law (``None``: they can): ``v`` not a
+    finite number > 0, ``epsilon`` outside ``(0, 1]``, its error not a finite number >= 0."""
+    if not isinstance(record, dict):
+        return "it is not an object"
+    v, eps, err = (record.get(k) for k in ("v", "epsilon", "epsilon_err"))
+    if not all(is_real(x) and math.isfinite(x) for x in (v, eps, err)):
+        return "its v, epsilon or error is not a finite number"
+    if not (v > 0 and 0 < eps <= 1 and err >= 0):
+        return f"it holds epsilon = {eps!r} +- {err!r} at v = {v!r}"
+    return None
+
+
 class _Kept:
-    """The finished points of one law, kept whole in a JSON file (module docs)."""
+    """The finished points of one law, kept whole in a JSON file (module docs).
+
+    The file holds ``code_version``, ``points`` (record by ``repr`` of its speed) and
+    ``digests``: for each point ``"sha256:<hex>"`` of the canonical JSON of its code version, key
+    and record (:func:`restitution.jsonable.content_digest`). A point is used only when its
+    digest matches and its values are possible (:func:`_impossible`); the others (changed after
+    they were written, kept before points carried a digest, an epsilon of 1.7) are dropped with
+    one warning and computed again.
+    """
 
     def __init__(self, path: Path, version: str) -> None:
         self.path, self.version = path, version
         self.points: dict[str, dict] = {}
+        self.digests: dict[str, str] = {}
         try:
             stored = json.loads(path.read_text())
-            if stored.get("code_version") == version:
-                self.points = dict(stored["points"])
-        except (OSError, ValueError, KeyError, TypeError, AttributeError):
-            pass
+            if stored.get("code_version") != version:
+                return
+            points, digests = dict(stored["points"]), stored.get("digests") or {}
+            if not isinstance(digests, dict):
+                digests = {}
+        except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError):
+            return
+        dropped = []
+        for key, record in points.items():
+            try:
+                intact = digests.get(key) == self._digest(key, record)
+            except (ValueError, TypeError, RecursionError):  # not JSON as written
+                intact = False
+            why = _impossible(record) or (None if intact else "its digest does not match")
+            if why is None and key != repr(float(record["v"])):
+                why = f"its speed {record['v']!r} is not the one it is kept under ({key})"
+            if why is None:
+                self.points[key], self.digests[key] = record, digests[key]
+            else:
+                dropped.append(f"{key} ({why})")
+        if dropped:
+            warnings.warn(
+                f"{len(dropped)} kept point(s) of {path} are not used and are computed again: "
+                f"changed after they were written, kept before points carried a digest, or "
+                f"impossible: v = {', '.join(dropped[:3])}{', ...' if len(dropped) > 3 else ''}",
+                stacklevel=3,
+            )
+
+    def _digest(self, key: str, record: dict) -> str:
+        return content_digest({"code_version": self.version, "key": key, "record": record})
 
     def add(self, record: dict) -> None:
-        self.points[repr(float(record["v"]))] = record
+        key = repr(float(record["v"]))
+        # The record as a reader parses it, so that its digest is the one read back.
+        record = json.loads(json.dumps(record, default=json_default))
+        self.points[key], self.digests[key] = record, self._digest(key, record)
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        atomic.write_text(
-            self.path, json.dumps({"code_version": self.version, "points": self.points})
-        )
+        doc = {"code_version": self.version, "points": self.points, "digests": self.digests}
+        atomic.write_text(self.path, json.dumps(doc))
 
 
 def _compute(tasks, kept: _Kept, executor: Executor, meter) -> list[dict]:
@@ -257,6 +313,7 @@ def residual_law(
         lambda bound: f"about {int(bound // max(p.seconds / max(p.speeds, 1), 1e-9))} speeds fit",
         force=force, override="--force",
     )  # fmt: skip
+    set_aside(p.path)  # a changed or unverifiable file there is computed again, not served
     meter = progress_of(progress)
     executor = executor or Executor()
     pair = partner is not None

@@ -14,24 +14,31 @@ already computed. :func:`stored_wall_point` finds one for the asked ball, wall a
 same ``nu`` and wall constants to a relative ``1e-6``, the speed within :data:`SPEED_MATCH`
 (relative). Besides the shipped file it reads every file a user computed into
 ``<cache>/fem_wall`` (:func:`user_points_dir`, :func:`compute_command` says how), so that a
-point computed once is served from then on. Its error is the stored one plus a bound on the
-change of epsilon between the two speeds: a loss ``L ~ v^p`` with ``p <= 1`` (``3/5`` on the
-half-space, ``1/5-3/5`` on a plate) changes by at most ``dL = L (exp|ln(v / v_stored)| - 1)``
-(to first order ``L |ln(v / v_stored)|``), epsilon by at most ``epsilon - sqrt(epsilon^2 -
-dL)``.
+point computed once is served from then on: a file whose content digest does not match (changed
+after :mod:`restitution.fem.wall_reference` wrote it) is not, with a warning, and no point with
+impossible values (``epsilon`` outside ``(0, 1]``, a negative or non-finite error) is served.
+Files without a digest (the shipped one, users' older ones: a point costs 10-45 minutes, it is
+not recomputed on its own) are served when their values are possible.
+
+A served point's error is the stored one plus a bound on the change of epsilon between the two
+speeds: a loss ``L ~ v^p`` with ``p <= 1`` (``3/5`` on the half-space, ``1/5-3/5`` on a plate)
+changes by at most ``dL = L (exp|ln(v / v_stored)| - 1)`` (to first order
+``L |ln(v / v_stored)|``), epsilon by at most ``epsilon - sqrt(epsilon^2 - dL)``.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import warnings
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
 from restitution.bodies.wall import HalfSpace, wall_from_dict
-from restitution.errors import InputError
+from restitution.errors import CorruptFileError, InputError
 from restitution.estimate import Estimate, estimate_of
+from restitution.jsonable import digest_matches
 
 __all__ = [
     "SPEED_MATCH",
@@ -91,6 +98,12 @@ def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePo
         doc = json.loads(text)
         if doc.get("geometry") != "sphere-on-wall":
             raise InputError(f"{name} is not an FEM reference of a sphere on a wall")
+        if digest_matches(doc) is False:
+            raise CorruptFileError(
+                f"{name} was changed after it was written (its content no longer matches its "
+                "digest), so none of its points is served; compute them again (the command "
+                "that wrote it: python -m restitution.fem.wall_reference)"
+            )
         return tuple(
             WallReferencePoint(
                 nu=float(p["nu"]),
@@ -105,6 +118,8 @@ def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePo
             )
             for p in doc["points"]
         )
+    except CorruptFileError:
+        raise
     except (ValueError, KeyError, TypeError, AttributeError) as exc:
         raise InputError(
             f"{name} is not an FEM reference file of a sphere on a wall: {exc}"
@@ -138,9 +153,27 @@ def _all_points() -> list[WallReferencePoint]:
     for path in sorted(folder.glob("*.json")) if folder.is_dir() else ():
         try:
             points += load_wall_reference(path)
+        except CorruptFileError:
+            warnings.warn(
+                f"the stored FEM points of {path} are not served: the file was changed after "
+                "it was written (its digest does not match); compute them again",
+                stacklevel=3,
+            )
         except (InputError, OSError):
             continue  # a file being written, or not a wall reference: not a point
     return points
+
+
+def _possible(p: WallReferencePoint) -> bool:
+    """Whether a stored point's values can be a collision's: ``v > 0``, ``0 < epsilon <= 1``,
+    finite errors ``>= 0`` and a finite loss in ``[0, 1]`` (to the store's ``1e-9``,
+    :mod:`restitution.limits.store`): a stored point with ``epsilon = 1.7`` is not served, nor
+    is one whose FEM run failed (``nan``)."""
+    numbers = (p.v, p.epsilon, p.epsilon_err, p.energy_loss, p.energy_loss_err)
+    if not all(math.isfinite(x) for x in numbers):
+        return False
+    errors_ok = p.epsilon_err >= 0 and p.energy_loss_err >= 0
+    return p.v > 0 and 0 < p.epsilon <= 1 and errors_ok and -1e-9 <= p.energy_loss <= 1
 
 
 def _close(a: float, b: float) -> bool:
@@ -162,10 +195,10 @@ def stored_wall_point(nu: float, wall: HalfSpace, v: float, points=None) -> dict
     from restitution.status import Status
 
     for p in _all_points() if points is None else points:
+        if not _possible(p):
+            continue
         offset = abs(math.log(v / p.v))
         if not (_close(p.nu, nu) and _same_wall(p.wall, wall) and offset <= SPEED_MATCH):
-            continue
-        if not (math.isfinite(p.epsilon) and math.isfinite(p.epsilon_err)):
             continue
         change = p.energy_loss * math.expm1(offset)  # the largest |L(v) - L(v_stored)|
         shift = p.epsilon - math.sqrt(max(p.epsilon**2 - change, 0.0))
