@@ -16,7 +16,7 @@ import numpy as np
 from restitution.dynamics.contact.base import CONTACT_TOL
 from restitution.dynamics.contact.exponential import STOP_LOG
 from restitution.dynamics.integrators import INTEGRATORS
-from restitution.errors import InputError
+from restitution.errors import InputError, describe
 
 __all__ = ["BACKENDS", "CONTACT_TOL", "DEFAULT_ENERGY_TOL", "STOP_LOG", "CollisionSettings"]
 
@@ -72,9 +72,11 @@ class CollisionSettings:
     backend: str = "auto"
 
     def __post_init__(self) -> None:
-        if self.integrator not in INTEGRATORS:
+        # A name only: a list or an array is unhashable, or compares elementwise (issue 47).
+        if not (isinstance(self.integrator, str) and self.integrator in INTEGRATORS):
             raise InputError(
-                f"unknown integrator {self.integrator!r}; choose one of {sorted(INTEGRATORS)}"
+                f"unknown integrator {describe(self.integrator)}; choose one of "
+                f"{', '.join(map(repr, sorted(INTEGRATORS)))}"
             )
         _require(
             _is_real(self.energy_tol) and 0 < self.energy_tol < 1,
@@ -111,8 +113,9 @@ class CollisionSettings:
             f"max_steps must be a positive integer, got {self.max_steps!r}",
         )
         _require(
-            self.backend in BACKENDS,
-            f"unknown backend {self.backend!r}; choose one of {BACKENDS}",
+            isinstance(self.backend, str) and self.backend in BACKENDS,
+            f"unknown backend {describe(self.backend)}; choose one of "
+            f"{', '.join(map(repr, BACKENDS))}",
         )
 
 

@@ -55,6 +55,7 @@ from restitution import atomic
 from restitution._version import __version__
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import (
+    CorruptFileError,
     InputError,
     RestitutionError,
     describe,
@@ -64,7 +65,7 @@ from restitution.errors import (
     real,
 )
 from restitution.estimate import Estimate
-from restitution.jsonable import json_default
+from restitution.jsonable import DIGEST_KEY, digest_matches, json_default, signed
 from restitution.provenance import code_version
 from restitution.status import Status
 
@@ -289,6 +290,28 @@ def _check_path(path) -> None:
         )
 
 
+def _rewrite_advice(d) -> str:
+    """What to do about a damaged law file ``d`` (its parsed JSON): the command that writes it
+    again (of its body and ``nu`` where its metadata say them), or load another."""
+    meta = d.get("metadata") if isinstance(d, dict) else None
+    command = _curve_command(DEFAULT_GEOMETRY)
+    if isinstance(meta, dict):
+        try:
+            partner = meta.get("partner")
+            if partner is not None:
+                from restitution.bodies.pair.partner import Partner
+
+                partner = Partner.from_key(partner)
+            geometry = body_kind(meta.get("geometry", DEFAULT_GEOMETRY)).geometry
+            command = _curve_command(geometry, real(meta["nu"], "nu"), partner)
+        except (KeyError, TypeError, ValueError, AttributeError):  # InputError is a ValueError
+            pass
+    return (
+        f"write it again with the command that wrote it (`{command}`; `restitution law ... "
+        "--compute` computes a damaged law of its cache again by itself), or load another"
+    )
+
+
 def leave_one_out(v, loss) -> np.ndarray:
     """How far PCHIP through the other points (in ``v``, as a law interpolates) strays from each
     interior point, shape (K,); the end points take their neighbour's. It is the error of twice
@@ -394,6 +417,11 @@ class EpsilonLaw:
                 f"nu must be a number (the body's Poisson number), got {describe(self.nu)}; "
                 "pass nu as a float"
             )
+        if not isinstance(self.metadata, dict):
+            raise InputError(
+                f"metadata must be a dict, got {describe(self.metadata)}; pass a dict or leave "
+                "it out"
+            )
         for name in ("v", "epsilon_points", "epsilon_err_points"):
             if not is_real_array(getattr(self, name)):
                 raise InputError(
@@ -420,6 +448,18 @@ class EpsilonLaw:
                     f"{name} must hold one value per speed ({v.size}), got shape {shape}; pass "
                     "arrays of the length of v"
                 )
+        ok = np.asarray(self.asymptotic_ok)
+        if not (ok.dtype.kind == "b" or (ok.dtype.kind in "iuf" and np.isin(ok, (0, 1)).all())):
+            raise InputError(
+                f"asymptotic_ok must be True or False per speed, got {describe(self.asymptotic_ok)}"
+                "; pass a list or array of bools"
+            )
+        # Lists become the arrays the attributes are (issue 47: repr of a law built from lists
+        # was an AttributeError); arrays of the right type are kept as they are.
+        for name in ("v", "epsilon_points", "epsilon_err_points"):
+            object.__setattr__(self, name, np.asarray(getattr(self, name), dtype=float))
+        object.__setattr__(self, "asymptotic_ok", ok.astype(bool, copy=False))
+        object.__setattr__(self, "nu", float(self.nu))
         if not np.all(np.isfinite(self.epsilon_points)):
             raise InputError("a law's epsilon values must be finite")
         body_kind(self.geometry).check_nu(self.nu)
@@ -890,11 +930,18 @@ class EpsilonLaw:
         )
 
     @classmethod
-    def from_json(cls, path: str | os.PathLike) -> EpsilonLaw:
+    def from_json(cls, path: str | os.PathLike, *, require_digest: bool = False) -> EpsilonLaw:
         """Read a law written by :meth:`to_json` (or shipped with the package).
+
+        A file with a content digest (every one :meth:`to_json` writes) is checked against it;
+        one without (the shipped laws, files of older versions) loads when its values are those
+        of a law, unless ``require_digest`` (a cache that serves only what it wrote itself).
 
         Raises
         ------
+        CorruptFileError
+            If the file was changed after it was written (its digest does not match), or has no
+            digest and ``require_digest``.
         InputError
             If ``path`` is not a path, cannot be read, or does not hold a valid law (a
             non-number where a number belongs, an impossible epsilon, ...).
@@ -915,15 +962,30 @@ class EpsilonLaw:
             raise InputError(
                 f"cannot read law file {path}: {why}; give the path of a law JSON file"
             ) from None
+        if require_digest and isinstance(d, dict) and DIGEST_KEY not in d:
+            raise CorruptFileError(
+                f"{path} carries no content digest (written by hand or by an older restitution), "
+                f"so it cannot be verified; {_rewrite_advice(d)}",
+                reason="it carries no content digest, so it cannot be verified",
+            )
         return cls._from_dict(d, str(path))
 
     @classmethod
     def _from_dict(cls, d: dict, source: str) -> EpsilonLaw:
-        again = "regenerate the file, or load another"
         if not isinstance(d, dict) or d.get("format") != _FORMAT:
             raise InputError(
                 f"{source} is not a restitution law file (format {_FORMAT!r}); give a file "
                 "written by restitution curve or EpsilonLaw.to_json"
+            )
+        again = _rewrite_advice(d)
+        try:
+            intact = digest_matches(d)
+        except (ValueError, TypeError, RecursionError):  # not canonical JSON: not as written
+            intact = False
+        if intact is False:
+            raise CorruptFileError(
+                f"{source} was changed after it was written (its content no longer matches its "
+                f"digest), so none of its numbers is served; {again}"
             )
         if d.get("format_version") not in (1, _FORMAT_VERSION):
             raise InputError(
@@ -1017,11 +1079,16 @@ class EpsilonLaw:
         }
 
     def to_json(self, path: str | os.PathLike) -> Path:
-        """Write the JSON export; returns the path."""
+        """Write the JSON export (:meth:`to_dict`) with its content digest; returns the path.
+
+        The document's top-level ``"digest"`` is ``"sha256:<hex>"``, the SHA-256 of the
+        canonical JSON of the rest of the document as a reader parses it
+        (:func:`restitution.jsonable.canonical_json`: ``json.dumps(doc, sort_keys=True,
+        separators=(",", ":"), ensure_ascii=True)``); :meth:`from_json` refuses a file whose
+        content no longer matches it (:class:`~restitution.errors.CorruptFileError`).
+        """
         path = Path(path)
-        atomic.write_text(
-            path, json.dumps(self.to_dict(), indent=1, allow_nan=False, default=json_default)
-        )
+        atomic.write_text(path, json.dumps(signed(self.to_dict()), indent=1, allow_nan=False))
         return path
 
     def _header_lines(self) -> list[str]:

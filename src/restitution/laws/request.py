@@ -8,9 +8,11 @@ refusal that needs no law (two constants asked at once, a partner option against
 damping of two materials, files that nothing would read, ``--store`` without ``--compute``, ...)
 so the command line and a notebook get the same one-line :class:`~restitution.errors.InputError`
 before anything is loaded or computed. :func:`restitution.laws.serve.serve` serves it. Each
-field's metadata carries the option that sets it on the command line and its help
-(``restitution law`` builds its options from them), in the manner of check-jsonschema's
-``ParseResult``.
+field's metadata carries the option that sets it on the command line, its help, its kind and
+unit (``restitution law`` builds its options from them), in the manner of check-jsonschema's
+``ParseResult``; each field is checked alone by its kind first
+(:mod:`restitution.laws.request_fields`: a value passed in Python gets the command line's type
+or a one-line refusal naming the option and the keyword), then the options together.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from pathlib import Path
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
+from restitution.laws.request_fields import checked, option
 from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
 
 __all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields"]
@@ -36,12 +39,6 @@ ROUTES = ("modal", "residual")
 (:mod:`restitution.laws.residual_law`)."""
 
 
-def _option(name: str, help: str, type: str = "float", **extra) -> dict:
-    """Field metadata: the command-line option ``name`` of a field, its ``help`` and its
-    ``type`` (``float``, ``floats``, ``choice``, ``file``, ``dir``, ``flag``)."""
-    return {"option": name, "help": help, "type": type, **extra}
-
-
 @dataclass(frozen=True)
 class LawRequest:
     """One question to the SI law (module docs); constructing it checks the options together.
@@ -50,11 +47,17 @@ class LawRequest:
     "not given". The fields' help says what each means.
     """
 
-    E: float = field(metadata=_option("--E", "Young modulus of the 3D material, Pa."))
-    nu: float = field(metadata=_option("--nu", "Poisson number of the 3D material."))
-    rho: float = field(metadata=_option("--rho", "Density of the 3D material, kg/m^3."))
+    E: float = field(
+        metadata=option("--E", "Young modulus of the 3D material, Pa.", unit="Pa", positive=True)
+    )
+    nu: float = field(metadata=option("--nu", "Poisson number of the 3D material."))
+    rho: float = field(
+        metadata=option(
+            "--rho", "Density of the 3D material, kg/m^3.", unit="kg/m^3", positive=True
+        )
+    )
     shape: str = field(
-        metadata=_option(
+        metadata=option(
             "--shape",
             "Long cylinder hit along a diameter (the disk in plane strain: nu_2d = nu/(1-nu), "
             "c = sqrt(E/((1-nu^2) rho))), thin disk (plane stress: nu_2d = nu, c = sqrt(E/rho)) "
@@ -65,7 +68,7 @@ class LawRequest:
         )
     )
     against: str = field(
-        metadata=_option(
+        metadata=option(
             "--against",
             "A rigid flat wall hit at speed w (v = w/c), or an identical grain at relative normal "
             "speed w (v = w/(2c)); with --partner-radius-ratio a grain of the same material and "
@@ -76,15 +79,16 @@ class LawRequest:
     )
     speeds: tuple[float, ...] = field(
         default=DEFAULT_SPEEDS_M_S,
-        metadata=_option(
+        metadata=option(
             "--speed",
             "Impact speed(s) w in m/s (several after one flag). Default: 0.1 0.5 1 5 10.",
             "floats",
+            unit="m/s",
         ),
     )
     partner_radius_ratio: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--partner-radius-ratio",
             "With --against grain: radius of the partner grain over this grain's, R2/R1, same "
             "material (either way round; 1 = identical grains). Served by the law of the pair "
@@ -97,7 +101,7 @@ class LawRequest:
     )
     partner_E: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--partner-E",
             "With --against grain: Young modulus of the partner grain's 3D material, Pa [this "
             "grain's]. A partner of another material (--partner-E, --partner-nu, "
@@ -106,11 +110,12 @@ class LawRequest:
             "spheres); any other pair of cylinders is computed with --compute (the estimate is "
             "stated first) or read from --law-file, any other pair of spheres at the asked "
             "speeds by their low-speed route. The partner has this grain's geometry.",
+            unit="Pa",  # its range: the partner's Grain ("the partner's material: ...")
         ),
     )
     partner_nu: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--partner-nu",
             "With --against grain: Poisson number of the partner grain's 3D material [this "
             "grain's].",
@@ -118,43 +123,50 @@ class LawRequest:
     )
     partner_rho: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--partner-rho",
             "With --against grain: density of the partner grain's 3D material, kg/m^3 [this "
             "grain's].",
+            unit="kg/m^3",
         ),
     )
     wall_E: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--wall-E",
             "With --against wall: the wall is an elastic half-space (a thick block) of this "
             "Young modulus, Pa, instead of rigid; give --wall-nu and --wall-rho too. Spheres "
             "only; each speed computed by the low-speed route, the loss split into the ball's "
             "vibrations and the waves radiated into the block (docs/walls.md).",
+            unit="Pa",
+            positive=True,
         ),
     )
     wall_nu: float | None = field(
         default=None,
-        metadata=_option("--wall-nu", "With --wall-E: the wall's Poisson number."),
+        metadata=option("--wall-nu", "With --wall-E: the wall's Poisson number."),
     )
     wall_rho: float | None = field(
         default=None,
-        metadata=_option("--wall-rho", "With --wall-E: the wall's density, kg/m^3."),
+        metadata=option(
+            "--wall-rho", "With --wall-E: the wall's density, kg/m^3.", unit="kg/m^3", positive=True
+        ),
     )
     wall_thickness: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--wall-thickness",
             "With --wall-E: the wall is an infinite plate of this thickness, m (Zener's "
             "thin-plate model, solved as the coupled equation); give the ball's --radius, m. "
             "Speeds where the model does not hold, or the ball does not rebound, get no value "
             "and say why.",
+            unit="m",
+            positive=True,
         ),
     )
     law_file: Path | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--law-file",
             "A law JSON from `restitution curve` for this material: the disk's law for its 2D "
             "Poisson number (cylinder, thin disk), the sphere's (`curve --geometry sphere`) for "
@@ -164,7 +176,7 @@ class LawRequest:
     )
     identical_law_file: Path | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--identical-law-file",
             "With --partner-radius-ratio and --reference-speed or --maxwell-temperature: the "
             "law JSON of two identical grains of this material (`restitution curve --nu "
@@ -175,7 +187,7 @@ class LawRequest:
     )
     partner_identical_law_file: Path | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--partner-identical-law-file",
             "With a partner material and --reference-speed or --maxwell-temperature: the law "
             "JSON of two identical grains of the partner's material, for the 2-2 constant "
@@ -185,7 +197,7 @@ class LawRequest:
     )
     export_dir: Path | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--export",
             "Write the table (.txt, .csv), the closed form (.json, C header .h, Fortran .f90) "
             "and, with --reference-speed or --maxwell-temperature, a snippet for every DEM code "
@@ -195,13 +207,16 @@ class LawRequest:
     )
     reference_speed: float | None = field(
         default=None,
-        metadata=_option(
-            "--reference-speed", "Constant for one-number codes: epsilon at this speed, m/s."
+        metadata=option(
+            "--reference-speed",
+            "Constant for one-number codes: epsilon at this speed, m/s.",
+            unit="m/s",
+            positive=True,
         ),
     )
     friction: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--friction",
             "Sliding friction coefficient mu the DEM snippets of --export set (default none: "
             "they set mu = 0 and say so); restitution computes only the normal coefficient.",
@@ -209,15 +224,17 @@ class LawRequest:
     )
     maxwell_temperature: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--maxwell-temperature",
             "Constant for one-number codes: epsilon averaged (dissipation-weighted) over a "
             "Maxwell gas at this granular temperature <v_x^2>, m^2/s^2.",
+            unit="m^2/s^2",
+            positive=True,
         ),
     )
     measured_epsilon: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--measured-epsilon",
             "Material damping from one measurement: the coefficient of restitution measured at "
             "--measured-speed (same partner). The relaxation time is inferred from it and "
@@ -226,55 +243,70 @@ class LawRequest:
     )
     measured_speed: float | None = field(
         default=None,
-        metadata=_option("--measured-speed", "Impact speed of --measured-epsilon, m/s."),
+        metadata=option(
+            "--measured-speed",
+            "Impact speed of --measured-epsilon, m/s.",
+            unit="m/s",
+            positive=True,
+        ),
     )
     relaxation_time: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--relaxation-time",
             "Material damping given directly: the Kelvin-Voigt relaxation time (viscosities = "
             "tau x moduli), s; needs --radius.",
+            unit="s",
+            positive=True,
         ),
     )
     radius: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--radius",
             "Radius of the grain, m (with --relaxation-time, or with --measured-epsilon to "
             "state tau in seconds and export the DEM codes' viscoelastic contact; for two "
             "sizes the smaller grain's). The elastic law needs no radius; the viscous loss "
             "depends on tau c / R.",
+            unit="m",
+            positive=True,
         ),
     )
     yield_stress: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--yield-stress",
             "Plastic flow (spheres): the uniaxial yield stress of this grain's material, Pa. The "
             "contact's limiting pressure is the pressure of first yield (1.61 Y at nu = 0.3) of "
             "the softer body; epsilon then has its plastic, viscous and wave parts on one "
             "force pulse (Thornton's contact, docs/plasticity.md).",
+            unit="Pa",
+            positive=True,
         ),
     )
     partner_yield_stress: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--partner-yield-stress",
             "Plastic flow: the yield stress of a partner grain of another material, or of an "
             "elastic wall, Pa [the partner stays elastic].",
+            unit="Pa",
+            positive=True,
         ),
     )
     limiting_pressure: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--limiting-pressure",
             "Plastic flow: Thornton's limiting contact pressure p_y itself, Pa (instead of yield "
             "stresses).",
+            unit="Pa",
+            positive=True,
         ),
     )
     measured_fixes: str | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--measured-fixes",
             "Which parameter --measured-epsilon fixes: the relaxation time (default; damping) "
             "or the limiting pressure (plastic flow; the damping, if any, from "
@@ -286,7 +318,7 @@ class LawRequest:
     )
     second_measured_epsilon: float | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--second-measured-epsilon",
             "A second measured coefficient of restitution, at --second-measured-speed: with "
             "the first, it fixes both the relaxation time and the limiting pressure (spheres).",
@@ -294,13 +326,16 @@ class LawRequest:
     )
     second_measured_speed: float | None = field(
         default=None,
-        metadata=_option(
-            "--second-measured-speed", "Impact speed of --second-measured-epsilon, m/s."
+        metadata=option(
+            "--second-measured-speed",
+            "Impact speed of --second-measured-epsilon, m/s.",
+            unit="m/s",
+            positive=True,
         ),
     )
     compute: bool = field(
         default=False,
-        metadata=_option(
+        metadata=option(
             "--compute",
             "Compute the law of this material's exact Poisson number with the production "
             "settings when none is shipped for it (instead of interpolating in nu): minutes to "
@@ -312,7 +347,7 @@ class LawRequest:
     )
     route: str | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--route",
             "With --compute: how the collisions reach many modes: 'modal' (default; windows of "
             "up to 10^5 modes extrapolated in N, as the shipped laws) or 'residual' (200-800 "
@@ -324,7 +359,7 @@ class LawRequest:
     )
     store: Path | None = field(
         default=None,
-        metadata=_option(
+        metadata=option(
             "--store",
             "With --compute: the result store [results.sqlite in the user cache].",
             "path",
@@ -332,7 +367,7 @@ class LawRequest:
     )
     force: bool = field(
         default=False,
-        metadata=_option(
+        metadata=option(
             "--force",
             "With --compute: compute even when the estimate exceeds the bound of one run (1 h).",
             "flag",
@@ -340,29 +375,15 @@ class LawRequest:
     )
 
     def __post_init__(self) -> None:
-        if self.shape not in SHAPES:
-            self.grain  # noqa: B018 -- the grain's own one-line refusal of the geometry
-        speeds = tuple(self.speeds) or DEFAULT_SPEEDS_M_S
-        for w in speeds:  # in the command's words (issue 47: "speeds ... array([ 1., -1.])")
-            if (
-                isinstance(w, bool)
-                or not isinstance(w, int | float)
-                or not (math.isfinite(w) and w > 0.0)
-            ):
-                # > 0: at rest there is no collision (issue 47: 0 reached the routes, which
-                # refused it in their own words, "need v > 0 and spread >= 0")
-                raise InputError(f"--speed must be a finite number > 0 (m/s), got {w!r}")
-        object.__setattr__(self, "speeds", speeds)
-        for name in ("law_file", "identical_law_file", "partner_identical_law_file",
-                     "export_dir", "store"):  # fmt: skip
-            value = getattr(self, name)
-            if value is not None and not isinstance(value, Path):
-                object.__setattr__(self, name, Path(value))
+        # Each field alone first, by its option's kind, in the command's words and the Python
+        # keyword's (issue 47: "speeds ... array([ 1., -1.])"; wall_E=True took 13 GiB), then
+        # the options together.
+        for f in fields(self):
+            object.__setattr__(self, f.name, checked(f, getattr(self, f.name)))
         if self.reference_speed is not None and self.maxwell_temperature is not None:
             raise InputError("give --reference-speed or --maxwell-temperature, not both")
         if self.friction is not None:
-            if not (isinstance(self.friction, int | float) and math.isfinite(self.friction)
-                    and self.friction >= 0.0):  # fmt: skip
+            if self.friction < 0.0:
                 raise InputError(f"--friction must be a number >= 0, got {self.friction!r}")
             if self.export_dir is None:
                 raise InputError("--friction goes into the DEM snippets: add --export DIR")
@@ -386,8 +407,6 @@ class LawRequest:
             raise InputError(
                 "--store, --force and --route belong to --compute; add --compute or leave them out"
             )
-        if self.route is not None and self.route not in ROUTES:
-            raise InputError(f"--route must be one of {', '.join(ROUTES)}, got {self.route!r}")
         if self.route == "residual" and self.store is not None:
             raise InputError(
                 "--store holds the modal route's collisions; the residual route keeps its "
@@ -459,20 +478,12 @@ class LawRequest:
             )
         from restitution.bodies.wall import HalfSpace, Plate
 
-        for name, value in zip(("--wall-E", "--wall-rho"), (self.wall_E, self.wall_rho),
-                               strict=True):  # fmt: skip
-            if not (math.isfinite(value) and value > 0):
-                raise InputError(f"{name} must be a positive number, got {value:g}")
         ratios = (self.wall_E / self.E, self.wall_rho / self.rho, self.wall_nu)
         try:
             if self.wall_thickness is None:
                 return HalfSpace(*ratios)
             if self.radius is None:
                 raise InputError("a plate (--wall-thickness) needs the ball's --radius, m")
-            if not (math.isfinite(self.wall_thickness) and self.wall_thickness > 0):
-                raise InputError(
-                    f"--wall-thickness must be a positive number, m, got {self.wall_thickness:g}"
-                )
             return Plate(*ratios, thickness=self.wall_thickness / self.radius)
         except InputError as exc:
             raise InputError(f"the wall: {exc}") from None

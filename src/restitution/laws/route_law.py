@@ -78,25 +78,56 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     (:func:`restitution.quasistatic.half_space.half_space_reach`) and at the reach: each speed
     alone (:func:`restitution.quasistatic.half_space.half_space_loss`, the ball's vibrations and
     the waves radiated into the wall, ``shares`` in that order), served at its points only
-    (speeds above the reach are ``outside``)."""
+    (speeds above the reach are ``outside``). On a wall dense enough that the losses reach the
+    kinetic energy below the reach, those speeds have no value and say why
+    (``metadata["refused"]``, served as ``outside``), and the reach is where the route stops
+    (:func:`restitution.laws.wall_route.route_top`)."""
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.bodies.wall import Plate
-    from restitution.laws.wall_route import route_at
+    from restitution.laws.wall_grid import SLOWEST
+    from restitution.laws.wall_route import route_at, route_top
     from restitution.provenance import quasistatic_code_version
-    from restitution.quasistatic.half_space import half_space_reach
+    from restitution.quasistatic.half_space import LossBeyondEnergy, half_space_reach
     from restitution.quasistatic.low_speed import CONTACT_TIME_SPREAD, LOW_SPEED_MODES
 
     if isinstance(wall, Plate):
         return _plate_law(nu, wall, speeds)
-    top = float(half_space_reach(nu, wall))
-    inside = sorted({float(v) for v in speeds if 0.0 < float(v) < top})
-    points = [*(inside or [0.5 * top]), top]
+    reach = float(half_space_reach(nu, wall))
+    inside = sorted({float(v) for v in speeds if 0.0 < float(v) < reach})
     route = route_at(nu, wall)  # the grid law's route, speed by speed
-    records = []
-    for v in points:
+
+    def record(v):
         eps, loss, err, details = route(v)
-        records.append(low_speed_record(v, eps, loss, err, details=details))
-    above = sorted({float(v) for v in speeds if float(v) > top})
+        return low_speed_record(v, eps, loss, err, details=details)
+
+    records, refused = [], {}
+    for v in inside:
+        try:
+            records.append(record(v))
+        except LossBeyondEnergy as exc:
+            stored = stored_wall_point(nu, wall, v)
+            if stored is None:
+                refused[repr(v)] = str(exc)
+            else:
+                records.append({**stored, "model_refused": str(exc)})
+    top = reach
+    try:  # the reach itself, and a point below it where no speed was asked
+        records += [record(v) for v in ([] if inside else [0.5 * reach])]
+        records.append(record(reach))
+    except LossBeyondEnergy:  # a wall so dense that the route stops below its reach
+        try:
+            top = route_top(nu, wall, SLOWEST)
+        except InputError as exc:  # not even at the grid's slowest speed
+            if not records:
+                raise InputError(
+                    f"{exc.args[0]}; a finite-element point answers instead (10-45 minutes of "
+                    "one core): "
+                    f"{compute_command(nu, wall.to_dict(), max(inside or [reach]))}"
+                ) from None
+            top = max((r["v"] for r in records if "v_stored" not in r), default=SLOWEST)
+        if all(r["v"] != top for r in records):
+            records.append(record(top))
+    above = sorted({float(v) for v in speeds if float(v) > reach})
     records += [r for r in (stored_wall_point(nu, wall, v) for v in above) if r is not None]
     parameters = {
         "route": "the ball's modes driven by Hertz's pulse on the elastic half-space (Rayleigh's "
@@ -112,6 +143,7 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
         at_points_only=True,
     )  # fmt: skip
     law.metadata["wall"] = wall.to_dict()
+    law.metadata["refused"] = refused
     law.metadata["source"] = "computed now at the asked speeds: a sphere on an elastic half-space"
     return law
 

@@ -234,7 +234,7 @@ def _stored_note(record: dict) -> str:
         "from the finite elements, not from a route: the wall's judge stored at this speed "
         f"(v = {float(record['v_stored']):.6g} c; ball and wall meshed, both limits; the "
         "ball's vibrations and the wall's waves together, not split; docs/walls.md)"
-        + (f"; the thin-plate model does not hold here: {why}" if why else "")
+        + (f"; the wall's route does not hold here: {why}" if why else "")
     )
 
 
@@ -319,9 +319,10 @@ def _status(law, v: float) -> tuple[str, str]:
         refused = next((why for at, why in law.metadata.get("refused", {}).items()
                         if abs(float(at) - v) <= _SAME * v), None)  # fmt: skip
         if refused:
+            wall = law.metadata.get("wall", {}).get("kind", "wall")  # plate, half-space
             return Status.OUTSIDE, (
-                f"v = {v:.3g} c: no value from the plate's model: {refused}; no "
-                f"finite-element point of this plate is stored at this speed{_compute(law, v)}"
+                f"v = {v:.3g} c: no value from the {wall}'s model: {refused}; no "
+                f"finite-element point of this {wall} is stored at this speed{_compute(law, v)}"
             )
         if v > _route_reach(law):
             return Status.OUTSIDE, (

@@ -53,15 +53,38 @@ def _plate_holds(nu: float, plate, v: float) -> bool:
     return bool(r.rebounds) and not validity(r, plate)
 
 
+def _half_space_holds(nu: float, wall, v: float) -> bool:
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.sphere.kind import KIND as SPHERE
+    from restitution.quasistatic.half_space import LossBeyondEnergy, half_space_loss
+    from restitution.quasistatic.low_speed import LOW_SPEED_MODES
+
+    try:
+        half_space_loss(get_modes(nu, LOW_SPEED_MODES, geometry=SPHERE.geometry), v, wall)
+    except LossBeyondEnergy:
+        return False
+    return True
+
+
 def route_top(nu: float, wall, slowest: float) -> float:
-    """The fastest speed (``c``) the wall's route serves: the half-space's reach; on a plate the
-    fastest speed from ``slowest`` up to :data:`PLATE_TOP_SEARCH` where Zener's model holds and
-    the ball rebounds, by bisection in ``ln v`` to 0.1 % (:class:`InputError` when it does
-    not hold even at ``slowest``)."""
+    """The fastest speed (``c``) the wall's route serves, by bisection in ``ln v`` to 0.1 % from
+    ``slowest`` up: on a half-space up to its reach, below it where the losses would reach the
+    kinetic energy (a very dense wall); on a plate up to :data:`PLATE_TOP_SEARCH` where Zener's
+    model holds and the ball rebounds (:class:`InputError` when the route holds not even at
+    ``slowest``)."""
     if not is_plate(wall):
         from restitution.quasistatic.half_space import half_space_reach
 
-        return float(half_space_reach(nu, wall))
+        top = float(half_space_reach(nu, wall))
+        if _half_space_holds(nu, wall, top):  # the usual wall: one evaluation
+            return top
+        if not _half_space_holds(nu, wall, slowest):
+            raise InputError(
+                f"the half-space route has no value on this wall even at v = {slowest:g} c: the "
+                "ball's vibrations and the waves radiated into it take all the kinetic energy "
+                "(a very dense or soft wall)"
+            )
+        return _fastest(lambda v: _half_space_holds(nu, wall, v), slowest, top)
     if not _plate_holds(nu, wall, slowest):
         raise InputError(
             f"Zener's thin-plate model does not hold on this plate even at v = {slowest:g} c "
@@ -69,10 +92,16 @@ def route_top(nu: float, wall, slowest: float) -> float:
         )
     if _plate_holds(nu, wall, PLATE_TOP_SEARCH):
         return PLATE_TOP_SEARCH
-    lo, hi = math.log(slowest), math.log(PLATE_TOP_SEARCH)
+    return _fastest(lambda v: _plate_holds(nu, wall, v), slowest, PLATE_TOP_SEARCH)
+
+
+def _fastest(holds, slowest: float, top: float) -> float:
+    """The fastest speed between ``slowest`` (where ``holds``) and ``top`` (where not) at which
+    ``holds``, by bisection in ``ln v`` to 0.1 %."""
+    lo, hi = math.log(slowest), math.log(top)
     while hi - lo > 1e-3:  # the top to 0.1 %
         mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if _plate_holds(nu, wall, math.exp(mid)) else (lo, mid)
+        lo, hi = (mid, hi) if holds(math.exp(mid)) else (lo, mid)
     return math.exp(lo)
 
 

@@ -61,6 +61,7 @@ __all__ = [
     "HALF_SPACE_REACH_SPEED",
     "HERTZ_PULSE_FACTOR",
     "PULSE_EXPONENT",
+    "LossBeyondEnergy",
     "RadiationIntegrals",
     "ball_envelope",
     "half_space_loss",
@@ -73,6 +74,13 @@ __all__ = [
 PULSE_EXPONENT = 3.0
 """``int (dP/dt)^2 dt ~ J^2 / T^3`` at a fixed impulse ``J``: a relative change ``s`` of the
 pulse's duration changes the radiated energy by ``3 s`` (:func:`half_space_loss`'s error)."""
+
+
+class LossBeyondEnergy(InputError):
+    """The half-space route has no value at a speed: the losses it computes on Hertz's pulse
+    reach the kinetic energy (a very dense or soft wall), where the pulse, computed without the
+    energy it loses, no longer holds (:func:`half_space_loss`)."""
+
 
 HERTZ_PULSE_FACTOR = 1.8 * beta(0.8, 1.5)
 """``int (dP/dt)^2 dt / (K^2 delta_max^2 v) = (9/5) B(4/5, 3/2)`` for Hertz's pulse (module
@@ -199,6 +207,12 @@ def half_space_loss(modes, v: float, wall):
     -------
     LowSpeedLoss
         With ``shares = (ball, wall)`` (fractions of ``(m/2) v^2``).
+
+    Raises
+    ------
+    LossBeyondEnergy
+        Where the two losses reach the kinetic energy (``epsilon`` would be imaginary): the
+        route has no value there.
     """
     from dataclasses import replace
 
@@ -215,6 +229,12 @@ def half_space_loss(modes, v: float, wall):
     )  # fmt: skip
     spread = CONTACT_TIME_SPREAD * math.sqrt(ball.max_compression)
     loss = ball.energy_loss + waves
+    if not loss < 1.0:  # a wall dense enough radiates, on Hertz's pulse, more than there is
+        raise LossBeyondEnergy(
+            f"the ball's vibrations and the waves radiated into the wall take {loss:.3g} times "
+            f"the kinetic energy at v = {v:.3g} c on Hertz's pulse (the route holds while they "
+            "take little of it)"
+        )
     err = ball.energy_loss_err + waves * (PULSE_EXPONENT * spread + waves)
     eps = math.sqrt(1.0 - loss)
     return replace(
