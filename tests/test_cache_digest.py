@@ -16,8 +16,8 @@ import hashlib
 import json
 import re
 import warnings
+from concurrent.futures import ThreadPoolExecutor
 from importlib import resources
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -187,8 +187,10 @@ def test_computed_law_returns_the_recomputed_file_with_one_warning(cache, monkey
 
 @contextlib.contextmanager
 def _in_this_process(**_):
-    """A stand-in for the executors' pool: the points run one after the other here."""
-    yield SimpleNamespace(map=map), "this process"
+    """A stand-in for the executors' pool: the points run one after the other, in one thread
+    of this process (so the replaced point function is the one that runs)."""
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        yield pool, "this process"
 
 
 def _fake_point(computed):

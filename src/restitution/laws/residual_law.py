@@ -23,25 +23,43 @@ version (the solver's and the route's own modules', :data:`ROUTE_MODULES`), each
 digest: a kept point changed after it was written, or holding an impossible value, is computed
 again, never used (:class:`_Kept`). A law file found in the cache is served only when its own
 digest matches (:func:`restitution.laws.compute.set_aside`).
+
+Two runs of one law at once never compute a speed twice: each claims the speeds it is about to
+compute (:class:`restitution.limits.claims.Claims`, in ``<cache>/residual_points/claims.sqlite``,
+keyed by law file, speed and code version), computes those, then waits for the speeds another
+live run holds and reads them from the kept points; a claim of a run that is gone is taken over
+(the claims module's rules). Every run merges the points others kept before it writes the file
+(under an ``flock`` on its folder), so none is lost. A kept point that cannot be written (a full
+disk) ends the run with one :class:`~restitution.errors.OutputError` naming the folder and what
+to do; the points kept before it stay and are not computed again.
 """
 
 from __future__ import annotations
 
+import concurrent.futures as cf
+import contextlib
+import errno
+import fcntl
 import json
 import math
+import os
+import sqlite3
+import time
 import warnings
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 from restitution import atomic, budget
 from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
-from restitution.errors import InputError, is_real
+from restitution.errors import InputError, OutputError, is_real
 from restitution.jsonable import content_digest, json_default
 from restitution.laws.compute import law_dir, production_groups, set_aside
 from restitution.laws.law import EpsilonLaw, law_filename
 from restitution.laws.production import low_speed_points, low_speeds_of
 from restitution.laws.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
+from restitution.limits.claims import POLL_S, Claims
 from restitution.limits.residual_point import NODES_PER_CONTACT, RESIDUAL_MODES, residual_point
 from restitution.limits.run_options import Executor, progress_of
 from restitution.limits.sweep import window_scale
@@ -221,24 +239,39 @@ class _Kept:
     and record (:func:`restitution.jsonable.content_digest`). A point is used only when its
     digest matches and its values are possible (:func:`_impossible`); the others (changed after
     they were written, kept before points carried a digest, an epsilon of 1.7) are dropped with
-    one warning and computed again.
+    one warning and computed again. Several runs may keep points in one file at once: each
+    merges the file's points into its own before it writes (:meth:`add`, under :func:`_locked`).
     """
 
     def __init__(self, path: Path, version: str) -> None:
         self.path, self.version = path, version
         self.points: dict[str, dict] = {}
         self.digests: dict[str, str] = {}
+        dropped = self.refresh()
+        if dropped:
+            warnings.warn(
+                f"{len(dropped)} kept point(s) of {path} are not used and are computed again: "
+                f"changed after they were written, kept before points carried a digest, or "
+                f"impossible: v = {', '.join(dropped[:3])}{', ...' if len(dropped) > 3 else ''}",
+                stacklevel=3,
+            )
+
+    def refresh(self) -> list[str]:
+        """Take in the file's intact points of this code version that this run lacks (those
+        another run kept since); returns the dropped ones, ``"<key> (<why>)"``."""
         try:
-            stored = json.loads(path.read_text())
-            if stored.get("code_version") != version:
-                return
+            stored = json.loads(self.path.read_text())
+            if stored.get("code_version") != self.version:
+                return []
             points, digests = dict(stored["points"]), stored.get("digests") or {}
             if not isinstance(digests, dict):
                 digests = {}
         except (OSError, ValueError, KeyError, TypeError, AttributeError, RecursionError):
-            return
+            return []
         dropped = []
         for key, record in points.items():
+            if key in self.points:
+                continue
             try:
                 intact = digests.get(key) == self._digest(key, record)
             except (ValueError, TypeError, RecursionError):  # not JSON as written
@@ -250,38 +283,139 @@ class _Kept:
                 self.points[key], self.digests[key] = record, digests[key]
             else:
                 dropped.append(f"{key} ({why})")
-        if dropped:
-            warnings.warn(
-                f"{len(dropped)} kept point(s) of {path} are not used and are computed again: "
-                f"changed after they were written, kept before points carried a digest, or "
-                f"impossible: v = {', '.join(dropped[:3])}{', ...' if len(dropped) > 3 else ''}",
-                stacklevel=3,
-            )
+        return dropped
 
     def _digest(self, key: str, record: dict) -> str:
         return content_digest({"code_version": self.version, "key": key, "record": record})
 
     def add(self, record: dict) -> None:
+        """Keep ``record`` with the points other runs kept meanwhile; a file that cannot be
+        written (a full disk) is an :class:`~restitution.errors.OutputError` (:meth:`failed`)
+        and leaves the points kept before as they were."""
         key = repr(float(record["v"]))
         # The record as a reader parses it, so that its digest is the one read back.
         record = json.loads(json.dumps(record, default=json_default))
         self.points[key], self.digests[key] = record, self._digest(key, record)
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        doc = {"code_version": self.version, "points": self.points, "digests": self.digests}
-        atomic.write_text(self.path, json.dumps(doc))
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            with _locked(self.path.parent):
+                self.refresh()
+                doc = {"code_version": self.version, "points": self.points,
+                       "digests": self.digests}  # fmt: skip
+                atomic.write_text(self.path, json.dumps(doc))
+        except OSError as exc:
+            raise self.failed(exc.strerror or str(exc), exc.errno) from None
+
+    def failed(self, reason: str, code: int | None = None) -> OutputError:
+        """The one-line error of a folder the points cannot be kept in: why, and what to do."""
+        folder = self.path.parent
+        if code in (errno.ENOSPC, errno.EDQUOT) or "full" in reason:
+            advice = "free some space there"
+        else:
+            advice = "make it writable"
+        return OutputError(
+            f"cannot keep the computed points of --route residual in {folder} ({reason}): "
+            f"{advice}, or set RESTITUTION_CACHE_DIR to a folder on another disk, and run again "
+            f"(the points kept before are used, not computed again)"
+        )
 
 
-def _compute(tasks, kept: _Kept, executor: Executor, meter) -> list[dict]:
+@contextlib.contextmanager
+def _locked(folder: Path) -> Iterator[None]:
+    """An exclusive ``flock`` on ``folder`` (waits for it): one run at a time reads, merges
+    and writes a kept-points file there."""
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)
+
+
+def _key(task) -> str:
+    return repr(float(task[2]))
+
+
+def _claims(kept: _Kept) -> Claims:
+    """The claims on speeds of the residual route, beside the kept points."""
+    try:
+        kept.path.parent.mkdir(parents=True, exist_ok=True)
+        return Claims(kept.path.parent / "claims.sqlite")
+    except (OSError, sqlite3.Error) as exc:
+        raise kept.failed(getattr(exc, "strerror", None) or str(exc),
+                          getattr(exc, "errno", None)) from None  # fmt: skip
+
+
+def _claim_key(kept: _Kept, task) -> str:
+    """A speed's claim: the law file, the speed and the code version (runs of another code
+    version compute their own points)."""
+    return f"{kept.path.name} v={_key(task)} {kept.version}"
+
+
+def _claim(claims: Claims, kept: _Kept, tasks) -> set[str]:
+    """The speeds of ``tasks`` (their :func:`_key`) this run holds now (claimed or taken over)."""
+    try:
+        mine, _ = claims.claim(_claim_key(kept, t) for t in tasks)
+    except sqlite3.Error as exc:
+        raise kept.failed(str(exc)) from None
+    return {_key(t) for t in tasks if _claim_key(kept, t) in mine}
+
+
+def _compute(tasks, kept: _Kept, executor: Executor, meter, claims: Claims) -> list[dict]:
+    """The records of ``tasks``: the kept ones, those this run computes (the speeds it can
+    claim, first) and those another live run computes (waited for and read from the kept
+    points; taken over if that run is gone)."""
+    pending = [t for t in tasks if _key(t) not in kept.points]
+    if not pending:
+        return [kept.points[_key(t)] for t in tasks]
+    with meter.bar(len(tasks), "speeds") as bar:
+        bar(len(tasks) - len(pending))
+        told = False
+        while pending:
+            mine = _claim(claims, kept, pending)
+            # Points kept by a run whose claims were just released are read, not recomputed.
+            kept.refresh()
+            done = [t for t in pending if _key(t) in kept.points]
+            bar(len(done))
+            pending = [t for t in pending if _key(t) not in kept.points]
+            ours = [t for t in pending if _key(t) in mine]
+            if ours:
+                _run(ours, kept, executor, bar, claims)
+            rest = [t for t in pending if _key(t) not in mine]
+            if rest and not told:
+                bar.note(f"{len(rest)} speed(s) are being computed by another run of this law; "
+                         "waiting for them")  # fmt: skip
+                told = True
+            while rest:  # until the other runs kept them, or one holding some is gone
+                time.sleep(POLL_S)
+                kept.refresh()
+                done = [t for t in rest if _key(t) in kept.points]
+                bar(len(done))
+                rest = [t for t in rest if _key(t) not in kept.points]
+                if rest and _claim(claims, kept, rest):
+                    break  # taken over: the outer loop computes them
+            pending = rest
+    return [kept.points[_key(t)] for t in tasks]
+
+
+def _run(tasks, kept: _Kept, executor: Executor, bar, claims: Claims) -> None:
+    """Compute ``tasks`` on the executor's workers and keep each as it finishes. On any error
+    (a point that cannot be kept, a failed point, Ctrl-C) the queued points are dropped before
+    the error leaves, so that no worker or thread outlives it."""
     from restitution.limits.executors import executor as pool_of
 
-    todo = [t for t in tasks if repr(float(t[2])) not in kept.points]
-    if todo:
-        with pool_of(**executor.keywords()) as (pool, _), meter.bar(len(tasks), "speeds") as bar:
-            bar(len(tasks) - len(todo))
-            for record in pool.map(_point, todo):
-                kept.add(record)
+    with pool_of(**executor.keywords()) as (pool, _):
+        futures = [pool.submit(_point, t) for t in tasks]
+        try:
+            for future in cf.as_completed(futures):
+                kept.add(future.result())
                 bar(1)
-    return [kept.points[repr(float(t[2]))] for t in tasks]
+                with contextlib.suppress(sqlite3.Error):  # a missed beat: the thread beats too
+                    claims.beat()
+        except BaseException:
+            for future in futures:
+                future.cancel()
+            raise
 
 
 def residual_law(
@@ -320,7 +454,6 @@ def residual_law(
     version = _version(geometry, pair)
     kept = _Kept(cache_root() / "residual_points" / p.path.name, version)
     speeds = residual_speeds(geometry, partner) if speeds is None else tuple(speeds)
-    records = _compute([(geometry, nu, float(v), partner) for v in speeds], kept, executor, meter)
     parameters = {
         "route": ROUTE_TEXT,
         "n_modes": list(RESIDUAL_MODES),
@@ -329,24 +462,27 @@ def residual_law(
         "walls": list(body_kind(geometry).alpha_products),
         "code_version": version,
     }
-    law_ = EpsilonLaw.from_records(
-        nu, records, key=RESIDUAL_ROUTE, parameters=parameters, geometry=geometry,
-        partner=partner,
-    )  # fmt: skip
-    law_.metadata["model"] = _model(law_.metadata["model"])
-    done = []
-    for _ in range(refine_rounds):
-        flagged = turning_speeds(law_)
-        if not flagged:
-            break
-        tasks = [(geometry, nu, v, partner) for v, _ in flagged]
-        new = _compute(tasks, kept, executor, meter)
-        done.append({"speeds": [v for v, _ in flagged],
-                     "ratios": [round(r, 3) for _, r in flagged], "dropped": []})  # fmt: skip
-        law_ = law_.joined(new, key="refined", parameters={
-            "rule": RULE, "factor": FACTOR, "per_interval": PER_INTERVAL, "rounds": done,
-            "code_version": version,
-        })  # fmt: skip
+    with _claims(kept) as claims:  # another run of this law computes none of these speeds
+        tasks = [(geometry, nu, float(v), partner) for v in speeds]
+        records = _compute(tasks, kept, executor, meter, claims)
+        law_ = EpsilonLaw.from_records(
+            nu, records, key=RESIDUAL_ROUTE, parameters=parameters, geometry=geometry,
+            partner=partner,
+        )  # fmt: skip
+        law_.metadata["model"] = _model(law_.metadata["model"])
+        done = []
+        for _ in range(refine_rounds):
+            flagged = turning_speeds(law_)
+            if not flagged:
+                break
+            tasks = [(geometry, nu, v, partner) for v, _ in flagged]
+            new = _compute(tasks, kept, executor, meter, claims)
+            done.append({"speeds": [v for v, _ in flagged],
+                         "ratios": [round(r, 3) for _, r in flagged], "dropped": []})  # fmt: skip
+            law_ = law_.joined(new, key="refined", parameters={
+                "rule": RULE, "factor": FACTOR, "per_interval": PER_INTERVAL, "rounds": done,
+                "code_version": version,
+            })  # fmt: skip
     low = tuple(low_speeds_of(geometry, partner, nu) if low_speeds is None else low_speeds)
     if low:
         records, parameters = low_speed_points(
