@@ -18,6 +18,7 @@ __all__ = [
     "CorruptFileError",
     "InputError",
     "OutputError",
+    "PlausibilityWarning",
     "SchedulerError",
     "describe",
     "is_integer",
@@ -54,6 +55,13 @@ class SchedulerError(RestitutionError):
 
 class OutputError(RestitutionError):
     """An output file or directory cannot be written; the message names it and what to do."""
+
+
+class PlausibilityWarning(UserWarning):
+    """An input is allowed but outside the range of real grains and walls (a 5 m grain, a
+    yield stress above any metal's): the run goes on, the message names the option, the range
+    and, where a unit would bring the number into it, the number meant ("did you mean 3 mm =
+    0.003?"). The ranges: :data:`restitution.laws.request_fields.PLAUSIBLE`."""
 
 
 # -- argument checks -----------------------------------------------------------------------

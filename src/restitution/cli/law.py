@@ -7,7 +7,9 @@ The options are the request's fields (their metadata holds names and help).
 
 from __future__ import annotations
 
+import contextlib
 import sys
+import warnings
 from dataclasses import MISSING, fields
 from pathlib import Path
 
@@ -25,7 +27,7 @@ from restitution.cli._common import (
 from restitution.cli.epsilon import _ListCommand
 from restitution.cli.law_text import status_notes, text_lines
 from restitution.cli.report import Report, emit, format_options, output_format
-from restitution.errors import InputError
+from restitution.errors import InputError, PlausibilityWarning, RestitutionError
 from restitution.laws.request import LawRequest
 
 _TYPES = {
@@ -54,6 +56,50 @@ def _request_options(func):
 
 class _LawCommand(_ListCommand):
     list_options = ("--speed",)
+
+
+class _Doubts:
+    """The request's plausibility warnings (:class:`~restitution.errors.PlausibilityWarning`),
+    each one ``warning:`` line on stderr before the first note of the work (so before anything
+    long starts) or after the answer; a refusal that comes first carries them in its one line
+    instead (a refused command says one line)."""
+
+    def __init__(self, texts: list[str]) -> None:
+        self.pending = list(texts)
+
+    def flush(self) -> None:
+        for text in self.pending:
+            note(f"warning: {text}")
+        self.pending.clear()
+
+    def note(self, text: str) -> None:
+        self.flush()
+        note(text)
+
+    @contextlib.contextmanager
+    def refusals(self):
+        """Add the pending warnings to a refusal's line."""
+        try:
+            yield
+        except RestitutionError as exc:
+            if self.pending:
+                exc.args = (f"{exc} (warning: {'; '.join(self.pending)})",)
+            raise
+
+
+def _request(options) -> tuple[LawRequest, _Doubts]:
+    """The request of the options, and its plausibility warnings held back (:class:`_Doubts`);
+    any other warning is shown as it comes."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", PlausibilityWarning)
+        request = LawRequest(**options)
+    texts = []
+    for w in caught:
+        if issubclass(w.category, PlausibilityWarning):
+            texts.append(str(w.message))
+        else:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+    return request, _Doubts(texts)
 
 
 @click.command(cls=_LawCommand)
@@ -106,10 +152,31 @@ def law(fmt, as_json, plot_file, **options):
     restitution law --E 210e9 --nu 0.3 --rho 7850 --shape sphere \\
         --against wall --measured-epsilon 0.9 --measured-speed 1 --speed 0.1 1 10
     """
+    fmt = output_format(fmt, as_json)
+    request, doubts = _request(options)
+    with doubts.refusals():
+        answer = _answer(request, plot_file, doubts.note)
+    doubts.flush()
+    r = answer.request
+    emit(Report("law", r.inputs(), answer.to_dict(), answer.status, answer.advice,
+                answer.units, lambda: "\n".join(text_lines(answer)),
+                lambda: [p.to_dict() for p in answer.points]), fmt)  # fmt: skip
+    if fmt == "text":
+        for line in status_notes(answer):
+            note(line)
+    missing = [p for p in answer.points if p.epsilon is None]
+    if missing and options.get("speeds"):  # speeds the user asked (not the default ones)
+        if fmt != "text":  # the text says it in its notes
+            first = missing[0]
+            note(f"no value at {len(missing)} of the requested speeds; at {first.speed_m_s:g} "
+                 f"m/s: {first.note or first.status}")  # fmt: skip
+        sys.exit(EXIT_FAILED_POINTS)
+
+
+def _answer(request: LawRequest, plot_file, say):
+    """The served answer, and its plot when asked (refused before anything is computed)."""
     from restitution.laws.serve import serve
 
-    fmt = output_format(fmt, as_json)
-    request = LawRequest(**options)
     if plot_file is not None:
         if request.damped or request.plastic:
             raise InputError(
@@ -118,21 +185,9 @@ def law(fmt, as_json, plot_file, **options):
                 "and plastic options"
             )
         check_figure_file(plot_file, "--plot")  # before anything is computed
-    answer = serve(request, note=note, progress=not quiet())
-    r = answer.request
+    answer = serve(request, note=say, progress=not quiet())
     if plot_file is not None:
         with writing(plot_file, "--plot"):  # a full disk names the option and the file
             answer.law.plot(plot_file, marks=answer.points)
-        note(f"wrote {plot_file}")
-    emit(Report("law", r.inputs(), answer.to_dict(), answer.status, answer.advice,
-                answer.units, lambda: "\n".join(text_lines(answer)),
-                lambda: [p.to_dict() for p in answer.points]), fmt)  # fmt: skip
-    if fmt == "text":
-        for line in status_notes(answer):
-            note(line)
-    missing = [p.speed_m_s for p in answer.points if p.epsilon is None]
-    if missing and options.get("speeds"):  # speeds the user asked (not the default ones)
-        if fmt != "text":  # the text says it in its notes
-            note(f"no value at {len(missing)} of the requested speeds ({missing[0]:g} m/s ...): "
-                 "outside the law's range (their status and note say which range)")  # fmt: skip
-        sys.exit(EXIT_FAILED_POINTS)
+        say(f"wrote {plot_file}")
+    return answer

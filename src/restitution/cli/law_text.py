@@ -161,12 +161,20 @@ def _plastic_rows(a) -> list[str]:
 def status_notes(a) -> list[str]:
     """What the statuses of the rows mean (stderr, with the text)."""
     statuses = a.to_dict()["statuses"]
-    notes = {}
-    for p in a.points:
-        if p.status not in (Status.COMPUTED, Status.INTERPOLATED):
-            notes[p.status] = statuses.get(p.status) or getattr(p, "note", "")
     s = a.damped.si if a.damped is not None else a.law
-    out = []
+    at_points = getattr(s.law, "at_points_only", False)  # its outside notes are each point's
+    outside = any(p.status == Status.OUTSIDE for p in a.points)
+    lo, hi = s.computed_range_m_s if outside and not at_points else (None, None)
+    notes, own = {}, []
+    for p in a.points:
+        note = getattr(p, "note", "") or ""
+        if p.status == Status.OUTSIDE and lo is not None and lo <= p.speed_m_s <= hi and note:
+            # no value inside the range (no rebound: the losses exceed the impact energy; a
+            # contact refused): the point's own words, not the range's
+            own.append(f"note: at {p.speed_m_s:.4g} m/s: no value: {note}")
+        elif p.status not in (Status.COMPUTED, Status.INTERPOLATED):
+            notes[p.status] = statuses.get(p.status) or note
+    out = list(own)
     for status, text in notes.items():
         if status == Status.OUTSIDE and getattr(s.law, "at_points_only", False):
             text = next(p.note for p in a.points if p.status == Status.OUTSIDE)

@@ -134,13 +134,25 @@ def elastic_bound(si) -> tuple[float | None, str]:
             if cls is not None:
                 named.append(f"{who}: {cls.name} ({cls.remark})")
             continue
-        speeds = [yield_speed(law.E_star, law.R, onset_pressure_ratio(g.nu) * y / si.grain.E,
-                              mass) * si.speed_scale_m_s for y in cls.yield_stress]  # fmt: skip
-        named.append(
-            f"{who}: {cls.name}, yield stress {cls.yield_stress[0] / 1e6:.0f}-"
-            f"{cls.yield_stress[1] / 1e6:.0f} MPa, plastic flow from {speeds[0]:.2g}-"
-            f"{speeds[1]:.2g} m/s"
-        )
+        # A pressure of first yield at or above the contact's E* is never reached (Hertz's
+        # pressure stays below about 0.6 E*: a wall far softer than the grain): no plastic flow
+        # of this body from there (ThorntonContact refuses it, in reduced units).
+        pressures = [onset_pressure_ratio(g.nu) * y / si.grain.E for y in cls.yield_stress]
+        speeds = [yield_speed(law.E_star, law.R, p, mass) * si.speed_scale_m_s
+                  for p in pressures if p < law.E_star]  # fmt: skip
+        stress = (f"{who}: {cls.name}, yield stress {cls.yield_stress[0] / 1e6:.0f}-"
+                  f"{cls.yield_stress[1] / 1e6:.0f} MPa")  # fmt: skip
+        if not speeds:
+            named.append(
+                f"{stress}: not reached on this contact (its effective modulus E* = "
+                f"{law.E_star * si.grain.E:.3g} Pa is below the pressure of first yield)"
+            )
+            continue
+        if len(speeds) > 1:
+            named.append(f"{stress}, plastic flow from {speeds[0]:.2g}-{speeds[1]:.2g} m/s")
+        else:
+            named.append(f"{stress}, plastic flow from {speeds[0]:.2g} m/s (the strongest of "
+                         "the class never yields on this contact)")  # fmt: skip
         lowest = speeds[0] if lowest is None else min(lowest, speeds[0])
     if lowest is None:
         return None, "; ".join(named)

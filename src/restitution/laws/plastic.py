@@ -108,34 +108,66 @@ def limiting_pressure(
     partner_yield_stress_pa: float | None = None,
     limiting_pressure_pa: float | None = None,
 ) -> tuple[float, str]:
-    """:func:`_limiting_pressure`, refused at or above the grain's Young modulus (no material
-    yields there; the ideal strength is about E/10)."""
-    p_y, source = _limiting_pressure(si, yield_stress_pa, partner_yield_stress_pa,
-                                     limiting_pressure_pa)  # fmt: skip
-    if p_y >= si.grain.E:
+    """:func:`_limiting_pressure`, refused at or above the Young modulus of the body it is of
+    (no material yields there; the ideal strength is about E/10), and at or above the contact's
+    ``E*`` (Hertz's pressure stays below about ``0.6 E*``: the contact never yields, as on a wall
+    much softer than the grain), each in Pa with the options it comes from."""
+    p_y, source, modulus, whose = _limiting_pressure(si, yield_stress_pa,
+                                                     partner_yield_stress_pa,
+                                                     limiting_pressure_pa)  # fmt: skip
+    if p_y >= modulus:
         raise InputError(
             f"the limiting pressure {p_y:.3g} Pa ({source}) is at or above the Young modulus "
-            f"{si.grain.E:.3g} Pa: no material yields there (the ideal strength is about E/10); "
-            "check the units (Pa)"
+            f"{modulus:.3g} Pa of {whose}: no material yields there (the ideal strength is about "
+            "E/10); check the units (Pa)"
+        )
+    law, _ = contact_scales(si)
+    e_star = law.E_star * si.grain.E
+    if p_y >= e_star:
+        partner = " and --wall-E" if wall_of(si.law) is not None else ""
+        if si.law.partner is not None and not si.law.partner.same_material:
+            partner = " and --partner-E"
+        raise InputError(
+            f"the limiting pressure {p_y:.3g} Pa ({source}) is at or above the contact's "
+            f"effective modulus E* = {e_star:.3g} Pa (of --E{partner}): Hertz's pressure stays "
+            "below about 0.6 E*, so this contact never yields; leave out the plastic options "
+            "(the elastic answer), or check the units (Pa)"
         )
     return p_y, source
 
 
+def _moduli(si: SILaw) -> tuple[tuple[float, str], tuple[float, str] | None]:
+    """``(E, whose)`` in Pa of the grain and of its partner (an elastic wall or a grain of
+    another material; ``None`` for a rigid wall or one material), in the options' words."""
+    grain = (float(si.grain.E), "the grain (--E)")
+    wall = wall_of(si.law)
+    if wall is not None:
+        return grain, (wall["modulus_ratio"] * si.grain.E, "the wall (--wall-E)")
+    pair = si.law.partner
+    if pair is not None and not pair.same_material:
+        return grain, (pair.modulus_ratio * si.grain.law_E, "the partner (--partner-E)")
+    return grain, None
+
+
 def _limiting_pressure(
     si: SILaw, yield_stress_pa, partner_yield_stress_pa, limiting_pressure_pa
-) -> tuple[float, str]:
-    """``(p_y in Pa, where it comes from)``: the limiting pressure given, or the onset pressure
-    of the softer of the bodies whose yield stress is given (module docs). Identical grains
-    share the grain's yield stress; a partner of another material or an elastic wall without its
-    own stays elastic."""
+) -> tuple[float, str, float, str]:
+    """``(p_y in Pa, where it comes from, the Young modulus in Pa of the body it is of, that
+    body)``: the limiting pressure given (of the softer body), or the onset pressure of the
+    softer of the bodies whose yield stress is given (module docs). Identical grains share the
+    grain's yield stress; a partner of another material or an elastic wall without its own
+    stays elastic."""
     given = [x for x in (yield_stress_pa, partner_yield_stress_pa) if x is not None]
+    grain, other = _moduli(si)
     if limiting_pressure_pa is not None:
         if given:
             raise InputError(
                 "give the limiting pressure or yield stresses, not both (the limiting pressure "
                 "is what the yield stresses are turned into)"
             )
-        return _positive("limiting pressure", limiting_pressure_pa), "given"
+        softer = min(grain, other or grain)
+        return (_positive("limiting pressure", limiting_pressure_pa), "given, --limiting-pressure",
+                *softer)  # fmt: skip
     if not given:
         raise InputError("a plastic law needs a yield stress or the limiting pressure")
     wall = wall_of(si.law)
@@ -150,14 +182,14 @@ def _limiting_pressure(
         y = _positive("yield stress", yield_stress_pa)
         ratio = onset_pressure_ratio(si.grain.nu)
         options.append((ratio * y, f"onset of yield: {ratio:.4f} x the grain's yield stress "
-                        f"{y:.4g} Pa"))  # fmt: skip
+                        f"{y:.4g} Pa, --yield-stress", *grain))  # fmt: skip
     if partner_yield_stress_pa is not None:
         y = _positive("partner's yield stress", partner_yield_stress_pa)
         nu2 = wall["nu"] if wall is not None else si.law.partner.nu2(si.grain.law_nu)
         ratio = onset_pressure_ratio(nu2)
         who = "wall's" if wall is not None else "partner's"
         options.append((ratio * y, f"onset of yield: {ratio:.4f} x the {who} yield stress "
-                        f"{y:.4g} Pa"))  # fmt: skip
+                        f"{y:.4g} Pa, --partner-yield-stress", *other))  # fmt: skip
     return min(options)
 
 
@@ -316,9 +348,18 @@ class PlasticLaw:
                   "loss_stored": actual.stored_energy, "loss_waves": waves,
                   "loss_wall": wall_part, "yielded": actual.yielded}  # fmt: skip
         if not eps2 > 0.0:
+            parts = (
+                ("plastic flow", actual.plastic_work),
+                ("viscosity", actual.viscous_work),
+                ("the contact's stored energy", actual.stored_energy),
+                ("waves", waves),
+            )
+            shares = ", ".join(f"{name} {100 * x:.3g} %" for name, x in parts if x)
+            note = (f"no rebound: the losses exceed the impact energy ({shares}: "
+                    f"{100 * (1.0 - eps2):.3g} % of it); the grain stays on its partner "
+                    "(epsilon 0)")  # fmt: skip
             return PlasticPoint(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
-                                **common, note="no rebound: the losses take all the kinetic "
-                                "energy")  # fmt: skip
+                                **common, note=note)  # fmt: skip
         eps = math.sqrt(eps2)
         terms = [ratio * base_err, moved, base * abs(ratio - ratio_bare),
                  waves * (1.0 - actual.epsilon**2),
@@ -411,6 +452,7 @@ def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[flo
             "measure at a speed the law serves"
         )
     contact = _contact(si)
+    E = si.grain.E
     lo, hi = (math.log(x) for x in _range(which, contact))
     # The end of the range where epsilon is largest: no plastic flow, no damping.
     weakest = hi if which == "p_y" else lo
@@ -426,17 +468,21 @@ def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[flo
         q = replace(p, epsilon=min(p.epsilon + shift, 1.0))
         top = at(q, weakest)
         if eps_m >= top:
-            what = "plastic flow" if which == "p_y" else "damping"
-            raise InputError(
-                f"the measured epsilon {eps_m:.6g} at {speed:g} m/s is not below {top:.6g}, the "
-                f"value there without {what}: no {what} explains it; check the measurement"
-            )
+            raise InputError(_unexplained(law, which, eps_m, speed, top, q.epsilon))
         strongest = lo if which == "p_y" else hi
         if at(q, strongest) > eps_m:
+            reach = at(q, strongest)
+            if which == "p_y":
+                end = f"the lowest limiting pressure searched, {math.exp(strongest) * E:.3g} Pa"
+            else:
+                end = (
+                    f"the longest relaxation time searched, {math.exp(strongest):.3g} R/c "
+                    f"({math.exp(strongest) * 1e-3 / si.grain.c_m_s:.3g} s for a grain of 1 mm "
+                    "radius)"
+                )
             raise InputError(
-                f"the measured epsilon {eps_m:.6g} at {speed:g} m/s is below what the model "
-                f"reaches with {which} = {math.exp(strongest):.3g} (reduced units); check the "
-                "measurement"
+                f"the measured epsilon {eps_m:.6g} at {speed:g} m/s is below {reach:.6g}, what "
+                f"the model gives with {end}; check the measurement"
             )
         return math.exp(brentq(lambda x: at(q, x) - eps_m, lo, hi, xtol=1e-10, rtol=1e-8))
 
@@ -454,6 +500,40 @@ def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[flo
     value = solve(0.0)
     ends = [solve(s * p.epsilon_err) for s in (-1.0, 1.0)]
     return value, 0.5 * abs(ends[1] - ends[0])
+
+
+def _unexplained(law: PlasticLaw, which: str, eps_m: float, speed: float, top: float,
+                 elastic: float) -> str:  # fmt: skip
+    """The refusal of a measurement ``eps_m`` at ``speed`` (m/s) not below ``top``, the value
+    with the parameter ``which`` (``"p_y"`` or ``"tau"``) at its weakest and the other one as
+    ``law`` has it: it blames that other parameter where it alone takes the value below the
+    elastic one (``elastic``), the measurement otherwise."""
+    head = f"the measured epsilon {eps_m:.6g} at {speed:g} m/s is not below {top:.6g}"
+    fixed, lowers = ("limiting pressure", "plastic flow") if which == "p_y" else (
+        "relaxation time", "damping")  # fmt: skip
+    given = law.tau > 0 if which == "p_y" else True
+    if not (given and eps_m < elastic):
+        return (
+            f"{head}, the value there without {lowers}: no {lowers} explains it; check the "
+            "measurement"
+        )
+    if which == "p_y":
+        other, short = "the damping given (--relaxation-time, with --radius)", "the damping"
+        way = "check --relaxation-time, or let the measurement fix the relaxation time instead"
+    else:
+        other = f"the plastic flow given (p_y = {law.p_y:.4g} Pa: {law.source})"
+        short = "the plastic flow"
+        way = (
+            "check the yield stress or limiting pressure given, or let the measurement fix the "
+            "limiting pressure instead (--measured-fixes limiting-pressure, without the yield "
+            "stresses and --limiting-pressure)"
+        )
+    what = "no rebound" if top <= 0.0 else "the value"
+    return (
+        f"{head}, {what} there with {other} and no {lowers} (the elastic value is "
+        f"{elastic:.6g}): {lowers} only lowers epsilon, so no {fixed} explains the measurement, "
+        f"and {short} given loses too much for it; {way}"
+    )
 
 
 def plastic_law(

@@ -23,7 +23,7 @@ from pathlib import Path
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
-from restitution.laws.request_fields import checked, option
+from restitution.laws.request_fields import checked, doubts, option, warn_implausible
 from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
 
 __all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields"]
@@ -37,6 +37,15 @@ MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 ROUTES = ("modal", "residual")
 """``--route`` of ``--compute``: the modal production or the static residual
 (:mod:`restitution.laws.residual_law`)."""
+
+WALL_RATIOS = (1e-12, 1e12)
+"""The wall's modulus and density over the grain's that an elastic wall takes (those of
+:class:`restitution.bodies.wall.HalfSpace`, whose refusal speaks in ratios; the request says it
+in Pa and kg/m^3 first)."""
+
+PLATE_RADII = (1e-6, 1e6)
+"""The plate thicknesses, in the ball's radii, that :class:`restitution.bodies.wall.Plate`
+takes."""
 
 
 @dataclass(frozen=True)
@@ -412,6 +421,9 @@ class LawRequest:
                 "--store holds the modal route's collisions; the residual route keeps its "
                 "points in the cache: leave out --store or --route residual"
             )
+        # Last, so that a refused request is refused in one line: numbers outside the range
+        # of real grains and walls (a 5 m grain, a yield stress above any metal's) warn once.
+        warn_implausible(self)
 
     # -- what the options amount to -------------------------------------------------------------
 
@@ -455,9 +467,39 @@ class LawRequest:
         if values == (self.E, self.nu, self.rho):
             return None
         try:
-            return Grain(E=values[0], nu=values[1], rho=values[2], shape=self.shape)
+            other = Grain(E=values[0], nu=values[1], rho=values[2], shape=self.shape)
         except InputError as exc:
-            raise InputError(f"the partner's material: {exc}") from None
+            raise InputError(
+                f"the partner's material: {exc} (of --partner-E {values[0]:g} Pa, --partner-nu "
+                f"{values[1]:g}, --partner-rho {values[2]:g} kg/m^3, each this grain's where not "
+                "given)"
+            ) from None
+        self._check_partner_ratios(values)
+        return other
+
+    def _check_partner_ratios(self, values) -> None:
+        """The partner's modulus and density within what a pair takes (:data:`restitution.
+        bodies.pair.partner.RATIO_RANGE`), refused in Pa and kg/m^3 with the options given."""
+        from restitution.bodies.pair.partner import RATIO_RANGE
+
+        lo, hi = RATIO_RANGE
+        for opt, own, value, mine, unit in (("--partner-E", "--E", values[0], self.E, "Pa"),
+                                            ("--partner-rho", "--rho", values[2], self.rho,
+                                             "kg/m^3")):  # fmt: skip
+            ratio = value / mine
+            if lo <= ratio <= hi:
+                continue
+            if ratio > hi and opt == "--partner-E":
+                way = (
+                    "to this grain such a partner is a rigid wall: --against wall without the "
+                    "partner options"
+                )
+            else:
+                way = f"check {opt} and its units ({unit})"
+            raise InputError(
+                f"{opt} {value:g} {unit} is {ratio:.3g} times {own} {mine:g} {unit}, beyond the "
+                f"{lo:g} ... {hi:g} times this grain's a pair of grains takes; {way}"
+            )
 
     @property
     def elastic_wall(self):
@@ -478,15 +520,51 @@ class LawRequest:
             )
         from restitution.bodies.wall import HalfSpace, Plate
 
+        self._check_wall_numbers()
         ratios = (self.wall_E / self.E, self.wall_rho / self.rho, self.wall_nu)
         try:
             if self.wall_thickness is None:
                 return HalfSpace(*ratios)
-            if self.radius is None:
-                raise InputError("a plate (--wall-thickness) needs the ball's --radius, m")
             return Plate(*ratios, thickness=self.wall_thickness / self.radius)
         except InputError as exc:
             raise InputError(f"the wall: {exc}") from None
+
+    def _check_wall_numbers(self) -> None:
+        """The wall's numbers against what the wall's bodies take (:data:`WALL_RATIOS`,
+        :data:`PLATE_RADII`), refused in the options' units and words: the wall's modulus and
+        density against the grain's, a plate's thickness against the ball's radius (naming the
+        one of the two outside the range of real grains and plates, :data:`restitution.laws.
+        request_fields.PLAUSIBLE`)."""
+        lo, hi = WALL_RATIOS
+        for opt, own, value, mine, unit in (("--wall-E", "--E", self.wall_E, self.E, "Pa"),
+                                            ("--wall-rho", "--rho", self.wall_rho, self.rho,
+                                             "kg/m^3")):  # fmt: skip
+            ratio = value / mine
+            if not lo <= ratio <= hi:
+                raise InputError(
+                    f"{opt} {value:g} {unit} is {ratio:.3g} times {own} {mine:g} {unit}, beyond "
+                    f"the {lo:g} ... {hi:g} times the grain's an elastic wall takes; check {opt} "
+                    f"and its units ({unit}), or leave out the wall options for a rigid wall"
+                )
+        if not -1.0 < self.wall_nu < 0.5:
+            raise InputError(
+                f"the wall's Poisson number must lie in (-1, 0.5), got --wall-nu {self.wall_nu:g}"
+            )
+        if self.wall_thickness is None:
+            return
+        if self.radius is None:
+            raise InputError("a plate (--wall-thickness) needs the ball's --radius, m")
+        lo, hi = PLATE_RADII
+        radii = self.wall_thickness / self.radius
+        if not lo <= radii <= hi:
+            culprit = "; ".join(
+                text for text in doubts(self) if text.startswith(("--radius", "--wall-thickness"))
+            )
+            culprit = culprit or "check --wall-thickness and --radius (both in m)"
+            raise InputError(
+                f"--wall-thickness {self.wall_thickness:g} m is {radii:.3g} times --radius "
+                f"{self.radius:g} m; a plate takes {lo:g} ... {hi:g} radii of the ball: {culprit}"
+            )
 
     def _check_elastic_wall(self) -> None:
         if self.against != "wall":
@@ -689,6 +767,14 @@ class LawRequest:
             )
         if ratio == 1.0 or self.shape not in BODIES:
             return
+        from restitution.bodies.pair.partner import RATIO_RANGE
+
+        lo, hi = RATIO_RANGE
+        if not lo <= ratio <= hi:
+            raise InputError(
+                f"--partner-radius-ratio {ratio:g}: {self.unequal_sizes()}; a pair takes "
+                f"{lo:g} ... {hi:g}"
+            )
         kind = body_kind(BODIES[self.shape])
         if kind.pair_compression is None:
             raise InputError(
@@ -696,6 +782,43 @@ class LawRequest:
                 f"sizes are not computed yet; use --shape {_paired_shapes()}, or leave it out "
                 f"(identical {kind.geometry}s)"
             )
+
+    def unequal_sizes(self) -> str:
+        """What answers two grains too unequal in size for a pair (a sentence with the options
+        that ask it): the smaller grain on an elastic wall of the larger one's material, which
+        is to it a half-space (the larger grain's waves come back after the contact)."""
+        ratio = self.partner_radius_ratio
+        big = max(ratio, 1.0 / ratio)
+        mine = (self.E, self.nu, self.rho)
+        theirs = tuple(own if given is None else given for own, given in
+                       zip(mine, (self.partner_E, self.partner_nu, self.partner_rho),
+                           strict=True))  # fmt: skip
+        head = f"the larger grain is {big:g} times the smaller's radius"
+        if body_kind(BODIES[self.shape]).planar:
+            return (
+                f"{head}: to the smaller grain it is a flat wall, and an elastic wall is "
+                "computed for spheres only (--against wall, a rigid wall, is its limit when it "
+                "is also far stiffer)"
+            )
+        wall = "--against wall --wall-E {:g} --wall-nu {:g} --wall-rho {:g}"
+        if ratio > 1.0 or theirs == mine:
+            ask = (
+                f"this grain with {wall.format(*theirs)} in place of --against grain and "
+                "--partner-radius-ratio"
+            )
+            if theirs != mine:
+                ask += " and the partner options"
+        else:
+            ask = (
+                f"the partner, the smaller grain, on a wall of this grain's material: "
+                f"restitution law --E {theirs[0]:g} --nu {theirs[1]:g} --rho {theirs[2]:g} "
+                f"--shape {self.shape} {wall.format(*mine)}"
+            )
+        return (
+            f"{head}: to the smaller grain the larger one is an elastic half-space (the waves "
+            f"reflected inside it return only after the contact), and w the smaller grain's "
+            f"speed towards it; ask for {ask}"
+        )
 
     def _check_identical_law_files(self) -> None:
         if self.partner_identical_law_file is not None and self.partner_grain is None:

@@ -11,6 +11,11 @@ tuple of floats, one of the choices, a :class:`~pathlib.Path`, a bool) or refuse
 that names the option, the Python keyword, the value's type and the unit. A string is not a
 number in Python: ``wall_E='63e9'`` is refused with the number it seems to mean
 (``give a number, e.g. wall_E=63e9``), not parsed.
+
+A value allowed but outside the range of real grains and walls (:data:`PLAUSIBLE`: a 5 m grain,
+a yield stress above any metal's, a friction coefficient of 1e300) is not refused: the request
+warns once (:func:`warn_implausible`, a :class:`~restitution.errors.PlausibilityWarning` naming
+the option, the range and, where a unit brings the number into it, the number meant).
 """
 
 from __future__ import annotations
@@ -18,14 +23,16 @@ from __future__ import annotations
 import difflib
 import math
 import os
+import warnings
 from collections.abc import Iterable, Mapping, Set
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import numpy as np
 
-from restitution.errors import InputError, describe, is_real
+from restitution.errors import InputError, PlausibilityWarning, describe, is_real
 
-__all__ = ["KINDS", "checked", "option"]
+__all__ = ["KINDS", "PLAUSIBLE", "Plausible", "checked", "doubts", "option", "warn_implausible"]
 
 KINDS = ("float", "floats", "choice", "file", "path", "dir", "flag")
 """A field's kind: one number, numbers (one or several after the flag), one of a few strings,
@@ -188,3 +195,149 @@ def _flag(value, meta, name: str) -> bool:
 
 _CHECKS = {"float": _float, "choice": _choice, "file": _path, "path": _path, "dir": _path,
            "flag": _flag}  # fmt: skip
+
+
+# -- plausibility --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Plausible:
+    """Where one quantity of real grains and walls lies (:data:`PLAUSIBLE`).
+
+    Attributes
+    ----------
+    low, high : float
+        The range, in the option's unit (``0`` / ``inf``: no end).
+    what : str
+        The quantity in words ("a grain's radius").
+    why : str
+        Where the range comes from, for the warning.
+    meant : tuple of (str, float)
+        Units a number outside the range may have been written in, each with its size in the
+        option's unit (``("mm", 1e-3)`` for a length in m): the first that brings the number into
+        the range is offered ("did you mean 3 mm = 0.003?").
+    """
+
+    low: float
+    high: float
+    what: str
+    why: str
+    meant: tuple[tuple[str, float], ...] = ()
+
+
+_LENGTHS = (("mm", 1e-3), ("um", 1e-6))
+_STRESSES = (("GPa", 1e9), ("MPa", 1e6))
+
+# Young moduli: soft elastomers and gels from about 1e5 Pa (silicone gels 1e4-1e5, rubber about
+# 1e6); diamond, the stiffest bulk solid, 1.05-1.2e12 Pa (CRC Handbook; Ashby's charts).
+_MODULUS = Plausible(1e5, 1.2e12, "a Young modulus",
+                     "from soft rubber to diamond, the stiffest solid", _STRESSES)  # fmt: skip
+# Densities: aerogels and foams from about 10 kg/m^3; osmium, the densest element, 22590 kg/m^3.
+_DENSITY = Plausible(10.0, 3e4, "a density", "from foams and aerogels to osmium, the densest "
+                     "element, 22590 kg/m^3", (("g/cm^3", 1e3),))  # fmt: skip
+# Yield stresses: soft metals and wax from about 1 MPa (indium 1-2 MPa, lead 5-10 MPa); the
+# strongest steel wires 5-6 GPa (drawn pearlitic wire); no metal's exceeds about 10 GPa, and
+# ceramics, far harder, fracture before they flow.
+_YIELD = Plausible(1e5, 1e10, "a yield stress", "from indium and lead to the strongest steel "
+                   "wires, 5-6 GPa; no metal's is above about 10 GPa", _STRESSES)  # fmt: skip
+
+PLAUSIBLE: dict[str, Plausible] = {
+    "E": _MODULUS,
+    "partner_E": _MODULUS,
+    "wall_E": _MODULUS,
+    "rho": _DENSITY,
+    "partner_rho": _DENSITY,
+    "wall_rho": _DENSITY,
+    # Grains from fine powders (0.1 um; below, adhesion and surface forces rule the contact) to
+    # boulders (1 m).
+    "radius": Plausible(
+        1e-7, 1.0, "a grain's radius", "from fine powders, 0.1 um, to boulders", _LENGTHS
+    ),
+    # A plate under a grain: sheets and panels up to centimetres; beyond 1 m it is a block.
+    "wall_thickness": Plausible(
+        0.0,
+        1.0,
+        "a plate's thickness under a grain",
+        "thicker, it is a block: leave out --wall-thickness for the half-space",
+        _LENGTHS,
+    ),
+    # The plate in the ball's radii: the longitudinal waves' round trip across 100 R (188 R/c
+    # for steel on glass) outlasts the contact above about 1 mm/s (49 R/c at 1 m/s, growing as
+    # w^(-1/5); the numbers of the thin-plate model's refusal): the waves reflected at the far
+    # side come back after the ball left, and the plate is, to the ball, a block.
+    "wall_thickness/radius": Plausible(
+        0.0,
+        100.0,
+        "a plate's thickness in the ball's radii",
+        "thicker, the waves reflected at its far side return "
+        "after the contact (steel on glass above about 1 mm/s): "
+        "to the ball it is a block; leave out --wall-thickness "
+        "for the elastic half-space",
+    ),
+    "yield_stress": _YIELD,
+    "partner_yield_stress": _YIELD,
+    # Thornton's limiting pressure is the pressure of first yield, 0.7-1.9 times the yield
+    # stress (restitution.quasistatic.plastic.onset_pressure_ratio over nu in (-0.9, 0.5)).
+    "limiting_pressure": Plausible(
+        1e5,
+        2e10,
+        "a limiting contact pressure",
+        "1.6 times a yield stress from indium's to the strongest steel's",
+        _STRESSES,
+    ),
+    # Coulomb coefficients: granular materials 0.1-1 (glass beads 0.1-0.2, sand 0.5-0.8); clean
+    # metals in vacuum a few (Bowden and Tabor), from cold welding.
+    "friction": Plausible(
+        0.0, 5.0, "a friction coefficient", "of order 0.1-1; clean metals in vacuum reach a few"
+    ),
+}
+"""Plausible ranges of the request's numbers (field name, or ``"a/b"`` for the ratio of two
+fields), each with where it comes from; :func:`doubts` checks a request against them."""
+
+
+def _in_unit(value: float, unit: str) -> str:
+    return f"{value:g} {unit}" if unit else f"{value:g}"
+
+
+def doubts(request) -> list[str]:
+    """One sentence for every number of ``request`` (a dataclass whose fields :func:`option`
+    describes) outside its :data:`PLAUSIBLE` range, in the options' words and units; a ratio
+    only where neither of its numbers is in doubt already."""
+    meta = {f.name: f.metadata for f in fields(request)}
+    out, doubted = [], set()
+    for key, p in PLAUSIBLE.items():
+        names = key.split("/")
+        values = [getattr(request, name) for name in names]
+        if any(v is None for v in values) or doubted.intersection(names):
+            continue
+        value = values[0] if len(values) == 1 else values[0] / values[1]
+        if p.low <= value <= p.high:
+            continue
+        doubted.update(names)
+        given = [f"{meta[n]['option']} {_in_unit(v, meta[n]['unit'])}"
+                 for n, v in zip(names, values, strict=True)]  # fmt: skip
+        unit = meta[names[0]]["unit"] if len(names) == 1 else ""
+        head = given[0] if len(names) == 1 else f"{given[0]} is {value:.3g} times {given[1]}:"
+        if p.low > 0 and p.high < math.inf:
+            span = f"{p.low:.3g} ... {p.high:.3g}" + (f" {unit}" if unit else "")
+        else:
+            span = f"up to {_in_unit(p.high, unit)}" if p.low <= 0 else f"from {p.low:.3g}"
+        side = "above" if value > p.high else "below"
+        verb = "" if len(names) > 1 else " is"
+        text = f"{head}{verb} {side} the range of {p.what}, {span} ({p.why})"
+        for word, size in p.meant:
+            if p.low <= value * size <= p.high:
+                text += f"; did you mean {value:g} {word} = {value * size:g}?"
+                break
+        else:
+            text += f"; check its units ({unit})" if unit else ""
+        out.append(text)
+    return out
+
+
+def warn_implausible(request, stacklevel: int = 4) -> None:
+    """A :class:`~restitution.errors.PlausibilityWarning` for each of :func:`doubts`; the
+    default ``stacklevel`` points at the line that built ``request`` (its ``__post_init__``
+    calls this)."""
+    for text in doubts(request):
+        warnings.warn(text, PlausibilityWarning, stacklevel=stacklevel)

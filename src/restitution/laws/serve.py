@@ -33,6 +33,7 @@ from restitution.laws.request import LawRequest
 from restitution.laws.si_law import SI_UNITS, SILaw, law_target, overall_status, si_law
 from restitution.laws.units import Grain
 from restitution.limits.run_options import Progress
+from restitution.status import Status
 
 __all__ = ["LawAnswer", "serve"]
 
@@ -298,8 +299,26 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
     note("note: plastic flow: each speed is computed now on one force pulse (about a second a "
          "speed)")  # fmt: skip
     points = law.points(list(r.speeds))
-    status, advice = overall_status(points)
+    status, advice = _plastic_status(points)
     return LawAnswer(r, s, None, points, status, advice, plastic=law)
+
+
+def _plastic_status(points) -> tuple[str, str | None]:
+    """:func:`~restitution.laws.si_law.overall_status`, whose advice for ``outside`` speaks of
+    the law's range, saying instead where a speed has no value because the grain does not
+    rebound (its contact computed, its losses above the impact energy)."""
+    status, advice = overall_status(points)
+    stuck = [p for p in points if p.epsilon is None and p.epsilon_contact is not None]
+    if status != Status.OUTSIDE or not stuck:
+        return status, advice
+    advice = (
+        f"{len(stuck)} of {len(points)} speeds: no rebound, the losses exceed the impact energy "
+        "(each point's note has them)"
+    )
+    beyond = sum(p.status == Status.OUTSIDE for p in points) - len(stuck)
+    if beyond:
+        advice += f"; {beyond}: outside the computed range of the law"
+    return status, advice
 
 
 def _constants(r: LawRequest, s: SILaw):
@@ -363,6 +382,36 @@ def _route(r: LawRequest, note):
     (:func:`restitution.laws.route_law.route_law`), when no shipped law serves the pair and
     its route has a reach (two spheres); ``None`` otherwise. Refused, with what to do, where a
     law at every speed is needed (exports, constants, damping)."""
+    from restitution.bodies.pair.partner import UnequalPairError
+
+    try:
+        return _route_law(r, note)
+    except UnequalPairError as exc:
+        raise InputError(_unequal(r, exc)) from None
+
+
+def _unequal(r: LawRequest, exc) -> str:
+    """The refusal of a pair whose route's modes all belong to one grain, in ``law``'s words
+    (the body layer's names ``collide``'s way out and mode counts, which ``law`` has no option
+    for)."""
+    ratio = r.partner_radius_ratio
+    if ratio is not None and ratio != 1.0:
+        return (
+            f"--partner-radius-ratio {ratio:g}: the pair's low-speed route keeps a few thousand "
+            "modes of the two grains, all of the larger one here (the smaller one's would take "
+            f"about {exc.need:.2g}); {r.unequal_sizes()}"
+        )
+    still = "the partner" if exc.still == 1 else "this grain"
+    return (
+        f"the pair's low-speed route keeps a few thousand modes of the two grains, none of "
+        f"{still} (its sound speed over its radius is far above the other's: it would take "
+        f"about {exc.need:.2g} modes): no law of so unequal a pair is computed; check "
+        "--partner-E and --partner-rho"
+    )
+
+
+def _route_law(r: LawRequest, note):
+    """:func:`_route`'s work."""
     from restitution.laws.law_nu import shipped_match
     from restitution.laws.route_law import route_law, route_serves
 

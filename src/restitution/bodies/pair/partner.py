@@ -22,7 +22,7 @@ from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.bodies.pair.body import BodyPair, pair_of
 from restitution.errors import InputError
 
-__all__ = ["Partner"]
+__all__ = ["Partner", "UnequalPairError"]
 
 
 def _sized() -> list[str]:
@@ -41,6 +41,28 @@ the other within the package's numbers (a density ratio of 1e-300 divided by zer
 kernel, issue 47); collide with the wall instead."""
 
 
+_BEYOND = {
+    "radius ratio": "the smaller body meets the larger one as a wall (an elastic half-space of "
+    "the larger one's material)",
+    "modulus ratio": "the softer body meets the stiffer one as a rigid wall",
+    "density ratio": "the lighter body meets the denser one as a wall that does not move",
+}
+"""What a partner beyond :data:`RATIO_RANGE` is to the other body, by the ratio."""
+
+
+class UnequalPairError(InputError):
+    """A pair too unequal in size for its modes: the ``n_modes`` lowest modes of the pair all
+    belong to one body, and the other (``still``: 0 the first, 1 the second) would not vibrate
+    unless about ``need`` modes were kept (a body takes at most ``most``). A command with its
+    own words for the way out (the smaller body on an elastic wall) catches this one."""
+
+    def __init__(self, message: str, *, still: int, need: int, most: int) -> None:
+        super().__init__(message)
+        self.still = still
+        self.need = need
+        self.most = most
+
+
 def _positive(name: str, value) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float | np.floating | np.integer):
         raise InputError(f"the partner's {name} must be a positive number, got {value!r}")
@@ -50,8 +72,9 @@ def _positive(name: str, value) -> float:
     lo, hi = RATIO_RANGE
     if not lo <= value <= hi:
         raise InputError(
-            f"the partner's {name} {value:g} is outside {lo:g} ... {hi:g}: to one body the other "
-            "is then a rigid wall; collide with the wall instead (no partner)"
+            f"the partner's {name} {value:g} is outside {lo:g} ... {hi:g}: "
+            f"{_BEYOND.get(name, 'to one body the other is then a wall')}; collide with the "
+            "wall instead (no partner)"
         )
     return value
 
@@ -225,11 +248,17 @@ def _both_vibrate(pair, whole, n_modes: int, partner: Partner, geometry: str) ->
         advice = (
             f"use about {need} modes or more"
             if need <= most
-            else f"it would need about {need:.2g} modes, more than the {most} a body "
-            "takes: to the other body it is a rigid wall; collide with the wall instead"
+            else f"it would need about {need:.2g} modes, more than the {most} a body takes: "
+            "to the smaller body the larger one is a wall (an elastic half-space of its "
+            "material); collide with the wall instead"
         )
-        raise InputError(
+        other = "second" if name == "first" else "first"
+        raise UnequalPairError(
             f"the {n_modes} lowest modes of the pair (R2/R1 = {partner.radius_ratio:g}) all "
-            f"belong to one body: the {name} body's lowest mode (omega = {lowest:.4g}) lies above "
-            f"them (up to {cutoff:.4g}), so it would not vibrate; {advice}"
+            f"belong to the {other} body: the {name} body's lowest mode (omega = {lowest:.4g} "
+            f"c1/R1) lies above them (up to {cutoff:.4g} c1/R1), so it would not vibrate; "
+            f"{advice}",
+            still=i,
+            need=need,
+            most=most,
         )
