@@ -26,7 +26,14 @@ from restitution.bodies.kinds import DEFAULT_GEOMETRY, BodyKind, body_kind
 from restitution.bodies.material import Material, require_reduced
 from restitution.errors import InputError, RestitutionError, describe, is_integer, is_real
 
-__all__ = ["MAX_MODES", "CacheError", "cache_dir", "check_mode_request", "get_modes"]
+__all__ = [
+    "MAX_MODES",
+    "CacheError",
+    "cache_dir",
+    "check_mode_request",
+    "get_modes",
+    "writable_folder",
+]
 
 MAX_MODES = body_kind(DEFAULT_GEOMETRY).max_modes
 """Most modes :func:`get_modes` accepts for a disk (each kind's limit:
@@ -62,6 +69,42 @@ def cache_dir() -> Path:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise CacheError(f"cannot create {what} {path} ({exc.strerror or exc}); {advice}") from None
+    return path
+
+
+def writable_folder(path: str | os.PathLike) -> Path:
+    """``path``, created if missing and checked writable now, before work that ends by writing
+    there: a file is made in it and removed (permission bits do not stop root; a read-only
+    mount or an immutable folder does).
+
+    Raises
+    ------
+    CacheError
+        One line naming the folder; for a folder of the cache (``RESTITUTION_CACHE_DIR``, else
+        the user cache directory) naming ``RESTITUTION_CACHE_DIR`` too, the setting that moves
+        it. A read-only cache failed after the work, or without saying which setting to change.
+    """
+    from restitution._paths import cache_root
+
+    path = Path(path)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        fd, probe = tempfile.mkstemp(dir=path, prefix=".write-check-")
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        why = exc.strerror or str(exc)
+        root = cache_root()
+        if path.absolute() != root.absolute() and root.absolute() not in path.absolute().parents:
+            raise CacheError(
+                f"folder {path} cannot be written ({why}); choose one that can"
+            ) from None
+        env = os.environ.get("RESTITUTION_CACHE_DIR")
+        where = f"RESTITUTION_CACHE_DIR = {root}" if env else f"the user cache directory {root}"
+        raise CacheError(
+            f"the cache folder {path} cannot be written ({why}; {where}); set "
+            "RESTITUTION_CACHE_DIR to a writable directory"
+        ) from None
     return path
 
 

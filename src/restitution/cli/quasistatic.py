@@ -85,6 +85,7 @@ def sphere_quasistatic_summary(nu: float, v: float, n_modes: int = 400) -> dict:
     from restitution.bodies.cache import get_modes
     from restitution.quasistatic.rayleigh import rayleigh_energy
 
+    _check_rayleigh_speed(v)
     law = sphere_contact_law(nu)
     q = sphere_quasistatic_collision(law, v)
     modes = get_modes(nu, count=n_modes, geometry=SPHERE.geometry)
@@ -322,6 +323,21 @@ def _pair(ctx, nu: float, partner, geometry: str, w: float, law: str, fmt: str) 
     _emit(inputs, out, text, fmt, pair_units(geometry))
 
 
+def _check_rayleigh_speed(v: float) -> None:
+    """Refuse a speed below :data:`restitution.laws.units.SLOWEST_V`, where Rayleigh's estimate
+    for a sphere vanishes in double precision and its pulse quadrature, sized by the contact
+    time (``~ v^(-1/5)``), is not (``quasistatic --geometry sphere --v 1e-300`` ended in a
+    ZeroDivisionError, ``--v 1e-50`` in a 2.6 TiB allocation), as ``law`` refuses it."""
+    from restitution.laws.units import SLOWEST_V
+
+    if 0.0 < v < SLOWEST_V:  # other speeds are the theories' to refuse
+        raise InputError(
+            f"--v {v:g}: below {SLOWEST_V:g} c a sphere's vibrational loss (Rayleigh's estimate, "
+            f"under 1e-17 of the energy) vanishes in double precision and epsilon is 1; ask for "
+            f"--v >= {SLOWEST_V:g}"
+        )
+
+
 def sphere_pair_summary(nu: float, partner, w: float, n_modes: int) -> dict:
     """What the command reports for two spheres at relative speed ``w`` (``c1``): their Hertz
     law, the quasistatic collision with the reduced mass, and the route's estimate of the loss
@@ -329,6 +345,7 @@ def sphere_pair_summary(nu: float, partner, w: float, n_modes: int) -> dict:
     below one frequency, each driven at its own pole) with its error and each sphere's share."""
     from restitution.quasistatic.low_speed import low_speed_loss, reach
 
+    _check_rayleigh_speed(w)
     pair = partner.pair(nu, n_modes, SPHERE.geometry)
     r = low_speed_loss(pair, w)
     law = sphere_pair_contact_law(

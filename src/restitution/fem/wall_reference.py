@@ -23,7 +23,8 @@ Command line (one process, one point after the other)::
     python -m restitution.fem.wall_reference OUT.json --merge PART.json [PART.json ...]
 
 (``THICKNESS`` in ``R``, ``inf`` or nothing for the half-space; ``--merge`` joins files computed
-by processes apart, :func:`merge_wall_references`.)
+by processes apart, :func:`merge_wall_references`.) Ctrl-C ends with one line and status 130:
+what the file keeps, and the points still to add with ``--append``.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from __future__ import annotations
 import datetime
 import json
 import math
+import sys
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -227,6 +229,37 @@ def _parse_point(text: str, constants: tuple[float, float, float]) -> tuple:
     return nu, wall, v, first
 
 
+def _point_words(point: tuple) -> str:
+    """A point as the command line gives it: ``NU:V[:THICKNESS[:FIRST_LEVEL]]``."""
+    nu, wall, v = point[0], point[1], point[2]
+    first = int(point[3]) if len(point) > 3 else 0
+    words = [repr(float(nu)), repr(float(v))]
+    thickness = getattr(wall, "thickness", math.inf)
+    if first or math.isfinite(thickness):
+        words.append(repr(float(thickness)) if math.isfinite(thickness) else "")
+    if first:
+        words.append(str(first))
+    return ":".join(words)
+
+
+def _interrupted(out: str, todo: list[tuple], finished: int) -> str:
+    """The line a Ctrl-C of :func:`main` ends with: what is kept in ``out`` and how to go on.
+    The same command again would start ``out`` afresh (only ``--append`` adds to it), so the
+    way on is ``--append`` with the points not finished."""
+    finished = max(finished, 0)
+    if finished == 0:
+        return (
+            f"interrupted before the first point finished; {out} was not written; run the "
+            "same command again to start over"
+        )
+    rest = " ".join(_point_words(p) for p in todo[finished:])
+    return (
+        f"interrupted; the {finished} point(s) finished are kept in {out}; to compute the other "
+        f"{len(todo) - finished}, run the same command with --append and only these points: "
+        f"{rest}"
+    )
+
+
 def main(argv: list[str] | None = None) -> None:
     """``python -m restitution.fem.wall_reference OUT.json [NU:V[:THICKNESS[:FIRST]] ...]``."""
     import argparse
@@ -271,10 +304,22 @@ def main(argv: list[str] | None = None) -> None:
             flush=True,
         )
 
-    doc = compute_wall_reference(
-        args.out, points, on_run=report, append=args.append,
-        provenance={"git_commit": commit, "git_uncommitted_sources": bool(changed)},
-    )  # fmt: skip
+    todo = list(WALL_REFERENCE_POINTS if points is None else points)
+    started: list[tuple] = []
+
+    def feed():  # the next point is taken once the one before is written
+        for point in todo:
+            started.append(point)
+            yield point
+
+    try:
+        doc = compute_wall_reference(
+            args.out, feed(), on_run=report, append=args.append,
+            provenance={"git_commit": commit, "git_uncommitted_sources": bool(changed)},
+        )  # fmt: skip
+    except KeyboardInterrupt:
+        print(_interrupted(args.out, todo, len(started) - 1), file=sys.stderr)
+        sys.exit(130)
     for p in doc["points"]:
         print(
             f"nu = {p['nu']:g}, {p['wall']}, v = {p['v']:g}: epsilon = {p['epsilon']} +- "

@@ -30,6 +30,7 @@ import argparse
 import time
 from pathlib import Path
 
+from restitution.bodies.cache import writable_folder
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
 from restitution.laws.law import leave_one_out
@@ -485,8 +486,7 @@ def build(
         partner = partners.pop()
     elif geometry is None:
         raise InputError("a law without collisions (no groups) needs its geometry")
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    out = writable_folder(out_dir)  # the laws are written at the end: refused before the work
     nus = [float(nu) for nu in nus]
     if low_speed_route(geometry, partner) is None and (
         not groups or (low_speeds is not None and tuple(low_speeds))
@@ -495,6 +495,8 @@ def build(
             f"low-speed points are derived for {', '.join(_routed())}, not for the "
             f"{geometry}{' pair' if partner is not None else ''}"
         )
+    for nu in nus:  # in seconds, not after every collision of a window has failed
+        _check_windows(nu, groups, store)
     per_group = [
         compute_curves(nus, g, store=store, executor=executor, workers=workers, progress=progress)
         for g in groups
@@ -524,6 +526,26 @@ def build(
             law = law.joined(records, key="low_speed", parameters=parameters)
         written.append(law.to_json(out / law_filename(nu, geometry, partner)))
     return written
+
+
+def _check_windows(nu: float, groups, store) -> None:
+    """Refuse a law whose mode windows cannot be built at ``nu``
+    (:func:`restitution.limits.grid_check.check_mode_sets`), in the production's words."""
+    from restitution.limits.grid_check import check_mode_sets
+    from restitution.limits.sweep import grid
+
+    specs = [s for g in groups for s in grid([nu], g)]
+    try:
+        check_mode_sets(specs, store)
+    except InputError as exc:
+        kind = body_kind(specs[0].geometry)
+        plan = kind.production
+        reach = f" (its shipped laws reach nu = {max(plan.nus):g})" if plan else ""
+        raise InputError(
+            f"no law of the production at nu = {nu:g}: {exc}; its mode windows are fixed"
+            f"{reach}; smaller windows (`restitution curve --modes`, without --production) "
+            "may still be built"
+        ) from None
 
 
 def rejoin_low_speeds(path: str | Path, speeds=None, *, progress: Progress | bool = False) -> Path:

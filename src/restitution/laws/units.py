@@ -174,6 +174,15 @@ class Grain:
         Material.from_3d(E=self.E, nu=self.nu, plane=self.plane or "stress", rho=self.rho)
         if not self.kind.planar:
             self.kind.check_nu(self.nu)
+        # E and rho each in range of a float, their ratio not: c = 0 divided every speed by zero
+        # (a numpy warning, then v/c = inf), c = inf made every speed 0 ("need v > 0").
+        c = self.c_m_s
+        if not (math.isfinite(c) and c > 0.0):
+            raise InputError(
+                f"E = {self.E:.3g} Pa and rho = {self.rho:.3g} kg/m^3 give the speed unit "
+                f"{self.c_formula.split(',')[0]} = {c:.3g} m/s, not a finite speed; check the "
+                "units of E (Pa) and rho (kg/m^3)"
+            )
 
     @property
     def geometry(self) -> str:

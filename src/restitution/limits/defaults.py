@@ -97,4 +97,10 @@ def walls_at(
         if nu is None and kind.scales_need_nu:
             raise InputError(f"the walls of a {geometry} at a compression scale need its nu")
         delta = kind.max_compression(float(v), 0.0 if nu is None else float(nu))
+    if not (math.isfinite(delta) and delta > 0.0):  # v = 1e-300: delta_max underflows to 0
+        raise InputError(
+            f"at v = {float(v):g} c the quasistatic compression delta_max = {delta:g} R is not "
+            "a finite positive number, so walls at a compression scale (alpha / delta_max) have "
+            "no hardness; give a faster v, or absolute walls (alpha_scale 'absolute')"
+        )
     return tuple(a / delta for a in values)

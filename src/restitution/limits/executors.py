@@ -3,7 +3,8 @@
 Executors (library interfaces only, no home-made distribution), all driven through
 :func:`concurrent.futures.as_completed` by :mod:`restitution.limits.sweep`:
 
-* default: :class:`concurrent.futures.ProcessPoolExecutor` on all cores (spawned processes);
+* default: :class:`concurrent.futures.ProcessPoolExecutor` on all cores (spawned processes,
+  which never see Ctrl-C: the sweep process takes it and stops them);
 * ``workers=N``: a :class:`distributed.LocalCluster` with ``N`` single-threaded workers, at most
   what this machine runs (:func:`check_workers`: two per core, and their measured memory within
   the budget of :mod:`restitution.budget`);
@@ -112,6 +113,60 @@ def _children_without_sigint() -> Iterator[_Deferred]:
     finally:
         signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # a pending one: taken
         signal.signal(signal.SIGINT, old)
+
+
+@contextlib.contextmanager
+def _sigint_blocked() -> Iterator[None]:
+    """SIGINT blocked in this thread for the block; one pressed meanwhile is taken after it.
+
+    Processes spawned inside inherit the blocked SIGINT for their lifetime (a signal mask
+    survives fork and exec): a Ctrl-C reaches the whole foreground process group, and pool
+    workers hit by it printed a ``KeyboardInterrupt`` traceback each (half of them while
+    importing the package). The sweep process takes the Ctrl-C and stops them.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    # Started inside the block, the tracker would unblock SIGINT here (as it does in
+    # _children_without_sigint); started now, it is left alone.
+    resource_tracker.ensure_running()
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)  # a pending Ctrl-C is taken now
+
+
+class _Pool(cf.ProcessPoolExecutor):
+    """A process pool whose workers never see Ctrl-C (:func:`_sigint_blocked`): they are
+    spawned as tasks are submitted, so every submit spawns with SIGINT blocked."""
+
+    def submit(self, fn, /, *args, **kwargs):
+        with _sigint_blocked():
+            return super().submit(fn, *args, **kwargs)
+
+
+_STOP_WAIT_S = 10.0
+"""Seconds an interrupted sweep waits for its stopped pool to release its queues."""
+
+
+def _stop(pool: cf.ProcessPoolExecutor) -> None:
+    """Stop an interrupted pool now: cancel its tasks, end its workers and wait (bounded) for
+    its manager thread, so that its queues' semaphores are released before the process exits.
+
+    The interrupted sweep used to leave the manager thread holding them; a second Ctrl-C or a
+    hard exit then skipped their release, and multiprocessing's resource tracker printed
+    ``There appear to be 5 leaked semaphore objects to clean up at shutdown``. A Ctrl-C
+    pressed meanwhile waits for the end of this (it is raised then).
+    """
+    with _sigint_blocked():
+        processes = list((getattr(pool, "_processes", None) or {}).values())
+        manager = getattr(pool, "_executor_manager_thread", None)
+        pool.shutdown(wait=False, cancel_futures=True)
+        for process in processes:
+            process.terminate()
+        if manager is not None:  # it joins the ended workers and closes the queues
+            manager.join(_STOP_WAIT_S)
 
 
 def _exit_with_parent(parent: int) -> None:
@@ -273,7 +328,7 @@ def executor(
     n = budget.cpu_count()
     with _single_threaded_children():
         context = multiprocessing.get_context("spawn")  # safe with the parent's threads
-        pool = cf.ProcessPoolExecutor(
+        pool = _Pool(
             max_workers=n,
             mp_context=context,
             initializer=_exit_with_parent,
@@ -284,10 +339,7 @@ def executor(
         except BaseException:
             # Interrupted: stop the workers now instead of letting them finish their batches
             # (their results could no longer be stored anyway).
-            processes = list((getattr(pool, "_processes", None) or {}).values())
-            pool.shutdown(wait=False, cancel_futures=True)
-            for process in processes:
-                process.terminate()
+            _stop(pool)
             raise
         pool.shutdown(wait=True)
 

@@ -11,7 +11,9 @@ The default file is ``restitution.bodies.cache.cache_dir() / "results.sqlite"``.
 runs in WAL mode with a busy timeout; every write is its own short transaction and inserts on
 the key (``ON CONFLICT``), so several processes may write to one store at once and a killed
 writer loses at most its uncommitted row. A successful row is never replaced; a failed row is
-replaced when the point is retried and succeeds.
+replaced when the point is retried and succeeds. A damaged ``ok`` row (values no collision can
+have, or an unreadable result) reads as failed everywhere (:meth:`Store.get`,
+:meth:`Store.status`, :meth:`Store.errors`), so a retry computes it again and replaces it.
 
 A file that is not SQLite, or SQLite without this store's schema marker, is refused with a
 :class:`StoreError` naming the file; it is never overwritten.
@@ -45,6 +47,7 @@ __all__ = [
     "Store",
     "StoreError",
     "StoredPoint",
+    "damaged_message",
     "default_store_path",
 ]
 
@@ -334,6 +337,13 @@ class Store:
     """
 
     def __init__(self, path: str | Path | None = None) -> None:
+        if path is None:  # the cache must take the store's writes before any work starts
+            from restitution.bodies.cache import CacheError, writable_folder
+
+            try:
+                writable_folder(default_store_path().parent)
+            except CacheError as exc:
+                raise CacheError(f"{exc} (or give --store PATH)") from None
         self.path = Path(path) if path is not None else default_store_path()
         self._check_file()
         try:
@@ -507,6 +517,12 @@ class Store:
         if scalars[1] is None and scalars[0] is not None:
             scalars[1] = 1.0 - scalars[0] ** 2
         blob = json.dumps(d, default=json_default, allow_nan=True)
+        why = _damaged(dict(zip(_SCALARS, scalars, strict=True)), blob)
+        if why is not None:  # never written as a success that reads back as a damaged row
+            self.put_failure(
+                spec, f"the collision's result is not one: {why}; lower dt or energy_tol"
+            )
+            return
         self._upsert(spec, Status.OK, None, scalars, blob)
 
     def put_failure(self, spec: PointSpec, message: str) -> None:
@@ -545,6 +561,12 @@ class Store:
         )
         try:
             with self._write():
+                # A damaged ``ok`` row reads as failed, so it is replaced as a failed one is.
+                row = self._conn.execute(
+                    f"SELECT {_STATE} FROM collisions WHERE key = ?", (values[0],)
+                ).fetchone()
+                if row is not None and row[0] == Status.OK and _state(*row)[0] != Status.OK:
+                    self._conn.execute("DELETE FROM collisions WHERE key = ?", (values[0],))
                 self._conn.execute(sql, values)
         except sqlite3.Error as exc:
             raise self._error(exc) from None
@@ -558,31 +580,27 @@ class Store:
         return None if row is None else _row_to_point(row, spec)
 
     def status(self, specs: Iterable[PointSpec]) -> dict[str, str]:
-        """Map key -> status for those of ``specs`` that are stored."""
-        keys = [s.key() for s in specs]
-        out: dict[str, str] = {}
-        for start in range(0, len(keys), 500):
-            chunk = keys[start : start + 500]
-            marks = ",".join("?" * len(chunk))
-            out.update(
-                self._read(f"SELECT key, status FROM collisions WHERE key IN ({marks})", chunk)
-            )
-        return out
+        """Map key -> status for those of ``specs`` that are stored (a damaged row: failed)."""
+        return {key: status for key, (status, _) in self._states(specs).items()}
 
     def errors(self, specs: Iterable[PointSpec]) -> dict[str, str]:
-        """Map key -> error message for those of ``specs`` that are stored as failed."""
+        """Map key -> error message for those of ``specs`` that are stored as failed or whose
+        row is damaged."""
+        return {
+            key: error
+            for key, (status, error) in self._states(specs).items()
+            if status == Status.FAILED
+        }
+
+    def _states(self, specs: Iterable[PointSpec]) -> dict[str, tuple[str, str | None]]:
+        """Map key -> (status, error) of the stored ``specs``, a damaged row read as failed."""
         keys = [s.key() for s in specs]
-        out: dict[str, str] = {}
+        out: dict[str, tuple[str, str | None]] = {}
         for start in range(0, len(keys), 500):
             chunk = keys[start : start + 500]
             marks = ",".join("?" * len(chunk))
-            out.update(
-                self._read(
-                    "SELECT key, error FROM collisions "
-                    f"WHERE status = '{Status.FAILED}' AND key IN ({marks})",
-                    chunk,
-                )
-            )
+            rows = self._read(f"SELECT key, {_STATE} FROM collisions WHERE key IN ({marks})", chunk)
+            out.update((key, _state(*row)) for key, *row in rows)
         return out
 
     def points(
@@ -631,8 +649,30 @@ def _partner(stored: dict | None, num) -> Partner | None:
 
 
 _DAMAGED = (
-    "it is not used; compute into a fresh store (--store another file, or store= another path)"
+    "it is not used, and the next sweep over it computes it again (rerun the same command); or "
+    "compute into a fresh store (--store another file, or store= another path)"
 )
+_DAMAGED_HEAD = "damaged stored row: "
+
+
+def damaged_message(message: str | None) -> bool:
+    """Whether a failure message (:meth:`Store.errors`) is a damaged row's: a sweep computes
+    such a point again without being asked to retry failures, as it does a lost one."""
+    return (message or "").startswith(_DAMAGED_HEAD)
+
+
+_STATE = "status, error, epsilon, energy_loss, energy_drift, result"
+"""The columns :func:`_state` reads."""
+
+
+def _state(status, error, epsilon, energy_loss, energy_drift, blob) -> tuple[str, str | None]:
+    """A row's ``(status, error)``: a damaged ``ok`` row (:func:`_damaged`) is failed."""
+    if status == Status.OK:
+        values = {"epsilon": epsilon, "energy_loss": energy_loss, "energy_drift": energy_drift}
+        why = _damaged(values, blob)
+        if why is not None:
+            return Status.FAILED, f"{_DAMAGED_HEAD}{why}; {_DAMAGED}"
+    return status, error
 
 
 def _damaged(values: dict, blob) -> str | None:
@@ -657,10 +697,9 @@ def _row_to_point(row: tuple, spec: PointSpec | None = None) -> StoredPoint:
     scalars, (blob, version, created) = rest[: len(_SCALARS)], rest[len(_SCALARS) :]
     values = dict(zip(_SCALARS, scalars, strict=True))
     if status == Status.OK:
-        why = _damaged(values, blob)
-        if why is not None:
-            status, error, blob = Status.FAILED, f"damaged stored row: {why}; {_DAMAGED}", None
-            values = dict.fromkeys(values)
+        status, error = _state(status, error, *(values[k] for k in _SCALARS[:3]), blob)
+        if status != Status.OK:
+            blob, values = None, dict.fromkeys(values)
     try:
         d = json.loads(inputs)
     except (ValueError, TypeError, RecursionError):
@@ -668,7 +707,7 @@ def _row_to_point(row: tuple, spec: PointSpec | None = None) -> StoredPoint:
             raise StoreError(
                 f"a row of the result store is damaged (its inputs are not JSON); {_DAMAGED}"
             ) from None
-        return _failed(spec, "damaged stored row: its inputs are not JSON; " + _DAMAGED)
+        return _failed(spec, f"{_DAMAGED_HEAD}its inputs are not JSON; {_DAMAGED}")
 
     def num(v):
         return float.fromhex(v) if isinstance(v, str) else v

@@ -52,7 +52,7 @@ from restitution.limits.executors import (
     is_infrastructure_failure,
 )
 from restitution.limits.run_options import Executor, Progress, executor_of, progress_of
-from restitution.limits.store import PointSpec, Store
+from restitution.limits.store import PointSpec, Store, damaged_message
 from restitution.status import Status
 
 __all__ = [
@@ -576,7 +576,8 @@ def run_sweep(
         Also recompute points stored as failed. Points whose task died with its worker
         (``BrokenProcessPool``, a lost Dask worker) are never stored as failed; they are
         resubmitted up to :data:`INFRASTRUCTURE_RETRIES` times and otherwise left for the next
-        run (:attr:`SweepReport.lost`).
+        run (:attr:`SweepReport.lost`). A damaged stored row
+        (:func:`restitution.limits.store.damaged_message`) is computed again, as a lost one is.
 
     Returns
     -------
@@ -599,7 +600,11 @@ def run_sweep(
             if status.get(s.key()) is None
             or (
                 status[s.key()] == Status.FAILED
-                and (retry_failed or infrastructure_message(errors.get(s.key())))
+                and (
+                    retry_failed
+                    or infrastructure_message(errors.get(s.key()))
+                    or damaged_message(errors.get(s.key()))
+                )
             )
         ]
         skipped = len(unique) - len(todo)
