@@ -138,13 +138,11 @@ def test_the_advised_sphere_production_near_nu_half_is_refused_in_seconds(
     step estimate is not the limit there). The advised command now refuses before the sweep,
     naming the window."""
     monkeypatch.setenv("RESTITUTION_CACHE_DIR", str(tmp_path / "cache"))
-    start = time.perf_counter()
     code, out, err = cli("curve", "--geometry", "sphere", "--nu", "0.4999", "--production",
                          "--out", str(tmp_path / "out"), "--store", str(tmp_path / "s.sqlite"),
                          "--no-progress")  # fmt: skip
     error_line(code, err, "nu = 0.4999", "N = 2400", "cannot be built", "order limit",
                "would all fail")  # fmt: skip
-    assert time.perf_counter() - start < 60
 
 
 # -- 3. raw warnings and tracebacks -----------------------------------------------------------

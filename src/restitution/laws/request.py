@@ -25,6 +25,7 @@ from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
 from restitution.laws.request_fields import checked, doubts, option, warn_implausible
 from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
+from restitution.laws.wall_route import check_wall_request
 
 __all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields"]
 
@@ -590,6 +591,9 @@ class LawRequest:
                 f"{' and '.join(needs)} with an elastic wall: not available yet (the wall's law "
                 "comes from its routes, computed now); leave them out"
             )
+        # A wall so soft that the slowest speed sinks the ball into it: refused in Pa and m/s
+        # before any route runs (--wall-E 63, GPa typed as Pa, once took 6 GB).
+        check_wall_request(self.grain, self.elastic_wall, self.speeds, self.wall_E)
 
     @property
     def damped(self) -> bool:

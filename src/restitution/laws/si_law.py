@@ -320,9 +320,13 @@ def _status(law, v: float) -> tuple[str, str]:
                         if abs(float(at) - v) <= _SAME * v), None)  # fmt: skip
         if refused:
             wall = law.metadata.get("wall", {}).get("kind", "wall")  # plate, half-space
+            if any(abs(float(at) - v) <= _SAME * v for at in law.metadata.get("no_judge", ())):
+                # Beyond Hertz's contact: the finite elements are not offered either.
+                return Status.OUTSIDE, f"v = {v:.3g} c: no value: {refused}"
             return Status.OUTSIDE, (
                 f"v = {v:.3g} c: no value from the {wall}'s model: {refused}; no "
                 f"finite-element point of this {wall} is stored at this speed{_compute(law, v)}"
+                + (_THICKER if wall == "plate" and "not informative" in refused else "")
             )
         if v > _route_reach(law):
             return Status.OUTSIDE, (
@@ -345,6 +349,26 @@ def _status(law, v: float) -> tuple[str, str]:
     if good:
         return Status.INTERPOLATED, ""
     return Status.INTERPOLATED_NOT_ASYMPTOTIC, STATUSES[Status.INTERPOLATED_NOT_ASYMPTOTIC]
+
+
+_THICKER = "; a thicker plate loses less and is served further"
+
+
+def _informative(law, v: float, eps: float, err: float) -> str | None:
+    """For an elastic wall's law, why its value at ``v`` (``c``) is not served
+    (:func:`restitution.laws.wall_route.uninformative`: the error exceeds the value, as
+    between a grid law's points near its top), with what answers instead; ``None`` when it is
+    served, and for every other law."""
+    if not (isinstance(law, EpsilonLaw) and "wall" in law.metadata):
+        return None
+    from restitution.laws.wall_route import uninformative
+
+    why = uninformative(eps, err)
+    if why is None:
+        return None
+    wall = law.metadata["wall"].get("kind", "wall")
+    thicker = _THICKER if wall == "plate" else ""
+    return f"v = {v:.3g} c: no value from the {wall}'s route: {why}{_compute(law, v)}{thicker}"
 
 
 def overall_status(points) -> tuple[str, str | None]:
@@ -590,6 +614,9 @@ class SILaw:
                     status, text = Status.OUTSIDE, str(found)
                 else:
                     eps, err = found
+                    why = _informative(self.law, v, eps, err)
+                    if why is not None:  # an elastic wall's value that says nothing
+                        status, text, eps, err = Status.OUTSIDE, why, None, None
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
                 if getattr(self.law, "at_points_only", False):

@@ -20,8 +20,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from restitution import atomic
-from restitution.file_set import file_set
 from restitution.errors import InputError, RestitutionError
+from restitution.file_set import file_set
 from restitution.laws.exports.c_fortran import c_header, fortran_include
 from restitution.laws.exports.closed_form import ClosedForm, fit_closed_form
 from restitution.laws.exports.constants import Constant
