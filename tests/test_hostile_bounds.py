@@ -25,3 +25,20 @@ def test_the_command_line_names_the_relaxation_time(cli):
                        "sphere", "--against", "wall", "--relaxation-time", "1e300", "--radius",
                        "0.001", "--speed", "1")  # fmt: skip
     one_line_error(code, err, "tau", "overflow", "relaxation time")
+
+
+def test_waves_beyond_the_one_pulse_model_are_not_served(cli):
+    """A relaxation time of 1 ms on a 1 mm steel ball (tau c/R = 5e3) with plastic flow: the
+    waves' estimate, scaled from Hertz's pulse, was served as 3.85e5 % of the impact energy in
+    the no-rebound note. Above the impact energy it is the model's limit, said as such, and no
+    wave loss is served."""
+    import json
+
+    code, out, _ = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
+                       "sphere", "--against", "wall", "--yield-stress", "1e9",
+                       "--relaxation-time", "1e-3", "--radius", "0.001", "--speed", "1",
+                       "--json")  # fmt: skip
+    (point,) = json.loads(out)["points"]
+    assert code == 1 and point["epsilon"] is None and point["loss_waves"] is None
+    assert point["status"] == "outside" and "beyond the one-pulse model" in point["note"]
+    assert point["loss_viscous"] == pytest.approx(1.0, abs=1e-3)  # the contact itself stops it

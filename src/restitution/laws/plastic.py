@@ -347,6 +347,18 @@ class PlasticLaw:
                   "loss_plastic": actual.plastic_work, "loss_viscous": actual.viscous_work,
                   "loss_stored": actual.stored_energy, "loss_waves": waves,
                   "loss_wall": wall_part, "yielded": actual.yielded}  # fmt: skip
+        if not eps2 > 0.0 and waves > 1.0:
+            # The waves' Rayleigh estimate, scaled from Hertz's pulse, above the impact energy
+            # itself (3.9e3 times it for tau c/R = 5e3): the one-pulse model, the waves a small
+            # loss on the contact's pulse, does not hold; the number is not served.
+            note = (f"beyond the one-pulse model: its estimate of the elastic waves on this "
+                    f"pulse is {waves:.3g} times the impact energy ({ratio:.3g} times their loss "
+                    "on Hertz's pulse: the viscous force makes the pulse far sharper), so the "
+                    "waves are no small loss on it; the contact alone returns epsilon = "
+                    f"{actual.epsilon:.3g}; a relaxation time this long (tau c/R = "
+                    f"{tau / law.R:.3g}) is hardly a solid's")  # fmt: skip
+            return PlasticPoint(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
+                                **{**common, "loss_waves": None}, note=note)  # fmt: skip
         if not eps2 > 0.0:
             parts = (
                 ("plastic flow", actual.plastic_work),
