@@ -14,6 +14,7 @@ from restitution import get_modes
 from restitution.dynamics.collision import collide, start_position
 from restitution.dynamics.integrators import free_modes
 from restitution.vibrating.sequences import bounce, constant_epsilon_speeds, memoryless_speeds
+from restitution.vibrating.vibration import STEP_JUDGE
 
 V, ALPHA, G = 0.1, 400.0, 1e-5
 
@@ -29,7 +30,8 @@ def chain(modes):
 
 
 def test_chain_collisions_are_single_collisions_from_the_carried_state(modes, chain):
-    first = collide(modes, V, ALPHA)
+    # A chain judges every step by epsilon (STEP_JUDGE), as `restitution collide` does.
+    first = collide(modes, V, ALPHA, step_judge=STEP_JUDGE)
     assert chain.epsilon[0] == first.epsilon  # bit for bit: a disk at rest
     # The second collision by hand: fly up at u and back under gravity to the start position
     # of the return speed w, w^2 = u^2 + 2 g (x_start(w) - x_end), then collide from there.
@@ -41,7 +43,7 @@ def test_chain_collisions_are_single_collisions_from_the_carried_state(modes, ch
     t = (u + w) / G
     assert chain.flight_time[0] == pytest.approx(t, rel=1e-14)
     Q, P = free_modes(modes.omega, modes.mass, first.final_Q, first.final_P, t)
-    second = collide(modes, w, ALPHA, initial=(Q, P))
+    second = collide(modes, w, ALPHA, initial=(Q, P), step_judge=STEP_JUDGE)
     assert chain.epsilon[1] == pytest.approx(second.epsilon, rel=1e-13)
 
 
@@ -70,4 +72,4 @@ def test_two_walls_chain_conserves_energy_and_mirrors(modes):
 def test_comparison_sequences(modes):
     np.testing.assert_allclose(constant_epsilon_speeds(0.1, 0.9, 3), [0.1, 0.09, 0.081])
     speeds = memoryless_speeds(modes, V, ALPHA, 2)
-    assert speeds[1] == collide(modes, V, ALPHA).epsilon * V
+    assert speeds[1] == collide(modes, V, ALPHA, step_judge=STEP_JUDGE).epsilon * V

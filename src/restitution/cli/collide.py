@@ -204,7 +204,7 @@ def _vibrating() -> str:
     "step and epsilon's Richardson error is held to energy-tol/2 (about three times the work). "
     "energy: the energy drift alone (the sweeps' judge), which can pass while epsilon is off "
     "(a sphere of 400 modes at v = 0.1, alpha = 2000: drift 8e-8, epsilon off by 1.4e-4). "
-    "--excite thermal always uses energy (its sampling error dominates).",
+    "--excite mode and thermal take it too, so a zero excitation is the collision at rest.",
 )
 @click.option(
     "--excite",
@@ -608,7 +608,7 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
     inputs = {"nu": material.nu, "plane": plane, "v": v, "alpha": alpha, "method": method,
               "modes": n_modes, "select": select, "integrator": integrator,
               "energy_tol": energy_tol, "excite": excite,
-              "step_check": step_check if excite == "mode" else "energy"}  # fmt: skip
+              "step_check": step_check}  # fmt: skip
     start = time.perf_counter()
     if excite == "mode":
         from restitution.dynamics.collision import collide as run
@@ -639,13 +639,14 @@ def _excited(ctx, material, plane, v, alpha, n_modes, select, integrator, method
         seed = 0 if p["seed"] is None else p["seed"]
         check_collisions_time(ms, v, alpha, samples, force=force, name="--samples",
                               override="--force", item="sample", integrator=integrator,
-                              energy_tol=energy_tol)  # fmt: skip
+                              energy_tol=energy_tol, step_judge=step_check)  # fmt: skip
         _announce(ms, v, alpha, integrator, energy_tol)
         with warnings.catch_warnings(), _progress_bar(samples) as advance:
             warnings.simplefilter("ignore")
             ens = thermal_ensemble(ms, v, alpha, p["temperature"] * e0, samples, seed,
                                    integrator=integrator, energy_tol=energy_tol,
-                                   progress=advance, force=force)  # fmt: skip
+                                   progress=advance, force=force,
+                                   step_judge=step_check)  # fmt: skip
         inputs.update(temperature=p["temperature"], samples=samples, seed=seed)
         status = Status.OK if not ens.failures else Status.FAILED_SAMPLES
         advice = None if not ens.failures else (

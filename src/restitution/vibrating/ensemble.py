@@ -22,6 +22,7 @@ from restitution.dynamics.collision import CollisionError, CollisionSettings, co
 from restitution.errors import InputError
 from restitution.vibrating.sequences import check_collisions_time
 from restitution.vibrating.vibration import (
+    STEP_JUDGE,
     kinetic_energy,
     single_mode_state,
     thermal_state,
@@ -162,10 +163,22 @@ class Ensemble:
 
 
 def collide_states(
-    modes: ModeSet, v, alpha, Q, P, settings: CollisionSettings | None = None, **overrides
+    modes: ModeSet,
+    v,
+    alpha,
+    Q,
+    P,
+    settings: CollisionSettings | None = None,
+    *,
+    step_judge: str = STEP_JUDGE,
+    **overrides,
 ) -> list:
     """Collide a batch from the states ``(Q[i], P[i])``; a member that fails gives its error
     message (a string) in place of its result, and never loses the others.
+
+    The step is judged by ``step_judge`` (default :data:`~restitution.vibrating.vibration.
+    STEP_JUDGE`, epsilon's Richardson error, as ``restitution collide`` judges a disk at rest),
+    so a zero state is the collision of the disk at rest.
 
     A vibrating disk can leave the wall very slowly (``v' << v``); the solver allows it 100
     times the time bound of a disk at rest (:func:`restitution.dynamics.start.start_of`), and a
@@ -174,14 +187,16 @@ def collide_states(
     """
     v = np.broadcast_to(np.asarray(v, dtype=float), (len(Q),))
     try:
-        return collide_batch(modes, v, alpha, settings, initial=(Q, P), **overrides)
+        return collide_batch(modes, v, alpha, settings, initial=(Q, P), step_judge=step_judge,
+                             **overrides)  # fmt: skip
     except CollisionError:
         pass
     out: list = []
     for i in range(len(Q)):
         try:
             one = collide_batch(modes, v[i : i + 1], alpha, settings,
-                                initial=(Q[i : i + 1], P[i : i + 1]), **overrides)  # fmt: skip
+                                initial=(Q[i : i + 1], P[i : i + 1]), step_judge=step_judge,
+                                **overrides)  # fmt: skip
             out.append(one[0])
         except CollisionError as exc:
             out.append(str(exc))
@@ -253,6 +268,7 @@ def thermal_ensemble(
     batch_size: int = 64,
     progress: Callable[[int], None] | None = None,
     force: bool = False,
+    step_judge: str = STEP_JUDGE,
     **overrides,
 ) -> Ensemble:
     """``samples`` collisions at speed ``v``, each from its own thermal state at ``temperature``
@@ -263,7 +279,9 @@ def thermal_ensemble(
     ensemble whose states would not fit in memory is refused before anything is drawn
     (:func:`check_ensemble_memory`), one that would take longer than
     :data:`restitution.budget.TIME_BOUND_S` too unless ``force``
-    (:func:`restitution.vibrating.sequences.check_collisions_time`).
+    (:func:`restitution.vibrating.sequences.check_collisions_time`). Every collision's step
+    is judged by ``step_judge`` (:func:`collide_states`): at zero temperature every sample is
+    the collision of the disk at rest.
     """
     if not isinstance(samples, int | np.integer) or isinstance(samples, bool) or samples < 1:
         raise InputError(f"samples must be a positive integer, got {samples!r}")
@@ -275,14 +293,14 @@ def thermal_ensemble(
         raise InputError(f"the seed must be an integer >= 0 (or None), got {seed!r}")
     check_ensemble_memory(samples, len(modes))
     check_collisions_time(modes, v, alpha, int(samples), settings, force=force, name="samples",
-                          item="sample", **overrides)  # fmt: skip
+                          item="sample", step_judge=step_judge, **overrides)  # fmt: skip
     Q, P = thermal_state(modes, temperature, np.random.default_rng(seed), size=int(samples))
     out = {k: [] for k in ("eps", "before", "after", "drift", "contact")}
     failures: list[str] = []
     for start in range(0, samples, batch_size):
         stop = min(start + batch_size, samples)
         res = collide_states(modes, v, alpha, Q[start:stop], P[start:stop], settings,
-                             **overrides)  # fmt: skip
+                             step_judge=step_judge, **overrides)  # fmt: skip
         for r in res:
             if isinstance(r, str):
                 failures.append(r)
@@ -317,16 +335,19 @@ def phase_scan(
     energy: float,
     phases,
     settings: CollisionSettings | None = None,
+    *,
+    step_judge: str = STEP_JUDGE,
     **overrides,
 ) -> np.ndarray:
     """Epsilon of collisions at speed ``v`` with mode ``index`` excited to ``energy`` (reduced
-    units) at each of ``phases`` (radians, at the reference instant); shape of ``phases``."""
+    units) at each of ``phases`` (radians, at the reference instant); shape of ``phases``. The
+    step is judged by ``step_judge`` (:func:`collide_states`)."""
     phases = np.atleast_1d(np.asarray(phases, dtype=float))
     states = [single_mode_state(modes, index, energy, float(p)) for p in phases]
     Q = np.array([q for q, _ in states])
     P = np.array([p for _, p in states])
     res = collide_batch(modes, np.full(phases.size, v), alpha, settings, initial=(Q, P),
-                        **overrides)  # fmt: skip
+                        step_judge=step_judge, **overrides)  # fmt: skip
     return np.array([r.epsilon for r in res])
 
 

@@ -42,7 +42,7 @@ from restitution.bodies.disk.modes import ModeSet
 from restitution.dynamics.collision import CollisionSettings
 from restitution.errors import InputError
 from restitution.vibrating.ensemble import collide_states
-from restitution.vibrating.vibration import thermal_state
+from restitution.vibrating.vibration import STEP_JUDGE, thermal_state
 
 __all__ = [
     "BalanceTest",
@@ -133,7 +133,10 @@ class BalanceTest:
     modes and ``translation_temperature`` of the flux density the speeds were drawn from
     (reduced units; equal for the relation itself); ``window`` the speed window; ``test`` the
     :class:`SymmetryTest` on equal-probability bins of the window; ``failed`` the runs that
-    outlasted the solver's time bound (a disk leaving far below the window; ``v_out = 0``).
+    outlasted the solver's time bound (a disk leaving far below the window; ``v_out = 0``);
+    ``max_energy_drift`` the largest relative energy drift of a run and ``max_step_error`` the
+    largest Richardson estimate of a run's epsilon error (``None`` when the energy drift judged
+    the steps).
     """
 
     v_in: np.ndarray
@@ -147,6 +150,7 @@ class BalanceTest:
     test: SymmetryTest
     max_energy_drift: float
     failed: int = 0
+    max_step_error: float | None = None
 
     @property
     def stationary_moment(self) -> tuple[float, float, float]:
@@ -186,6 +190,7 @@ def detailed_balance_test(
     settings: CollisionSettings | None = None,
     batch_size: int = 64,
     progress: Callable[[int], None] | None = None,
+    step_judge: str = STEP_JUDGE,
     **overrides,
 ) -> BalanceTest:
     """Collide ``samples`` disks with canonical modes at ``temperature`` and speeds drawn from
@@ -193,7 +198,8 @@ def detailed_balance_test(
     the symmetry of ``(v, v')`` on ``bins`` bins of equal probability under the flux density.
 
     A ``translation_temperature`` different from ``temperature`` is a control: the relation
-    then predicts an asymmetric table, and the test should reject it.
+    then predicts an asymmetric table, and the test should reject it. Every collision's step
+    is judged by ``step_judge`` (:func:`restitution.vibrating.ensemble.collide_states`).
     """
     t_tr = temperature if translation_temperature is None else translation_temperature
     rng = np.random.default_rng(seed)
@@ -201,16 +207,21 @@ def detailed_balance_test(
     Q, P = thermal_state(modes, temperature, rng, size=samples)
     v_out = np.empty(samples)
     drift = 0.0
+    step_error = None
     failed = 0
     for start in range(0, samples, batch_size):
         stop = min(start + batch_size, samples)
         res = collide_states(modes, v_in[start:stop], alpha, Q[start:stop], P[start:stop],
-                             settings, **overrides)  # fmt: skip
+                             settings, step_judge=step_judge, **overrides)  # fmt: skip
         # A failed run is a disk still near the wall long after the incoming one would have
         # left: it leaves (far) below the window. It is counted apart (``failed``).
         v_out[start:stop] = [0.0 if isinstance(r, str) else r.epsilon * r.v for r in res]
         failed += sum(isinstance(r, str) for r in res)
-        drift = max([drift, *(r.energy_drift for r in res if not isinstance(r, str))])
+        done = [r for r in res if not isinstance(r, str)]
+        drift = max([drift, *(r.energy_drift for r in done)])
+        errors = [r.step_error for r in done if r.step_error is not None]
+        if errors:
+            step_error = max([step_error or 0.0, *errors])
         if progress is not None:
             progress(stop)
     # Equal-probability edges of the flux density at the modes' temperature in the window.
@@ -230,4 +241,5 @@ def detailed_balance_test(
         test=symmetry_test(v_in, v_out, edges),
         max_energy_drift=drift,
         failed=failed,
+        max_step_error=step_error,
     )
