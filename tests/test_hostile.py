@@ -14,7 +14,6 @@ import concurrent.futures as cf
 import contextlib
 import json
 import os
-import shutil
 import signal
 import socket
 import sqlite3
@@ -25,6 +24,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from _cli_checks import one_line_error
+from _read_only import read_only
 
 import restitution
 from restitution import get_modes
@@ -58,27 +58,6 @@ def no_integration(monkeypatch):
 @pytest.fixture(scope="module")
 def small():
     return get_modes(0.33, count=20)
-
-
-@contextlib.contextmanager
-def read_only(path):
-    """``path`` (file or directory) read-only for the duration; skips when impossible."""
-    path = str(path)
-    if os.geteuid() != 0:
-        mode = os.stat(path).st_mode
-        os.chmod(path, 0o555 if os.path.isdir(path) else 0o444)
-        try:
-            yield
-        finally:
-            os.chmod(path, mode)
-        return
-    chattr = shutil.which("chattr")
-    if chattr is None or subprocess.run([chattr, "+i", path], capture_output=True).returncode:
-        pytest.skip("running as root without chattr +i: cannot make a read-only file")
-    try:
-        yield
-    finally:
-        subprocess.run([chattr, "-i", path], check=True)
 
 
 @pytest.fixture

@@ -9,14 +9,10 @@ Read-only folders are made with ``chmod`` (or, as root, which ignores permission
 covers the same path everywhere.
 """
 
-import contextlib
 import errno
 import json
-import os
-import shutil
 import signal
 import sqlite3
-import subprocess
 import threading
 import time
 import warnings
@@ -24,6 +20,7 @@ from multiprocessing import resource_tracker
 
 import pytest
 from _cli_checks import one_line_error
+from _read_only import read_only
 
 from restitution.bodies.cache import CacheError
 from restitution.bodies.wall import HalfSpace
@@ -45,27 +42,6 @@ def error_line(code, err, *words):
     """Like :func:`one_line_error`, after the command's ``note:`` lines (its plan)."""
     rest = "\n".join(x for x in err.splitlines() if not x.startswith("note: "))
     return one_line_error(code, rest, *words)
-
-
-@contextlib.contextmanager
-def read_only(path):
-    """The folder ``path`` read-only for the duration; skips when impossible."""
-    path = str(path)
-    if os.geteuid() != 0:
-        mode = os.stat(path).st_mode
-        os.chmod(path, 0o555)
-        try:
-            yield
-        finally:
-            os.chmod(path, mode)
-        return
-    chattr = shutil.which("chattr")
-    if chattr is None or subprocess.run([chattr, "+i", path], capture_output=True).returncode:
-        pytest.skip("running as root without chattr +i: cannot make a read-only folder")
-    try:
-        yield
-    finally:
-        subprocess.run([chattr, "-i", path], check=True)
 
 
 @pytest.fixture

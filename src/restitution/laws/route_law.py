@@ -73,6 +73,20 @@ def route_law(nu: float, geometry: str, partner, speeds) -> EpsilonLaw:
     return law
 
 
+def _keep(nu: float, wall, v: float, rec, why, records: list, refused: dict) -> None:
+    """The route's record ``rec`` at ``v`` into ``records`` where it is served (``why`` is
+    ``None``); else the stored finite-element point of ``wall`` there (with the route's reason),
+    or, without one, the reason into ``refused``."""
+    if why is None:
+        records.append(rec)
+        return
+    stored = stored_wall_point(nu, wall, v)
+    if stored is None:
+        refused[repr(v)] = why
+    else:
+        records.append({**stored, "model_refused": why})
+
+
 def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     """The law of a sphere on an elastic half-space ``wall``
     (:class:`restitution.bodies.wall.HalfSpace`) at ``speeds`` (``c``) within its route's reach
@@ -115,16 +129,8 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
     records, refused = [], {}
 
     def keep(v, rec, why):
-        """``rec`` (the route's) where it is served, else a stored point or the reason."""
         why = why or uninformative(rec["epsilon"], rec["epsilon_err"])
-        if why is None:
-            records.append(rec)
-            return
-        stored = stored_wall_point(nu, wall, v)
-        if stored is None:
-            refused[repr(v)] = why
-        else:
-            records.append({**stored, "model_refused": why})
+        _keep(nu, wall, v, rec, why, records, refused)
 
     computed = None
     if tabulate:
@@ -290,14 +296,7 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
     def keep(v, rec, reasons):
         why = "; ".join(reasons) if reasons else uninformative(
             rec["epsilon"], rec["epsilon_err"], v, top)  # fmt: skip
-        if why is None:
-            records.append(rec)
-            return
-        stored = stored_wall_point(nu, plate, v)
-        if stored is None:
-            refused[repr(v)] = why
-        else:
-            records.append({**stored, "model_refused": why})
+        _keep(nu, plate, v, rec, why, records, refused)
 
     computed = None
     if tabulate:
