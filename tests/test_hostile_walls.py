@@ -261,3 +261,15 @@ def test_the_split_between_grid_speeds_is_the_routes_own_at_that_speed():
     (alone,) = SILaw(STEEL, "wall", wall_law(NU, wall, [v])).points([w])
     assert alone.loss_shares[0] == pytest.approx(1.35e-4, rel=0.02)  # the issue's 0.0135 %
     assert between.loss_shares == pytest.approx(alone.loss_shares, rel=1e-12, abs=1e-15)
+
+
+def test_a_plate_thicker_than_its_echo_points_to_the_block(cli):
+    """Issue 64: a 0.1 m plate under a 0.5 mm ball (200 radii) was refused with a 10-45 minute
+    finite-element command; its far side's echo returns 7.7 contact times after the ball has
+    left, so to the ball it is a block: the refusal now says to leave out --wall-thickness."""
+    code, _, err = _law(cli, "--wall-E", "63e9", "--wall-thickness", "0.1", "--radius", "0.0005",
+                        "--speed", "1")  # fmt: skip
+    last = err.strip().splitlines()[-1]
+    assert code == 2 and last.startswith("error: ") and "Traceback" not in err
+    assert "leave out --wall-thickness" in last and "7.67 contact times" in last
+    assert "wall_reference" not in last  # no finite-element command for a block

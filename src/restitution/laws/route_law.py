@@ -271,7 +271,7 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
     )
     from restitution.quasistatic.hertz_sphere import SPHERE_MASS
     from restitution.quasistatic.low_speed import LOW_SPEED_MODES
-    from restitution.quasistatic.plate import model_error, plate_impact, validity
+    from restitution.quasistatic.plate import echo_ratio, model_error, plate_impact, validity
 
     asked = sorted({float(x) for x in speeds if float(x) > 0})
     check_contact(nu, plate, asked)
@@ -339,6 +339,14 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
             else f"; a finite-element point answers instead (10-45 minutes of one core): "
             f"{command}; the next call serves it"
         )
+        slowest = min(float(v) for v in refused)
+        echo = echo_ratio(plate_impact(slowest, plate, nu=nu, mass=SPHERE_MASS), plate)
+        if echo > 1.0:  # the far side's echo returns after the contact: a block, in seconds
+            advice = (
+                f"; to the ball a plate of {plate.thickness:g} of its radii is a block (the "
+                f"echo of its far side returns {echo:.3g} contact times later, after the ball "
+                "has left): leave out --wall-thickness for the elastic half-space (seconds)"
+            )
         raise InputError(f"the thin-plate model serves none of the asked speeds: {reasons}{advice}")
     parameters = {
         "route": "Zener's thin plate, the coupled equation (restitution.quasistatic.plate)"

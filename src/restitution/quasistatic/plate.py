@@ -55,6 +55,7 @@ __all__ = [
     "STICKING_PARAMETER",
     "PlateImpact",
     "ball_vibrations",
+    "echo_ratio",
     "model_error",
     "plate_impact",
     "validity",
@@ -204,6 +205,13 @@ def _neglected(impact: PlateImpact, plate) -> tuple[float, float, float]:
     flexural = 2.0 * math.pi * (plate.bending_stiffness / (plate.density_ratio * h)) ** 0.25
     wavelength = flexural / math.sqrt(omega)
     return math.sqrt(impact.max_compression) / h, h / wavelength, h / c_l / impact.contact_time
+
+
+def echo_ratio(impact: PlateImpact, plate) -> float:
+    """The compressional waves' round trip across the plate over the contact time: above 1 the
+    echo of the plate's far side returns after the ball has left, and to the ball the plate is
+    a block (the elastic half-space)."""
+    return 2.0 * _neglected(impact, plate)[2]
 
 
 def validity(impact: PlateImpact, plate) -> list[str]:
