@@ -44,3 +44,24 @@ def test_the_fastest_modes_step_grows_as_weyl_says():
     v, alpha = np.array([0.3]), np.array([40.0])
     steps = [estimate_work(get_modes(0.33, count=n), v, alpha, settings).steps for n in (300, 940)]
     assert steps[1] / steps[0] == pytest.approx((940 / 300) ** 0.5, rel=0.02)
+
+
+def test_the_grid_states_its_work_before_it_starts(tmp_path):
+    """The points the store lacks, and their steps' time from the collisions' own estimate
+    (restitution.budget.collision_seconds of restitution.dynamics.steps.estimate_work), summed
+    over the grid's mode counts; a stored grid has nothing left."""
+    from restitution.budget import collision_seconds
+
+    settings = replace(defaults_for("disk"), velocities=(0.1,), n_modes=(40, 80))
+    specs = grid([0.33], settings)
+    work = check_grid(specs, tmp_path / "s.sqlite")
+    assert work.collisions == len(specs) == 6
+    by_hand = 0.0
+    for s in specs:
+        est = estimate_work(get_modes(0.33, count=s.n_modes), np.array([s.v]),
+                            np.array([s.alpha]), CollisionSettings(**dict(s.options)))  # fmt: skip
+        by_hand += collision_seconds(est.steps, s.n_modes)
+    # The check scales the step of N = 40 to N = 80 by Weyl's law where the fastest mode sets
+    # it, so the two sums agree to the 2 % of that law (test_the_fastest_modes_step_...).
+    assert work.seconds == pytest.approx(by_hand, rel=0.02)
+    assert "6 collisions to compute" in work.words()

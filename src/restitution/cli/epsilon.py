@@ -260,7 +260,8 @@ def epsilon(
     if alpha is not None:  # SweepSettings refuses a wall hardness that is not positive
         swept = replace(swept, alphas=(float(alpha),), alpha_scale="absolute")
     points = grid([nu], swept)
-    check_grid(points, store)  # in seconds, not after a cluster has failed every point
+    work = check_grid(points, store)  # in seconds, not after a cluster has failed each point
+    _announce(work, progress)
     report = _sweep(points, swept, store, workers, scheduler, progress, retry_failed)
     result = epsilon_at(nu, v, alpha=alpha, settings=settings, store=store, run=False)
     failed = len(result.failures) + len(report.lost)
@@ -329,6 +330,14 @@ def _unknown_errors(d: dict, settings: SweepSettings) -> dict:
         "errors_unknown": "fewer than 3 mode counts (or 2 walls) leave no residual to estimate "
         "an error from; give at least 3 --modes and 3 --alphas",
     }
+
+
+def _announce(work, progress) -> None:
+    """The grid's work (:class:`~restitution.limits.grid_check.GridWork`) on stderr where the
+    progress bar shows (``--progress``, or stderr a terminal): a refusal stays one line."""
+    shown = progress if progress is not None else sys.stderr.isatty()
+    if work.collisions and shown and not quiet():
+        note(f"note: {work.words()}")
 
 
 def _sweep(points, settings, store, workers, scheduler, progress, retry_failed):
@@ -560,7 +569,7 @@ def curve(
         )
     check_output_dir(out, "--out")  # before the sweep, not after it
     points = grid(nus, settings)
-    check_grid(points, store)
+    _announce(check_grid(points, store), progress)
     report = _sweep(points, settings, store, workers, scheduler, progress, retry_failed)
     curves = compute_curves(nus, settings, store=store, run=False)
     with Store(store) as db:

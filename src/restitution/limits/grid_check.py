@@ -18,27 +18,29 @@ the window.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
+from restitution import budget
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
 from restitution.limits.store import PointSpec, Store
 from restitution.limits.sweep import point_modes
 from restitution.status import Status
 
-__all__ = ["SLOWEST_COLLISION", "check_grid", "check_mode_sets"]
+__all__ = ["SLOWEST_COLLISION", "GridWork", "check_grid", "check_mode_sets"]
 
 SLOWEST_COLLISION = 1e-4
 """Slowest speed (``c``) of the shipped laws' collisions; slower ones are the low-speed
 theory's (``restitution quasistatic``, and ``restitution law``, which serves them)."""
 
 
-def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> None:
+def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> GridWork:
     """Refuse the grid ``specs`` when a collision of its smallest mode count would exceed its
     step or memory bound (:func:`restitution.dynamics.steps.check_work`). The store is checked
     first (a store that cannot be written is the first thing to fix), and only the points it
-    does not hold yet are checked.
+    does not hold yet are checked; returns their count and estimated time.
 
     Raises
     ------
@@ -56,8 +58,10 @@ def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> N
         if specs:
             db.check_writable()
     if not specs:
-        return
+        return GridWork(0, 0.0)
     smallest = min(s.n_modes for s in specs)
+    counts = sorted({s.n_modes for s in specs})
+    seconds = 0.0
     groups: dict = {}
     for s in specs:
         if s.n_modes == smallest:
@@ -81,6 +85,10 @@ def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> N
                         f"scaled as N^(1/{body_kind(first.geometry).dimension})), more than "
                         f"max_steps = {settings.max_steps}; use fewer modes (--modes)"
                     )
+                for n in counts:  # the same collision at every mode count of the grid
+                    grown = (n / smallest) ** (1.0 / body_kind(first.geometry).dimension)
+                    at_n = est.steps * (grown if est.limit == "body" else 1.0)
+                    seconds += budget.collision_seconds(at_n, n)
             except InputError as exc:
                 slow = ""
                 if s.v < SLOWEST_COLLISION:
@@ -94,6 +102,32 @@ def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> N
                     f"{option} {s.v:g}: no collision of the grid is run (alpha = {s.alpha:g}, "
                     f"N = {s.n_modes}): {exc}{slow}"
                 ) from None
+    return GridWork(len(specs), seconds)
+
+
+@dataclass(frozen=True)
+class GridWork:
+    """What a grid leaves to compute (:func:`check_grid`).
+
+    Attributes
+    ----------
+    collisions : int
+        Points the store does not hold.
+    seconds : float
+        Their estimated time on one core (:func:`restitution.budget.collision_seconds` of each
+        collision's estimated steps; the mode sets' building not counted).
+    """
+
+    collisions: int
+    seconds: float
+
+    def words(self) -> str:
+        """One line for the user."""
+        return (
+            f"{self.collisions} collisions to compute, their steps about "
+            f"{budget.format_duration(self.seconds)} of one core (estimated; starting the "
+            "workers and building the modes come on top)"
+        )
 
 
 def check_mode_sets(specs: Sequence[PointSpec], store=None) -> None:
