@@ -50,10 +50,12 @@ def test_law_exports_survive_a_full_disk(tmp_path, monkeypatch):
     path = law.to_json(tmp_path / "law.json")
     before = path.read_text()
     assert json.loads(before)
-    monkeypatch.setattr(json, "dumps", lambda *a, **k: "{" + "x" * 10)
+    other = EpsilonLaw.from_points(  # another law, so that a replaced file would show
+        0.33, np.array([0.01, 0.1, 0.2]), np.array([0.98, 0.94, 0.8]), np.full(3, 1e-3)
+    )
     monkeypatch.setattr(os, "replace", _full_disk)  # the rename fails, as on a full disk
     with pytest.raises(OSError):
-        law.to_json(path)
+        other.to_json(path)
     assert path.read_text() == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["law.json"]
 

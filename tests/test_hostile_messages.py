@@ -304,7 +304,9 @@ def test_no_rebound_is_not_called_outside_the_range(cli):
     code, out, err = _law(cli, *NO_REBOUND)
     assert code == 1 and "the law serves" not in err
     (line,) = [x for x in err.splitlines() if x.startswith("note: at 1 m/s: no value: no rebound")]
-    assert "the losses exceed the impact energy (viscosity 100 %" in line
+    # The contact alone: viscosity takes all but 2e-10 of the energy (its waves' estimate is
+    # beyond the one-pulse model there: tests/test_hostile_bounds.py).
+    assert "the contact alone returns epsilon = 1.5e-05 (viscosity 100 %" in line
     code, out, err = _law(cli, *NO_REBOUND, "--format", "json")
     d = json.loads(out)
     assert d["status"] == "outside" and "no rebound" in d["advice"]

@@ -350,13 +350,15 @@ class PlasticLaw:
         if not eps2 > 0.0 and waves > 1.0:
             # The waves' Rayleigh estimate, scaled from Hertz's pulse, above the impact energy
             # itself (3.9e3 times it for tau c/R = 5e3): the one-pulse model, the waves a small
-            # loss on the contact's pulse, does not hold; the number is not served.
-            note = (f"beyond the one-pulse model: its estimate of the elastic waves on this "
-                    f"pulse is {waves:.3g} times the impact energy ({ratio:.3g} times their loss "
-                    "on Hertz's pulse: the viscous force makes the pulse far sharper), so the "
-                    "waves are no small loss on it; the contact alone returns epsilon = "
-                    f"{actual.epsilon:.3g}; a relaxation time this long (tau c/R = "
-                    f"{tau / law.R:.3g}) is hardly a solid's")  # fmt: skip
+            # loss on the contact's pulse, does not hold; their number is not served.
+            parts = (("plastic flow", actual.plastic_work), ("viscosity", actual.viscous_work),
+                     ("the contact's stored energy", actual.stored_energy))  # fmt: skip
+            shares = ", ".join(f"{name} {100 * x:.3g} %" for name, x in parts if x)
+            note = (f"no rebound: the contact alone returns epsilon = {actual.epsilon:.3g} "
+                    f"({shares}), and the waves' estimate on its pulse, {waves:.3g} times the "
+                    f"impact energy ({ratio:.3g} times their loss on Hertz's pulse), is beyond "
+                    "the one-pulse model, which takes them as a small loss; a relaxation time "
+                    f"this long (tau c/R = {tau / law.R:.3g}) is hardly a solid's")  # fmt: skip
             return PlasticPoint(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
                                 **{**common, "loss_waves": None}, note=note)  # fmt: skip
         if not eps2 > 0.0:
