@@ -3,6 +3,7 @@ grid_check; issue 64: `epsilon --nu 0.33 --v 1e-9` ran ten failing collisions an
 
 from __future__ import annotations
 
+import os
 from dataclasses import replace
 
 import numpy as np
@@ -65,3 +66,22 @@ def test_the_grid_states_its_work_before_it_starts(tmp_path):
     # it, so the two sums agree to the 2 % of that law (test_the_fastest_modes_step_...).
     assert work.seconds == pytest.approx(by_hand, rel=0.02)
     assert "6 collisions to compute" in work.words()
+
+
+def test_a_ctrl_c_while_the_grid_is_checked_is_raised_after_it(tmp_path, monkeypatch):
+    """The check builds modes and compiles numba's kernels in this process; a KeyboardInterrupt
+    raised inside llvmlite's ctypes callback was printed as "Exception ignored" and lost, and
+    the sweep ran to its end (test_hostile's Ctrl-C at 0 s, make test-slow of this stop). A
+    Ctrl-C during the check is now raised when the check ends, and Ctrl-C works again after."""
+    import signal
+
+    import restitution.limits.grid_check as gc
+
+    def interrupted(*args):
+        os.kill(os.getpid(), signal.SIGINT)  # delivered while the check runs
+        return gc.GridWork(0, 0.0)
+
+    monkeypatch.setattr(gc, "_check_grid", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        check_grid([], tmp_path / "s.sqlite")
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler

@@ -17,7 +17,10 @@ the window.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import contextlib
+import signal
+import threading
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -36,6 +39,35 @@ SLOWEST_COLLISION = 1e-4
 theory's (``restitution quasistatic``, and ``restitution law``, which serves them)."""
 
 
+@contextlib.contextmanager
+def _interrupt_deferred() -> Iterator[None]:
+    """Ctrl-C held back until the block ends, then raised: the block builds modes and compiles
+    numba's kernels in this process, and a KeyboardInterrupt raised inside llvmlite's ctypes
+    callback is printed as "Exception ignored" and lost (the sweep then ran to its end). A second
+    Ctrl-C raises at once. Only where Ctrl-C raises KeyboardInterrupt (Python's default handler,
+    in the main thread)."""
+    if (
+        threading.current_thread() is not threading.main_thread()
+        or signal.getsignal(signal.SIGINT) is not signal.default_int_handler
+    ):
+        yield
+        return
+    got: list[int] = []
+
+    def hold(signum, frame) -> None:
+        if got:  # pressed again: the user insists, stop at once
+            raise KeyboardInterrupt
+        got.append(signum)
+
+    signal.signal(signal.SIGINT, hold)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+    if got:
+        raise KeyboardInterrupt
+
+
 def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> GridWork:
     """Refuse the grid ``specs`` when a collision of its smallest mode count would exceed its
     step or memory bound (:func:`restitution.dynamics.steps.check_work`). The store is checked
@@ -49,6 +81,11 @@ def check_grid(specs: Sequence[PointSpec], store=None, option: str = "--v") -> G
     StoreError, CacheError
         When the store cannot be written (the message says what to do).
     """
+    with _interrupt_deferred():
+        return _check_grid(specs, store, option)
+
+
+def _check_grid(specs: Sequence[PointSpec], store, option: str) -> GridWork:
     from restitution.dynamics.collision import CollisionSettings
     from restitution.dynamics.steps import check_work
 
@@ -148,6 +185,12 @@ def check_mode_sets(specs: Sequence[PointSpec], store=None) -> None:
     firsts: dict = {}
     for s in sorted(todo, key=lambda s: s.n_modes):
         firsts.setdefault(s.group, s)
+    with _interrupt_deferred():
+        _build_all(firsts, todo)
+
+
+def _build_all(firsts: dict, todo: list) -> None:
+    """:func:`check_mode_sets`'s building, window by window."""
     for first in firsts.values():
         try:
             point_modes(first)
