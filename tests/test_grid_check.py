@@ -82,6 +82,11 @@ def test_a_ctrl_c_while_the_grid_is_checked_is_raised_after_it(tmp_path, monkeyp
         return gc.GridWork(0, 0.0)
 
     monkeypatch.setattr(gc, "_check_grid", interrupted)
-    with pytest.raises(KeyboardInterrupt):
-        check_grid([], tmp_path / "s.sqlite")
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    # Python's own Ctrl-C, as a command has it (a pytest-xdist worker ignores SIGINT).
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            check_grid([], tmp_path / "s.sqlite")
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    finally:
+        signal.signal(signal.SIGINT, previous)
