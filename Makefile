@@ -26,16 +26,16 @@ paper-quick: $(STAMP)
 # slow-impact model: about 4 minutes a law),
 # then draw their slow-point figures into docs/figures.
 law: $(STAMP)
-	$(BIN)/python -m restitution.laws.production
+	$(BIN)/python -m restitution.laws.making.production
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
 	$(BIN)/python -m restitution.reproduction.figures.disk_low_speed --figures docs/figures
 
 # The sphere's laws (law_sphere_nu<nu>.json), through the same pipeline (about 40 minutes from
-# a cold store, 46 more for the points where epsilon(v) turns (restitution.laws.refine), then 10
+# a cold store, 46 more for the points where epsilon(v) turns (restitution.laws.making.refine), then 10
 # minutes of low-speed points), then their figures in docs/figures (beside cylinders; the slow
 # losses of three routes).
 law-sphere: $(STAMP)
-	$(BIN)/python -m restitution.laws.production --geometry sphere
+	$(BIN)/python -m restitution.laws.making.production --geometry sphere
 	$(BIN)/python -m restitution.reproduction.figures.sphere_cylinder --figures docs/figures
 	$(BIN)/python -m restitution.reproduction.figures.sphere_low_speed --figures docs/figures
 
@@ -43,14 +43,14 @@ law-sphere: $(STAMP)
 # 2052 collisions, about 150 minutes of one core from a cold store) and of steel with glass
 # (228 collisions, about 15 minutes), then their figure in docs/figures.
 law-pair: $(STAMP)
-	$(BIN)/python -m restitution.laws.production --geometry pair
+	$(BIN)/python -m restitution.laws.making.production --geometry pair
 	$(BIN)/python -m restitution.reproduction.figures.pair_epsilon --figures docs/figures
 
 # The laws of two spheres (law_sphere_pair_*.json: radius ratios 1.5, 2 and 4 at nu = 0.3, steel
 # on glass of one size), by their low-speed route alone up to its reach (about 4 minutes a law;
 # docs/spheres.md, section "Two spheres").
 law-sphere-pair: $(STAMP)
-	$(BIN)/python -m restitution.laws.production --geometry sphere-pair
+	$(BIN)/python -m restitution.laws.making.production --geometry sphere-pair
 	$(BIN)/python -m restitution.reproduction.figures.sphere_pairs --figures docs/figures
 
 # epsilon(w) of damping steel grains (docs/damping.md): the elastic laws and the viscous loss.

@@ -18,9 +18,10 @@ be otherwise idle).
    first in odd ones. Prints each speed's two values and their difference in combined errors,
    the min, median and max of the per-pair time ratio, and today's full time estimated from the
    pairs' mean per speed (an estimate: said so).
-3. **Both productions, whole** (``--full``): today's (:func:`restitution.laws.production.build`
-   with the production's groups and its refining round, a fresh store) and the residual one
-   (:func:`restitution.laws.residual_law.residual_law` of every production speed with its
+3. **Both productions, whole** (``--full``): today's
+   (:func:`restitution.laws.making.production.build` with the production's groups and its
+   refining round, a fresh store) and the residual one
+   (:func:`restitution.laws.making.residual_law.residual_law` of every production speed with its
    refining round, from nothing kept), one after the other on ``--workers`` workers, timed;
    then the largest difference in combined errors at the speeds both computed. The low-speed
    points are left out of both: both join the same ones (their cost, from the kind's plan, is
@@ -48,10 +49,11 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from restitution._paths import cache_root
-from restitution.laws.compute import production_groups, seconds_per_low_point
 from restitution.laws.law import law
-from restitution.laws.production import _steel_glass, low_speeds_of
-from restitution.laws.residual_law import residual_filename, residual_law, residual_speeds
+from restitution.laws.low_speed import low_speeds_of
+from restitution.laws.making.compute import production_groups, seconds_per_low_point
+from restitution.laws.making.production import _steel_glass
+from restitution.laws.making.residual_law import residual_filename, residual_law, residual_speeds
 from restitution.limits.curves import compute_curves
 from restitution.limits.residual_point import residual_point
 from restitution.limits.run_options import Executor
@@ -150,7 +152,7 @@ def _whole_residual(args, partner, folder):
 
 
 def _whole_baseline(args, partner, folder):
-    from restitution.laws.production import build
+    from restitution.laws.making.production import build
 
     (path,) = build(folder, [args.nu], production_groups(args.geometry, partner),
                     store=os.path.join(folder, "store.sqlite"), low_speeds=(),

@@ -156,3 +156,129 @@ def test_the_kind_check_sees_literals_but_not_prose():
     assert sorted(line.split(" names")[0] for line in found) == ["laws/x.py:4", "laws/x.py:5"]
     assert "names the kind 'disk'; read an attribute" in found[0] + found[1]
     assert _kind_literals(Path("bodies/disk/kind.py"), ast.parse(source), names) == []
+
+
+# -- laws/: serving apart from making, no cycle, no module over 800 lines (issue 60) -----------
+
+MAKING = ("laws", "making")
+"""The making side of the laws (production, laws computed on demand, refinement, judges,
+offline checks); the rest of ``laws/`` serves."""
+
+MAX_LAW_MODULE_LINES = 800
+
+
+def _module_names() -> dict[str, Path]:
+    """``{dotted module name: path}`` of every module of the package (a package by its
+    ``__init__``)."""
+    out = {}
+    for path in SRC.rglob("*.py"):
+        parts = ("restitution", *path.relative_to(SRC).with_suffix("").parts)
+        if parts[-1] == "__init__":
+            parts = parts[:-1]
+        out[".".join(parts)] = path
+    return out
+
+
+def _module_of(name: str, modules) -> str | None:
+    """The module an imported dotted name lives in: the longest prefix that is a module."""
+    parts = name.split(".")
+    for end in range(len(parts), 0, -1):
+        candidate = ".".join(parts[:end])
+        if candidate in modules:
+            return candidate
+    return None
+
+
+def _law_graph(modules) -> dict[str, set[str]]:
+    """Imports between modules of ``laws/`` (inside functions too), ``{module: {imported}}``;
+    an import of a package's submodule does not count its ``__init__`` as well."""
+    graph = {}
+    for name, path in modules.items():
+        if not name.startswith("restitution.laws"):
+            continue
+        edges = set()
+        for _, imported in _imports(ast.parse(path.read_text())):
+            target = _module_of(imported, modules)
+            if target and target.startswith("restitution.laws") and target != name:
+                edges.add(target)
+        graph[name] = edges
+    return graph
+
+
+def _cycles(graph) -> list[list[str]]:
+    """The strongly connected components of more than one module (Tarjan)."""
+    index, low, stack, on, found = {}, {}, [], set(), []
+    counter = [0]
+
+    def visit(v):
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on.add(v)
+        for w in graph.get(v, ()):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                component.append(w)
+                if w == v:
+                    break
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def _is_making(name: str) -> bool:
+    return name.split(".")[1:3] == list(MAKING)
+
+
+def _serving_imports_making(graph) -> list[str]:
+    return [f"{a} imports {b}" for a, edges in sorted(graph.items()) if not _is_making(a)
+            for b in sorted(edges) if _is_making(b)]  # fmt: skip
+
+
+def test_serving_never_imports_making():
+    assert _serving_imports_making(_law_graph(_module_names())) == []
+
+
+def test_laws_have_no_import_cycle():
+    assert _cycles(_law_graph(_module_names())) == []
+
+
+def test_the_law_checks_see_cycles_and_wrong_way_imports():
+    graph = {
+        "restitution.laws.a": {"restitution.laws.b"},
+        "restitution.laws.b": {"restitution.laws.making.c"},
+        "restitution.laws.making.c": {"restitution.laws.a"},
+        "restitution.laws.making.d": {"restitution.laws.a"},
+    }
+    assert _cycles(graph) == [
+        ["restitution.laws.a", "restitution.laws.b", "restitution.laws.making.c"]
+    ]
+    assert _serving_imports_making(graph) == [
+        "restitution.laws.b imports restitution.laws.making.c"
+    ]
+    # An import inside a function is an edge: the cycle of issue 60 was hidden that way.
+    source = "def f():\n    from restitution.laws.making.compute import plan\n"
+    modules = {"restitution.laws.making.compute": Path("x")}
+    assert [_module_of(n, modules) for _, n in _imports(ast.parse(source))] == [
+        "restitution.laws.making.compute"
+    ]
+
+
+@pytest.mark.parametrize(
+    "name", sorted(n for n in _module_names() if n.startswith("restitution.laws"))
+)
+def test_no_law_module_is_over_800_lines(name):
+    lines = len(_module_names()[name].read_text().splitlines())
+    assert lines <= MAX_LAW_MODULE_LINES, f"{name}: {lines} lines; split it by job"

@@ -5,7 +5,7 @@ interpolation term (:meth:`EpsilonLaw.interpolation_err`). Checked here: the ter
 arithmetic on laws whose interpolation error is known (a straight line: none; a parabola with
 its vertex between two points: PCHIP misses it), and the coverage of the shipped laws' served
 errors against epsilon computed directly between their points (the stored comparisons of
-``python -m restitution.laws.between``; ``-m slow`` recomputes a sample of them).
+``python -m restitution.laws.making.between``; ``-m slow`` recomputes a sample of them).
 """
 
 from __future__ import annotations
@@ -57,7 +57,7 @@ def test_leave_one_out_is_the_prediction_without_the_point():
 def test_the_shipped_sphere_law_resolves_its_maximum():
     # An independent modal code put a maximum of the sphere's epsilon(v) at nu = 0.3 near
     # v = 0.0203, between the computed 0.0189 and 0.0228 (issue 45). The refinement scan
-    # (restitution.laws.refine) added a point in that interval; the served value at the
+    # (restitution.laws.making.refine) added a point in that interval; the served value at the
     # direct maximum (0.999265 at v = 0.0206, tests/data/between_sphere_nu0.3.json) now
     # misses by less than a fifth of what PCHIP between 0.0189 and 0.0228 missed (1.6e-4).
     served = law(0.3, geometry="sphere")
@@ -108,7 +108,7 @@ def test_served_errors_cover_the_direct_values_between_points(path):
 def test_a_stored_direct_value_is_what_the_production_route_gives(path, tmp_path):
     """The cheapest-looking stored direct value (the fastest speed), recomputed now, agrees
     with the file within its own error (a regression check of the stored values)."""
-    from restitution.laws.between import direct_points
+    from restitution.laws.making.between import direct_points
 
     d = json.loads(path.read_text())
     row = max(d["rows"], key=lambda r: r["v"])

@@ -24,9 +24,9 @@ import pytest
 from _cli_checks import one_line_error
 
 from restitution.errors import CorruptFileError
-from restitution.laws import compute
-from restitution.laws import residual_law as rl
 from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.making import compute
+from restitution.laws.making import residual_law as rl
 
 STEEL = ("--E", "200e9", "--nu", "0.27", "--rho", "7800", "--geometry", "cylinder", "--against",
          "wall")  # fmt: skip
@@ -116,7 +116,7 @@ def test_a_file_without_a_digest_still_loads(tmp_path):
 
 
 def _fake_build(calls, eps):
-    """A stand-in for :func:`restitution.laws.production.build`: writes the constant law
+    """A stand-in for :func:`restitution.laws.making.production.build`: writes the constant law
     ``eps`` where the production would write the law, and counts its calls."""
 
     def build(out_dir, nus, groups, **kw):
@@ -147,7 +147,7 @@ def test_a_damaged_cached_law_is_computed_again_not_served(cli, cache, monkeypat
         path.write_text(json.dumps(doc))
     damaged = path.read_text()
     calls = []
-    monkeypatch.setattr("restitution.laws.production.build", _fake_build(calls, 0.97))
+    monkeypatch.setattr("restitution.laws.making.production.build", _fake_build(calls, 0.97))
     args = ("law", *STEEL, "--speed", "1000", "--compute", "--force", "--json")
     code, out, err = cli(*args)
     assert code == 0, err
@@ -175,7 +175,7 @@ def test_computed_law_returns_the_recomputed_file_with_one_warning(cache, monkey
     _constant(NU, 0.9932).to_json(path)
     _change_one_digit(path)
     assert not compute.plan(NU).exists
-    monkeypatch.setattr("restitution.laws.production.build", _fake_build([], 0.97))
+    monkeypatch.setattr("restitution.laws.making.production.build", _fake_build([], 0.97))
     with pytest.warns(UserWarning, match="changed after it was written") as record:
         served = compute.computed_law(NU, force=True)
     assert len(record) == 1

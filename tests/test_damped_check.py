@@ -1,7 +1,7 @@
 """The damped modal model against the quasistatic viscous law (issue 29, docs/damping.md).
 
 The stored points (``laws/data/damped_reference.json``, written by
-``python -m restitution.laws.damped_check``) are the modal model with every mode damped,
+``python -m restitution.laws.making.damped_check``) are the modal model with every mode damped,
 extrapolated alpha, N -> infinity through the production sweeps; the comparison is recomputed
 here from the quasistatic route and the shipped elastic laws."""
 
@@ -11,7 +11,7 @@ import math
 
 import pytest
 
-from restitution.laws.damped_check import CHECK_POINTS, compare, load_reference, modal_point
+from restitution.laws.making.damped_check import CHECK_POINTS, compare, load_reference, modal_point
 
 
 @pytest.fixture(scope="module")
@@ -109,7 +109,7 @@ def test_trajectory_diagnostic_at_a_small_disk():
     Regression values of this package (measured once, not from an independent route): the damped
     run's extra loss 1.018 times the quasistatic loss on the elastic body's own path, that path's
     loss 0.937 of the 2D law's; at N = 1880 the same wall gave 1.013 and 0.933."""
-    from restitution.laws.damped_check import trajectory_check
+    from restitution.laws.making.damped_check import trajectory_check
 
     c = trajectory_check("disk", 0.33, 0.02, 0.05, 400, 869.0)
     assert 0 < c.modal < 1 and 0 < c.on_path < 1 and 0 < c.law < 1

@@ -51,7 +51,7 @@ from restitution.fem.pair_reference import load_pair_reference
 from restitution.fem.reference import load_reference, reference_filename
 from restitution.laws.law import EpsilonLaw, law, law_filename
 from restitution.laws.law_nu import shipped_nus
-from restitution.laws.production import route_pair_laws
+from restitution.laws.making.production import route_pair_laws
 from restitution.limits.extrapolation import combined_limit
 from restitution.provenance import code_version
 

@@ -200,8 +200,8 @@ def _shipped() -> dict:
 
 
 class _ModalPoints:
-    """The modal pair's extrapolated points of a judge file (restitution.laws.pair_judge) as a
-    law: epsilon and its error at the file's speeds only."""
+    """The modal pair's extrapolated points of a judge file (restitution.laws.making.pair_judge) as
+    a law: epsilon and its error at the file's speeds only."""
 
     def __init__(self, path: Path):
         doc = json.loads(path.read_text())
@@ -270,7 +270,7 @@ def test_fem_sphere_pairs_agree_with_the_shipped_laws_at_low_speed():
 )
 def test_fem_sphere_pairs_agree_with_the_modal_pair(name):
     """The stored FEM points at ``w = 0.024`` against the modal pair there (extrapolated in
-    ``alpha`` on the same walls and in ``N``, restitution.laws.pair_judge): within 2 combined
+    ``alpha`` on the same walls and in ``N``, restitution.laws.making.pair_judge): within 2 combined
     errors."""
     modal = _ModalPoints(DATA / name)
     points = [

@@ -196,6 +196,7 @@ def test_a_full_disk_during_an_export_names_the_option_and_the_folder(cli, tmp_p
     monkeypatch.setattr(fs, "_digest", _full_disk)  # the first read-back of a staged file
     out = tmp_path / "out"
     code, _, err = cli("law", "--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--shape",
-                       "cylinder", "--against", "wall", "--speed", "1", "--export", str(out))  # fmt: skip
+                       "cylinder", "--against", "wall", "--speed", "1",
+                       "--export", str(out))  # fmt: skip
     one_line_error(code, err, f"--export {out}", "No space left", "free some space")
     assert _names(out) == []

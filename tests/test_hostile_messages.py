@@ -162,7 +162,7 @@ _MESSAGE_MODULES = [
     "laws/route_law.py",
     "laws/wall_route.py",
     "laws/wall_grid.py",
-    "laws/compute.py",
+    "laws/making/compute.py",
     "laws/law_nu.py",
     "cli/law.py",
     "cli/law_text.py",

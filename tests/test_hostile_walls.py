@@ -244,7 +244,7 @@ def test_the_split_between_grid_speeds_is_the_routes_own_at_that_speed():
     grid speeds the split is now the route's at the speed itself: the grid law and the law of
     the asked speed alone (the answer without --export) give one split, to round-off."""
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.production import low_speed_record
+    from restitution.laws.low_speed import low_speed_record
     from restitution.laws.route_law import wall_law
     from restitution.laws.si_law import SILaw
     from restitution.laws.wall_route import route_at

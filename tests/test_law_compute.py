@@ -17,7 +17,7 @@ import pytest
 from _cli_checks import one_line_error
 
 from restitution.bodies.kinds import KINDS, SweepPlan
-from restitution.laws import compute, production
+from restitution.laws.making import compute, production
 from restitution.limits.sweep import SweepSettings
 
 STEEL = ("--E", "200e9", "--nu", "0.27", "--rho", "7800", "--geometry", "cylinder", "--against",
@@ -49,7 +49,7 @@ def test_computes_the_exact_nu_once_then_serves_the_file(cli, tiny, monkeypatch)
     code, out, err = cli(*args, "--json")
     assert code == 0, err
     # The estimate, before the work: 27 collisions and at most one refining point in each of
-    # the 2 intervals (3 x 3 grids; restitution.laws.refine).
+    # the 2 intervals (3 x 3 grids; restitution.laws.making.refine).
     assert "45 collisions" in err and "into" in err
     d = json.loads(out)
     path = tiny / "cache" / "laws" / "law_nu0.369863.json"
@@ -67,14 +67,14 @@ def test_computes_the_exact_nu_once_then_serves_the_file(cli, tiny, monkeypatch)
     def refuse(*a, **k):
         raise AssertionError("computed again")
 
-    monkeypatch.setattr("restitution.laws.production.build", refuse)
+    monkeypatch.setattr("restitution.laws.making.production.build", refuse)
     code, out3, err = cli(*args, "--json")
     assert code == 0 and "using the law computed before" in err
     assert json.loads(out3)["points"] == d["points"]
 
 
 def test_a_shipped_nu_is_not_computed(cli, tiny, monkeypatch):
-    monkeypatch.setattr("restitution.laws.production.build", pytest.fail)
+    monkeypatch.setattr("restitution.laws.making.production.build", pytest.fail)
     code, out, err = cli("law", "--E", "1e9", "--nu", "0.33", "--rho", "1000", "--geometry",
                          "thin-disk", "--against", "wall", "--speed", "1", "--compute")  # fmt: skip
     assert code == 0 and "a shipped law serves nu = 0.33; nothing to compute" in err

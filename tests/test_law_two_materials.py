@@ -27,9 +27,10 @@ from numpy.testing import assert_allclose
 from restitution.bodies.pair.partner import Partner
 from restitution.cli import main
 from restitution.errors import InputError
-from restitution.laws import compute, exports
+from restitution.laws import exports
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.production import PAIR_WALL_GROUPS
+from restitution.laws.making import compute
+from restitution.laws.making.production import PAIR_WALL_GROUPS
 from restitution.laws.si_law import law_target, pair_partner, si_law
 from restitution.laws.units import Grain
 
@@ -400,7 +401,7 @@ def _data(name: str) -> Path:
 
 
 def test_the_shipped_pair_of_materials_is_steel_and_glass_as_the_cli_reads_them():
-    from restitution.laws.production import PAIR_TWO_MATERIALS
+    from restitution.laws.making.production import PAIR_TWO_MATERIALS
 
     ((nu, partner),) = PAIR_TWO_MATERIALS
     assert nu == pytest.approx(NU1_2D, rel=1e-12) and partner == PARTNER

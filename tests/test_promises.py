@@ -71,7 +71,7 @@ def test_below_the_slowest_point_the_low_speed_route_answers(steel_sphere):
     from Rayleigh's estimate, which holds the slower the better, so it answers there, computed
     at that speed (no interpolation), and agrees with the law's own slowest point where they
     meet."""
-    from restitution.laws.production import low_speed_points
+    from restitution.laws.low_speed import low_speed_points
 
     lo, _ = steel_sphere.speed_range_m_s
     slow, at = steel_sphere.points([0.1 * lo, lo])
@@ -94,10 +94,10 @@ def test_the_advice_below_a_law_works_when_followed():
     served = law(0.3, geometry="sphere")
     with pytest.raises(InputError) as info:
         served.epsilon(1e-7)
-    call = re.search(r"(restitution\.laws\.production\.low_speed_points\(.*?\))(?=, or)",
+    call = re.search(r"(restitution\.laws\.low_speed\.low_speed_points\(.*?\))(?=, or)",
                      str(info.value))  # fmt: skip
     assert call is not None, str(info.value)
-    import restitution.laws.production  # noqa: F401 (the call's module)
+    import restitution.laws.low_speed  # noqa: F401 (the call's module)
 
     records, _ = eval(call.group(1), {"restitution": restitution, "v": 1e-7})  # noqa: S307
     assert records[0]["v"] == 1e-7 and 1.0 - records[0]["epsilon"] < 1e-7
@@ -109,7 +109,7 @@ def test_the_advice_below_a_law_works_when_followed():
 def test_a_law_refused_off_the_grid_states_the_time_to_compute_it(cli, shape, nu):
     """Issue 45: the refusal names the collisions and the time of the computation it
     advises (the estimate of `law --compute`, laws.compute.plan)."""
-    from restitution.laws.compute import plan
+    from restitution.laws.making.compute import plan
     from restitution.laws.si_law import Grain
 
     code, out, err = cli("law", "--E", "1e9", "--nu", str(nu), "--rho", "1000", "--shape",

@@ -1,7 +1,8 @@
 """Speeds added where epsilon(v) turns between a law's computed points (issue 45, item 1).
 
-The scan (:func:`restitution.laws.refine.turning_speeds`) compares PCHIP with a cubic spline in
-``ln v`` inside every interval; :func:`refine` computes a point where they differ by more than
+The scan (:func:`restitution.laws.making.refine.turning_speeds`) compares PCHIP with a cubic
+spline in ``ln v`` inside every interval; :func:`refine` computes a point where they differ by
+more than
 the points' errors, with the neighbouring point's settings. Checked: the scan on laws whose
 shape is known (a line: nothing; a vertex between two points: that interval, near the vertex),
 the refinement of a small real disk law (the new points are the production route's values at
@@ -17,7 +18,7 @@ import pytest
 
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw, law
-from restitution.laws.refine import neighbour_settings, refine, turning_speeds
+from restitution.laws.making.refine import neighbour_settings, refine, turning_speeds
 from restitution.limits.curves import compute_curves, epsilon_at
 from restitution.limits.sweep import defaults_for
 

@@ -1,5 +1,5 @@
 """Two runs of one law by the residual route never compute a speed twice, and a full cache disk
-ends a run in one line (hostile-input issue): :mod:`restitution.laws.residual_law` with the
+ends a run in one line (hostile-input issue): :mod:`restitution.laws.making.residual_law` with the
 claims of :mod:`restitution.limits.claims`.
 
 No collision runs: the point function is replaced by :func:`_fake_point`, which sleeps briefly and
@@ -23,8 +23,8 @@ import pytest
 import restitution.limits.claims as claims_module
 from restitution import atomic
 from restitution.errors import OutputError
-from restitution.laws import residual_law as rl
 from restitution.laws.law import EpsilonLaw
+from restitution.laws.making import residual_law as rl
 from restitution.limits.run_options import Executor
 
 SPEEDS = (0.1, 0.2, 0.3, 0.4)

@@ -1,4 +1,4 @@
-"""A law through the static residual (issue 46, item 3): :mod:`restitution.laws.residual_law`
+"""A law through the static residual (issue 46, item 3): :mod:`restitution.laws.making.residual_law`
 and ``restitution law --compute --route residual``."""
 
 import json
@@ -7,8 +7,8 @@ import pytest
 
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
-from restitution.laws import residual_law as rl
 from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.making import residual_law as rl
 from restitution.limits.run_options import Executor
 
 GLASS_CYLINDER = ["--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--shape", "cylinder"]

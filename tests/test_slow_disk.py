@@ -14,8 +14,8 @@ from scipy.integrate import solve_ivp
 
 from restitution.bodies.cache import get_modes
 from restitution.errors import InputError
-from restitution.laws.law import law_filename
-from restitution.laws.production import SHIPPED_NUS, leave_one_out
+from restitution.laws.law import law_filename, leave_one_out
+from restitution.laws.making.production import SHIPPED_NUS
 from restitution.quasistatic.hertz import contact_law, quasistatic_collision
 from restitution.quasistatic.rayleigh import rayleigh_energy
 from restitution.quasistatic.slow_disk import (
@@ -202,7 +202,7 @@ def test_shipped_disk_laws_continue_to_the_low_speeds(name):
     """Every shipped disk law carries the low-speed points at production.DISK_LOW_SPEEDS, below
     its modal points, flagged 'quasistatic'; each point's error is the model's plus what PCHIP
     through its neighbours misses (leave_one_out of the stored losses)."""
-    from restitution.laws.production import DISK_LOW_SPEEDS
+    from restitution.laws.making.production import DISK_LOW_SPEEDS
 
     meta = json.loads((_DATA / name).read_text())["metadata"]
     low = [p for p in meta["points"] if p.get("route") == "quasistatic"]
@@ -240,7 +240,7 @@ def _recompute_sample(name):
     import warnings
 
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.production import low_speed_points
+    from restitution.laws.low_speed import low_speed_points
     from restitution.provenance import quasistatic_code_version
 
     served = EpsilonLaw.from_json(_DATA / name)
@@ -253,7 +253,7 @@ def _recompute_sample(name):
     for p, q in zip(sample, redo, strict=True):
         assert q["energy_loss"] == pytest.approx(p["energy_loss"], rel=1e-9), (
             f"{name}: the low-speed point v = {p['v']} moved; regenerate with `python -m "
-            "restitution.laws.production --low-speeds-only` (--geometry pair for two disks)"
+            "restitution.laws.making.production --low-speeds-only` (--geometry pair for two disks)"
         )
         assert q["estimate_err"] == pytest.approx(p["estimate_err"], rel=1e-9)
     now = quasistatic_code_version("disk", "slow-modal", pair=served.partner is not None)
@@ -302,7 +302,7 @@ def test_the_pair_model_meets_the_pair_law():
 
 def _pair_files():
     from restitution.bodies.pair.partner import Partner
-    from restitution.laws.production import PAIR_NUS, PAIR_RADIUS_RATIOS, PAIR_TWO_MATERIALS
+    from restitution.laws.making.production import PAIR_NUS, PAIR_RADIUS_RATIOS, PAIR_TWO_MATERIALS
 
     return [
         law_filename(nu, "disk", Partner(radius_ratio=r))
@@ -315,7 +315,7 @@ def _pair_files():
 def test_shipped_pair_laws_continue_to_the_low_speeds(name):
     """Every shipped law of two disks carries the low-speed points at
     production.PAIR_LOW_SPEEDS below its modal points, with the same error rule as the disk's."""
-    from restitution.laws.production import PAIR_LOW_SPEEDS
+    from restitution.laws.making.production import PAIR_LOW_SPEEDS
 
     meta = json.loads((_DATA / name).read_text())["metadata"]
     low = [p for p in meta["points"] if p.get("route") == "quasistatic"]

@@ -25,10 +25,11 @@ from scipy.interpolate import PchipInterpolator
 from restitution.bodies.kinds import body_kind
 from restitution.cli import main
 from restitution.errors import InputError
-from restitution.laws import exports, production
-from restitution.laws.build import law_from_store
+from restitution.laws import exports
 from restitution.laws.law import EpsilonLaw, law, law_filename
 from restitution.laws.law_nu import NuInterpolatedLaw, law_for, shipped_nus
+from restitution.laws.making import production
+from restitution.laws.making.build import law_from_store
 from restitution.laws.si_law import SILaw, si_law
 from restitution.laws.units import Grain
 from restitution.limits.curves import compute_curves
@@ -516,7 +517,7 @@ def test_shipped_sphere_low_speed_points_have_not_moved(name):
     import warnings
 
     from restitution import get_modes
-    from restitution.laws.production import low_speed_points
+    from restitution.laws.low_speed import low_speed_points
     from restitution.provenance import quasistatic_code_version
     from restitution.quasistatic.low_speed import LOW_SPEED_MODES, interpolation_error
 

@@ -329,7 +329,7 @@ def _judged(name):
 @pytest.mark.parametrize("name", JUDGED)
 def test_modal_pairs_meet_the_route_within_their_errors(name):
     """Stored modal points of two pairs (radius ratio 2; steel on glass of one size; windows
-    of 2250-18000 modes of both spheres, three walls, python -m restitution.laws.pair_judge)
+    of 2250-18000 modes of both spheres, three walls, python -m restitution.laws.making.pair_judge)
     against the route computed now: within one combined error up to eight times the route's
     reach (measured |z| <= 0.68 at 7 speeds; 4 of 7 modal points pass every asymptotic check),
     as the sphere on the wall meets it up to 0.02 (6.7 times its reach, test_sphere_low_speed).
@@ -360,7 +360,7 @@ def test_modal_pairs_meet_the_route_within_their_errors(name):
 def test_the_judges_cheapest_collision_has_not_moved(name):
     """The stale-data test of the judge files: the cheapest stored collision (the smallest
     window, the softest wall, the slowest speed) recomputed."""
-    from restitution.laws.pair_judge import settings_for
+    from restitution.laws.making.pair_judge import settings_for
 
     data = _judged(name)
     partner = Partner.from_key(data["partner"])
@@ -384,7 +384,7 @@ def _pair_files():
 
 def test_the_shipped_pair_laws_are_the_planned_ones():
     from restitution.laws.law import law_filename
-    from restitution.laws.production import route_pair_laws
+    from restitution.laws.making.production import route_pair_laws
 
     planned = sorted(law_filename(nu, g, p) for g, nu, p in route_pair_laws())
     assert _pair_files() == planned and len(planned) == 4
@@ -400,7 +400,7 @@ def test_shipped_pair_low_speed_points_have_not_moved(name):
     import warnings
     from importlib import resources
 
-    from restitution.laws.production import low_speed_points, low_speeds_of
+    from restitution.laws.low_speed import low_speed_points, low_speeds_of
     from restitution.provenance import quasistatic_code_version
     from restitution.quasistatic.low_speed import PAIR_LOW_SPEED_MODES, interpolation_error
 

@@ -98,7 +98,7 @@ class ProductionPlan:
         Measured wall time of one low-speed point, s.
     residual_seconds_per_point : float or None
         Measured wall time of one point by the residual route
-        (:mod:`restitution.laws.residual_law`) on one core, s; ``None``: the kind has no
+        (:mod:`restitution.laws.making.residual_law`) on one core, s; ``None``: the kind has no
         static residual.
     """
 
@@ -202,7 +202,7 @@ class BodyKind:
         What ``v`` and ``epsilon`` of its laws on the wall mean.
     low_speed_route : str or None
         Name of the route of its slow impacts on the wall (the quasistatic layer's routes,
-        ``restitution.laws.production``); ``None``: none.
+        ``restitution.laws.making.production``); ``None``: none.
     pair_low_speed_route : str or None
         The same for two bodies of this kind.
     quasistatic_law : str or None

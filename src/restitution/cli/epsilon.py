@@ -691,10 +691,11 @@ _PRODUCTION = (
 def _production(ctx, nus, geometry, partner, out, store, workers, progress, force, fmt, inputs,
                 units) -> None:  # fmt: skip
     """``curve --production``: each law with the production settings
-    (:mod:`restitution.laws.compute`), written as JSON, CSV and table into ``out``."""
-    from restitution.laws.compute import check_plan, plan, production_groups
+    (:mod:`restitution.laws.making.compute`), written as JSON, CSV and table into ``out``."""
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.production import build, low_speeds_of
+    from restitution.laws.low_speed import low_speeds_of
+    from restitution.laws.making.compute import check_plan, plan, production_groups
+    from restitution.laws.making.production import build
 
     refuse_ignored(
         ctx,

@@ -14,8 +14,8 @@ and the error combines both as for the wall (the same code,
 The walls are those the modal pair's sweeps use: ``alpha = P / delta(w)`` with the products
 ``P`` of the kind (:func:`restitution.limits.defaults.default_products`: the disk's
 :data:`restitution.limits.defaults.ALPHA_PRODUCTS` 40, 80, 160; the sphere's 80, 160, 320, as
-its modal pair judge :mod:`restitution.laws.pair_judge` and its FEM on the wall take them) and
-``delta`` the pair's quasistatic compression
+its modal pair judge :mod:`restitution.laws.making.pair_judge` and its FEM on the wall take them)
+and ``delta`` the pair's quasistatic compression
 :meth:`restitution.bodies.pair.partner.Partner.max_compression`. ``geometry`` names the kind of
 both bodies (default the disk); a sphere's walls need the first sphere's ``nu``.
 """

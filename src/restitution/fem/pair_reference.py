@@ -119,8 +119,8 @@ SPHERE_PAIR_REFERENCE_POINTS = (
 radius ratios 2 and 1.5 of one material and steel on glass of one size (:data:`STEEL_GLASS`).
 At ``w = 0.002``, inside the reach of the shipped pair laws' low-speed route (their ``v_max``
 0.0033, 0.0040 and 0.0057), and at ``w = 0.024``, a speed of the modal pair judge
-(:mod:`restitution.laws.pair_judge`, ``tests/data/sphere_pair_judge_*.json``). Levels 0-2 with
-the sphere's grading, as for the sphere on the wall. The shipped file holds the first four
+(:mod:`restitution.laws.making.pair_judge`, ``tests/data/sphere_pair_judge_*.json``). Levels 0-2
+with the sphere's grading, as for the sphere on the wall. The shipped file holds the first four
 (1220-1400 s a point at ``w = 0.002``, 360-440 s at ``0.024``, one core); the fifth, ratio 1.5
 at ``w = 0.002``, is asked for but not yet computed (docs/spheres.md)."""
 

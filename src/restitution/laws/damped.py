@@ -59,7 +59,7 @@ DISK_VISCOUS_SPREAD = 0.13
 """The disk's viscous loss differs from the quasistatic viscous collision's on the 2D law by up to
 this fraction of it. The damped modal disk measured 0.89 and 0.885 of it at ``v = 0.001`` and
 ``0.005``, 1.055-1.085 at ``v = 0.02`` (``nu = 0.33``; the same ratio at ``tau = 0.01, 0.025,
-0.05``; :mod:`restitution.laws.damped_check`). The damped slow-impact model
+0.05``; :mod:`restitution.laws.making.damped_check`). The damped slow-impact model
 (:mod:`restitution.quasistatic.slow_damped`), which reproduces the modal disk at ``v = 0.001``,
 gives 0.96-1.13 from ``v = 1e-7`` to ``1e-4`` (``tau = 0.001-0.05``): the largest deviation,
 0.127 at ``v = 1e-4``, ``tau = 0.01``, is this spread (docs/damping.md). The low modes take part
@@ -70,12 +70,12 @@ SPHERE_SIZE_COEFFICIENT = 0.44
 """The finite sphere's viscous loss exceeds the one on Hertz's law by up to this times
 ``sqrt(delta_max / R)`` (relative): its quasistatic contact is stiffer than Hertz's half-space
 (docs/spheres.md), and the damped modal sphere dissipates accordingly more. The damped modal
-points (:mod:`restitution.laws.damped_check`, ``nu = 0.3``) measured 0.31, 0.32 and 0.44 at
+points (:mod:`restitution.laws.making.damped_check`, ``nu = 0.3``) measured 0.31, 0.32 and 0.44 at
 ``v = 0.003, 0.00627, 0.0131``; the largest is used. Counted in the error of a sphere's
 damped law, not corrected (one Poisson number, three speeds)."""
 
 # What each body's modal viscous loss exceeds the quasistatic one by, measured for each body
-# (:mod:`restitution.laws.damped_check`): the factor on the quasistatic viscous loss at its
+# (:mod:`restitution.laws.making.damped_check`): the factor on the quasistatic viscous loss at its
 # largest compression (``R``) for a grain of the kind named.
 _MODAL_VISCOUS_FACTOR = {
     DISK.name: lambda compression: 1.0 + DISK_VISCOUS_SPREAD,
@@ -90,7 +90,7 @@ def _modal_viscous_factor(si: SILaw, compression: np.ndarray):
     if factor is None:
         raise InputError(
             f"the viscous loss of a damping {si.grain.body} is not compared with its modal "
-            f"model (restitution.laws.damped_check); damped laws are served for "
+            f"model (restitution.laws.making.damped_check); damped laws are served for "
             f"{', '.join(name + 's' for name in _MODAL_VISCOUS_FACTOR)}"
         )
     return factor(compression)

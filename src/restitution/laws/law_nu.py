@@ -211,7 +211,7 @@ class NuInterpolatedLaw:
     @property
     def v(self) -> np.ndarray:
         """Speeds computed for any grid law inside the range they all cover, increasing: each
-        law's own points where epsilon(v) turns (:mod:`restitution.laws.refine`) are kept, so
+        law's own points where epsilon(v) turns (:mod:`restitution.laws.making.refine`) are kept, so
         that what is tabulated from these points follows :meth:`epsilon` between them."""
         lo, hi = self.valid_range
         every = set()
@@ -283,10 +283,10 @@ def _cost(nu: float, geometry: str, partner) -> str:
     """`` (N collisions, about T on one core)``: the plan of computing the law; empty when
     no plan can be made (the refusal's other words say why)."""
     from restitution import budget
-    from restitution.laws.compute import plan
+    from restitution.laws.routes.base import computing_route
 
     try:
-        p = plan(nu, geometry, partner, reuse=False)
+        p = computing_route("modal").plan(nu, geometry, partner, reuse=False)
     except InputError:
         return ""
     return f" ({p.collisions} collisions, about {budget.format_duration(p.seconds)} on one core)"

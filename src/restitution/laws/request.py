@@ -37,7 +37,7 @@ MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 
 ROUTES = ("modal", "residual")
 """``--route`` of ``--compute``: the modal production or the static residual
-(:mod:`restitution.laws.residual_law`)."""
+(:mod:`restitution.laws.making.residual_law`)."""
 
 WALL_RATIOS = (1e-12, 1e12)
 """The wall's modulus and density over the grain's that an elastic wall takes (those of

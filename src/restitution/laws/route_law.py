@@ -10,7 +10,7 @@ user asked for, each alone (so without an interpolation error: each point is ser
 own speed and nowhere between), and the reach itself, as a law that serves its points only
 (:attr:`restitution.laws.law.EpsilonLaw.at_points_only`; a speed between them is ``outside``).
 A law defined at every speed, for exports, constants and plots, is the route's whole grid
-(``restitution law ... --compute``, :func:`restitution.laws.compute.computed_law`).
+(``restitution law ... --compute``, :func:`restitution.laws.making.compute.computed_law`).
 
 :func:`wall_law` does the same for a sphere on an elastic wall (issue 42): a half-space (the
 ball's vibrations and the waves radiated into the block, up to the route's reach) or a thin
@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.production import low_speed_points, low_speed_record, route_reach
+from restitution.laws.low_speed import low_speed_points, low_speed_record, route_reach
 from restitution.laws.wall_points import compute_command, stored_wall_point
 from restitution.laws.wall_route import uninformative
 

@@ -23,15 +23,16 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from restitution.atomic import check_output_dir, check_output_file, writing
+from restitution.atomic import writing
 from restitution.errors import InputError
 from restitution.laws import exports
+from restitution.laws import routes as _routes  # noqa: F401  (registers the routes)
 from restitution.laws.damped import DampedLaw, damped_law
 from restitution.laws.mechanisms import flag_points
 from restitution.laws.plastic import PlasticLaw
 from restitution.laws.request import LawRequest
-from restitution.laws.si_law import SI_UNITS, SILaw, law_target, overall_status, si_law
-from restitution.laws.units import Grain
+from restitution.laws.routes.base import check_speed_count, route_for
+from restitution.laws.si_law import SI_UNITS, SILaw, overall_status, si_law
 from restitution.limits.run_options import Progress
 from restitution.status import Status
 
@@ -124,39 +125,7 @@ def serve(
         with the command or option that makes one.
     """
     r = request
-    # A pair's law at the asked speeds (refused, before any folder is made, where a law at
-    # every speed is needed).
-    route = None if r.compute or r.law_file is not None else _route(r, note)
-    wall = r.elastic_wall
-    if wall is not None:  # a sphere on an elastic half-space, at the asked speeds
-        from restitution.laws.route_law import wall_law
-
-        grain = r.grain
-        what = ("Zener's thin-plate model" if r.wall_thickness is not None
-                else "the ball's vibrations and the waves radiated into the wall")  # fmt: skip
-        if r.export_dir is not None or r.constants:
-            return _wall_grid_answer(r, note, progress)
-        note(f"note: an elastic wall: each speed is computed now ({what}; seconds)")
-        vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
-        s = SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
-        if r.plastic:
-            return _plastic_answer(r, s, note)
-        points, _ = flag_points(s, s.points(list(r.speeds), note=note))
-        status, advice = overall_status(points)
-        return LawAnswer(r, s, None, points, status, advice)
-    if r.export_dir is not None:
-        check_output_dir(r.export_dir, "--export")  # before anything is computed
-    other = r.partner_grain
-    served = r.law_file
-    if r.compute:
-        served = _computed(r, note, progress)
-    elif other is not None and r.law_file is None and route is None:
-        _refuse_uncomputed(r)
-    if route is not None:
-        s = SILaw(Grain(r.E, r.nu, r.rho, r.shape), r.against, route, partner_grain=other)
-    else:
-        s = si_law(r.E, r.nu, r.rho, r.shape, r.against, path=served,
-                   radius_ratio=r.radius_ratio, partner_grain=other)  # fmt: skip
+    s = route_for(r).law(r, note, progress)
     if r.plastic:
         return _plastic_answer(r, s, note)
     bars = Progress(None if progress else False)  # the damped law's: on a terminal only
@@ -196,32 +165,6 @@ def _write_exports(r: LawRequest, s: SILaw, constant, model, note) -> tuple:
     return tuple(folder.paths)
 
 
-def _wall_grid_answer(r: LawRequest, note, progress: bool) -> LawAnswer:
-    """An elastic wall's answer with exports or constants: its route on a grid of speeds
-    (:func:`restitution.laws.wall_grid.wall_grid_law`), served at every speed of its range."""
-    from restitution import budget
-    from restitution.laws.wall_grid import grid_seconds, wall_grid_law
-
-    if r.plastic:
-        raise InputError(
-            "plastic flow with an elastic wall is answered at the asked speeds only; leave out "
-            "--export and --reference-speed/--maxwell-temperature"
-        )
-    grain, wall = r.grain, r.elastic_wall
-    seconds = grid_seconds(grain.law_nu, wall)  # refuses a plate without a range first
-    if r.export_dir is not None:
-        check_output_dir(r.export_dir, "--export")  # before anything is computed
-    what = "exports" if r.export_dir is not None else "constant"
-    note(f"note: an elastic wall: its law on a grid of speeds for the {what} is computed now "
-         f"(about {budget.format_duration(seconds)})")  # fmt: skip
-    s = SILaw(grain, "wall", wall_grid_law(grain.law_nu, wall, progress=progress))
-    points, _ = flag_points(s, s.points(list(r.speeds), note=note))
-    status, advice = overall_status(points)
-    constant, pairs = _constants(r, s)
-    written = _write_exports(r, s, pairs or constant, None, note)
-    return LawAnswer(r, s, None, points, status, advice, constant, pairs, written)
-
-
 def _viscoelastic(r: LawRequest, damped: DampedLaw | None, note):
     """The damped sphere law as the DEM codes' viscoelastic model for the exports
     (:func:`restitution.laws.exports.viscoelastic.viscoelastic_model`, the part it drops at the
@@ -242,25 +185,6 @@ PLASTIC_SECONDS_PER_SPEED = 2.0
 they drive), seconds: 1-2 s measured on the project's 2-core machine (steel, 1 mm/s to 100 m/s;
 slowest at the lowest speeds, whose pulses are longest)."""
 
-ROUTE_SECONDS_PER_SPEED = 0.6
-"""Wall time of one speed of a pair's low-speed route, seconds (0.57 s measured for the shipped
-sphere pairs' production points)."""
-
-
-def _check_speed_count(count: int, per_speed: float, what: str) -> None:
-    """Refuse, before anything is computed, ``count`` speeds of ``per_speed`` seconds each
-    beyond the bound of one run (:data:`restitution.budget.TIME_BOUND_S`), with the numbers."""
-    from restitution import budget
-
-    need = count * per_speed
-    if need > budget.TIME_BOUND_S:
-        most = int(budget.TIME_BOUND_S // per_speed)
-        raise InputError(
-            f"{count} speeds would take about {budget.format_duration(need)} ({what}, about "
-            f"{per_speed:g} s a speed), more than the {budget.format_duration(budget.TIME_BOUND_S)}"
-            f" bound of one run; ask for at most {most} speeds at a time"
-        )
-
 
 def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
     """The answer with plastic flow: the limiting pressure given or inferred, the relaxation
@@ -271,7 +195,7 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
         plastic_law,
     )
 
-    _check_speed_count(len(r.speeds), PLASTIC_SECONDS_PER_SPEED, "plastic flow on one pulse")
+    check_speed_count(len(r.speeds), PLASTIC_SECONDS_PER_SPEED, "plastic flow on one pulse")
     # The request refused what does not go together (LawRequest._check_damping).
     tau = 0.0 if r.relaxation_time is None else r.relaxation_time * s.grain.c_m_s / r.radius
     measured = r.measured_epsilon is not None
@@ -371,124 +295,3 @@ def _damped(r: LawRequest, s: SILaw, progress: Progress) -> DampedLaw | None:
         measured_speed_m_s=r.measured_speed,
         progress=progress,
     )
-
-
-def _target(r: LawRequest):
-    return law_target(r.E, r.nu, r.rho, r.shape, r.against, r.radius_ratio, r.partner_grain)
-
-
-def _route(r: LawRequest, note):
-    """The pair's law at the asked speeds by its low-speed route
-    (:func:`restitution.laws.route_law.route_law`), when no shipped law serves the pair and
-    its route has a reach (two spheres); ``None`` otherwise. Refused, with what to do, where a
-    law at every speed is needed (exports, constants, damping)."""
-    from restitution.bodies.pair.partner import UnequalPairError
-
-    try:
-        return _route_law(r, note)
-    except UnequalPairError as exc:
-        raise InputError(_unequal(r, exc)) from None
-
-
-def _unequal(r: LawRequest, exc) -> str:
-    """The refusal of a pair whose route's modes all belong to one grain, in ``law``'s words
-    (the body layer's names ``collide``'s way out and mode counts, which ``law`` has no option
-    for)."""
-    ratio = r.partner_radius_ratio
-    if ratio is not None and ratio != 1.0:
-        return (
-            f"--partner-radius-ratio {ratio:g}: the pair's low-speed route keeps a few thousand "
-            "modes of the two grains, all of the larger one here (the smaller one's would take "
-            f"about {exc.need:.2g}); {r.unequal_sizes()}"
-        )
-    still = "the partner" if exc.still == 1 else "this grain"
-    return (
-        f"the pair's low-speed route keeps a few thousand modes of the two grains, none of "
-        f"{still} (its sound speed over its radius is far above the other's: it would take "
-        f"about {exc.need:.2g} modes): no law of so unequal a pair is computed; check "
-        "--partner-E and --partner-rho"
-    )
-
-
-def _route_law(r: LawRequest, note):
-    """:func:`_route`'s work."""
-    from restitution.laws.law_nu import shipped_match
-    from restitution.laws.route_law import route_law, route_serves
-
-    law_nu, body, partner = _target(r)
-    if not route_serves(body, law_nu, partner) or shipped_match(law_nu, body, partner):
-        return None
-    needs = [
-        what
-        for what, asked in (
-            ("--export", r.export_dir is not None),
-            ("--reference-speed/--maxwell-temperature", r.constants),
-            ("damping", r.damped and not r.plastic),
-        )
-        if asked
-    ]
-    if needs:
-        from restitution.laws.compute import plan
-
-        p = plan(law_nu, body, partner)
-        verb = "needs" if len(needs) == 1 else "need"
-        raise InputError(
-            f"{' and '.join(needs)} {verb} the pair's law at every speed, which is not shipped: "
-            f"add --compute ({p.words()})"
-        )
-    grain = Grain(r.E, r.nu, r.rho, r.shape)
-    vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
-    _check_speed_count(len(set(vs)), ROUTE_SECONDS_PER_SPEED, f"the {body} pair's low-speed route")
-    note(
-        f"note: two {body}s of this pair have no shipped law: each speed is computed now by "
-        "their low-speed route (about a second a speed)"
-    )
-    return route_law(law_nu, body, partner, vs)
-
-
-def _refuse_uncomputed(r: LawRequest) -> None:
-    """Two materials without ``compute`` or a law file: refuse, with the estimate of
-    ``compute``, unless a shipped law serves them."""
-    from restitution import budget
-    from restitution.laws.compute import plan
-    from restitution.laws.law_nu import shipped_match
-
-    law_nu, body, partner = _target(r)
-    if shipped_match(law_nu, body, partner) is not None:
-        return  # a shipped law of these two materials serves it
-    p = plan(law_nu, body, partner)
-    if p.exists:
-        how = f"--compute finds the law computed before ({p.path})"
-    else:
-        how = (
-            f"add --compute ({p.collisions} collisions, about "
-            f"{budget.format_duration(p.seconds)} on one core)"
-        )
-    raise InputError(
-        f"no law of these two materials is shipped: {how}, or give its file with --law-file"
-    )
-
-
-def _computed(r: LawRequest, note, progress: bool):
-    """``compute=True``: the law file of the material's exact Poisson number (computed with
-    the production settings, or found in the cache), or ``None`` when a shipped law serves
-    it."""
-    from restitution.laws.compute import check_plan, computed_law, plan
-    from restitution.laws.law_nu import shipped_match
-
-    law_nu, body, partner = _target(r)
-    if shipped_match(law_nu, body, partner) is not None:
-        note(f"note: a shipped law serves nu = {law_nu:.6g}; nothing to compute")
-        return None
-    if r.route == "residual":
-        from restitution.laws.residual_law import residual_law, residual_plan
-
-        p = residual_plan(law_nu, body, partner)
-        note(f"note: {p.words()}")
-        return residual_law(law_nu, body, partner, progress=progress, force=r.force)
-    if r.store is not None:
-        check_output_file(r.store, "--store")
-    p = plan(law_nu, body, partner)
-    check_plan(p, r.force)
-    note(f"note: {p.words()}")
-    return computed_law(law_nu, body, partner, store=r.store, progress=progress, force=r.force)

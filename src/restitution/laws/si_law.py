@@ -98,7 +98,7 @@ PLATE_QUASISTATIC_NOTE = (
 _ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
 """What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
 kind's :attr:`~restitution.bodies.kinds.BodyKind.low_speed_route`, the routes of
-:mod:`restitution.laws.production`): the disk's slow-impact model; for any other route (the
+:mod:`restitution.laws.making.production`): the disk's slow-impact model; for any other route (the
 sphere's Rayleigh estimate) :data:`STATUSES` says it."""
 
 SI_UNITS: dict[str, str] = {
@@ -200,7 +200,7 @@ def _low_speed_at(geometry: str, nu: float, partner, v: float):
     """epsilon, its error and the two bodies' shares of the loss (``None`` where the route does
     not split it) at ``v`` (``c``) by the low-speed route of ``geometry`` (with ``partner``),
     one speed alone (so without an interpolation term); remembered."""
-    from restitution.laws.production import low_speed_points
+    from restitution.laws.low_speed import low_speed_points
 
     (record,), _ = low_speed_points(nu, [v], geometry=geometry, partner=partner)
     first = _first_share(record)
@@ -580,7 +580,7 @@ class SILaw:
     def _route(self):
         """``(name, nu, partner)`` of the low-speed route that continues this law below its
         slowest point (the law's own, at the grain's exact Poisson number), or ``None``."""
-        from restitution.laws.production import low_speed_route
+        from restitution.laws.low_speed import low_speed_route
 
         partner = self.law.partner
         name = low_speed_route(self.law.geometry, partner)
@@ -803,7 +803,7 @@ def si_law(
     path : path, optional
         A law file of the grain's body for its ``law_nu`` (from ``restitution curve
         [--geometry sphere]``; for a pair ``restitution curve --radius-ratio R``, or
-        :func:`restitution.laws.compute.computed_law`).
+        :func:`restitution.laws.making.compute.computed_law`).
     radius_ratio : float, optional
         Against a grain of another size: the ratio of the two radii ``R2 / R1``, this grain's
         ``R1``. For one material either way round (``1`` is the identical grain), served by the
@@ -814,9 +814,10 @@ def si_law(
         Against a grain of another material (its 3D constants, the same geometry; ``None``: this
         grain's material). One such law is shipped (steel cylinders, ``E = 210e9``, ``nu =
         0.3``, ``rho = 7850``, with glass ones 1.4 times as large, ``63e9``, ``0.2481``,
-        ``2500``; :data:`restitution.laws.production.PAIR_TWO_MATERIALS`); for any other give
-        ``path``, computed by :func:`restitution.laws.compute.computed_law` for the partner of
-        :func:`law_target` (``restitution law ... --compute`` does both). Its constants enter
+        ``2500``; :data:`restitution.laws.making.production.PAIR_TWO_MATERIALS`); for any other
+        give ``path``, computed by :func:`restitution.laws.making.compute.computed_law` for the
+        partner of :func:`law_target` (``restitution law ... --compute`` does both). Its
+        constants enter
         the law in this grain's 2D units, rounded to six significant digits
         (:func:`pair_partner`); ``v = w / c`` with this grain's ``c``.
 
@@ -837,7 +838,8 @@ def si_law(
     if other is not None and path is None and not _shipped(grain, partner):
         raise InputError(
             "no law of these two materials is shipped: compute it with `restitution law ... "
-            "--compute` (or restitution.laws.compute.computed_law), or give its law file (path)"
+            "--compute` (or restitution.laws.making.compute.computed_law), or give its law file "
+            "(path)"
         )
     return SILaw(
         grain,
@@ -868,7 +870,7 @@ def law_target(E, nu, rho, geometry: str, against: str, radius_ratio=None, partn
     """``(law_nu, body, partner)``: the law :func:`si_law` serves for these arguments (the
     Poisson number of the law, 2D for cylinders and thin disks; the body, ``"disk"`` or
     ``"sphere"``; the :class:`~restitution.bodies.pair.partner.Partner` or ``None``), e.g. for
-    :func:`restitution.laws.compute.computed_law`."""
+    :func:`restitution.laws.making.compute.computed_law`."""
     grain = Grain(E=E, nu=nu, rho=rho, shape=geometry)
     partner_factor(against)
     return grain.law_nu, grain.body, _partner(radius_ratio, against, grain, partner_grain)

@@ -47,7 +47,7 @@ from scipy.interpolate import PchipInterpolator
 
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.production import low_speed_record
+from restitution.laws.low_speed import low_speed_record
 from restitution.laws.wall_route import (
     HALF_SPACE_ROUTE,
     PLATE_ROUTE,

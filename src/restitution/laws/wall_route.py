@@ -32,7 +32,7 @@ import math
 import numpy as np
 
 from restitution.errors import InputError
-from restitution.laws.production import low_speed_record
+from restitution.laws.low_speed import low_speed_record
 from restitution.quasistatic.half_space import BALL_QUADRATURE_PHASE
 
 __all__ = [

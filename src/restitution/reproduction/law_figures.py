@@ -1,6 +1,6 @@
 """Figures of the slow points of law files: convergence in ``N`` and ``alpha``, and two routes.
 
-``make law`` runs it after :mod:`restitution.laws.production`::
+``make law`` runs it after :mod:`restitution.laws.making.production`::
 
     python -m restitution.reproduction.law_figures --figures docs/figures [LAW_FILE ...]
 

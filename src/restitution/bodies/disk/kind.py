@@ -27,7 +27,7 @@ from restitution.bodies.kinds import (
 
 __all__ = ["KIND"]
 
-# -- the shipped laws' settings (restitution.laws.production says why) -----------------------
+# -- the shipped laws' settings (restitution.laws.making.production says why) ----------------
 
 # The paper's speeds from 0.02 c (Figs. 1 and 7: 0.02, 0.04, ..., 0.30) with the mode window
 # N = 1880-15040: with the paper's N = 300-940 most points fail the curvature test in

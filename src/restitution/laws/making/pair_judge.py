@@ -9,7 +9,7 @@ The low-speed route of two spheres (Rayleigh's estimate on the pair's Hertz puls
 modal sweep (through a result store, so a second run reads it) and sets each point beside the
 route's estimate at that speed: ``z = (modal - route) / sqrt(err_modal^2 + err_route^2)``.
 
-``python -m restitution.laws.pair_judge --radius-ratio 2 --out F [--store S]`` writes the
+``python -m restitution.laws.making.pair_judge --radius-ratio 2 --out F [--store S]`` writes the
 comparison (JSON, whole or not at all; the settings and the code version inside);
 ``tests/test_sphere_pair.py`` reads the stored comparisons.
 """
@@ -75,8 +75,8 @@ def judge(partner: Partner, nu: float = 0.3, speeds=SPEEDS, *, store=None, worke
     return {
         "source": (
             "this package's own routes (regression values): python -m "
-            "restitution.laws.pair_judge; the modal points are extrapolated collisions of the "
-            "pair, the route's are Rayleigh's estimate on the pair's Hertz pulse"
+            "restitution.laws.making.pair_judge; the modal points are extrapolated collisions of "
+            "the pair, the route's are Rayleigh's estimate on the pair's Hertz pulse"
         ),
         "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "code_version": code_version(SPHERE.geometry, pair=True),

@@ -62,7 +62,7 @@ REFERENCE_FILE = "damped_reference.json"
 
 def _group(geometry: str, v: float):
     """The production sweep whose speeds hold ``v`` (its windows and walls)."""
-    from restitution.laws.production import production
+    from restitution.laws.making.production import production
 
     _, groups = production(geometry)
     for g in groups:
@@ -274,7 +274,7 @@ def load_reference(path=None) -> list[dict]:
 
 
 def main(argv=None) -> None:
-    """``python -m restitution.laws.damped_check [--out FILE] [--workers N]``: compute the
+    """``python -m restitution.laws.making.damped_check [--out FILE] [--workers N]``: compute the
     :data:`CHECK_POINTS` (through the result store) and write them with their provenance."""
     import argparse
     import datetime
@@ -286,7 +286,7 @@ def main(argv=None) -> None:
     parser.add_argument("--out", default=None, help="JSON file [the shipped reference]")
     parser.add_argument("--workers", type=int, default=1)
     args = parser.parse_args(argv)
-    out = Path(args.out) if args.out else Path(__file__).parent / "data" / REFERENCE_FILE
+    out = Path(args.out) if args.out else Path(__file__).parents[1] / "data" / REFERENCE_FILE
     points = []
     for geometry, nu, v, tau in CHECK_POINTS:
         limit, seconds = modal_point(geometry, nu, v, tau, workers=args.workers)
@@ -319,7 +319,7 @@ def main(argv=None) -> None:
         "what": "epsilon of the modal model with every mode damped (Kelvin-Voigt, one "
         "relaxation time tau in R/c), extrapolated alpha, N -> infinity through the production "
         "sweep of the speed; reduced units of the body",
-        "source": "python -m restitution.laws.damped_check",
+        "source": "python -m restitution.laws.making.damped_check",
         "code_version": {g: code_version(g) for g in sorted({p[0] for p in CHECK_POINTS})},
         "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "points": points,

@@ -18,7 +18,7 @@ sweep, store and both limits as the law's own points), and joins it to the law; 
 round scans the law with the points of the round before. The law's ``metadata["refined"]``
 records the rule and each round's speeds.
 
-``python -m restitution.laws.refine FILE... [--rounds N]`` refines law files in place (each
+``python -m restitution.laws.making.refine FILE... [--rounds N]`` refines law files in place (each
 written whole or not at all); ``make law`` (``law-sphere``, ``law-pair``) runs it after
 production.
 
@@ -53,7 +53,7 @@ PER_INTERVAL = 10
 RULE = (
     "a point where PCHIP and a not-a-knot cubic spline in ln v through the modal points differ "
     "most inside an interval, when that difference exceeds factor times the larger point error "
-    "of the interval's ends (restitution.laws.refine)"
+    "of the interval's ends (restitution.laws.making.refine)"
 )
 
 
@@ -184,7 +184,7 @@ def refine(
 
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(
-        prog="python -m restitution.laws.refine", description=__doc__.split("\n\n")[0]
+        prog="python -m restitution.laws.making.refine", description=__doc__.split("\n\n")[0]
     )
     parser.add_argument("files", nargs="+", type=Path, help="law JSON files, refined in place")
     parser.add_argument("--rounds", type=int, default=1)

@@ -4,13 +4,14 @@ route, joined with the low-speed points.
 Units: the body's reduced units (``E = rho = R = 1``; a pair's: the first body's); speeds in
 ``c`` (a pair's relative speed); times in seconds of wall time.
 
-Today's production (:func:`restitution.laws.compute.computed_law`) reaches ``N -> infinity`` by
-extrapolating windows of up to 10^4-10^5 modes. This route computes the same speeds (the modal
+Today's production (:func:`restitution.laws.making.compute.computed_law`) reaches ``N ->
+infinity`` by extrapolating windows of up to 10^4-10^5 modes. This route computes the same
+speeds (the modal
 groups' speeds, :func:`residual_speeds`) with 200, 400 and 800 kept modes (a pair's times its
 window scale) whose dropped modes follow the contact statically
 (:func:`restitution.limits.residual_point.residual_point`: the same walls and hard-wall limit,
 the mode error from the last two doublings), then one round of the laws' refinement
-(:func:`restitution.laws.refine.turning_speeds`: a point wherever PCHIP and a spline disagree
+(:func:`restitution.laws.making.refine.turning_speeds`: a point wherever PCHIP and a spline disagree
 between two speeds by more than the points' errors) by the same route, and joins the kind's
 low-speed points as the production does. Every point says where it comes from: ``route`` is
 ``"residual"`` (the modal production's points: ``"modal"`` or none; the low-speed theory's
@@ -22,7 +23,7 @@ is kept in ``<cache>/residual_points/<law file>`` (written whole), keyed by spee
 version (the solver's and the route's own modules', :data:`ROUTE_MODULES`), each with a content
 digest: a kept point changed after it was written, or holding an impossible value, is computed
 again, never used (:class:`_Kept`). A law file found in the cache is served only when its own
-digest matches (:func:`restitution.laws.compute.set_aside`).
+digest matches (:func:`restitution.laws.making.compute.set_aside`).
 
 Two runs of one law at once never compute a speed twice: each claims the speeds it is about to
 compute (:class:`restitution.limits.claims.Claims`, in ``<cache>/residual_points/claims.sqlite``,
@@ -55,10 +56,10 @@ from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, OutputError, is_real
 from restitution.jsonable import content_digest, json_default
-from restitution.laws.compute import law_dir, production_groups, set_aside
 from restitution.laws.law import EpsilonLaw, law_filename
-from restitution.laws.production import low_speed_points, low_speeds_of
-from restitution.laws.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
+from restitution.laws.low_speed import low_speed_points, low_speeds_of
+from restitution.laws.making.compute import law_dir, production_groups, set_aside
+from restitution.laws.making.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
 from restitution.limits.claims import POLL_S, Claims
 from restitution.limits.residual_point import NODES_PER_CONTACT, RESIDUAL_MODES, residual_point
 from restitution.limits.run_options import Executor, progress_of
@@ -69,6 +70,7 @@ from restitution.status import Status
 __all__ = [
     "RESIDUAL_ROUTE",
     "ResidualPlan",
+    "check_residual_plan",
     "check_route",
     "residual_law",
     "residual_plan",
@@ -162,7 +164,7 @@ def residual_plan(
     nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None, out_dir=None, *, reuse=True
 ) -> ResidualPlan:
     """The plan of :func:`residual_law` with the same arguments (nothing is computed)."""
-    from restitution.laws.compute import _usable, seconds_per_low_point
+    from restitution.laws.making.compute import _usable, seconds_per_low_point
 
     check_route(geometry, partner)
     path = Path(out_dir or law_dir()) / residual_filename(nu, geometry, partner)
@@ -171,6 +173,18 @@ def residual_plan(
     seconds = (2 * len(speeds) - 1) * _seconds_per_point(geometry, partner)
     seconds += len(low) * seconds_per_low_point(geometry, partner)
     return ResidualPlan(path, reuse and _usable(path), len(speeds), len(low), seconds)
+
+
+def check_residual_plan(p: ResidualPlan, force: bool = False) -> None:
+    """Refuse a plan whose estimate exceeds :data:`restitution.budget.TIME_BOUND_S` unless
+    ``force`` (one line: the speeds, the estimate, the bound)."""
+    if p.exists:
+        return
+    budget.check_time_total(
+        "--route residual", f"for {p.path.name}", p.seconds, f"{p.speeds} speeds",
+        lambda bound: f"about {int(bound // max(p.seconds / max(p.speeds, 1), 1e-9))} speeds fit",
+        force=force, override="--force",
+    )  # fmt: skip
 
 
 def residual_record(point) -> dict:
@@ -435,18 +449,14 @@ def residual_law(
     already; refused beyond :data:`restitution.budget.TIME_BOUND_S` unless ``force``.
 
     ``speeds``/``low_speeds``: instead of the production's (:func:`residual_speeds`,
-    :func:`~restitution.laws.production.low_speeds_of`; ``()`` for none);
+    :func:`~restitution.laws.low_speed.low_speeds_of`; ``()`` for none);
     ``refine_rounds``: rounds of refining points (``0``: none); ``executor``: where the points
     run (:class:`~restitution.limits.run_options.Executor`, default local processes on every
     core)."""
     p = residual_plan(nu, geometry, partner, out_dir)
     if p.exists:
         return p.path
-    budget.check_time_total(
-        "--route residual", f"for {p.path.name}", p.seconds, f"{p.speeds} speeds",
-        lambda bound: f"about {int(bound // max(p.seconds / max(p.speeds, 1), 1e-9))} speeds fit",
-        force=force, override="--force",
-    )  # fmt: skip
+    check_residual_plan(p, force)
     set_aside(p.path)  # a changed or unverifiable file there is computed again, not served
     meter = progress_of(progress)
     executor = executor or Executor()

@@ -7,7 +7,7 @@ neighbouring points (the same sweep, store and extrapolation as the law's own po
 speeds between the computed ones, and compares: the served value and its stated error against
 the direct value and its own.
 
-``python -m restitution.laws.between --geometry <kind> --nu 0.3 --per-interval 2 --out F``
+``python -m restitution.laws.making.between --geometry <kind> --nu 0.3 --per-interval 2 --out F``
 writes the comparison (JSON, whole or not at all); ``tests/test_between.py`` reads the stored
 comparisons and checks the served errors' coverage, ``-m slow`` recomputes a sample.
 
@@ -27,7 +27,7 @@ from restitution import atomic
 from restitution.bodies.kinds import geometries
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw, law
-from restitution.laws.refine import neighbour_settings
+from restitution.laws.making.refine import neighbour_settings
 from restitution.limits.run_options import Progress, progress_of
 
 __all__ = ["between_speeds", "compare", "coverage", "direct_points", "main"]
@@ -49,7 +49,7 @@ def between_speeds(law_: EpsilonLaw, per_interval: int, lo: float = 0.0, hi: flo
 
 def direct_points(geometry, nu, speeds, *, store=None, progress: Progress | bool = False):
     """epsilon at each speed by the production route (both limits, the settings of the
-    neighbouring point: :func:`restitution.laws.refine.neighbour_settings`), one
+    neighbouring point: :func:`restitution.laws.making.refine.neighbour_settings`), one
     :class:`~restitution.limits.curves.PointEpsilon` a speed."""
     from restitution.limits.curves import epsilon_at
 
@@ -107,7 +107,7 @@ def _write(path: Path, data: dict) -> None:
 
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(
-        prog="python -m restitution.laws.between", description=__doc__.split("\n\n")[0]
+        prog="python -m restitution.laws.making.between", description=__doc__.split("\n\n")[0]
     )
     parser.add_argument("--geometry", required=True, choices=geometries())
     parser.add_argument("--nu", type=float, required=True)
@@ -128,8 +128,8 @@ def main(argv=None) -> None:
             "what": "epsilon computed directly (production route: sweep, store, both limits) "
             "at speeds between a shipped law's computed points, against the law's served value "
             "and error there",
-            "source": "this package, python -m restitution.laws.between (the direct values are "
-            "regression values of this package's production route, not of an independent code)",
+            "source": "this package, python -m restitution.laws.making.between (the direct values "
+            "are regression values of this package's production route, not of an independent code)",
             "geometry": args.geometry,
             "nu": args.nu,
             "law_code_version": served.metadata.get("code_version"),

@@ -4,7 +4,7 @@ Units: the body's reduced units (``E = rho = R = 1``); times in seconds of wall 
 
 The shipped laws cover a grid of Poisson numbers; in between they are interpolated with an error
 (:mod:`restitution.laws.law_nu`). :func:`computed_law` computes the law of one exact ``nu``
-through the same sweeps as the shipped laws (:mod:`restitution.laws.production`: the disk's
+through the same sweeps as the shipped laws (:mod:`restitution.laws.making.production`: the disk's
 groups, the sphere's with its low-speed points, a pair's carried over from the disk's, also of
 two materials, with the window scaled by :func:`restitution.limits.sweep.window_scale`), stores
 every collision in the user's result store (an interrupted run resumes) and writes the law file
@@ -27,9 +27,10 @@ from restitution import budget
 from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import CorruptFileError, InputError
-from restitution.laws import production
 from restitution.laws.law import EpsilonLaw, law_filename
-from restitution.laws.production import low_speeds_of, pair_groups
+from restitution.laws.low_speed import low_speeds_of
+from restitution.laws.making import production
+from restitution.laws.making.production import pair_groups
 from restitution.limits.sweep import window_scale
 
 __all__ = [
@@ -53,9 +54,9 @@ def law_dir() -> Path:
 
 def production_groups(geometry: str, partner=None) -> tuple:
     """The production sweeps of the body ``geometry`` as the shipped laws were computed
-    (:func:`restitution.laws.production.production_groups`); with a ``partner`` those of two
-    such bodies of any two materials (:func:`restitution.laws.production.pair_groups`, windows
-    scaled by the partner's)."""
+    (:func:`restitution.laws.making.production.production_groups`); with a ``partner`` those of
+    two such bodies of any two materials (:func:`restitution.laws.making.production.pair_groups`,
+    windows scaled by the partner's)."""
     if partner is not None:
         return pair_groups(partner, geometry=geometry)
     return production.production_groups(geometry)
@@ -197,7 +198,7 @@ def plan(
     check_modes(nu, groups, partner)
     path = Path(out_dir or law_dir()) / law_filename(nu, geometry, partner)
     count = sum(len(g.velocities) * len(g.alphas) * len(g.n_modes) for g in groups)
-    # At most one refining point per interval of the groups' speeds (restitution.laws.refine,
+    # At most one refining point per interval of the groups' speeds (restitution.laws.making.refine,
     # one round), each with a group's grid: an upper bound (the sphere's laws took 14-18 of 25).
     speeds = sum(len(g.velocities) for g in groups)
     count += max(speeds - 1, 0) * max((len(g.alphas) * len(g.n_modes) for g in groups), default=0)
@@ -254,7 +255,7 @@ def computed_law(
     out_dir : path, optional
         Where the law file goes [:func:`law_dir`].
     store, executor, progress, workers
-        As for :func:`restitution.laws.production.build`.
+        As for :func:`restitution.laws.making.production.build`.
     force : bool
         Compute even when the estimate exceeds :data:`restitution.budget.TIME_BOUND_S`.
 
@@ -263,7 +264,7 @@ def computed_law(
     Path
         The law file (``law_filename(nu, geometry, partner)`` in ``out_dir``).
     """
-    from restitution.laws.production import build
+    from restitution.laws.making.production import build
 
     p = plan(nu, geometry, partner, out_dir)
     if p.exists:
