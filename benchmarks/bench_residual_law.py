@@ -49,7 +49,7 @@ from pathlib import Path
 
 from restitution._paths import cache_root
 from restitution.laws.compute import production_groups, seconds_per_low_point
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.laws.production import _steel_glass, low_speeds_of
 from restitution.laws.residual_law import residual_filename, residual_law, residual_speeds
 from restitution.limits.curves import compute_curves

@@ -26,7 +26,9 @@ from _cli_checks import one_line_error
 from restitution.errors import CorruptFileError
 from restitution.laws import compute
 from restitution.laws import residual_law as rl
-from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
+from restitution.laws.law_load import law
 
 STEEL = ("--E", "200e9", "--nu", "0.27", "--rho", "7800", "--geometry", "cylinder", "--against",
          "wall")  # fmt: skip

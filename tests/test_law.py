@@ -21,7 +21,8 @@ from restitution.cli.epsilon import epsilon as epsilon_command
 from restitution.dynamics.collision import collide
 from restitution.errors import InputError, RestitutionError
 from restitution.laws.build import law_from_store
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.limits.curves import compute_curves, epsilon_at
 from restitution.limits.sweep import SweepSettings
 from restitution.reproduction.figures import fig01_epsilon, fig07_alpha, fig08_modes

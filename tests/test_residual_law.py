@@ -8,7 +8,8 @@ import pytest
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
 from restitution.laws import residual_law as rl
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.limits.run_options import Executor
 
 GLASS_CYLINDER = ["--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--shape", "cylinder"]

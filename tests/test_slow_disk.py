@@ -14,7 +14,7 @@ from scipy.integrate import solve_ivp
 
 from restitution.bodies.cache import get_modes
 from restitution.errors import InputError
-from restitution.laws.law import law_filename
+from restitution.laws.law_file import law_filename
 from restitution.laws.production import SHIPPED_NUS, leave_one_out
 from restitution.quasistatic.hertz import contact_law, quasistatic_collision
 from restitution.quasistatic.rayleigh import rayleigh_energy

@@ -27,7 +27,9 @@ from restitution.cli import main
 from restitution.errors import InputError
 from restitution.laws import exports, production
 from restitution.laws.build import law_from_store
-from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
+from restitution.laws.law_load import law
 from restitution.laws.law_nu import NuInterpolatedLaw, law_for, shipped_nus
 from restitution.laws.si_law import SILaw, si_law
 from restitution.laws.units import Grain

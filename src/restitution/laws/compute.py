@@ -28,7 +28,8 @@ from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import CorruptFileError, InputError
 from restitution.laws import production
-from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
 from restitution.laws.production import low_speeds_of, pair_groups
 from restitution.limits.sweep import window_scale
 

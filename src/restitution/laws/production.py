@@ -33,7 +33,7 @@ from pathlib import Path
 from restitution.bodies.cache import writable_folder
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
-from restitution.laws.law import leave_one_out
+from restitution.laws.law_point import leave_one_out
 from restitution.limits.run_options import Executor, Progress, executor_of, progress_of
 from restitution.limits.sweep import SweepSettings, pair_settings, planned
 
@@ -379,7 +379,7 @@ def low_speed_record(
     estimate (``estimate_err``, of the loss) plus what PCHIP between its neighbours may miss
     (``gap``), flagged ``quasistatic`` (no extrapolation to check), with the route's own
     ``details``. ``epsilon`` is the route's (``sqrt(1 - loss)`` for an elastic loss)."""
-    from restitution.laws.law import QUASISTATIC_ROUTE
+    from restitution.laws.law_point import QUASISTATIC_ROUTE
     from restitution.status import Status
 
     err = estimate_err + gap
@@ -434,7 +434,7 @@ def build(
     """Compute the laws for ``nus`` and write them into ``out_dir``.
 
     The body is the groups' ``geometry`` and ``partner`` (one for all): the files are
-    :func:`restitution.laws.law.law_filename` ``(nu, geometry, partner)``, ``law_nu<nu>.json``
+    :func:`restitution.laws.law_file.law_filename` ``(nu, geometry, partner)``, ``law_nu<nu>.json``
     for the disk, ``law_sphere_nu<nu>.json`` for the sphere and ``law_pair_r<r>_nu<nu>.json``
     for two disks (:func:`pair_groups`).
 
@@ -466,7 +466,8 @@ def build(
     list of Path
         The files written.
     """
-    from restitution.laws.law import EpsilonLaw, law_filename
+    from restitution.laws.law import EpsilonLaw
+    from restitution.laws.law_file import law_filename
     from restitution.laws.refine import refine
     from restitution.limits.curves import compute_curves
 
@@ -626,7 +627,7 @@ def main(argv=None) -> None:
         return
     if args.low_speeds_only:
         from restitution.bodies.pair.partner import Partner
-        from restitution.laws.law import law_filename
+        from restitution.laws.law_file import law_filename
 
         start = time.perf_counter()
         if args.geometry == "pair":

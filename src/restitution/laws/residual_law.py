@@ -56,7 +56,8 @@ from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, OutputError, is_real
 from restitution.jsonable import content_digest, json_default
 from restitution.laws.compute import law_dir, production_groups, set_aside
-from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
 from restitution.laws.production import low_speed_points, low_speeds_of
 from restitution.laws.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds
 from restitution.limits.claims import POLL_S, Claims
@@ -113,7 +114,7 @@ def check_route(geometry: str, partner=None) -> None:
 
 
 def residual_filename(nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None) -> str:
-    """The law file's name: the modal route's (:func:`~restitution.laws.law.law_filename`) with
+    """The law file's name: the modal route's (:func:`~restitution.laws.law_file.law_filename`) with
     ``_residual`` before ``.json``, so that a law of either route never replaces the other's."""
     name = law_filename(nu, geometry, partner)
     return f"{name.removesuffix('.json')}_{RESIDUAL_ROUTE}.json"
