@@ -49,7 +49,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from restitution._paths import cache_root
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.laws.low_speed import low_speeds_of
 from restitution.laws.making.compute import production_groups, seconds_per_low_point
 from restitution.laws.making.production import _steel_glass

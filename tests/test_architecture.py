@@ -94,7 +94,7 @@ def test_the_check_sees_violations():
         "import restitution\n"
         "from restitution import get_modes\n"
         "def f():\n"
-        "    from restitution.laws.law import law\n"
+        "    from restitution.laws.law_load import law\n"
         "from restitution.bodies.material import Material\n"
     )
     found = _violations(Path("dynamics/x.py"), ast.parse(source))

@@ -17,7 +17,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from restitution.laws.law import EpsilonLaw, law, leave_one_out
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
+from restitution.laws.law_point import leave_one_out
 
 V = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07])
 

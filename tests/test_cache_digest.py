@@ -24,7 +24,9 @@ import pytest
 from _cli_checks import one_line_error
 
 from restitution.errors import CorruptFileError
-from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
+from restitution.laws.law_load import law
 from restitution.laws.making import compute
 from restitution.laws.making import residual_law as rl
 

@@ -13,7 +13,7 @@ import pytest
 
 from restitution.estimate import Estimate, estimate_of
 from restitution.fem.reference import load_reference
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.laws.si_law import si_law
 from restitution.status import ASYMPTOTIC, Status
 

@@ -49,7 +49,9 @@ from restitution.dynamics.reference import collide_dop853
 from restitution.fem.judge import LawJudgement, judge_law
 from restitution.fem.pair_reference import load_pair_reference
 from restitution.fem.reference import load_reference, reference_filename
-from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
+from restitution.laws.law_load import law
 from restitution.laws.law_nu import shipped_nus
 from restitution.laws.making.production import route_pair_laws
 from restitution.limits.extrapolation import combined_limit

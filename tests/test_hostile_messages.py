@@ -152,6 +152,7 @@ def _fields() -> set[str]:
 
 _MESSAGE_MODULES = [
     "laws/request.py",
+    "laws/request_checks.py",
     "laws/request_fields.py",
     "laws/serve.py",
     "laws/plastic.py",
@@ -415,7 +416,7 @@ def test_the_plausible_ranges_are_one_table_of_request_fields():
 def test_the_wall_ranges_the_request_checks_are_the_walls():
     """The request refuses in Pa what the wall's bodies would refuse in ratios: the same ends."""
     from restitution.bodies.wall import HalfSpace, Plate
-    from restitution.laws.request import PLATE_RADII, WALL_RATIOS
+    from restitution.laws.request_checks import PLATE_RADII, WALL_RATIOS
 
     lo, hi = WALL_RATIOS
     HalfSpace(lo, hi, 0.25)

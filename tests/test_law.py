@@ -20,7 +20,8 @@ from restitution.cli.epsilon import curve as curve_command
 from restitution.cli.epsilon import epsilon as epsilon_command
 from restitution.dynamics.collision import collide
 from restitution.errors import InputError, RestitutionError
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.laws.making.build import law_from_store
 from restitution.limits.curves import compute_curves, epsilon_at
 from restitution.limits.sweep import SweepSettings

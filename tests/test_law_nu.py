@@ -139,7 +139,7 @@ def test_interpolation_covers_direct_laws_between_the_first_grid(nu):
     from the first grid alone, the interpolation must lie within one combined error (its own
     and the direct law's) at least at the 68 % of the speeds a Gaussian error would, and within
     two at 95 % (measured: 94 % of 88 speeds within one, all within two)."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     direct = law(nu)
     served = law_for(nu, laws=[law(x) for x in FIRST_GRID])
@@ -156,7 +156,7 @@ def test_interpolation_covers_direct_laws_between_the_first_grid(nu):
 
 def test_first_grid_interpolation_coverage_over_all_direct_laws():
     """Pooled over the four direct laws: the measured coverage quoted in docs/materials.md."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     sigmas = []
     for nu in (0.25, 0.4285714285714286, 0.6, 0.8):
@@ -176,7 +176,7 @@ def test_first_grid_interpolation_coverage_of_the_low_speed_points():
     model, v = 1e-7 - 0.93e-4), pooled: within one combined error at least at 68 %, within two
     at 95 % (measured: 85 % and 96.8 %). Not at every nu: at 0.8 only 90 % lie within two and
     the worst is 6.5 combined errors (v = 2.75e-6; docs/materials.md)."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     sigmas = []
     for nu in (0.25, 0.4285714285714286, 0.6, 0.8):

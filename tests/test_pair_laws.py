@@ -20,7 +20,8 @@ from restitution.bodies.cache import get_modes
 from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.bodies.pair import Partner, pair_of
 from restitution.errors import InputError
-from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
 from restitution.laws.law_nu import law_for
 from restitution.laws.si_law import si_law
 from restitution.limits.curves import epsilon_at
@@ -247,7 +248,7 @@ def test_pair_figure_draws_the_shipped_laws_and_the_shares():
     """The figure's curves are the laws' points (ratio 1: the disk's law at w/2), and its share
     of the small disk is a direct collision's at the stated settings."""
     from restitution.dynamics.collision import collide
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
     from restitution.reproduction.figures import pair_epsilon
 
     curves = pair_epsilon.compute(0.33, (1.0, 1.4), share_speeds=(0.2,), share_window=60)

@@ -458,6 +458,6 @@ def test_results_doc_states_what_the_shipped_laws_say():
         "`python -m restitution.reproduction.claims.shipped docs/results.md`"
     )
     # The generated statements come from the data: the shipped nu = 0.33 law is not monotone.
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     assert ("not monotone" in block) == (not law(0.33).monotone)

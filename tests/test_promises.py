@@ -89,7 +89,7 @@ def test_the_advice_below_a_law_works_when_followed():
     route (issue 45: it named `restitution epsilon --geometry sphere --v 9.67e-7`, which runs
     collisions for minutes where the route answers in a second); the call, made as written,
     answers at that speed."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     served = law(0.3, geometry="sphere")
     with pytest.raises(InputError) as info:

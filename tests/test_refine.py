@@ -17,7 +17,8 @@ import numpy as np
 import pytest
 
 from restitution.errors import InputError
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.laws.making.refine import neighbour_settings, refine, turning_speeds
 from restitution.limits.curves import compute_curves, epsilon_at
 from restitution.limits.sweep import defaults_for

@@ -335,7 +335,7 @@ def test_a_law_point_by_the_residual_route_meets_the_shipped_law():
     against the law's 0.9945147 +- 2.0e-5 (-0.14 combined errors); asserted within 2. Its error
     budget is whole: every term finite and the modes' term (3.7e-6 - 8.5e-6) below the wall's
     (2.1e-5)."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
     from restitution.limits.residual_point import residual_point
 
     v = 0.0329

@@ -7,7 +7,8 @@ import pytest
 
 from restitution.bodies.pair.partner import Partner
 from restitution.errors import InputError
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.laws.making import residual_law as rl
 from restitution.limits.run_options import Executor
 

@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.quasistatic.hertz import contact_law
 from restitution.quasistatic.slow_damped import damped_slow_epsilon, damped_slow_loss
 from restitution.quasistatic.slow_disk import MODEL_SPREAD, slow_collision, slow_loss, slow_modes

@@ -14,7 +14,8 @@ from scipy.integrate import solve_ivp
 
 from restitution.bodies.cache import get_modes
 from restitution.errors import InputError
-from restitution.laws.law import law_filename, leave_one_out
+from restitution.laws.law_file import law_filename
+from restitution.laws.law_point import leave_one_out
 from restitution.laws.making.production import SHIPPED_NUS
 from restitution.quasistatic.hertz import contact_law, quasistatic_collision
 from restitution.quasistatic.rayleigh import rayleigh_energy

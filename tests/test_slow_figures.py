@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from restitution.bodies.cache import get_modes
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.limits.extrapolation import extrapolate_modes
 from restitution.quasistatic.hertz import contact_law
 from restitution.quasistatic.rayleigh import rayleigh_energy

@@ -26,7 +26,9 @@ from restitution.bodies.kinds import body_kind
 from restitution.cli import main
 from restitution.errors import InputError
 from restitution.laws import exports
-from restitution.laws.law import EpsilonLaw, law, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
+from restitution.laws.law_load import law
 from restitution.laws.law_nu import NuInterpolatedLaw, law_for, shipped_nus
 from restitution.laws.making import production
 from restitution.laws.making.build import law_from_store

@@ -20,7 +20,7 @@ from _sampling import representatives
 from restitution.bodies.cache import get_modes
 from restitution.cli import main
 from restitution.errors import InputError
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.laws.si_law import si_law
 from restitution.quasistatic.hertz_sphere import drive_asymptote, sphere_contact_law
 from restitution.quasistatic.low_speed import LOW_SPEED_MODES, low_speed_loss

@@ -383,7 +383,7 @@ def _pair_files():
 
 
 def test_the_shipped_pair_laws_are_the_planned_ones():
-    from restitution.laws.law import law_filename
+    from restitution.laws.law_file import law_filename
     from restitution.laws.making.production import route_pair_laws
 
     planned = sorted(law_filename(nu, g, p) for g, nu, p in route_pair_laws())

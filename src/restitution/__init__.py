@@ -33,7 +33,8 @@ from restitution.dynamics.results import UNITS, CollisionResult
 from restitution.errors import InputError, RestitutionError
 from restitution.estimate import Estimate
 from restitution.laws import making as _making  # noqa: F401  (registers the computing routes)
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.laws.plastic import PlasticLaw, plastic_law
 from restitution.laws.request import LawRequest
 from restitution.laws.serve import LawAnswer, serve

@@ -10,7 +10,7 @@ Where each status occurs:
   ``DRIFT_EXCEEDED``, ``NOT_FINITE``;
 * a point of a sweep and a row of the result store (:mod:`restitution.limits.store`): ``OK``,
   ``FAILED``;
-* a point of a law (:class:`restitution.laws.law.LawPoint`): ``OK``, ``NOT_ASYMPTOTIC``,
+* a point of a law (:class:`restitution.laws.law_point.LawPoint`): ``OK``, ``NOT_ASYMPTOTIC``,
   ``QUASISTATIC``;
 * an answer in SI units (:mod:`restitution.laws.si_law`): ``COMPUTED``,
   ``COMPUTED_NOT_ASYMPTOTIC``, ``INTERPOLATED``, ``INTERPOLATED_NOT_ASYMPTOTIC``,

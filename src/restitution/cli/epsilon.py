@@ -515,7 +515,8 @@ def curve(
     otherwise; --format text|json|csv chooses how the table is printed. Exit status 1 when
     collisions failed; with --strict, 3 when a speed is not asymptotic.
     """
-    from restitution.laws.law import EpsilonLaw, law_filename
+    from restitution.laws.law import EpsilonLaw
+    from restitution.laws.law_file import law_filename
     from restitution.limits.curves import compute_curves
     from restitution.limits.store import Store
     from restitution.limits.sweep import grid

@@ -187,7 +187,7 @@ def judge_shipped_law(reference_path=None, *, geometry: str = DEFAULT_GEOMETRY) 
     """The shipped FEM reference of the body ``geometry`` against its shipped modal laws
     (``restitution.law(nu, geometry=geometry)``)."""
     from restitution.fem.reference import load_reference
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     points = load_reference(reference_path, geometry=geometry)
     laws = {nu: law(nu, geometry=geometry) for nu in sorted({p.nu for p in points})}

@@ -434,7 +434,8 @@ class DampedLaw:
         each with an inferred ``tau``); ``progress``
         (:class:`~restitution.limits.run_options.Progress` or its shorthand) draws a bar over
         them on stderr."""
-        from restitution.laws.law import QUASISTATIC_ROUTE, EpsilonLaw
+        from restitution.laws.law import EpsilonLaw
+        from restitution.laws.law_point import QUASISTATIC_ROUTE
 
         law = self.si.law
         served = self._served()

@@ -2,8 +2,8 @@
 
 The package ships laws ``epsilon(v)`` on a grid of Poisson numbers of each body: the disk's 2D
 ones (``restitution/laws/data/law_nu<nu>.json``) and the sphere's 3D ones
-(``law_sphere_nu<nu>.json``), :func:`restitution.laws.law`. :func:`law_for` serves, for the
-body ``geometry`` and from its laws only,
+(``law_sphere_nu<nu>.json``), :func:`restitution.laws.law_load.law`. :func:`law_for` serves,
+for the body ``geometry`` and from its laws only,
 
 * a shipped law when ``nu`` is within :data:`NU_MATCH` of a grid value (the 3D Poisson number is
   never known that well, and the JSON of every served point names the law's own ``nu``);
@@ -32,16 +32,9 @@ from scipy.interpolate import PchipInterpolator
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, real
-from restitution.laws.law import (
-    NU_MATCH,
-    EpsilonLaw,
-    _check_partner,
-    _curve_command,
-    _file_nu,
-    _refuse_other_body,
-    law,
-    law_filename,
-)
+from restitution.laws.law import EpsilonLaw, _check_partner
+from restitution.laws.law_file import _curve_command, _file_nu, law_filename
+from restitution.laws.law_load import NU_MATCH, _refuse_other_body, law
 
 __all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_match", "shipped_nus"]
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind, kinds
 from restitution.errors import InputError
-from restitution.laws.law import QUASISTATIC_ROUTE, leave_one_out
+from restitution.laws.law_point import QUASISTATIC_ROUTE, leave_one_out
 from restitution.limits.run_options import Progress, progress_of
 from restitution.status import Status
 

@@ -12,20 +12,26 @@ field's metadata carries the option that sets it on the command line, its help, 
 unit (``restitution law`` builds its options from them), in the manner of check-jsonschema's
 ``ParseResult``; each field is checked alone by its kind first
 (:mod:`restitution.laws.request_fields`: a value passed in Python gets the command line's type
-or a one-line refusal naming the option and the keyword), then the options together.
+or a one-line refusal naming the option and the keyword), then the options together
+(:mod:`restitution.laws.request_checks`).
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
-from restitution.laws.request_fields import checked, doubts, option, warn_implausible
+from restitution.laws.request_checks import (
+    check_options,
+    check_partner_ratios,
+    check_wall_numbers,
+    paired_shapes,
+    unequal_sizes_advice,
+)
+from restitution.laws.request_fields import checked, option, warn_implausible
 from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
-from restitution.laws.wall_route import check_wall_request
 
 __all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields"]
 
@@ -38,15 +44,6 @@ MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 ROUTES = ("modal", "residual")
 """``--route`` of ``--compute``: the modal production or the static residual
 (:mod:`restitution.laws.making.residual_law`)."""
-
-WALL_RATIOS = (1e-12, 1e12)
-"""The wall's modulus and density over the grain's that an elastic wall takes (those of
-:class:`restitution.bodies.wall.HalfSpace`, whose refusal speaks in ratios; the request says it
-in Pa and kg/m^3 first)."""
-
-PLATE_RADII = (1e-6, 1e6)
-"""The plate thicknesses, in the ball's radii, that :class:`restitution.bodies.wall.Plate`
-takes."""
 
 
 @dataclass(frozen=True)
@@ -387,41 +384,10 @@ class LawRequest:
     def __post_init__(self) -> None:
         # Each field alone first, by its option's kind, in the command's words and the Python
         # keyword's (issue 47: "speeds ... array([ 1., -1.])"; wall_E=True took 13 GiB), then
-        # the options together.
+        # the options together (restitution.laws.request_checks).
         for f in fields(self):
             object.__setattr__(self, f.name, checked(f, getattr(self, f.name)))
-        if self.reference_speed is not None and self.maxwell_temperature is not None:
-            raise InputError("give --reference-speed or --maxwell-temperature, not both")
-        if self.friction is not None:
-            if self.friction < 0.0:
-                raise InputError(f"--friction must be a number >= 0, got {self.friction!r}")
-            if self.export_dir is None:
-                raise InputError("--friction goes into the DEM snippets: add --export DIR")
-        self._check_ratio()
-        self._check_damping()
-        other = self.partner_grain
-        if other is not None and self.damped:
-            raise InputError(
-                "material damping of grains of two materials is not modelled (each material has "
-                "its own relaxation time); leave out the damping options or the partner material"
-            )
-        if self.identical_law_file is not None or self.partner_identical_law_file is not None:
-            self._check_identical_law_files()
-        if self.elastic_wall is not None:
-            self._check_elastic_wall()
-        if self.plastic or self.measured_fixes is not None or self.fixes_both:
-            self._check_plastic()
-        if self.compute and self.law_file is not None:
-            raise InputError("give --law-file or --compute, not both")
-        if not self.compute and (self.store is not None or self.force or self.route):
-            raise InputError(
-                "--store, --force and --route belong to --compute; add --compute or leave them out"
-            )
-        if self.route == "residual" and self.store is not None:
-            raise InputError(
-                "--store holds the modal route's collisions; the residual route keeps its "
-                "points in the cache: leave out --store or --route residual"
-            )
+        check_options(self)
         # Last, so that a refused request is refused in one line: numbers outside the range
         # of real grains and walls (a 5 m grain, a yield stress above any metal's) warn once.
         warn_implausible(self)
@@ -458,7 +424,7 @@ class LawRequest:
         if kind.pair_compression is None:
             raise InputError(
                 f"laws of two {kind.geometry}s of different materials are not computed yet; use "
-                f"--shape {_paired_shapes()}, or leave out "
+                f"--shape {paired_shapes()}, or leave out "
                 "--partner-E/--partner-nu/--partner-rho"
             )
         values = tuple(
@@ -475,32 +441,8 @@ class LawRequest:
                 f"{values[1]:g}, --partner-rho {values[2]:g} kg/m^3, each this grain's where not "
                 "given)"
             ) from None
-        self._check_partner_ratios(values)
+        check_partner_ratios(self, values)
         return other
-
-    def _check_partner_ratios(self, values) -> None:
-        """The partner's modulus and density within what a pair takes (:data:`restitution.
-        bodies.pair.partner.RATIO_RANGE`), refused in Pa and kg/m^3 with the options given."""
-        from restitution.bodies.pair.partner import RATIO_RANGE
-
-        lo, hi = RATIO_RANGE
-        for opt, own, value, mine, unit in (("--partner-E", "--E", values[0], self.E, "Pa"),
-                                            ("--partner-rho", "--rho", values[2], self.rho,
-                                             "kg/m^3")):  # fmt: skip
-            ratio = value / mine
-            if lo <= ratio <= hi:
-                continue
-            if ratio > hi and opt == "--partner-E":
-                way = (
-                    "to this grain such a partner is a rigid wall: --against wall without the "
-                    "partner options"
-                )
-            else:
-                way = f"check {opt} and its units ({unit})"
-            raise InputError(
-                f"{opt} {value:g} {unit} is {ratio:.3g} times {own} {mine:g} {unit}, beyond the "
-                f"{lo:g} ... {hi:g} times this grain's a pair of grains takes; {way}"
-            )
 
     @property
     def elastic_wall(self):
@@ -521,7 +463,7 @@ class LawRequest:
             )
         from restitution.bodies.wall import HalfSpace, Plate
 
-        self._check_wall_numbers()
+        check_wall_numbers(self)
         ratios = (self.wall_E / self.E, self.wall_rho / self.rho, self.wall_nu)
         try:
             if self.wall_thickness is None:
@@ -529,71 +471,6 @@ class LawRequest:
             return Plate(*ratios, thickness=self.wall_thickness / self.radius)
         except InputError as exc:
             raise InputError(f"the wall: {exc}") from None
-
-    def _check_wall_numbers(self) -> None:
-        """The wall's numbers against what the wall's bodies take (:data:`WALL_RATIOS`,
-        :data:`PLATE_RADII`), refused in the options' units and words: the wall's modulus and
-        density against the grain's, a plate's thickness against the ball's radius (naming the
-        one of the two outside the range of real grains and plates, :data:`restitution.laws.
-        request_fields.PLAUSIBLE`)."""
-        lo, hi = WALL_RATIOS
-        for opt, own, value, mine, unit in (("--wall-E", "--E", self.wall_E, self.E, "Pa"),
-                                            ("--wall-rho", "--rho", self.wall_rho, self.rho,
-                                             "kg/m^3")):  # fmt: skip
-            ratio = value / mine
-            if not lo <= ratio <= hi:
-                raise InputError(
-                    f"{opt} {value:g} {unit} is {ratio:.3g} times {own} {mine:g} {unit}, beyond "
-                    f"the {lo:g} ... {hi:g} times the grain's an elastic wall takes; check {opt} "
-                    f"and its units ({unit}), or leave out the wall options for a rigid wall"
-                )
-        if not -1.0 < self.wall_nu < 0.5:
-            raise InputError(
-                f"the wall's Poisson number must lie in (-1, 0.5), got --wall-nu {self.wall_nu:g}"
-            )
-        if self.wall_thickness is None:
-            return
-        if self.radius is None:
-            raise InputError("a plate (--wall-thickness) needs the ball's --radius, m")
-        lo, hi = PLATE_RADII
-        radii = self.wall_thickness / self.radius
-        if not lo <= radii <= hi:
-            culprit = "; ".join(
-                text for text in doubts(self) if text.startswith(("--radius", "--wall-thickness"))
-            )
-            culprit = culprit or "check --wall-thickness and --radius (both in m)"
-            raise InputError(
-                f"--wall-thickness {self.wall_thickness:g} m is {radii:.3g} times --radius "
-                f"{self.radius:g} m; a plate takes {lo:g} ... {hi:g} radii of the ball: {culprit}"
-            )
-
-    def _check_elastic_wall(self) -> None:
-        if self.against != "wall":
-            raise InputError(
-                "--wall-E, --wall-nu and --wall-rho describe an elastic wall: give them with "
-                "--against wall"
-            )
-        if body_kind(BODIES[self.shape]).planar:
-            raise InputError(
-                "an elastic wall is computed for spheres (a sphere on a half-space); use --shape "
-                "sphere, or leave out the wall options (a rigid wall)"
-            )
-        if self.radius is not None and self.wall_thickness is None and not self.damped:
-            raise InputError(
-                "--radius goes with --wall-thickness (a plate) or --relaxation-time; a "
-                "half-space needs no radius: leave it out"
-            )
-        needs = [what for what, asked in (("damping", self.damped),
-                 ("--law-file", self.law_file is not None),
-                 ("--compute", self.compute)) if asked]  # fmt: skip
-        if needs:
-            raise InputError(
-                f"{' and '.join(needs)} with an elastic wall: not available yet (the wall's law "
-                "comes from its routes, computed now); leave them out"
-            )
-        # A wall so soft that the slowest speed sinks the ball into it: refused in Pa and m/s
-        # before any route runs (--wall-E 63, GPa typed as Pa, once took 6 GB).
-        check_wall_request(self.grain, self.elastic_wall, self.speeds, self.wall_E)
 
     @property
     def damped(self) -> bool:
@@ -634,91 +511,6 @@ class LawRequest:
         given = (self.yield_stress, self.partner_yield_stress, self.limiting_pressure)
         return given != (None,) * 3 or self.fixes_limiting_pressure or self.fixes_both
 
-    def _check_damping(self) -> None:
-        """The damping options together: a measurement is an epsilon and a speed; a relaxation
-        time needs the radius (and a radius alone means nothing, but a plate's or an elastic
-        wall's, whose checks say so); a measurement that fixes the relaxation time and the
-        relaxation time given are one too many."""
-        if (self.measured_epsilon is None) != (self.measured_speed is None):
-            raise InputError("--measured-epsilon and --measured-speed go together; give both")
-        if self.relaxation_time is not None and self.radius is None:
-            raise InputError(
-                "--relaxation-time needs --radius (m): the viscous loss depends on tau c / R"
-            )
-        if (
-            self.radius is not None
-            and self.relaxation_time is None
-            and self.measured_epsilon is None
-            and (self.wall_thickness is None and self.wall_E is None)
-        ):
-            raise InputError(
-                "--radius goes with --relaxation-time or --measured-epsilon (damping); give "
-                "damping or leave out --radius"
-            )
-        if (self.relaxation_time is not None and self.measured_epsilon is not None
-                and self.measured_fixes not in ("limiting-pressure", "both")):  # fmt: skip
-            raise InputError(
-                "give --relaxation-time (with --radius) or --measured-epsilon with "
-                "--measured-speed, not both (or let the measurement fix the limiting pressure: "
-                "--measured-fixes limiting-pressure)"
-            )
-
-    def _check_plastic(self) -> None:
-        asked = self.measured_fixes is not None or self.fixes_both
-        if asked and None in (self.measured_epsilon, self.measured_speed):
-            raise InputError(
-                "--measured-fixes says what --measured-epsilon fixes: give it with "
-                "--measured-epsilon and --measured-speed"
-            )
-        if self.fixes_both:
-            second = (self.second_measured_epsilon, self.second_measured_speed)
-            if None in second:
-                raise InputError(
-                    "two measurements fix both parameters: give --second-measured-epsilon and "
-                    "--second-measured-speed with the first measurement"
-                )
-            if self.measured_fixes not in (None, "both"):
-                raise InputError(
-                    f"two measurements fix both parameters, not only the {self.measured_fixes}: "
-                    "leave out --measured-fixes or the second measurement"
-                )
-            given = [name for name, value in (("--yield-stress", self.yield_stress),
-                     ("--partner-yield-stress", self.partner_yield_stress),
-                     ("--limiting-pressure", self.limiting_pressure),
-                     ("--relaxation-time", self.relaxation_time)) if value is not None]  # fmt: skip
-            if given:
-                raise InputError(
-                    f"two measurements fix the relaxation time and the limiting pressure: leave "
-                    f"out {', '.join(given)}"
-                )
-        if not self.plastic:
-            return
-        if self.shape in BODIES and body_kind(BODIES[self.shape]).planar:
-            raise InputError(
-                "plastic flow is computed for spheres (Thornton's contact); no comparable law of "
-                "cylinders or disks is derived (docs/plasticity.md): use --shape sphere, or "
-                "leave out the plastic options"
-            )
-        if self.wall_thickness is not None:
-            raise InputError(
-                "plastic flow on a thin plate is not modelled (Zener's plate model is elastic); "
-                "leave out --wall-thickness (a half-space) or the plastic options"
-            )
-        if self.fixes_limiting_pressure and (self.yield_stress, self.partner_yield_stress,
-                                             self.limiting_pressure) != (None,) * 3:  # fmt: skip
-            raise InputError(
-                "one measurement fixes one parameter: give the yield stress (or limiting "
-                "pressure), or let --measured-fixes limiting-pressure fix it, not both"
-            )
-        needs = [what for what, asked in (("--export", self.export_dir is not None),
-                 ("--reference-speed/--maxwell-temperature", self.constants),
-                 ("--compute", self.compute)) if asked]  # fmt: skip
-        if needs:
-            raise InputError(
-                f"{' and '.join(needs)} with plastic flow: not available yet (the plastic law is "
-                "computed at the asked speeds only); leave them out"
-            )
-
     @property
     def constants(self) -> bool:
         """Whether a constant for one-number codes is asked for."""
@@ -753,99 +545,11 @@ class LawRequest:
             "route": self.route,
         }  # fmt: skip
 
-    # -- refusals -------------------------------------------------------------------------------
-
-    def _check_ratio(self) -> None:
-        ratio = self.partner_radius_ratio
-        if ratio is None:
-            return
-        if not (math.isfinite(ratio) and ratio > 0):
-            raise InputError(
-                "--partner-radius-ratio must be a positive number R2/R1 (1 = identical grains), "
-                f"got {ratio:g}"
-            )
-        if self.against != "grain":
-            raise InputError(
-                "--partner-radius-ratio describes a second grain: give it with --against "
-                "grain, or leave it out against a wall"
-            )
-        if ratio == 1.0 or self.shape not in BODIES:
-            return
-        from restitution.bodies.pair.partner import RATIO_RANGE
-
-        lo, hi = RATIO_RANGE
-        if not lo <= ratio <= hi:
-            raise InputError(
-                f"--partner-radius-ratio {ratio:g}: {self.unequal_sizes()}; a pair takes "
-                f"{lo:g} ... {hi:g}"
-            )
-        kind = body_kind(BODIES[self.shape])
-        if kind.pair_compression is None:
-            raise InputError(
-                f"--partner-radius-ratio {ratio:g}: laws of two {kind.geometry}s of different "
-                f"sizes are not computed yet; use --shape {_paired_shapes()}, or leave it out "
-                f"(identical {kind.geometry}s)"
-            )
-
     def unequal_sizes(self) -> str:
         """What answers two grains too unequal in size for a pair (a sentence with the options
         that ask it): the smaller grain on an elastic wall of the larger one's material, which
         is to it a half-space (the larger grain's waves come back after the contact)."""
-        ratio = self.partner_radius_ratio
-        big = max(ratio, 1.0 / ratio)
-        mine = (self.E, self.nu, self.rho)
-        theirs = tuple(own if given is None else given for own, given in
-                       zip(mine, (self.partner_E, self.partner_nu, self.partner_rho),
-                           strict=True))  # fmt: skip
-        head = f"the larger grain is {big:g} times the smaller's radius"
-        if body_kind(BODIES[self.shape]).planar:
-            return (
-                f"{head}: to the smaller grain it is a flat wall, and an elastic wall is "
-                "computed for spheres only (--against wall, a rigid wall, is its limit when it "
-                "is also far stiffer)"
-            )
-        wall = "--against wall --wall-E {:g} --wall-nu {:g} --wall-rho {:g}"
-        if ratio > 1.0 or theirs == mine:
-            ask = (
-                f"this grain with {wall.format(*theirs)} in place of --against grain and "
-                "--partner-radius-ratio"
-            )
-            if theirs != mine:
-                ask += " and the partner options"
-        else:
-            ask = (
-                f"the partner, the smaller grain, on a wall of this grain's material: "
-                f"restitution law --E {theirs[0]:g} --nu {theirs[1]:g} --rho {theirs[2]:g} "
-                f"--shape {self.shape} {wall.format(*mine)}"
-            )
-        return (
-            f"{head}: to the smaller grain the larger one is an elastic half-space (the waves "
-            f"reflected inside it return only after the contact), and w the smaller grain's "
-            f"speed towards it; ask for {ask}"
-        )
-
-    def _check_identical_law_files(self) -> None:
-        if self.partner_identical_law_file is not None and self.partner_grain is None:
-            raise InputError(
-                "--partner-identical-law-file serves the 2-2 constant of a partner of another "
-                "material: give it with --partner-E/--partner-nu/--partner-rho"
-            )
-        if self.radius_ratio is None and self.partner_grain is None:
-            raise InputError(
-                "--identical-law-file serves the 1-1 and 2-2 constants of two grain sizes: give "
-                "it with --partner-radius-ratio other than 1 (identical grains take --law-file)"
-            )
-        if not self.constants:
-            raise InputError(
-                "--identical-law-file and --partner-identical-law-file serve the constants per "
-                "type pair: give them with --reference-speed or --maxwell-temperature"
-            )
-
-
-def _paired_shapes() -> str:
-    """The shapes whose laws of two grains of different sizes or materials are computed."""
-    names = [shape for shape, body in BODIES.items() if body_kind(body).pair_compression]
-    return " or ".join(names)
+        return unequal_sizes_advice(self)
 
 
 def option_fields():

@@ -196,7 +196,7 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
     )
 
     check_speed_count(len(r.speeds), PLASTIC_SECONDS_PER_SPEED, "plastic flow on one pulse")
-    # The request refused what does not go together (LawRequest._check_damping).
+    # The request refused what does not go together (request_checks._check_damping).
     tau = 0.0 if r.relaxation_time is None else r.relaxation_time * s.grain.c_m_s / r.radius
     measured = r.measured_epsilon is not None
     if r.fixes_both:

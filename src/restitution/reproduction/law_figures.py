@@ -16,7 +16,8 @@ import argparse
 from importlib import resources
 from pathlib import Path
 
-from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
 from restitution.laws.law_nu import shipped_nus
 
 __all__ = ["draw_figures", "main", "shipped_law_files"]

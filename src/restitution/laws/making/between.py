@@ -26,7 +26,8 @@ import numpy as np
 from restitution import atomic
 from restitution.bodies.kinds import geometries
 from restitution.errors import InputError
-from restitution.laws.law import EpsilonLaw, law
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_load import law
 from restitution.laws.making.refine import neighbour_settings
 from restitution.limits.run_options import Progress, progress_of
 

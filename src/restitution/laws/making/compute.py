@@ -27,7 +27,8 @@ from restitution import budget
 from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import CorruptFileError, InputError
-from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
 from restitution.laws.low_speed import low_speeds_of
 from restitution.laws.making import production
 from restitution.laws.making.production import pair_groups

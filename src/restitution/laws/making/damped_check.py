@@ -189,7 +189,7 @@ def compare(geometry: str, nu: float, v: float, tau: float, modal: float, modal_
     """Compare a modal damped epsilon with the sum of the shipped elastic law and the
     quasistatic viscous law at the same point: on the law's stiffness (the published law),
     and, given the elastic modal body's own ``compression``, on that stiffness."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
     from restitution.quasistatic.viscoelastic import viscous_collision
 
     elastic_law = law(nu, geometry=geometry)

@@ -260,7 +260,8 @@ def build(
     list of Path
         The files written.
     """
-    from restitution.laws.law import EpsilonLaw, law_filename
+    from restitution.laws.law import EpsilonLaw
+    from restitution.laws.law_file import law_filename
     from restitution.laws.making.refine import refine
     from restitution.limits.curves import compute_curves
 
@@ -420,7 +421,7 @@ def main(argv=None) -> None:
         return
     if args.low_speeds_only:
         from restitution.bodies.pair.partner import Partner
-        from restitution.laws.law import law_filename
+        from restitution.laws.law_file import law_filename
 
         start = time.perf_counter()
         if args.geometry == "pair":

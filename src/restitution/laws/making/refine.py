@@ -36,7 +36,8 @@ import numpy as np
 from scipy.interpolate import CubicSpline, PchipInterpolator
 
 from restitution.errors import InputError
-from restitution.laws.law import EpsilonLaw, point_record
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_point import point_record
 from restitution.limits.run_options import Executor, Progress, progress_of
 from restitution.limits.sweep import SweepSettings
 from restitution.provenance import code_version

@@ -56,7 +56,8 @@ from restitution._paths import cache_root
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, OutputError, is_real
 from restitution.jsonable import content_digest, json_default
-from restitution.laws.law import EpsilonLaw, law_filename
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.law_file import law_filename
 from restitution.laws.low_speed import low_speed_points, low_speeds_of
 from restitution.laws.making.compute import law_dir, production_groups, set_aside
 from restitution.laws.making.refine import FACTOR, PER_INTERVAL, RULE, turning_speeds

@@ -30,7 +30,7 @@ END = "<!-- END GENERATED -->"
 
 def shipped_fig01(nus: Sequence[float] = (0.33, 0.9)):
     """The shipped laws' points as Fig. 1 data (speeds in ``c``)."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
     from restitution.reproduction.figures.fig01_epsilon import Fig01Data
 
     laws = [law(nu) for nu in nus]
@@ -54,7 +54,7 @@ def shipped_fig01(nus: Sequence[float] = (0.33, 0.9)):
 
 def law_summary(nus: Sequence[float] = (0.33, 0.9)) -> str:
     """Markdown statements about the shipped laws, every number read from them."""
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
     from restitution.reproduction.claims.sec4_epsilon import epsilon_rows
 
     f = shipped_fig01(nus)

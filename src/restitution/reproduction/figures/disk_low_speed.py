@@ -23,7 +23,7 @@ from restitution.atomic import replacing
 from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.fem.reference import load_reference
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.quasistatic.hertz import contact_law
 from restitution.quasistatic.rayleigh import rayleigh_energy
 from restitution.quasistatic.slow_disk import asymptotic_loss

@@ -4,7 +4,7 @@ and how the lost energy is shared between the two disks.
 Units: ``w`` is the relative normal speed of the two centres in units of ``c = sqrt(E/rho)``
 (2D constants of both disks); epsilon and the shares are dimensionless.
 
-Left: the shipped laws (:func:`restitution.laws.law.law` with a
+Left: the shipped laws (:func:`restitution.laws.law_load.law` with a
 :class:`~restitution.bodies.pair.partner.Partner`), ``R2/R1 = 1`` being the disk on the wall at
 ``v = w/2`` (the identity of two identical disks). Points whose extrapolation did not pass
 every check are drawn hollow. Right: the share of the energy lost to vibrations that sits in the
@@ -74,7 +74,7 @@ def compute(
     """
     from restitution.bodies.pair.partner import Partner
     from restitution.dynamics.collision import collide
-    from restitution.laws.law import law
+    from restitution.laws.law_load import law
 
     out = []
     for r in ratios:

@@ -59,7 +59,7 @@ class SlowPoint:
 def compute(law, v_max: float = 2e-3) -> tuple[SlowPoint, ...]:
     """The slow modal points of ``law`` (an :class:`restitution.laws.law.EpsilonLaw`),
     ``v <= v_max`` (its low-speed points have no extrapolation to show)."""
-    from restitution.laws.law import QUASISTATIC_ROUTE
+    from restitution.laws.law_point import QUASISTATIC_ROUTE
 
     out = []
     for p in law.metadata.get("points", []):

@@ -57,7 +57,7 @@ class RoutesData:
 def compute(law, *, n_modes: int = 1800, v_max: float = 0.02, n_v: int = 25) -> RoutesData:
     """Rayleigh's estimate on ``[v_min of the law's modal points / 2, v_max]`` and those points
     (the low-speed points: :mod:`restitution.reproduction.figures.disk_low_speed`)."""
-    from restitution.laws.law import QUASISTATIC_ROUTE
+    from restitution.laws.law_point import QUASISTATIC_ROUTE
 
     pts = [
         p

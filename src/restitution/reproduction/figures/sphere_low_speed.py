@@ -21,7 +21,7 @@ import numpy as np
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.fem.reference import load_reference
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["SlowSphere", "compute", "main", "plot"]

@@ -19,7 +19,7 @@ import numpy as np
 from restitution.atomic import replacing
 from restitution.bodies.pair import Partner
 from restitution.bodies.sphere.kind import KIND as SPHERE
-from restitution.laws.law import law
+from restitution.laws.law_load import law
 from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["PairCurve", "compute", "main", "plot"]
