@@ -19,7 +19,8 @@ from scipy.special import gamma
 from restitution.errors import InputError, RestitutionError
 from restitution.laws import exports
 from restitution.laws.law import EpsilonLaw
-from restitution.laws.si_law import STATUSES, SILaw, si_law
+from restitution.laws.si_law import SILaw, si_law
+from restitution.laws.si_point import STATUSES
 from restitution.laws.units import Grain
 
 GRAIN = Grain(E=63e9, nu=0.25, rho=2500.0, geometry="thin-disk")  # nu_2d = 0.25

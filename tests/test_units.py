@@ -12,7 +12,8 @@ import restitution
 from restitution.cli import main
 from restitution.errors import InputError
 from restitution.laws.law_nu import law_for, shipped_nus
-from restitution.laws.si_law import STATUSES, si_law
+from restitution.laws.si_law import si_law
+from restitution.laws.si_point import STATUSES
 from restitution.laws.units import Grain, partner_factor
 
 # A glass whose Poisson number, 0.2481 (commercial glasses: about 0.20-0.25), maps in a long

@@ -1,6 +1,6 @@
 """Serve a :class:`~restitution.laws.request.LawRequest`: the one library call behind ``law``.
 
-Units: SI (m/s; the law's own answer carries its units, :data:`restitution.laws.si_law.SI_UNITS`).
+Units: SI (m/s; the law's own answer carries its units, :data:`restitution.laws.si_point.SI_UNITS`).
 
 :func:`serve` decides which law answers (a shipped one, one computed on demand with
 ``compute=True``, a given file), adds material damping, the constants for one-number DEM codes
@@ -32,7 +32,8 @@ from restitution.laws.mechanisms import flag_points
 from restitution.laws.plastic import PlasticLaw
 from restitution.laws.request import LawRequest
 from restitution.laws.routes.base import check_speed_count, route_for
-from restitution.laws.si_law import SI_UNITS, SILaw, overall_status, si_law
+from restitution.laws.si_law import SILaw, si_law
+from restitution.laws.si_point import SI_UNITS, overall_status
 from restitution.limits.run_options import Progress
 from restitution.status import Status
 
@@ -55,7 +56,7 @@ class LawAnswer:
     damped : DampedLaw or None
         The damping grain's law (elastic and viscous parts), when damping was asked for.
     points : tuple
-        One point per asked speed (:class:`~restitution.laws.si_law.SIPoint`, or
+        One point per asked speed (:class:`~restitution.laws.si_point.SIPoint`, or
         :class:`~restitution.laws.damped.DampedPoint` for a damping grain).
     status, advice : str, str or None
         The answer's status (the worst of its points') and what to do about it.
@@ -228,7 +229,7 @@ def _plastic_answer(r: LawRequest, s: SILaw, note) -> LawAnswer:
 
 
 def _plastic_status(points) -> tuple[str, str | None]:
-    """:func:`~restitution.laws.si_law.overall_status`, whose advice for ``outside`` speaks of
+    """:func:`~restitution.laws.si_point.overall_status`, whose advice for ``outside`` speaks of
     the law's range, saying instead where a speed has no value because the grain does not
     rebound (its contact computed, its losses above the impact energy)."""
     status, advice = overall_status(points)

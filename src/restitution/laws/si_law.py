@@ -17,8 +17,6 @@ Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2
 
 from __future__ import annotations
 
-import functools
-import math
 import os
 from dataclasses import dataclass
 
@@ -26,389 +24,27 @@ import numpy as np
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, describe, is_real, real_array
-from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.mechanisms import flag_points, law_mechanisms, mechanism_fields
+from restitution.laws.si_point import (
+    BELOW_BUDGET_S,
+    DIRECT_WALL_SHARES,
+    SAME_SPEED,
+    STATUSES,
+    SIPoint,
+    cut_at_one,
+    loss_shares_at,
+    low_speed_at,
+    not_informative,
+    point_status,
+    quasistatic_note,
+    route_reach_of,
+)
 from restitution.laws.units import PARTNERS, Grain, partner_factor
 from restitution.status import Status
 
-__all__ = [
-    "SI_UNITS",
-    "STATUSES",
-    "SILaw",
-    "SIPoint",
-    "law_target",
-    "overall_status",
-    "pair_partner",
-    "si_law",
-]
-
-STATUSES: dict[Status, str] = {
-    Status.COMPUTED: "at a computed speed; its extrapolation passed the asymptotic checks",
-    Status.COMPUTED_NOT_ASYMPTOTIC: (
-        "at a computed speed; its extrapolation did not pass every asymptotic check (the error "
-        "bar is the fit's, read it as indicative)"
-    ),
-    Status.INTERPOLATED: "between two computed speeds whose extrapolations passed their checks",
-    Status.INTERPOLATED_NOT_ASYMPTOTIC: (
-        "between two computed speeds, at least one of which did not pass every asymptotic check"
-    ),
-    Status.QUASISTATIC: (
-        "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left "
-        "in the modes by Hertz's force pulse, with an error band for the uncertain contact time "
-        "(the sphere below the modal laws' slowest speed; docs/spheres.md)"
-    ),
-    Status.OUTSIDE: "outside the computed range of the law; no value (the law never extrapolates)",
-}
-"""Status of a point -> what it means, in the words of the JSON output."""
-
-DISK_QUASISTATIC_NOTE = (
-    "from the slow-impact model, not from collisions: the modes below a cut frequency in "
-    "motion, the others static, the contact closed by the 2D Hertz law; error: its convergence "
-    "in the cut plus 1.2 % of the loss (disks below the modal laws' slowest speed; "
-    "docs/quasistatic.md, section 7)"
-)
-"""What ``quasistatic`` means for a disk's law (:data:`STATUSES` says it for the sphere's)."""
-
-SPHERE_PAIR_QUASISTATIC_NOTE = (
-    "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left in "
-    "both spheres' modes by the pair's Hertz force pulse, each sphere driven at its own pole, "
-    "with an error band for the uncertain contact time (two spheres up to the route's reach; "
-    "docs/spheres.md, section 'Two spheres')"
-)
-"""What ``quasistatic`` means for a law of two spheres."""
-
-ELASTIC_WALL_QUASISTATIC_NOTE = (
-    "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left in "
-    "the ball's modes by Hertz's pulse on the elastic wall, plus the energy radiated into the "
-    "wall as elastic waves (Lamb's point-force radiation of the same pulse), each with its "
-    "error (docs/walls.md)"
-)
-"""What ``quasistatic`` means for a sphere on an elastic half-space."""
-
-PLATE_QUASISTATIC_NOTE = (
-    "from Zener's thin-plate model, not from collisions: Hertz's contact coupled to the plate's "
-    "point impedance 8 sqrt(D rho h), solved as the coupled equation; the loss is the plate's "
-    "flexural waves plus the ball's own vibrations driven by the same force history; its error "
-    "an estimate of the model's neglected terms, judged by the finite elements (docs/walls.md)"
-)
-"""What ``quasistatic`` means for a sphere on a thin plate."""
-
-_ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
-"""What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
-kind's :attr:`~restitution.bodies.kinds.BodyKind.low_speed_route`, the routes of
-:mod:`restitution.laws.making.production`): the disk's slow-impact model; for any other route (the
-sphere's Rayleigh estimate) :data:`STATUSES` says it."""
-
-SI_UNITS: dict[str, str] = {
-    "system": "SI at the edge: the material's 3D constants and the speeds; reduced speeds v/c",
-    "speed": "m/s (speed_m_s: the impact speed w against the partner)",
-    "v_over_c": "c = the law's speed unit (c_m_s, m/s; c_formula says which)",
-    "E": "Pa",
-    "rho": "kg/m^3",
-    "epsilon": "dimensionless: rebound speed / impact speed (relative speeds for two grains)",
-    "temperature": "m^2/s^2 (granular temperature <v_x^2>)",
-}
-"""The units of ``restitution law``'s numbers (its JSON's ``units``)."""
-
-_WORST_FIRST = (
-    Status.OUTSIDE,
-    Status.QUASISTATIC,
-    Status.INTERPOLATED_NOT_ASYMPTOTIC,
-    Status.COMPUTED_NOT_ASYMPTOTIC,
-)
-
-_SAME = 1e-9  # relative tolerance for "at a computed speed"
-
-
-@dataclass(frozen=True)
-class SIPoint:
-    """epsilon at one SI speed.
-
-    Attributes
-    ----------
-    speed_m_s : float
-        Impact speed ``w``, m/s (towards the wall, or relative normal speed of two grains).
-    v_over_c : float
-        Reduced speed ``v`` towards the wall, units of ``c``.
-    epsilon, epsilon_err : float or None
-        Coefficient of restitution and its error; ``None`` when ``status == "outside"``.
-    status : str
-        One of :data:`STATUSES`.
-    note : str
-        Why, when the status is not ``"computed"``.
-    loss_shares : tuple of float or None
-        For two grains whose law holds the split (two spheres' low-speed route): the fractions
-        of the lost energy left in the first and in the second grain (they add up to 1; of the
-        central value, without an error of their own; between computed speeds linear in
-        ``ln v``). ``None`` elsewhere.
-    """
-
-    speed_m_s: float
-    v_over_c: float
-    epsilon: float | None
-    epsilon_err: float | None
-    status: str
-    note: str = ""
-    loss_shares: tuple[float, float] | None = None
-
-    @property
-    def epsilon_range(self) -> tuple[float, float] | None:
-        """``(epsilon - err, epsilon + err)`` cut to ``[0, 1]``: an elastic grain at rest before
-        the impact only loses energy, so epsilon <= 1 whatever the error; ``None`` outside."""
-        if self.epsilon is None or self.epsilon_err is None:
-            return None
-        return (
-            max(0.0, self.epsilon - self.epsilon_err),
-            min(1.0, self.epsilon + self.epsilon_err),
-        )
-
-    def to_dict(self) -> dict:
-        rng = self.epsilon_range
-        return {
-            "speed_m_s": self.speed_m_s,
-            "v_over_c": self.v_over_c,
-            "epsilon": self.epsilon,
-            "epsilon_err": self.epsilon_err,
-            "epsilon_min": None if rng is None else rng[0],
-            "epsilon_max": None if rng is None else rng[1],
-            "status": self.status,
-            "note": self.note,
-            "loss_shares": None if self.loss_shares is None else list(self.loss_shares),
-        }
-
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
-
-
-_CUT_AT_ONE = (
-    "epsilon + error exceeds 1: an elastic grain at rest before the impact only loses energy, "
-    "so epsilon <= 1 and epsilon_max is cut there"
-)
-
-
-BELOW_BUDGET_S = 300.0
-"""Longest estimated time for the speeds below a law computed on demand by its low-speed
-route; beyond it they stay ``outside`` (ask for fewer speeds)."""
-
-
-@functools.lru_cache(maxsize=4096)
-def _low_speed_at(geometry: str, nu: float, partner, v: float):
-    """epsilon, its error and the two bodies' shares of the loss (``None`` where the route does
-    not split it) at ``v`` (``c``) by the low-speed route of ``geometry`` (with ``partner``),
-    one speed alone (so without an interpolation term); remembered."""
-    from restitution.laws.low_speed import low_speed_points
-
-    (record,), _ = low_speed_points(nu, [v], geometry=geometry, partner=partner)
-    first = _first_share(record)
-    shares = None if first is None else (first, 1.0 - first)
-    return float(record["epsilon"]), float(record["epsilon_err"]), shares
-
-
-def _cut(note: str, eps: float, err: float) -> str:
-    """``note``, saying so when ``epsilon + err`` exceeds 1."""
-    return note if eps + err <= 1.0 else (note + "; " if note else "") + _CUT_AT_ONE
-
-
-def _quasistatic_note(law) -> str:
-    """What a low-speed point of ``law`` is, by the route of its body's kind (on the wall, or of
-    its pair): the disk's slow-impact model or the sphere's Rayleigh estimate."""
-    kind = body_kind(law.geometry)
-    route = kind.low_speed_route if law.partner is None else kind.pair_low_speed_route
-    if isinstance(law, EpsilonLaw) and "wall" in law.metadata:
-        if law.metadata["wall"].get("kind") == "plate":
-            return PLATE_QUASISTATIC_NOTE
-        return ELASTIC_WALL_QUASISTATIC_NOTE
-    if law.partner is not None and route == "rayleigh":
-        return SPHERE_PAIR_QUASISTATIC_NOTE
-    return _ROUTE_NOTES.get(route, STATUSES[Status.QUASISTATIC])
-
-
-def _stored_note(record: dict) -> str:
-    """What a stored finite-element point of an elastic wall is."""
-    why = record.get("model_refused")
-    return (
-        "from the finite elements, not from a route: the wall's judge stored at this speed "
-        f"(v = {float(record['v_stored']):.6g} c; ball and wall meshed, both limits; the "
-        "ball's vibrations and the wall's waves together, not split; docs/walls.md)"
-        + (f"; the wall's route does not hold here: {why}" if why else "")
-    )
-
-
-def _first_share(record: dict) -> float | None:
-    """The first grain's fraction of the loss in a law point's record, if it holds the split."""
-    shares = record.get("shares")
-    if not shares or len(shares) != 2 or not sum(shares) > 0:
-        return None
-    return float(shares[0]) / float(sum(shares))
-
-
-DIRECT_WALL_SHARES = 20
-"""Most speeds of one answer whose ball/wall split is computed by the wall's route at the speed
-itself when it is not a computed point of the law (:func:`_shares`; about half a second each)."""
-
-
-@functools.lru_cache(maxsize=1024)
-def _wall_shares_at(nu: float, wall_items: tuple, v: float) -> tuple[float, float] | None:
-    """The ball's and the wall's fractions of the loss at ``v`` (``c``) by the wall's route at
-    that speed (:func:`restitution.laws.wall_route.route_at`); remembered."""
-    from restitution.bodies.wall import wall_from_dict
-    from restitution.laws.wall_route import route_at
-
-    *_, details = route_at(nu, wall_from_dict(dict(wall_items)))(v)
-    first = _first_share(details)
-    return None if first is None else (first, 1.0 - first)
-
-
-def _shares(law, v: float, direct: bool = True) -> tuple[float, float] | None:
-    """Each grain's (or the ball's and the elastic wall's) fraction of the loss at ``v``: at a
-    computed speed of ``law`` whose record holds the split (``shares``) that split; between two
-    such speeds of an elastic wall's law the route's own split at ``v`` (``direct``; else
-    ``None``): the ball's part oscillates with the speed (Rayleigh's phases) faster than a grid
-    resolves, and an interpolated split differed from the route's at the same speed by a factor
-    2 (issue 64: 0.0135 % without ``--export``, 0.0283 % with it, at 1 m/s on a glass block);
-    between two speeds of a pair's law the fraction linear in ``ln v`` between theirs; ``None``
-    elsewhere."""
-    if not isinstance(law, EpsilonLaw) or (law.partner is None and "wall" not in law.metadata):
-        return None
-    pts = np.asarray(law.v, dtype=float)
-    j = int(np.searchsorted(pts, v))
-    records = law._records()
-    if j < pts.size and abs(pts[j] - v) <= _SAME * pts[j]:
-        first = _first_share(records[j])
-    elif "wall" in law.metadata:
-        if not (direct and 0 < j < pts.size and not law.at_points_only):
-            return None
-        wall = law.metadata["wall"]
-        return _wall_shares_at(float(law.nu), tuple(sorted(wall.items())), float(v))
-    elif 0 < j < pts.size and not law.at_points_only:
-        a, b = _first_share(records[j - 1]), _first_share(records[j])
-        if a is None or b is None:
-            return None
-        t = math.log(v / pts[j - 1]) / math.log(pts[j] / pts[j - 1])
-        first = a + t * (b - a)
-    else:
-        first = None
-    return None if first is None else (first, 1.0 - first)
-
-
-def _is_stored(record: dict) -> bool:
-    """Whether a law point is a stored finite-element point (not the route's)."""
-    return str(record.get("route", "")).startswith("finite elements")
-
-
-def _compute(law, v: float) -> str:
-    """How to compute the missing finite-element point of an elastic wall's law at ``v``."""
-    wall = law.metadata.get("wall") if isinstance(law, EpsilonLaw) else None
-    if wall is None:
-        return ""
-    from restitution.laws.wall_points import compute_command
-
-    return (
-        f" (docs/walls.md; 10-45 minutes of one core: {compute_command(law.nu, wall, v)}; the "
-        "next call serves it)"
-    )
-
-
-def _route_reach(law) -> float:
-    """The fastest speed (``c``) of a law served at its points only: its route's reach where
-    the law states one, else its fastest point of the route (points of the finite elements
-    stored beyond the route are not its reach)."""
-    if not isinstance(law, EpsilonLaw):
-        return float(law.v[-1])
-    reach = law.metadata.get("low_speed", {}).get("reach")
-    if reach is not None:
-        return float(reach)
-    routed = [float(r["v"]) for r in law._records() if not _is_stored(r)]
-    return max(routed) if routed else float(law.v[-1])
-
-
-def _status(law, v: float) -> tuple[str, str]:
-    pts = np.asarray(law.v, dtype=float)
-    ok = np.asarray(law.asymptotic_ok, dtype=bool)
-    quasi = np.asarray(law.quasistatic, dtype=bool)
-    at = np.flatnonzero(np.abs(pts - v) <= _SAME * pts)
-    if at.size:
-        if quasi[at[0]]:
-            return Status.QUASISTATIC, _quasistatic_note(law)
-        record = law._records()[at[0]] if isinstance(law, EpsilonLaw) else {}
-        if _is_stored(record):
-            status = Status.COMPUTED if ok[at[0]] else Status.COMPUTED_NOT_ASYMPTOTIC
-            return status, _stored_note(record)
-        if ok[at[0]]:
-            return Status.COMPUTED, ""
-        return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
-    if getattr(law, "at_points_only", False):
-        what = "elastic wall" if "wall" in law.metadata else "pair"
-        refused = next((why for at, why in law.metadata.get("refused", {}).items()
-                        if abs(float(at) - v) <= _SAME * v), None)  # fmt: skip
-        if refused:
-            wall = law.metadata.get("wall", {}).get("kind", "wall")  # plate, half-space
-            if any(abs(float(at) - v) <= _SAME * v for at in law.metadata.get("no_judge", ())):
-                # Beyond Hertz's contact: the finite elements are not offered either.
-                return Status.OUTSIDE, f"v = {v:.3g} c: no value: {refused}"
-            return Status.OUTSIDE, (
-                f"v = {v:.3g} c: no value from the {wall}'s model: {refused}; no "
-                f"finite-element point of this {wall} is stored at this speed{_compute(law, v)}"
-                + (_THICKER if wall == "plate" and "not informative" in refused else "")
-            )
-        if v > _route_reach(law):
-            return Status.OUTSIDE, (
-                f"v = {v:.3g} c is above the reach {_route_reach(law):.4g} c of the {what}'s "
-                f"low-speed route, and no finite-element point of this {what} is stored at "
-                f"this speed{_compute(law, v)}"
-            )
-        return Status.OUTSIDE, (
-            f"v = {v:.3g} c: this law was computed at the asked speeds only (by the {what}'s "
-            "low-speed route); ask for this speed"
-        )
-    if v < pts[0]:
-        return Status.OUTSIDE, f"v = {v:.3g} c is below the lowest computed speed {pts[0]:g} c"
-    j = int(np.searchsorted(pts, v))
-    if j >= pts.size:
-        return Status.OUTSIDE, f"v = {v:.3g} c is above the largest computed speed {pts[-1]:g} c"
-    if quasi[j - 1] or quasi[j]:
-        return Status.QUASISTATIC, _quasistatic_note(law)
-    good = bool(ok[j - 1] and ok[j])
-    if good:
-        return Status.INTERPOLATED, ""
-    return Status.INTERPOLATED_NOT_ASYMPTOTIC, STATUSES[Status.INTERPOLATED_NOT_ASYMPTOTIC]
-
-
-_THICKER = "; a thicker plate loses less and is served further"
-
-
-def _informative(law, v: float, eps: float, err: float) -> str | None:
-    """For an elastic wall's law, why its value at ``v`` (``c``) is not served
-    (:func:`restitution.laws.wall_route.uninformative`: the error exceeds the value, as
-    between a grid law's points near its top), with what answers instead; ``None`` when it is
-    served, and for every other law."""
-    if not (isinstance(law, EpsilonLaw) and "wall" in law.metadata):
-        return None
-    from restitution.laws.wall_route import uninformative
-
-    why = uninformative(eps, err)
-    if why is None:
-        return None
-    wall = law.metadata["wall"].get("kind", "wall")
-    thicker = _THICKER if wall == "plate" else ""
-    return f"v = {v:.3g} c: no value from the {wall}'s route: {why}{_compute(law, v)}{thicker}"
-
-
-def overall_status(points) -> tuple[str, str | None]:
-    """``("ok", None)`` when every point is computed or interpolated between asymptotic points;
-    otherwise the least trustworthy status among ``points`` (outside, quasistatic, not
-    asymptotic) and what it means."""
-    present = {p.status for p in points}
-    for status in _WORST_FIRST:
-        if status in present:
-            these = [p for p in points if p.status == status]
-            meaning = STATUSES[status] if status != Status.QUASISTATIC else these[0].note
-            return status, f"{len(these)} of {len(points)} speeds: {meaning}"
-    return Status.OK, None
+__all__ = ["SILaw", "law_target", "pair_partner", "si_law"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -536,13 +172,13 @@ class SILaw:
         return str(self.law.metadata.get("source", "law"))
 
     def _served_v(self, v):
-        """``v`` with the ends of the law's range snapped to them within :data:`_SAME`: the
+        """``v`` with the ends of the law's range snapped to them within :data:`SAME_SPEED`: the
         conversion ``w / (k c)`` of a speed at the lowest or highest computed speed may land a
         rounding error outside, where the law serves nothing."""
         lo, hi = self.law.valid_range
         arr = np.asarray(v, dtype=float)
-        arr = np.where(np.abs(arr - lo) <= _SAME * lo, lo, arr)
-        arr = np.where(np.abs(arr - hi) <= _SAME * hi, hi, arr)
+        arr = np.where(np.abs(arr - lo) <= SAME_SPEED * lo, lo, arr)
+        arr = np.where(np.abs(arr - hi) <= SAME_SPEED * hi, hi, arr)
         return float(arr) if np.ndim(v) == 0 else arr
 
     def epsilon(self, speed_m_s, *, outside: str = "raise"):
@@ -607,7 +243,7 @@ class SILaw:
         if estimate > 5.0 and note is not None:
             note(f"computing {len(speeds)} speed(s) below the law's slowest point by its "
                  f"low-speed route ({name}; about {estimate:.0f} s)")  # fmt: skip
-        return {v: _low_speed_at(self.law.geometry, nu, partner, v) for v in speeds}
+        return {v: low_speed_at(self.law.geometry, nu, partner, v) for v in speeds}
 
     def points(self, speeds_m_s, *, note=None) -> tuple[SIPoint, ...]:
         """epsilon, its error and its status at every speed (m/s); never raises for range.
@@ -620,8 +256,8 @@ class SILaw:
         ws = np.atleast_1d(real_array(speeds_m_s, "speeds_m_s", "(m/s)"))
         vs = [float(v) for v in np.atleast_1d(self._reduced(ws))]
         lowest = float(self.law.v[0])
-        below = self._below(sorted({v for v in vs if v < lowest * (1.0 - _SAME)}), note)
-        statuses = [_status(self.law, v) for v in vs]
+        below = self._below(sorted({v for v in vs if v < lowest * (1.0 - SAME_SPEED)}), note)
+        statuses = [point_status(self.law, v) for v in vs]
         served = self._served_all(vs, statuses, below)
         direct = len(set(vs)) <= DIRECT_WALL_SHARES  # a wall's split at the speed itself
         out = []
@@ -631,10 +267,12 @@ class SILaw:
                 eps, err, shares = below[v]
                 status = Status.QUASISTATIC
                 text = (
-                    _quasistatic_note(self.law) + "; computed at this speed by the route of "
+                    quasistatic_note(self.law) + "; computed at this speed by the route of "
                     "the law's slowest points (below them)"
                 )
-                out.append(SIPoint(float(w), v, eps, err, status, _cut(text, eps, err), shares))
+                out.append(
+                    SIPoint(float(w), v, eps, err, status, cut_at_one(text, eps, err), shares)
+                )
                 continue
             if status != Status.OUTSIDE:
                 found = served.get(v)
@@ -642,19 +280,19 @@ class SILaw:
                     status, text = Status.OUTSIDE, str(found)
                 else:
                     eps, err = found
-                    why = _informative(self.law, v, eps, err)
+                    why = not_informative(self.law, v, eps, err)
                     if why is not None:  # an elastic wall's value that says nothing
                         status, text, eps, err = Status.OUTSIDE, why, None, None
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
                 if getattr(self.law, "at_points_only", False):
-                    top = _route_reach(self.law) * self.speed_scale_m_s
+                    top = route_reach_of(self.law) * self.speed_scale_m_s
                     text += f"; the route reaches w = {top:.4g} m/s"
                 else:
                     text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
             else:
-                text = _cut(text, eps, err)
-            share = None if status == Status.OUTSIDE else _shares(self.law, v, direct)
+                text = cut_at_one(text, eps, err)
+            share = None if status == Status.OUTSIDE else loss_shares_at(self.law, v, direct)
             out.append(SIPoint(float(w), v, eps, err, status, text, share))
         return tuple(out)
 
@@ -759,7 +397,7 @@ class SILaw:
                     f"{partner_factor(self.against):g} ({self.against}); {g.c_formula}"
                 ),
             },
-            "statuses": {**STATUSES, Status.QUASISTATIC: _quasistatic_note(self.law)},
+            "statuses": {**STATUSES, Status.QUASISTATIC: quasistatic_note(self.law)},
             **mechanism_fields(law_mechanisms(self.law)),
             "plastic_flow_expected_from_m_s": bound,
             "points": [p.to_dict() for p in points],

@@ -38,7 +38,8 @@ class Constant:
     how : str
         What it is: the law at a reference speed, or an average over a named distribution.
     status : str
-        Status of the law where the constant comes from (:data:`restitution.laws.si_law.STATUSES`);
+        Status of the law where the constant comes from
+        (:data:`restitution.laws.si_point.STATUSES`);
         for an average, the worst status carrying more than 1 % of the weight.
     """
 
