@@ -112,7 +112,10 @@ _QUOTED = re.compile(r"`([^`]*)`")
 
 
 def _options(command: click.Command) -> set[str]:
-    return {o for p in command.params for o in (*p.opts, *p.secondary_opts)} | {"--help"}
+    """Every option ``command`` takes (its parameters as it parses: ``law`` adds the registered
+    mechanisms' own options when it runs)."""
+    params = command.get_params(click.Context(command))
+    return {o for p in params for o in (*p.opts, *p.secondary_opts)} | {"--help"}
 
 
 def _help(args: list[str]) -> str:

@@ -58,7 +58,7 @@ def test_a_soft_wall_without_yield_options_is_not_refused_in_reduced_units():
     here is the shipped rigid wall's with the soft wall in its metadata: the note reads only
     that; the wall's own route takes minutes at 1e6 Pa.)"""
     from restitution.bodies.wall import HalfSpace
-    from restitution.laws.mechanisms import elastic_bound
+    from restitution.laws.mechanisms.bounds import elastic_bound
     from restitution.laws.si_law import SILaw, si_law
 
     steel = si_law(210e9, 0.3, 7850, "sphere", "wall")
@@ -156,7 +156,9 @@ _MESSAGE_MODULES = [
     "laws/request_fields.py",
     "laws/serve.py",
     "laws/plastic.py",
-    "laws/mechanisms.py",
+    "laws/mechanisms/bounds.py",
+    "laws/mechanisms/base.py",
+    "laws/mechanisms/adhesion.py",
     "laws/units.py",
     "laws/si_law.py",
     "laws/damped.py",
@@ -202,7 +204,8 @@ def _message_strings(path: Path):
 
 def _options_of(command_name: str) -> set[str]:
     command = _group.commands[command_name]
-    return {o for p in command.params if isinstance(p, click.Option) for o in p.opts}
+    params = command.get_params(click.Context(command))  # law's mechanisms' options too
+    return {o for p in params if isinstance(p, click.Option) for o in p.opts}
 
 
 @pytest.mark.parametrize("module", _MESSAGE_MODULES)

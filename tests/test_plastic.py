@@ -285,7 +285,7 @@ def test_a_measurement_above_the_elastic_value_is_refused(steel):
 
 
 def test_elastic_answers_say_they_are_an_upper_bound(steel):
-    from restitution.laws.mechanisms import elastic_bound
+    from restitution.laws.mechanisms.bounds import elastic_bound
     from restitution.laws.si_law import si_law
 
     bound, text = elastic_bound(steel)
@@ -369,7 +369,7 @@ def test_plastic_refusals_are_one_line(args, match, capsys):
 def test_pair_contact_mass_is_the_pair_modes_mass():
     from restitution.bodies.pair.partner import Partner
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.mechanisms import contact_scales
+    from restitution.laws.mechanisms.bounds import contact_scales
     from restitution.laws.si_law import SILaw
     from restitution.laws.units import Grain
 
@@ -459,7 +459,7 @@ def test_line_yield_speed_reaches_the_yield_force():
 
 
 def test_cylinder_answers_are_flagged_too():
-    from restitution.laws.mechanisms import elastic_bound
+    from restitution.laws.mechanisms.bounds import elastic_bound
     from restitution.laws.si_law import si_law
 
     cylinder = si_law(210e9, 0.3, 7850, "cylinder", "wall")
@@ -473,7 +473,7 @@ def test_cylinder_answers_are_flagged_too():
 def test_exports_name_their_mechanisms(steel):
     from restitution.laws.exports._heading import _header
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.mechanisms import law_mechanisms
+    from restitution.laws.mechanisms.bounds import law_mechanisms
 
     lines = _header(steel)
     assert any(x.startswith("mechanisms: elastic waves") for x in lines)

@@ -28,7 +28,8 @@ from restitution.cli.epsilon import _ListCommand
 from restitution.cli.law_text import status_notes, text_lines
 from restitution.cli.report import Report, emit, format_options, output_format
 from restitution.errors import InputError, PlausibilityWarning, RestitutionError
-from restitution.laws.request import LawRequest
+from restitution.laws.mechanisms.base import extra_options
+from restitution.laws.request import LawRequest, request
 
 _TYPES = {
     "float": dict(type=float, default=None),
@@ -41,9 +42,12 @@ _TYPES = {
 
 
 def _request_options(func):
-    """One option per field of :class:`LawRequest`, in the fields' order."""
+    """One option per field of :class:`LawRequest`, in the fields' order (the mechanisms' own
+    options, its ``extra``, are added when the command runs: :class:`_LawCommand`)."""
     for f in reversed(fields(LawRequest)):
         meta = f.metadata
+        if meta["type"] == "extra":
+            continue
         kwargs = dict(_TYPES.get(meta["type"], {}))
         if meta["type"] == "choice":
             kwargs = dict(type=click.Choice(meta["choices"]()))
@@ -55,7 +59,19 @@ def _request_options(func):
 
 
 class _LawCommand(_ListCommand):
+    """``law``'s options: the request's fields, and the options of every mechanism registered
+    when the command runs (:func:`restitution.laws.mechanisms.base.extra_options`: a mechanism
+    added in its own module brings its options)."""
+
     list_options = ("--speed",)
+
+    def get_params(self, ctx: click.Context) -> list[click.Parameter]:
+        params = super().get_params(ctx)
+        have = {name for p in params for name in getattr(p, "opts", ())}
+        extra = [click.Option([o.option], o.keyword, type=float, default=None,
+                              help=f"{o.help} [{o.unit}]" if o.unit else o.help)
+                 for o in extra_options() if o.option not in have]  # fmt: skip
+        return [*params[:-1], *extra, params[-1]] if params else extra
 
 
 class _Doubts:
@@ -92,14 +108,14 @@ def _request(options) -> tuple[LawRequest, _Doubts]:
     any other warning is shown as it comes."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", PlausibilityWarning)
-        request = LawRequest(**options)
+        asked = request(**options)
     texts = []
     for w in caught:
         if issubclass(w.category, PlausibilityWarning):
             texts.append(str(w.message))
         else:
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
-    return request, _Doubts(texts)
+    return asked, _Doubts(texts)
 
 
 @click.command(cls=_LawCommand)

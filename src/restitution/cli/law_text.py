@@ -48,7 +48,7 @@ def text_lines(a) -> list[str]:
     if result["mechanisms_left_out"]:
         lines.append("not in these numbers: " + "; ".join(result["mechanisms_left_out"]))
     if result.get("plastic_flow_expected_from_m_s") is not None:
-        from restitution.laws.mechanisms import elastic_bound
+        from restitution.laws.mechanisms.bounds import elastic_bound
 
         bound, text = elastic_bound(s)
         lines.append(f"from {bound:.2g} m/s: {text}")

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 from scipy.optimize import brentq
@@ -40,7 +41,8 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.estimate import Estimate
-from restitution.laws.mechanisms import flag_points, law_mechanisms, mechanism_fields
+from restitution.laws.mechanisms.base import mechanism_fields
+from restitution.laws.mechanisms.bounds import flag_points, law_mechanisms
 from restitution.laws.si_law import SILaw
 from restitution.limits.run_options import Progress, progress_of
 from restitution.status import Status
@@ -293,6 +295,9 @@ class DampedLaw:
     measured : tuple of (float, float) or None
         ``(epsilon, speed_m_s)`` the relaxation time was inferred from.
     """
+
+    mechanism: ClassVar[str] = "viscous"
+    """The mechanism that answers with this law (:mod:`restitution.laws.mechanisms`)."""
 
     si: SILaw
     tau: float

@@ -46,6 +46,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 from scipy.optimize import brentq
@@ -53,7 +54,8 @@ from scipy.optimize import brentq
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT
-from restitution.laws.mechanisms import contact_scales, half_space_of, mechanism_fields, wall_of
+from restitution.laws.mechanisms.base import mechanism_fields
+from restitution.laws.mechanisms.bounds import contact_scales, half_space_of, wall_of
 from restitution.laws.si_law import SILaw
 from restitution.quasistatic.hertz import QuasistaticError
 from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
@@ -80,7 +82,7 @@ class _Contact:
 
 
 def _contact(si: SILaw) -> _Contact:
-    """The contact of ``si``'s collision (:func:`restitution.laws.mechanisms.contact_scales`)
+    """The contact of ``si``'s collision (:func:`restitution.laws.mechanisms.bounds.contact_scales`)
     with the modes its pulse drives (the sphere's, or both spheres' of a pair) and an elastic
     half-space's radiation conductance."""
     from restitution.bodies.cache import get_modes
@@ -263,6 +265,9 @@ class PlasticLaw:
         Error of an inferred ``p_y``, Pa.
     """
 
+    mechanism: ClassVar[str] = "plastic"
+    """The mechanism that answers with this law (:mod:`restitution.laws.mechanisms`)."""
+
     si: SILaw
     p_y: float
     source: str
@@ -282,8 +287,8 @@ class PlasticLaw:
 
     @property
     def mechanisms(self) -> list[str]:
-        """The mechanisms this law's answers contain (:data:`restitution.laws.mechanisms.
-        MECHANISMS`)."""
+        """The mechanisms this law's answers contain (their names,
+        :mod:`restitution.laws.mechanisms.base`)."""
         names = ["waves"]
         if wall_of(self.si.law) is not None:
             names.append("wall")

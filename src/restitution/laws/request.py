@@ -33,7 +33,7 @@ from restitution.laws.request_checks import (
 from restitution.laws.request_fields import checked, option, warn_implausible
 from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
 
-__all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields"]
+__all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields", "request"]
 
 DEFAULT_SPEEDS_M_S: tuple[float, ...] = (0.1, 0.5, 1.0, 5.0, 10.0)
 """Impact speeds (m/s) of a request that names none."""
@@ -380,6 +380,16 @@ class LawRequest:
             "flag",
         ),
     )
+    extra: tuple = field(
+        default=(),
+        metadata=option(
+            "--extra",
+            "The options of the mechanisms registered beside these fields (each its own "
+            "command-line option, e.g. --work-of-adhesion; restitution.laws.mechanisms): "
+            "(keyword, value) pairs or a mapping; request(...) takes them as keywords.",
+            "extra",
+        ),
+    )
 
     def __post_init__(self) -> None:
         # Each field alone first, by its option's kind, in the command's words and the Python
@@ -393,6 +403,13 @@ class LawRequest:
         warn_implausible(self)
 
     # -- what the options amount to -------------------------------------------------------------
+
+    def option_value(self, keyword: str):
+        """The value of the option ``keyword``: a field's, or a mechanism's own option (its
+        ``extra``); ``None`` when it is not given."""
+        if keyword in _FIELD_NAMES:
+            return getattr(self, keyword)
+        return dict(self.extra).get(keyword)
 
     @property
     def grain(self) -> Grain:
@@ -543,6 +560,7 @@ class LawRequest:
             "second_measured_speed_m_s": self.second_measured_speed,
             "compute": self.compute,
             "route": self.route,
+            **{f"{k}_{_unit_key(k)}" if _unit_key(k) else k: v for k, v in self.extra},
         }  # fmt: skip
 
     def unequal_sizes(self) -> str:
@@ -550,6 +568,26 @@ class LawRequest:
         that ask it): the smaller grain on an elastic wall of the larger one's material, which
         is to it a half-space (the larger grain's waves come back after the contact)."""
         return unequal_sizes_advice(self)
+
+
+_FIELD_NAMES = frozenset(f.name for f in fields(LawRequest))
+
+
+def _unit_key(keyword: str) -> str:
+    """The unit of a mechanism's option as a JSON key's suffix (``J/m^2`` -> ``j_m2``)."""
+    from restitution.laws.mechanisms.base import extra_options
+
+    unit = next((o.unit for o in extra_options() if o.keyword == keyword), "")
+    return unit.lower().replace("/", "_").replace("^", "")
+
+
+def request(**options) -> LawRequest:
+    """The :class:`LawRequest` of ``options``: its fields, and the options of the registered
+    mechanisms (:func:`restitution.laws.mechanisms.base.extra_options`, e.g.
+    ``work_of_adhesion=0.1``) as keywords too; an unknown keyword is refused in one line."""
+    extra = dict(options.pop("extra", None) or ())
+    extra.update({k: options.pop(k) for k in list(options) if k not in _FIELD_NAMES})
+    return LawRequest(**options, extra=extra)
 
 
 def option_fields():

@@ -18,6 +18,7 @@ import math
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
+from restitution.laws.mechanisms.base import mechanisms, used_fields
 from restitution.laws.request_fields import doubts
 from restitution.laws.units import BODIES
 from restitution.laws.wall_route import check_wall_request
@@ -184,10 +185,11 @@ def _check_damping(r) -> None:
         and r.relaxation_time is None
         and r.measured_epsilon is None
         and (r.wall_thickness is None and r.wall_E is None)
+        and "radius" not in used_fields(r)
     ):
         raise InputError(
-            "--radius goes with --relaxation-time or --measured-epsilon (damping); give "
-            "damping or leave out --radius"
+            f"--radius goes with --relaxation-time or --measured-epsilon (damping){_sized()}; "
+            "give damping or leave out --radius"
         )
     if (r.relaxation_time is not None and r.measured_epsilon is not None
             and r.measured_fixes not in ("limiting-pressure", "both")):  # fmt: skip
@@ -351,3 +353,11 @@ def paired_shapes() -> str:
     """The shapes whose laws of two grains of different sizes or materials are computed."""
     names = [shape for shape, body in BODIES.items() if body_kind(body).pair_compression]
     return " or ".join(names)
+
+
+def _sized() -> str:
+    """``, or --work-of-adhesion (adhesion)``: the mechanisms' own options that need the grain's
+    radius, for the refusal of a radius nothing reads."""
+    named = [f"{o.option} ({m.name})" for m in mechanisms() if "radius" in m.reads
+             for o in m.options if not o.field]  # fmt: skip
+    return "".join(f", or {n}" for n in named)

@@ -34,9 +34,11 @@ from restitution.errors import InputError, PlausibilityWarning, describe, is_rea
 
 __all__ = ["KINDS", "PLAUSIBLE", "Plausible", "checked", "doubts", "option", "warn_implausible"]
 
-KINDS = ("float", "floats", "choice", "file", "path", "dir", "flag")
+KINDS = ("float", "floats", "choice", "file", "path", "dir", "flag", "extra")
 """A field's kind: one number, numbers (one or several after the flag), one of a few strings,
-an existing file, a file to write, a directory, a flag."""
+an existing file, a file to write, a directory, a flag; ``extra``: the options of registered
+mechanisms that are not fields (:func:`restitution.laws.mechanisms.base.extra_options`), kept
+as sorted ``(keyword, value)`` pairs."""
 
 _PATH_EXAMPLES = {"file": "law.json", "path": "results.sqlite", "dir": "exports"}
 """A path of each path kind, for the advice of a refusal."""
@@ -193,8 +195,36 @@ def _flag(value, meta, name: str) -> bool:
     )
 
 
+def _extra(value, meta, name: str) -> tuple[tuple[str, float], ...]:
+    """The mechanisms' own options (a mapping, or ``(keyword, value)`` pairs), each checked by
+    its option's kind and unit; ``None`` values are "not given" and dropped; an unknown keyword
+    is refused with the ones there are."""
+    from restitution.laws.mechanisms.base import extra_options
+
+    known = {o.keyword: o for o in extra_options()}
+    try:
+        items = dict(value.items() if isinstance(value, Mapping) else value)
+    except (TypeError, ValueError):
+        raise InputError(
+            f"{name} must map mechanism options to values, got {describe(value)}; give e.g. "
+            f"{name}={{'work_of_adhesion': 0.1}}, or pass the option as a keyword"
+        ) from None
+    out = {}
+    for key, item in items.items():
+        if key not in known:
+            close = difflib.get_close_matches(str(key), [*known, *(meta.get("fields") or ())],
+                                              n=1)  # fmt: skip
+            hint = f"; did you mean {close[0]}?" if close else ""
+            raise InputError(
+                f"no option {key!r} (the mechanisms' options: {', '.join(known) or 'none'}){hint}"
+            )
+        if item is not None:
+            out[key] = _float(item, known[key].metadata(), key)
+    return tuple(sorted(out.items()))
+
+
 _CHECKS = {"float": _float, "choice": _choice, "file": _path, "path": _path, "dir": _path,
-           "flag": _flag}  # fmt: skip
+           "flag": _flag, "extra": _extra}  # fmt: skip
 
 
 # -- plausibility --------------------------------------------------------------------------

@@ -26,7 +26,8 @@ from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
-from restitution.laws.mechanisms import flag_points, law_mechanisms, mechanism_fields
+from restitution.laws.mechanisms.base import mechanism_fields
+from restitution.laws.mechanisms.bounds import flag_points, law_mechanisms
 from restitution.laws.si_point import (
     BELOW_BUDGET_S,
     DIRECT_WALL_SHARES,
@@ -351,7 +352,7 @@ class SILaw:
     def to_dict(self, speeds_m_s) -> dict:
         """The JSON of ``restitution law``: constants, partner, the mechanisms in the numbers,
         and the points (each above the speed where plastic flow is expected saying so,
-        :func:`restitution.laws.mechanisms.flag_points`).
+        :func:`restitution.laws.mechanisms.bounds.flag_points`).
 
         ``body`` names the law's body and ``law_nu`` its Poisson number; a disk also reports
         ``nu_2d`` (the same number), a sphere has no two-dimensional constants. ``law`` gives

@@ -14,7 +14,8 @@ import datetime
 
 from restitution._version import __version__
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
-from restitution.laws.mechanisms import elastic_bound, law_mechanisms, mechanism_fields
+from restitution.laws.mechanisms.base import mechanism_fields
+from restitution.laws.mechanisms.bounds import elastic_bound, law_mechanisms
 from restitution.laws.si_law import SILaw
 
 

@@ -53,7 +53,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
-from restitution.laws.mechanisms import law_mechanisms, wall_of
+from restitution.laws.mechanisms.bounds import law_mechanisms, wall_of
 
 __all__ = ["SlowContinuation", "slow_continuation"]
 

@@ -23,7 +23,7 @@ from restitution.laws.exports.lammps_plugin import (
 )
 from restitution.laws.exports.pchip import pchip_table
 from restitution.laws.exports.type_pairs import TypePairs
-from restitution.laws.mechanisms import wall_of
+from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.si_law import si_law
 
 __all__ = ["INPUT_NAME", "plugin_files"]

@@ -19,7 +19,7 @@ from restitution.laws.exports.dem._common import (
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
-from restitution.laws.mechanisms import wall_of
+from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "mercurydpm_snippet", "mercurydpm_viscoelastic"]

@@ -1,9 +1,11 @@
-"""Which loss mechanisms an answer contains, and from which speed an elastic answer is a bound.
+"""Which mechanisms a law's numbers hold, the contact's scales, and from which speed an elastic
+answer is a bound.
 
 Units: SI at the edge (m/s); the contact's scales in the law's reduced units.
 
-Every answer of the SI law names the mechanisms in its numbers (:data:`MECHANISMS`:
-``mechanisms`` and ``mechanisms_left_out`` of its JSON, :func:`mechanism_fields`). An elastic or
+Every answer of the SI law names the mechanisms in its numbers (``mechanisms`` and
+``mechanisms_left_out`` of its JSON, :func:`restitution.laws.mechanisms.base.mechanism_fields`;
+:func:`law_mechanisms` those of a law's table). An elastic or
 damped sphere's answer without a yield stress is an upper bound above the speed where plastic
 flow starts; that speed is not known without the yield stress, but for the material class the
 grain's constants suggest (:mod:`restitution.laws.material_classes`) it lies in a range:
@@ -21,23 +23,13 @@ from restitution.laws.material_classes import material_class
 from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
 
 __all__ = [
-    "MECHANISMS",
     "contact_scales",
     "elastic_bound",
     "flag_points",
     "half_space_of",
     "law_mechanisms",
-    "mechanism_fields",
     "wall_of",
 ]
-
-MECHANISMS = {
-    "waves": "elastic waves and vibrations of the bodies (the elastic law)",
-    "wall": "elastic waves radiated into the wall",
-    "viscous": "viscous loss of the material (Kelvin-Voigt)",
-    "plastic": "plastic flow (Thornton's elastic-perfectly-plastic contact)",
-}
-"""Every mechanism an answer may contain, in words."""
 
 
 def wall_of(law) -> dict | None:
@@ -46,21 +38,14 @@ def wall_of(law) -> dict | None:
     return None if metadata is None else metadata.get("wall")
 
 
-def mechanism_fields(names) -> dict:
-    """``{"mechanisms": [...], "mechanisms_left_out": [...]}`` in words, for the mechanism
-    ``names`` an answer contains (keys of :data:`MECHANISMS`)."""
-    names = list(names)
-    left = [m for m in ("viscous", "plastic") if m not in names]
-    return {
-        "mechanisms": [MECHANISMS[m] for m in names],
-        "mechanisms_left_out": [MECHANISMS[m] for m in left],
-    }
-
-
 def law_mechanisms(law) -> list[str]:
-    """The mechanisms (keys of :data:`MECHANISMS`) in a law's tabulated numbers: the waves,
-    an elastic wall's radiation, and the viscous loss of a damped law's table (its parameters
-    carry the relaxation time)."""
+    """The mechanisms (their names, :mod:`restitution.laws.mechanisms.base`) in a law's tabulated
+    numbers: the waves, an elastic wall's radiation, and the viscous loss of a damped law's table
+    (its parameters carry the relaxation time); a law a mechanism tabulated names its own
+    (``metadata["mechanisms"]``)."""
+    metadata = getattr(law, "metadata", None) or {}
+    if "mechanisms" in metadata:
+        return list(metadata["mechanisms"])
     names = ["waves"]
     if wall_of(law) is not None:
         names.append("wall")
