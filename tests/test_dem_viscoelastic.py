@@ -51,7 +51,7 @@ def damped(against, ratio=None):
 def test_the_model_is_the_damped_laws_viscous_collision_by_an_independent_integration(
     against, ratio
 ):
-    # The law's viscous part (DampedPoint.epsilon_viscous) against scipy's Radau on the SI
+    # The law's viscous part (a damped point's epsilon_viscous) against scipy's Radau on the SI
     # equation with the constants the export states: they agree, so a code integrating the
     # exported model integrates the law's viscous part. (Before issue 44 the sphere pair took
     # the disk pair's contact law and 2D mass: 0.9097 where this gives 0.9353 at 0.1 m/s.)

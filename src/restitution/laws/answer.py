@@ -36,8 +36,8 @@ class LawAnswer:
     law : SILaw
         The elastic law that served (the one a mechanism's losses were added to).
     points : tuple
-        One point per asked speed (:class:`~restitution.laws.si_point.SIPoint`, or the answering
-        mechanism's point: :class:`~restitution.laws.damped.DampedPoint`, ...).
+        One point per asked speed, each a :class:`~restitution.laws.si_point.SIPoint` (the
+        answering mechanism's parts in its ``parts``).
     status, advice : str, str or None
         The answer's status (the worst of its points') and what to do about it.
     constant : Constant or None

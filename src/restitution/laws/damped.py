@@ -40,10 +40,10 @@ from scipy.optimize import brentq
 from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
-from restitution.estimate import Estimate
 from restitution.laws.mechanisms.base import mechanism_fields
 from restitution.laws.mechanisms.bounds import flag_points, law_mechanisms
 from restitution.laws.si_law import SILaw
+from restitution.laws.si_point import SIPoint
 from restitution.limits.run_options import Progress, progress_of
 from restitution.status import Status
 
@@ -51,7 +51,7 @@ __all__ = [
     "DISK_VISCOUS_SPREAD",
     "SPHERE_SIZE_COEFFICIENT",
     "DampedLaw",
-    "DampedPoint",
+    "damped_point",
     "damped_law",
     "viscous_epsilon",
     "viscous_max_speed",
@@ -188,11 +188,23 @@ def viscous_epsilon(si: SILaw, v, tau: float, *, advance=None) -> np.ndarray:
     return _viscous(si, v, tau, advance).epsilon
 
 
-@dataclass(frozen=True)
-class DampedPoint:
-    """epsilon of a damping grain at one SI speed.
+def damped_point(
+    *,
+    speed_m_s,
+    v_over_c,
+    epsilon,
+    epsilon_err,
+    status,
+    note="",
+    epsilon_elastic,
+    epsilon_elastic_err,
+    epsilon_viscous,
+    informative=True,
+) -> SIPoint:
+    """epsilon of a damping grain at one SI speed: an :class:`~restitution.laws.si_point.SIPoint`
+    with the parts below (each an attribute and a key of its ``to_dict``).
 
-    Attributes
+    Parameters
     ----------
     speed_m_s, v_over_c : float
         Impact speed ``w`` (m/s) and the law's reduced speed (``c``).
@@ -210,25 +222,13 @@ class DampedPoint:
         False where the error exceeds :data:`UNINFORMATIVE` times epsilon: the note then says
         which approximation of the damped model the error comes from.
     """
-
-    speed_m_s: float
-    v_over_c: float
-    epsilon: float | None
-    epsilon_err: float | None
-    epsilon_elastic: float | None
-    epsilon_elastic_err: float | None
-    epsilon_viscous: float | None
-    status: str
-    note: str = ""
-    informative: bool = True
-
-    def to_dict(self) -> dict:
-        return dict(self.__dict__)
-
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
+    parts = (
+        ("epsilon_elastic", epsilon_elastic),
+        ("epsilon_elastic_err", epsilon_elastic_err),
+        ("epsilon_viscous", epsilon_viscous),
+        ("informative", informative),
+    )
+    return SIPoint(speed_m_s, v_over_c, epsilon, epsilon_err, status, note, parts=parts)
 
 
 UNINFORMATIVE = 0.25
@@ -312,7 +312,7 @@ class DampedLaw:
             return None
         return self.tau * self.radius_m / self.si.grain.c_m_s
 
-    def points(self, speeds_m_s) -> tuple[DampedPoint, ...]:
+    def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon, its parts and errors at every speed (m/s); never raises for range. The
         viscous collisions of all speeds at once, from a table for many speeds
         (:data:`TABLE_PER_DECADE`; its error among the terms); where that is refused (a speed
@@ -329,7 +329,7 @@ class DampedLaw:
                 else:
                     eps_v, eps, terms = self._terms(p.v_over_c, p.epsilon, p.epsilon_err)
             except InputError as exc:
-                out.append(DampedPoint(**head, epsilon=None, epsilon_err=None, **elastic,
+                out.append(damped_point(**head, epsilon=None, epsilon_err=None, **elastic,
                                        epsilon_viscous=None, status=Status.OUTSIDE,
                                        note=f"viscous part: {exc}"))  # fmt: skip
                 continue
@@ -346,7 +346,7 @@ class DampedLaw:
                 if not informative:
                     why = _uninformative(eps1, err, parts, float(eps_v[0]), self.si.grain.body)
                     note = f"{note}; {why}" if note else why
-            out.append(DampedPoint(**head, **both, **elastic, epsilon_viscous=float(eps_v[0]),
+            out.append(damped_point(**head, **both, **elastic, epsilon_viscous=float(eps_v[0]),
                                    status=p.status, note=note,
                                    informative=informative))  # fmt: skip
         return tuple(out)

@@ -57,12 +57,13 @@ from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT
 from restitution.laws.mechanisms.base import mechanism_fields
 from restitution.laws.mechanisms.bounds import contact_scales, half_space_of, wall_of
 from restitution.laws.si_law import SILaw
+from restitution.laws.si_point import SIPoint
 from restitution.quasistatic.hertz import QuasistaticError
 from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
 
 __all__ = [
     "PlasticLaw",
-    "PlasticPoint",
+    "plastic_point",
     "fit_two_measurements",
     "infer_relaxation_time",
     "limiting_pressure",
@@ -204,11 +205,30 @@ def _positive(name: str, value, unit: str = "Pa") -> float:
     return value
 
 
-@dataclass(frozen=True)
-class PlasticPoint:
-    """epsilon of a yielding (and possibly damping) grain at one SI speed, with its parts.
+def plastic_point(
+    *,
+    speed_m_s,
+    v_over_c,
+    epsilon,
+    epsilon_err,
+    status,
+    note="",
+    epsilon_elastic,
+    epsilon_elastic_err,
+    epsilon_contact,
+    epsilon_sum_of_parts,
+    loss_plastic,
+    loss_viscous,
+    loss_stored,
+    loss_waves,
+    loss_wall,
+    yielded,
+) -> SIPoint:
+    """epsilon of a yielding (and possibly damping) grain at one SI speed: an
+    :class:`~restitution.laws.si_point.SIPoint` with the parts below (each an attribute and a key
+    of its ``to_dict``).
 
-    Attributes
+    Parameters
     ----------
     speed_m_s, v_over_c : float
     epsilon, epsilon_err : float or None
@@ -225,26 +245,19 @@ class PlasticPoint:
     yielded : bool
     status, note : str
     """
-
-    speed_m_s: float
-    v_over_c: float
-    epsilon: float | None
-    epsilon_err: float | None
-    epsilon_elastic: float | None
-    epsilon_elastic_err: float | None
-    epsilon_contact: float | None
-    epsilon_sum_of_parts: float | None
-    loss_plastic: float | None
-    loss_viscous: float | None
-    loss_stored: float | None
-    loss_waves: float | None
-    loss_wall: float | None
-    yielded: bool
-    status: str
-    note: str = ""
-
-    def to_dict(self) -> dict:
-        return dict(self.__dict__)
+    parts = (
+        ("epsilon_elastic", epsilon_elastic),
+        ("epsilon_elastic_err", epsilon_elastic_err),
+        ("epsilon_contact", epsilon_contact),
+        ("epsilon_sum_of_parts", epsilon_sum_of_parts),
+        ("loss_plastic", loss_plastic),
+        ("loss_viscous", loss_viscous),
+        ("loss_stored", loss_stored),
+        ("loss_waves", loss_waves),
+        ("loss_wall", loss_wall),
+        ("yielded", yielded),
+    )
+    return SIPoint(speed_m_s, v_over_c, epsilon, epsilon_err, status, note, parts=parts)
 
 
 @dataclass(frozen=True, eq=False)
@@ -296,13 +309,13 @@ class PlasticLaw:
             names.append("viscous")
         return [*names, "plastic"]
 
-    def points(self, speeds_m_s) -> tuple[PlasticPoint, ...]:
+    def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon and its parts at every speed (m/s); never raises for range."""
         contact = _contact(self.si)
         return tuple(self._point(p, contact) for p in self.si.points(speeds_m_s))
 
     def _point(self, p, contact: _Contact, p_y: float | None = None, tau: float | None = None,
-               ratios: tuple[float, float, float] | None = None) -> PlasticPoint:  # fmt: skip
+               ratios: tuple[float, float, float] | None = None) -> SIPoint:  # fmt: skip
         """The point of the elastic law's point ``p`` (reduced ``p_y`` and ``tau`` as given,
         else the law's). ``ratios``: the waves' ratios (:func:`_ratios`) taken as given instead
         of computed (the root searches of an inferred parameter), and then no spread."""
@@ -320,7 +333,7 @@ class PlasticLaw:
                  "loss_stored": None, "loss_waves": None, "loss_wall": None,
                  "yielded": False}  # fmt: skip
         if p.epsilon is None:
-            return PlasticPoint(**head, **empty, note=p.note)
+            return plastic_point(**head, **empty, note=p.note)
         law, mass = contact.law, contact.mass
         try:
             actual = pulse_collision(law, v, p_y=p_y, tau=tau, mass=mass)
@@ -328,7 +341,7 @@ class PlasticLaw:
                 hertz = pulse_collision(law, v, mass=mass)
                 ratios = _ratios(actual, hertz, contact, tau)
         except (InputError, QuasistaticError) as exc:
-            return PlasticPoint(**{**head, "status": "outside"}, **empty, note=f"contact: {exc}")
+            return plastic_point(**{**head, "status": "outside"}, **empty, note=f"contact: {exc}")
         ratio, ratio_bare, wall_ratio = ratios
         base = 1.0 - p.epsilon**2
         base_err = 2.0 * p.epsilon * p.epsilon_err
@@ -364,7 +377,7 @@ class PlasticLaw:
                     f"impact energy ({ratio:.3g} times their loss on Hertz's pulse), is beyond "
                     "the one-pulse model, which takes them as a small loss; a relaxation time "
                     f"this long (tau c/R = {tau / law.R:.3g}) is hardly a solid's")  # fmt: skip
-            return PlasticPoint(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
+            return plastic_point(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
                                 **{**common, "loss_waves": None}, note=note)  # fmt: skip
         if not eps2 > 0.0:
             parts = (
@@ -377,7 +390,7 @@ class PlasticLaw:
             note = (f"no rebound: the losses exceed the impact energy ({shares}: "
                     f"{100 * (1.0 - eps2):.3g} % of it); the grain stays on its partner "
                     "(epsilon 0)")  # fmt: skip
-            return PlasticPoint(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
+            return plastic_point(**{**head, "status": "outside"}, epsilon=None, epsilon_err=None,
                                 **common, note=note)  # fmt: skip
         eps = math.sqrt(eps2)
         terms = [ratio * base_err, moved, base * abs(ratio - ratio_bare),
@@ -387,7 +400,7 @@ class PlasticLaw:
         err = math.sqrt(sum(t * t for t in terms)) / (2.0 * eps)
         if not probing:
             err = math.hypot(err, self._spread(contact, v))
-        return PlasticPoint(**head, epsilon=eps, epsilon_err=err, **common, note=p.note)
+        return plastic_point(**head, epsilon=eps, epsilon_err=err, **common, note=p.note)
 
     def _spread(self, contact: _Contact, v: float) -> float:
         """How far the contact's epsilon moves over an inferred parameter's error (half the

@@ -138,6 +138,12 @@ class SIPoint:
         of the lost energy left in the first and in the second grain (they add up to 1; of the
         central value, without an error of their own; between computed speeds linear in
         ``ln v``). ``None`` elsewhere.
+    parts : tuple of (str, value)
+        What the mechanism that answered adds (:mod:`restitution.laws.mechanisms`): the
+        elastic law's epsilon beside the answer (``epsilon_elastic``), each loss (``loss_plastic``,
+        ``loss_viscous``, ...), flags (``yielded``, ``stuck``, ``informative``); each reads as an
+        attribute and is a key of :meth:`to_dict`. One point type for every answer: the elastic
+        law's has none.
     """
 
     speed_m_s: float
@@ -147,6 +153,15 @@ class SIPoint:
     status: str
     note: str = ""
     loss_shares: tuple[float, float] | None = None
+    parts: tuple[tuple[str, object], ...] = ()
+
+    def __getattr__(self, name: str):
+        # A mechanism's part (``epsilon_elastic``, ``loss_plastic``, ...) reads as an attribute.
+        if name != "parts":
+            for key, value in self.parts:
+                if key == name:
+                    return value
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     @property
     def epsilon_range(self) -> tuple[float, float] | None:
@@ -171,6 +186,7 @@ class SIPoint:
             "status": self.status,
             "note": self.note,
             "loss_shares": None if self.loss_shares is None else list(self.loss_shares),
+            **dict(self.parts),
         }
 
     @property
