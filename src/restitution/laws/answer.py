@@ -101,22 +101,23 @@ def elastic_answer(r, s: SILaw, note) -> LawAnswer:
 
 
 def finish(r, s: SILaw, points, status, advice, *, note, by=None, table: SILaw | None = None,
-           model=None) -> LawAnswer:  # fmt: skip
+           model=None, walls=None) -> LawAnswer:  # fmt: skip
     """The answer of ``points``, with the constants and the exports the request asks for,
     written from ``table`` (the answering law at every speed, default ``s``) and, for the
-    exports, the DEM codes' viscoelastic ``model``."""
+    exports, the DEM codes' viscoelastic ``model`` and each grain type's law on the wall
+    (``walls``, :func:`~restitution.laws.exports.plugin_files.plugin_files`)."""
     table = s if table is None else table
     constant, pairs = constants_of(r, table)
-    written = write_exports(r, table, pairs or constant, model, note)
+    written = write_exports(r, table, pairs or constant, model, note, walls)
     return LawAnswer(r, s, tuple(points), status, advice, constant, pairs, written, by=by)
 
 
-def write_exports(r, s: SILaw, constant, model, note) -> tuple:
+def write_exports(r, s: SILaw, constant, model, note, walls=None) -> tuple:
     """The export folder of ``s`` when ``--export`` is asked (its paths), else ``()``."""
     if r.export_dir is None:
         return ()
     with writing(r.export_dir, "--export"):  # a full disk names the option and the folder
-        folder = exports.write_folder(s, constant, r.export_dir, model, r.friction)
+        folder = exports.write_folder(s, constant, r.export_dir, model, r.friction, walls)
     if folder.no_closed_form is not None:
         note(f"note: no closed form written: {folder.no_closed_form}")
     if folder.no_plugin is not None:

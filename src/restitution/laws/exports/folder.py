@@ -74,16 +74,18 @@ def write_folder(
     out: Path,
     viscoelastic=None,
     friction: float | None = None,
+    walls=None,
 ) -> ExportFolder:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``) or ``viscoelastic`` (a damped sphere law's
     :class:`~restitution.laws.exports.viscoelastic.Viscoelastic`, which a code with its own
     viscoelastic contact takes instead), a snippet per registered DEM target into ``out``
     (created if missing), as one set (:func:`restitution.file_set.file_set`): a failure leaves
-    the folder as it was; files of an earlier export this one does not write (a closed form,
-    snippets) are removed when they are unchanged, so the folder holds one law's files only;
-    a file the package did not write (or one changed since) is never replaced or removed: the
-    export is refused, naming it."""
+    the folder as it was (``walls``: each grain type's law on the wall for the plugin's tables,
+    :func:`~restitution.laws.exports.plugin_files.plugin_files`); files of an earlier export
+    this one does not write (a closed form, snippets) are removed when they are unchanged, so
+    the folder holds one law's files only; a file the package did not write (or one changed
+    since) is never replaced or removed: the export is refused, naming it."""
     out = Path(out)
     # The three-parameter form exists only where it follows the points within their errors;
     # the C and Fortran evaluate the law's table either way.
@@ -94,7 +96,7 @@ def write_folder(
         fit = None
         refusal = str(exc)
     try:
-        plugin, no_plugin = plugin_files(s, constant), None
+        plugin, no_plugin = plugin_files(s, constant, walls), None
     except InputError as exc:
         plugin, no_plugin = {}, str(exc)
     stem = "epsilon"

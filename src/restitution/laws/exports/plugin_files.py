@@ -38,10 +38,13 @@ def _table_name(i: int, j: int) -> str:
     )  # fmt: skip
 
 
-def plugin_files(s, c=None) -> dict[str, str]:
+def plugin_files(s, c=None, walls=None) -> dict[str, str]:
     """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
     :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
     :class:`TypePairs` ``c`` (their 1-1 and 2-2 laws); a ``Constant`` or ``None`` adds nothing.
+    ``walls``: the law of each grain type on the wall as the answer's mechanisms make it
+    (``{type: SILaw}``, or a sentence why there is none), instead of the shipped elastic law of
+    the grain on a wall: a damped grain's wall table is damped.
 
     Raises
     ------
@@ -65,8 +68,13 @@ def plugin_files(s, c=None) -> dict[str, str]:
     missing = []
     if s.against == "grain":  # each material on the wall too: one folder for the system
         for i in (1, 2) if two else (1,):
+            given = (walls or {}).get(i)
+            if isinstance(given, str):
+                missing.append(f"type {i} on the wall: {given}")
+                continue
             try:
-                laws[i, 0] = si_law(grain=grains[i], against="wall")
+                laws[i, 0] = given if given is not None else si_law(grain=grains[i],
+                                                                    against="wall")  # fmt: skip
             except InputError as exc:
                 missing.append(f"type {i} on the wall: {exc}")
     # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.

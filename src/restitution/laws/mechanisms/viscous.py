@@ -62,7 +62,7 @@ class Viscosity:
             )
         points, _ = flag_points(si, damped.points(list(r.speeds)))
         status, advice = overall_status(points)
-        table = model = None
+        table = model = walls = None
         if r.constants or r.export_dir is not None:
             # Constants, tables and snippets of the damped law: the sum at every computed speed.
             what = "exports" if r.export_dir is not None else "constant"
@@ -73,8 +73,29 @@ class Viscosity:
             table = damped.as_si_law(progress=bars)
             if r.export_dir is not None:
                 model = _viscoelastic(r, damped, note)
+                walls = _walls(si, damped, note, bars)
         return finish(r, si, points, status, advice, note=note, by=damped, table=table,
-                      model=model)  # fmt: skip
+                      model=model, walls=walls)  # fmt: skip
+
+
+def _walls(si, damped, note, bars):
+    """The damped law of the grain on the rigid wall for the plugin's wall table (the same
+    material, the same ``tau c / R``: identical grains are one grain of the law), ``{}`` for a
+    law of the wall itself, and for a pair of two sizes the sentence why there is none (the
+    pair's ``tau c / R`` is the smaller grain's; the other grain's wall law is not made)."""
+    from restitution.laws.damped import DampedLaw
+    from restitution.laws.si_law import si_law
+
+    if si.against == "wall":
+        return {}
+    if si.law.partner is not None:
+        return {1: "a damped pair of two sizes or materials: the wall tables of its grains are "
+                "not made (give each grain's own export against the wall)"}  # fmt: skip
+    wall = DampedLaw(si_law(grain=si.grain, against="wall"), damped.tau, damped.tau_err,
+                     damped.radius_m, damped.measured)  # fmt: skip
+    note(f"note: the damped law of the grain on the wall for the plugin: "
+         f"{wall.table_collisions()} viscous collisions")  # fmt: skip
+    return {1: wall.as_si_law(progress=bars)}
 
 
 def _viscoelastic(r, damped, note):
