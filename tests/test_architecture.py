@@ -1,7 +1,8 @@
 """The layers of docs/architecture.md hold: no module imports the package root, and no import runs
 from a lower layer to a higher one (read from the source with :mod:`ast`, imports inside
-functions included); and above the body layer no module names a kind of body by a literal
-string: the layers above read the kind's attributes (issue 40)."""
+functions included); above the body layer no module names a kind of body by a literal
+string: the layers above read the kind's attributes (issue 40); and outside the partner kinds
+no module compares or keys on a partner's name (issue 60)."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import pytest
 
 import restitution
 from restitution.bodies.kinds import geometries
+from restitution.laws.partners.base import against_choices, partner_kinds
 
 SRC = Path(restitution.__file__).parent
 
@@ -156,6 +158,99 @@ def test_the_kind_check_sees_literals_but_not_prose():
     assert sorted(line.split(" names")[0] for line in found) == ["laws/x.py:4", "laws/x.py:5"]
     assert "names the kind 'disk'; read an attribute" in found[0] + found[1]
     assert _kind_literals(Path("bodies/disk/kind.py"), ast.parse(source), names) == []
+
+
+# -- no partner by name outside the partner kinds (issue 60) -----------------------------------
+
+PARTNER_HOMES = (("bodies",), ("laws", "partners"))
+"""Where a partner's name may be written: its constants' classes (``bodies/wall.py``'s
+``"half-space"`` and ``"plate"`` records, ``bodies/pair/``) and the partner kinds."""
+
+OTHER_WALLS = (("dynamics",), ("reproduction", "figures", "residual_convergence.py"))
+"""Modules where ``"wall"`` has another meaning, left out of the rule: in ``dynamics/`` it is
+the contact law's exponential wall (``steps.py`` names the step limit of its stiffness
+``alpha v`` ``"wall"``), a body-on-wall collision's own vocabulary below the laws, which knows
+no partner kinds; in the residual study's records (``residual_convergence.py``) ``"wall"`` is
+that wall's stiffness ``alpha R``, a number, not a partner. ``fem/`` and ``reproduction/``
+otherwise are checked: the finite elements' wall records use the partners'
+:data:`~restitution.laws.partners.base.WALL_KEY`, the figures the kinds' ``against``."""
+
+
+def _used(node, parents) -> bool:
+    """Whether a string constant is compared, used as a key or an index, passed to a call or
+    given as a parameter's default (an element of a tuple, list or set that is so counts):
+    what selects a partner by its name. Prose (docstrings, an f-string's text, a label put into
+    a message, a class field's default) is not."""
+    parent = parents.get(id(node))
+    while isinstance(parent, ast.Tuple | ast.List | ast.Set):
+        node, parent = parent, parents.get(id(parent))
+    if isinstance(parent, ast.Compare | ast.keyword | ast.arguments | ast.MatchValue):
+        return True
+    if isinstance(parent, ast.Subscript):
+        return parent.slice is node
+    if isinstance(parent, ast.Dict):
+        return any(k is node for k in parent.keys)
+    if isinstance(parent, ast.Call):
+        return any(a is node for a in parent.args)
+    return False
+
+
+def _partner_literals(rel: Path, tree, names) -> list[str]:
+    """Every string constant equal to a partner's name (or ``against`` value) that is compared
+    or used as a key (:func:`_used`) in a module outside the partners' homes and the modules
+    of another ``"wall"``."""
+    if any(rel.parts[: len(home)] == home for home in PARTNER_HOMES + OTHER_WALLS):
+        return []
+    skip = _docstrings(tree)
+    parents = {id(child): node for node in ast.walk(tree) for child in ast.iter_child_nodes(node)}
+    return [
+        f"{rel}:{node.lineno} names the partner {node.value!r}; read an attribute of "
+        "restitution.laws.partners.base.partner_of(...) instead"
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Constant)
+        and node.value in names
+        and id(node) not in skip
+        and _used(node, parents)
+    ]
+
+
+def _partner_names() -> set[str]:
+    return {k.name for k in partner_kinds()} | set(against_choices())
+
+
+@pytest.mark.parametrize(
+    "rel,tree", list(_modules()), ids=lambda x: "" if isinstance(x, ast.Module) else str(x)
+)
+def test_no_partner_is_named_by_a_literal_outside_the_partner_kinds(rel, tree):
+    assert _partner_literals(rel, tree, _partner_names()) == []
+
+
+def test_the_partner_check_sees_comparisons_and_keys_but_not_prose():
+    source = (
+        '"""Against the ``"wall"``."""\n'
+        'def f(s, law, against="grain"):\n'  # 2: a default
+        '    """For a "plate" too."""\n'
+        '    if s.against == "wall":\n'  # 4: compared
+        '        return law.metadata["wall"]\n'  # 5: a key
+        '    if s.against in ("grain", "x"):\n'  # 6: compared, in a tuple
+        '        return {"half-space": 1}\n'  # 7: a dict key
+        '    g(s, "wall")\n'  # 8: passed
+        '    g(s, against="grain")\n'  # 9: passed by keyword
+        '    who = [(s, "grain")]\n'  # a message's label
+        '    raise ValueError(f"wall{1}: no {who}")\n'  # an f-string's text
+        "class K:\n"
+        '    name: str = "wall"\n'  # a field's default
+        "X = 1\n"
+        '"""X of the "wall"."""\n'
+    )
+    names = {"wall", "grain", "plate", "half-space"}
+    found = _partner_literals(Path("laws/x.py"), ast.parse(source), names)
+    lines = sorted(int(line.split(" names")[0].split(":")[1]) for line in found)
+    assert lines == [2, 4, 5, 6, 7, 8, 9], found
+    assert "names the partner 'wall'; read an attribute" in found[1] + found[2]
+    for home in ("bodies/wall.py", "laws/partners/plate.py", "dynamics/steps.py"):
+        assert _partner_literals(Path(home), ast.parse(source), names) == []
+    assert _partner_literals(Path("fem/x.py"), ast.parse(source), names) != []
 
 
 # -- laws/: serving apart from making, no cycle, no module over 800 lines (issue 60) -----------

@@ -41,6 +41,23 @@ _TYPES = {
 }
 
 
+class _LiveChoice(click.Choice):
+    """A choice whose allowed values are read when the command runs, from a callable (the
+    partner kinds registered then: a kind registered in its own module is offered)."""
+
+    def __init__(self, choices_of) -> None:
+        self._choices_of = choices_of
+        super().__init__(list(choices_of()))
+
+    @property
+    def choices(self):
+        return tuple(self._choices_of())
+
+    @choices.setter
+    def choices(self, value) -> None:
+        """Ignored: the callable gives them."""
+
+
 def _request_options(func):
     """One option per field of :class:`LawRequest`, in the fields' order (the mechanisms' own
     options, its ``extra``, are added when the command runs: :class:`_LawCommand`)."""
@@ -50,7 +67,7 @@ def _request_options(func):
             continue
         kwargs = dict(_TYPES.get(meta["type"], {}))
         if meta["type"] == "choice":
-            kwargs = dict(type=click.Choice(meta["choices"]()))
+            kwargs = dict(type=_LiveChoice(meta["choices"]))
         required = f.default is MISSING and f.default_factory is MISSING
         names = (meta["option"], *meta.get("aliases", ()))
         func = click.option(*names, f.name, required=required, help=meta["help"],

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 
+from restitution.laws.partners.base import partner_of
 from restitution.status import Status
 
 
@@ -94,8 +95,7 @@ def _rows(a) -> list[str]:
     """The elastic law's rows."""
     split = any(getattr(p, "loss_shares", None) for p in a.points)
     head = "  speed [m/s]        v/c       epsilon      error   status"
-    wall = "wall" in getattr(a.law.law, "metadata", {})
-    split_head = "        loss in ball / wall" if wall else "        loss in grain 1 / 2"
+    split_head = partner_of(a.law.law).split_head  # ball / wall, grain 1 / 2
     lines = [head + (split_head if split else "")]
     for p in a.points:
         eps, err = _eps(p)

@@ -37,6 +37,7 @@ from restitution.fem.impact import FemCollisionError, FemSettings
 from restitution.fem.limits import LEVELS, FemEpsilon, FemRun, _assemble
 from restitution.fem.wall_impact import BLOCK_SIZE, fem_collide_wall, wall_scales
 from restitution.jsonable import finite_or_none
+from restitution.laws.partners.base import WALL_KEY
 from restitution.limits.defaults import default_products
 
 __all__ = ["FemWallEpsilon", "WallCheck", "fem_wall_epsilon"]
@@ -114,7 +115,7 @@ class FemWallEpsilon:
         """JSON-ready: the limits' dictionary with the wall, the block and the checks."""
         d = self.limits.to_dict()
         d["geometry"] = f"{self.limits.geometry}-on-{self.wall.to_dict()['kind']}"
-        d["wall"] = self.wall.to_dict()
+        d[WALL_KEY] = self.wall.to_dict()
         d["limits_energy_loss_err"] = d["energy_loss_err"]
         d["energy_loss_err"] = finite_or_none(self.energy_loss_err)
         d["epsilon"] = finite_or_none(self.epsilon)

@@ -43,6 +43,7 @@ from restitution.fem.limits import LEVELS, FemRun
 from restitution.fem.reference import _environment
 from restitution.fem.wall_limits import fem_wall_epsilon
 from restitution.jsonable import DIGEST_KEY, digest_matches, signed
+from restitution.laws.partners.base import WALL_KEY
 from restitution.provenance import FEM_MODULES, source_digest
 
 __all__ = [
@@ -106,7 +107,7 @@ def fem_wall_code_version() -> str:
 
 
 def _key(point: dict) -> tuple:
-    wall = point["wall"]
+    wall = point[WALL_KEY]
     return (float(point["nu"]), wall["kind"], float(wall.get("thickness", math.inf)),
             float(point["v"]))  # fmt: skip
 
@@ -322,7 +323,7 @@ def main(argv: list[str] | None = None) -> None:
         sys.exit(130)
     for p in doc["points"]:
         print(
-            f"nu = {p['nu']:g}, {p['wall']}, v = {p['v']:g}: epsilon = {p['epsilon']} +- "
+            f"nu = {p['nu']:g}, {p[WALL_KEY]}, v = {p['v']:g}: epsilon = {p['epsilon']} +- "
             f"{p['epsilon_err']} ({p['settings']['wall_time_s']:.0f} s)"
         )
 

@@ -19,6 +19,7 @@ from restitution.atomic import writing
 from restitution.errors import InputError
 from restitution.laws import exports
 from restitution.laws.mechanisms.bounds import flag_points
+from restitution.laws.partners.grain import KIND as GRAIN
 from restitution.laws.si_law import SILaw, si_law
 from restitution.laws.si_point import SI_UNITS, overall_status
 
@@ -155,7 +156,7 @@ def constants_of(r, s: SILaw):
 def _identical(E, nu, rho, geometry, path, option) -> SILaw:
     """The law of two identical grains of a material, for a type pair i-i."""
     try:
-        return si_law(E, nu, rho, geometry, "grain", path=path)
+        return si_law(E, nu, rho, geometry, GRAIN.against, path=path)
     except InputError as exc:
         raise InputError(
             f"the constants per type pair need the law of identical grains of each material: "

@@ -56,6 +56,7 @@ from restitution.errors import InputError
 from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT
 from restitution.laws.mechanisms.base import mechanism_fields
 from restitution.laws.mechanisms.bounds import contact_scales, half_space_of, wall_of
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 from restitution.laws.si_point import SIPoint
 from restitution.quasistatic.hertz import QuasistaticError
@@ -303,8 +304,9 @@ class PlasticLaw:
         """The mechanisms this law's answers contain (their names,
         :mod:`restitution.laws.mechanisms.base`)."""
         names = ["waves"]
-        if wall_of(self.si.law) is not None:
-            names.append("wall")
+        loss = partner_of(self.si.law).loss  # an elastic wall's radiation
+        if loss is not None:
+            names.append(loss)
         if self.tau > 0:
             names.append("viscous")
         return [*names, "plastic"]

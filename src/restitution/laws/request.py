@@ -23,6 +23,7 @@ from pathlib import Path
 
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
+from restitution.laws.partners.base import against_choices, owner, partner_for
 from restitution.laws.request_checks import (
     check_options,
     check_partner_ratios,
@@ -31,7 +32,7 @@ from restitution.laws.request_checks import (
     unequal_sizes_advice,
 )
 from restitution.laws.request_fields import checked, option, warn_implausible
-from restitution.laws.units import BODIES, PARTNERS, SHAPES, Grain
+from restitution.laws.units import BODIES, SHAPES, Grain
 
 __all__ = ["DEFAULT_SPEEDS_M_S", "MEASURED_FIXES", "LawRequest", "option_fields", "request"]
 
@@ -81,7 +82,7 @@ class LawRequest:
             "speed w (v = w/(2c)); with --partner-radius-ratio a grain of the same material and "
             "another size (v = w/c, the pair's law).",
             "choice",
-            choices=lambda: list(PARTNERS),
+            choices=lambda: list(against_choices()),
         )
     )
     speeds: tuple[float, ...] = field(
@@ -432,7 +433,7 @@ class LawRequest:
         given = (self.partner_E, self.partner_nu, self.partner_rho)
         if given == (None, None, None):
             return None
-        if self.against != "grain":
+        if self.against != owner("partner_E").against:
             raise InputError(
                 "--partner-E, --partner-nu and --partner-rho describe a second grain: give them "
                 "with --against grain"
@@ -460,6 +461,12 @@ class LawRequest:
             ) from None
         check_partner_ratios(self, values)
         return other
+
+    @property
+    def partner_kind(self):
+        """The partner kind this request asks for (:func:`restitution.laws.partners.base.
+        partner_for`: the first whose ``matches`` holds)."""
+        return partner_for(self)
 
     @property
     def elastic_wall(self):

@@ -19,6 +19,7 @@ import math
 from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
 from restitution.laws.mechanisms.base import mechanisms, used_fields
+from restitution.laws.partners.base import owner
 from restitution.laws.request_fields import doubts
 from restitution.laws.units import BODIES
 from restitution.laws.wall_route import check_wall_request
@@ -89,7 +90,7 @@ def _check_ratio(r) -> None:
             "--partner-radius-ratio must be a positive number R2/R1 (1 = identical grains), "
             f"got {ratio:g}"
         )
-    if r.against != "grain":
+    if r.against != owner("partner_radius_ratio").against:
         raise InputError(
             "--partner-radius-ratio describes a second grain: give it with --against "
             "grain, or leave it out against a wall"
@@ -258,7 +259,7 @@ def _check_plastic(r) -> None:
 
 
 def _check_elastic_wall(r) -> None:
-    if r.against != "wall":
+    if r.against != owner("wall_E").against:
         raise InputError(
             "--wall-E, --wall-nu and --wall-rho describe an elastic wall: give them with "
             "--against wall"

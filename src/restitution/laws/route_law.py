@@ -25,6 +25,7 @@ from __future__ import annotations
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.low_speed import low_speed_points, low_speed_record, route_reach
+from restitution.laws.partners.base import partner_of_body
 from restitution.laws.wall_points import compute_command, stored_wall_point
 from restitution.laws.wall_route import uninformative
 
@@ -188,7 +189,7 @@ def wall_law(nu: float, wall, speeds, *, progress=False) -> EpsilonLaw:
         nu, _unique(records), key="low_speed", parameters=parameters, geometry=SPHERE.geometry,
         at_points_only=True,
     )  # fmt: skip
-    law.metadata["wall"] = wall.to_dict()
+    partner_of_body(wall).write(law, wall)
     law.metadata["refused"] = refused
     law.metadata["no_judge"] = sorted(no_judge)
     law.metadata["source"] = (
@@ -357,7 +358,7 @@ def _plate_law(nu: float, plate, speeds) -> EpsilonLaw:
         nu, _unique(records), key="low_speed", parameters=parameters, geometry=SPHERE.geometry,
         at_points_only=True,
     )  # fmt: skip
-    law.metadata["wall"] = plate.to_dict()
+    partner_of_body(plate).write(law, plate)
     law.metadata["refused"] = refused
     law.metadata["no_judge"] = sorted(no_judge)
     law.metadata["source"] = "computed now at the asked speeds: a sphere on a thin plate" + (

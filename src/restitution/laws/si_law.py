@@ -28,6 +28,9 @@ from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.mechanisms.base import mechanism_fields
 from restitution.laws.mechanisms.bounds import flag_points, law_mechanisms
+from restitution.laws.partners.base import partner_of
+from restitution.laws.partners.grain import KIND as GRAIN
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.laws.si_point import (
     BELOW_BUDGET_S,
     DIRECT_WALL_SHARES,
@@ -42,7 +45,7 @@ from restitution.laws.si_point import (
     quasistatic_note,
     route_reach_of,
 )
-from restitution.laws.units import PARTNERS, Grain, partner_factor
+from restitution.laws.units import Grain, partner_factor
 from restitution.status import Status
 
 __all__ = ["SILaw", "law_target", "pair_partner", "si_law"]
@@ -84,7 +87,7 @@ class SILaw:
         partner_factor(self.against)  # validates
         pair = self.law.partner
         if pair is not None:
-            if self.against != "grain":
+            if self.against != GRAIN.against:
                 raise InputError(
                     "a law of two grains serves collisions of two grains (against='grain'), "
                     f"not against a {self.against}"
@@ -114,28 +117,7 @@ class SILaw:
     def against_meaning(self) -> str:
         """What the SI speed ``w`` is: towards the wall, or the relative speed of two grains
         (identical ones, or of the same material and the law's radius ratio)."""
-        pair = self.law.partner
-        wall = self.law.metadata.get("wall") if isinstance(self.law, EpsilonLaw) else None
-        if wall is not None:
-            what = (f"an elastic plate {wall['thickness']:.4g} ball radii thick"
-                    if wall.get("kind") == "plate" else "an elastic half-space")  # fmt: skip
-            return (
-                f"{what} (E_w/E = {wall['modulus_ratio']:.4g}, rho_w/rho = "
-                f"{wall['density_ratio']:.4g}, nu_w = {wall['nu']:g}) hit at speed w (v = w / c)"
-            )
-        if pair is None:
-            return PARTNERS[self.against]
-        if self.partner_grain is not None:
-            g = self.partner_grain
-            return (
-                f"a grain of another material (E = {g.E:.4g} Pa, nu = {g.nu:g}, rho = "
-                f"{g.rho:.4g} kg/m^3) {pair.radius_ratio:g} times as large, relative normal "
-                "speed w (v = w / c, c of this grain; the pair's law)"
-            )
-        return (
-            f"a grain of the same material {pair.radius_ratio:g} times as large, relative "
-            "normal speed w (v = w / c, the pair's law)"
-        )
+        return partner_of(self).meaning(self)
 
     @property
     def k(self) -> float:
@@ -150,7 +132,7 @@ class SILaw:
 
     def _reduced(self, speed_m_s):
         """``v = w / (k c)`` of SI speed(s) ``w``, checked by :meth:`Grain.v_over_c`."""
-        return self.grain.v_over_c(speed_m_s, "wall") / self.k
+        return self.grain.v_over_c(speed_m_s, WALL.against) / self.k
 
     @property
     def speed_range_m_s(self) -> tuple[float, float]:
@@ -593,7 +575,7 @@ def _partner(radius_ratio, against: str, grain: Grain, partner_grain=None):
             f"the radius ratio must be a positive number, got {radius_ratio!r}; pass "
             "radius_ratio as a finite float > 0"
         )
-    if against != "grain":
+    if against != GRAIN.against:
         what = "a radius ratio" if other is None else "a partner material"
         raise InputError(
             f"{what} describes a second grain; it needs against='grain', not {against!r}"

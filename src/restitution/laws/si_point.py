@@ -20,6 +20,7 @@ import numpy as np
 from restitution.bodies.kinds import body_kind
 from restitution.estimate import Estimate
 from restitution.laws.law import EpsilonLaw
+from restitution.laws.partners.base import partner_of
 from restitution.status import Status
 
 __all__ = [
@@ -73,22 +74,6 @@ SPHERE_PAIR_QUASISTATIC_NOTE = (
     "docs/spheres.md, section 'Two spheres')"
 )
 """What ``quasistatic`` means for a law of two spheres."""
-
-ELASTIC_WALL_QUASISTATIC_NOTE = (
-    "from the low-speed theory, not from collisions: Rayleigh's estimate of the energy left in "
-    "the ball's modes by Hertz's pulse on the elastic wall, plus the energy radiated into the "
-    "wall as elastic waves (Lamb's point-force radiation of the same pulse), each with its "
-    "error (docs/walls.md)"
-)
-"""What ``quasistatic`` means for a sphere on an elastic half-space."""
-
-PLATE_QUASISTATIC_NOTE = (
-    "from Zener's thin-plate model, not from collisions: Hertz's contact coupled to the plate's "
-    "point impedance 8 sqrt(D rho h), solved as the coupled equation; the loss is the plate's "
-    "flexural waves plus the ball's own vibrations driven by the same force history; its error "
-    "an estimate of the model's neglected terms, judged by the finite elements (docs/walls.md)"
-)
-"""What ``quasistatic`` means for a sphere on a thin plate."""
 
 _ROUTE_NOTES: dict[str, str] = {"slow-modal": DISK_QUASISTATIC_NOTE}
 """What ``quasistatic`` means for the points of a low-speed route, by the route's name (a
@@ -229,10 +214,9 @@ def quasistatic_note(law) -> str:
     its pair): the disk's slow-impact model or the sphere's Rayleigh estimate."""
     kind = body_kind(law.geometry)
     route = kind.low_speed_route if law.partner is None else kind.pair_low_speed_route
-    if isinstance(law, EpsilonLaw) and "wall" in law.metadata:
-        if law.metadata["wall"].get("kind") == "plate":
-            return PLATE_QUASISTATIC_NOTE
-        return ELASTIC_WALL_QUASISTATIC_NOTE
+    note = partner_of(law).quasistatic_note  # an elastic wall's or a plate's
+    if note is not None:
+        return note
     if law.partner is not None and route == "rayleigh":
         return SPHERE_PAIR_QUASISTATIC_NOTE
     return _ROUTE_NOTES.get(route, STATUSES[Status.QUASISTATIC])
@@ -284,17 +268,17 @@ def loss_shares_at(law, v: float, direct: bool = True) -> tuple[float, float] | 
     2 (issue 64: 0.0135 % without ``--export``, 0.0283 % with it, at 1 m/s on a glass block);
     between two speeds of a pair's law the fraction linear in ``ln v`` between theirs; ``None``
     elsewhere."""
-    if not isinstance(law, EpsilonLaw) or (law.partner is None and "wall" not in law.metadata):
+    wall = partner_of(law).read(law)  # an elastic wall's record, else None
+    if not isinstance(law, EpsilonLaw) or (law.partner is None and wall is None):
         return None
     pts = np.asarray(law.v, dtype=float)
     j = int(np.searchsorted(pts, v))
     records = law._records()
     if j < pts.size and abs(pts[j] - v) <= SAME_SPEED * pts[j]:
         first = _first_share(records[j])
-    elif "wall" in law.metadata:
+    elif wall is not None:
         if not (direct and 0 < j < pts.size and not law.at_points_only):
             return None
-        wall = law.metadata["wall"]
         return _wall_shares_at(float(law.nu), tuple(sorted(wall.items())), float(v))
     elif 0 < j < pts.size and not law.at_points_only:
         a, b = _first_share(records[j - 1]), _first_share(records[j])
@@ -314,7 +298,7 @@ def _is_stored(record: dict) -> bool:
 
 def _compute(law, v: float) -> str:
     """How to compute the missing finite-element point of an elastic wall's law at ``v``."""
-    wall = law.metadata.get("wall") if isinstance(law, EpsilonLaw) else None
+    wall = partner_of(law).read(law) if isinstance(law, EpsilonLaw) else None
     if wall is None:
         return ""
     from restitution.laws.wall_points import compute_command
@@ -354,18 +338,19 @@ def point_status(law, v: float) -> tuple[str, str]:
             return Status.COMPUTED, ""
         return Status.COMPUTED_NOT_ASYMPTOTIC, STATUSES[Status.COMPUTED_NOT_ASYMPTOTIC]
     if getattr(law, "at_points_only", False):
-        what = "elastic wall" if "wall" in law.metadata else "pair"
+        kind = partner_of(law)
+        what = kind.route_words  # "elastic wall", "pair"
         refused = next((why for at, why in law.metadata.get("refused", {}).items()
                         if abs(float(at) - v) <= SAME_SPEED * v), None)  # fmt: skip
         if refused:
-            wall = law.metadata.get("wall", {}).get("kind", "wall")  # plate, half-space
+            wall = kind.model_words  # plate, half-space
             if any(abs(float(at) - v) <= SAME_SPEED * v for at in law.metadata.get("no_judge", ())):
                 # Beyond Hertz's contact: the finite elements are not offered either.
                 return Status.OUTSIDE, f"v = {v:.3g} c: no value: {refused}"
             return Status.OUTSIDE, (
                 f"v = {v:.3g} c: no value from the {wall}'s model: {refused}; no "
                 f"finite-element point of this {wall} is stored at this speed{_compute(law, v)}"
-                + (_THICKER if wall == "plate" and "not informative" in refused else "")
+                + (kind.served_further if "not informative" in refused else "")
             )
         if v > route_reach_of(law):
             return Status.OUTSIDE, (
@@ -390,24 +375,23 @@ def point_status(law, v: float) -> tuple[str, str]:
     return Status.INTERPOLATED_NOT_ASYMPTOTIC, STATUSES[Status.INTERPOLATED_NOT_ASYMPTOTIC]
 
 
-_THICKER = "; a thicker plate loses less and is served further"
-
-
 def not_informative(law, v: float, eps: float, err: float) -> str | None:
     """For an elastic wall's law, why its value at ``v`` (``c``) is not served
     (:func:`restitution.laws.wall_route.uninformative`: the error exceeds the value, as
     between a grid law's points near its top), with what answers instead; ``None`` when it is
     served, and for every other law."""
-    if not (isinstance(law, EpsilonLaw) and "wall" in law.metadata):
+    kind = partner_of(law)
+    if not (isinstance(law, EpsilonLaw) and kind.read(law) is not None):
         return None
     from restitution.laws.wall_route import uninformative
 
     why = uninformative(eps, err)
     if why is None:
         return None
-    wall = law.metadata["wall"].get("kind", "wall")
-    thicker = _THICKER if wall == "plate" else ""
-    return f"v = {v:.3g} c: no value from the {wall}'s route: {why}{_compute(law, v)}{thicker}"
+    return (
+        f"v = {v:.3g} c: no value from the {kind.model_words}'s route: {why}{_compute(law, v)}"
+        f"{kind.served_further}"
+    )
 
 
 def overall_status(points) -> tuple[str, str | None]:

@@ -18,7 +18,8 @@ three-dimensional ones for the sphere. At the edge a user names
 
 * a collision partner: ``"wall"`` (the model's rigid flat wall, hit at speed ``w``: ``v = w/c``)
   or ``"grain"`` (two identical grains at relative normal speed ``w``: by symmetry each moves at
-  ``w/2`` towards the contact plane, so ``v = w / (2c)``).
+  ``w/2`` towards the contact plane, so ``v = w / (2c)``): the ``against`` of a partner kind
+  (:mod:`restitution.laws.partners`), whose ``speed_factor`` and ``speed_meaning`` these are.
 
 The radius never enters ``epsilon`` (the model has no other length), so it is not asked for.
 Every result of this module says which geometry and partner it belongs to.
@@ -27,14 +28,15 @@ Every result of this module says which geometry and partner it belongs to.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
-from typing import Literal
 
 import numpy as np
 
 from restitution.bodies.kinds import BodyKind, geometries, kinds
 from restitution.bodies.material import Material
 from restitution.errors import InputError, describe, is_real, non_negative
+from restitution.laws.partners.base import against_choices, by_against
 
 __all__ = [
     "BODIES",
@@ -52,8 +54,9 @@ vocabulary: a *kind* (``disk``, ``sphere``; :mod:`restitution.bodies.kinds`) is 
 whose law serves, a *shape* (``cylinder``, ``thin-disk``, ``sphere``) the real grain in SI
 units; ``geometry`` meant either and is kept where it always named a kind (the reduced units'
 commands and functions) and as a deprecated alias of ``shape`` here."""
-Against = Literal["wall", "grain"]
-"""The collision partner of an SI answer (:data:`PARTNERS`)."""
+Against = str
+"""The collision partner of an SI answer: the ``against`` of a registered partner kind
+(:data:`PARTNERS`)."""
 
 
 def _shape_kinds() -> dict[str, BodyKind]:
@@ -88,22 +91,30 @@ def _choices(shapes: dict[str, BodyKind]) -> str:
     return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
 
 
-PARTNERS: dict[str, str] = {
-    "wall": "a rigid flat wall hit at speed w (v = w / c)",
-    "grain": "an identical grain, relative normal speed w (v = w / (2 c))",
-}
-"""Collision partner name -> what the speed ``w`` means."""
+class _Partners(Mapping):
+    """``against`` -> what the speed ``w`` means: the registered partner kinds' (read when
+    asked, so a kind registered later is in it)."""
+
+    def __getitem__(self, against: str) -> str:
+        if against not in against_choices():
+            raise KeyError(against)
+        return by_against(against).speed_meaning
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(against_choices())
+
+    def __len__(self) -> int:
+        return len(against_choices())
+
+
+PARTNERS: Mapping[str, str] = _Partners()
+"""Collision partner (``against``) -> what the speed ``w`` means."""
 
 
 def partner_factor(against: str) -> float:
-    """``k`` in ``v = w / (k c)``: 1 against a wall, 2 for two identical grains."""
-    if isinstance(against, str) and against == "wall":
-        return 1.0
-    if isinstance(against, str) and against == "grain":
-        return 2.0
-    raise InputError(
-        f"against (the collision partner) must be 'wall' or 'grain', got {describe(against)}"
-    )
+    """``k`` in ``v = w / (k c)``: 1 against a wall, 2 for two identical grains (the partner
+    kind's :attr:`~restitution.laws.partners.base.PartnerKind.speed_factor`)."""
+    return by_against(against).speed_factor
 
 
 SLOWEST_V = 1e-16

@@ -48,6 +48,7 @@ from scipy.interpolate import PchipInterpolator
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.low_speed import low_speed_record
+from restitution.laws.partners.base import partner_of_body
 from restitution.laws.wall_route import (
     HALF_SPACE_ROUTE,
     PLATE_ROUTE,
@@ -227,10 +228,10 @@ def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
     law = EpsilonLaw.from_records(
         nu, records, key="low_speed", parameters=parameters, geometry=SPHERE.geometry
     )
-    law.metadata["wall"] = wall.to_dict()
+    kind = partner_of_body(wall)
+    kind.write(law, wall)
     law.metadata["source"] = (
         f"computed now on a grid of {v.size} speeds ({PER_DECADE} a decade, the PCHIP error "
-        f"measured at {INTERIOR} speeds inside every interval): a sphere on an elastic "
-        + ("plate" if is_plate(wall) else "half-space")
+        f"measured at {INTERIOR} speeds inside every interval): a sphere on an elastic " + kind.name
     )
     return law

@@ -39,6 +39,7 @@ from restitution.bodies.wall import HalfSpace, wall_from_dict
 from restitution.errors import CorruptFileError, InputError
 from restitution.estimate import Estimate, estimate_of
 from restitution.jsonable import digest_matches
+from restitution.laws.partners.base import WALL_KEY
 
 __all__ = [
     "SPEED_MATCH",
@@ -107,7 +108,7 @@ def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePo
         return tuple(
             WallReferencePoint(
                 nu=float(p["nu"]),
-                wall=wall_from_dict(p["wall"]),
+                wall=wall_from_dict(p[WALL_KEY]),
                 v=float(p["v"]),
                 epsilon=number(p["epsilon"]),
                 epsilon_err=number(p["epsilon_err"]),

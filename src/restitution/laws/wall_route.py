@@ -33,6 +33,7 @@ import numpy as np
 
 from restitution.errors import InputError
 from restitution.laws.low_speed import low_speed_record
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.quasistatic.half_space import BALL_QUADRATURE_PHASE
 
 __all__ = [
@@ -160,7 +161,7 @@ def check_wall_request(grain, wall, speeds_m_s, wall_E: float) -> None:
     if not speeds or wall is None:
         return
     w = min(speeds)
-    delta = hertz_compression(grain.law_nu, wall, float(grain.v_over_c(w, "wall")))
+    delta = hertz_compression(grain.law_nu, wall, float(grain.v_over_c(w, WALL.against)))
     if delta < HERTZ_COMPRESSION_LIMIT:
         return
     meant = 1e9 * wall_E

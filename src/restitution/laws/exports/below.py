@@ -53,7 +53,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
-from restitution.laws.mechanisms.bounds import law_mechanisms, wall_of
+from restitution.laws.mechanisms.bounds import law_mechanisms
+from restitution.laws.partners.base import partner_of
 
 __all__ = ["SlowContinuation", "slow_continuation"]
 
@@ -154,15 +155,12 @@ def slow_continuation(s, w0_m_s: float, epsilon0: float) -> SlowContinuation:
     names = law_mechanisms(s.law)
     # The mechanism that dominates the loss as w -> 0 (module docs): viscosity, else an elastic
     # wall's radiation, else the body's own vibrations.
-    dominant = next(m for m in ("viscous", "wall", "waves") if m in names)
-    if dominant == "wall" and planar:
-        raise InputError(
-            "no slow-impact form is derived for a 2D body on an elastic wall; its exports stop "
-            "at the law's slowest point"
-        )
-    if dominant == "wall" and wall_of(s.law).get("kind") == "plate":
-        dominant = "plate"
-    form, exponent, why = _FORMS[dominant, planar]
+    partner = partner_of(s.law)
+    dominant = next(m for m in ("viscous", partner.loss, "waves") if m is not None and m in names)
+    if dominant == partner.loss:  # the partner's own loss: its form (none for a 2D body)
+        form, exponent, why = partner.slow_form(planar)
+    else:
+        form, exponent, why = _FORMS[dominant, planar]
     ws = float(s.speed_scale_m_s) if form == "log" else None
     if ws is not None and not ws > w0_m_s:
         raise InputError(
@@ -177,14 +175,9 @@ def slow_continuation(s, w0_m_s: float, epsilon0: float) -> SlowContinuation:
 _FORMS = {
     ("viscous", False): ("power", 0.2, "viscous loss on Hertz's pulse, ~ v^(1/5)"),
     ("viscous", True): ("log", 0.5, "viscous loss of the 2D contact, ~ 1/sqrt(ln(1/v))"),
-    ("wall", False): ("power", 0.6, "waves radiated into the half-space, ~ v^(3/5) (Hunter)"),
-    ("plate", False): (
-        "power",
-        0.2,
-        "flexural waves of Zener's thin plate, ~ lambda ~ v^(1/5) (its first order)",
-    ),
     ("waves", False): ("power", 1.0, "vibrations of the 3D body, ~ v (Rayleigh)"),
     ("waves", True): ("log", 2.0, "vibrations of the 2D body, ~ 1/ln^2(1/v)"),
 }
 """``(dominant mechanism, planar) -> (form, exponent, what it is)``: the table of the module
-docs."""
+docs; where an elastic wall's radiation dominates, its partner kind's
+(:meth:`~restitution.laws.partners.base.PartnerKind.slow_form`)."""

@@ -15,6 +15,7 @@ import numpy as np
 
 from restitution.errors import InputError
 from restitution.estimate import Estimate
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 from restitution.status import Status
 
@@ -104,7 +105,7 @@ def _z_where(share: float) -> float:
 
 def _variance_factor(s: SILaw) -> float:
     """``sigma^2 / T`` of the normal impact speed: 2 for two grains, 1 against a wall."""
-    return 2.0 if s.against == "grain" else 1.0
+    return partner_of(s).variance_factor
 
 
 def maxwell_temperatures(*laws: SILaw) -> tuple[float, float]:

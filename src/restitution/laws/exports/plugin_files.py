@@ -24,6 +24,8 @@ from restitution.laws.exports.lammps_plugin import (
 from restitution.laws.exports.pchip import pchip_table
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.mechanisms.bounds import wall_of
+from restitution.laws.partners.base import partner_of
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.laws.si_law import si_law
 
 __all__ = ["INPUT_NAME", "plugin_files"]
@@ -54,7 +56,8 @@ def plugin_files(s, c=None, walls=None) -> dict[str, str]:
     """
     g = s.grain
     laws = {}
-    if s.against == "wall":
+    partner = partner_of(s)
+    if not partner.is_grain:
         laws[1, 0] = s
     elif isinstance(c, TypePairs):
         laws[1, 1], laws[1, 2] = c.identical, s
@@ -66,15 +69,16 @@ def plugin_files(s, c=None, walls=None) -> dict[str, str]:
     two = isinstance(c, TypePairs) and c.two_materials
     grains = c.grains if two else {1: g, 2: g}
     missing = []
-    if s.against == "grain":  # each material on the wall too: one folder for the system
+    if partner.is_grain:  # each material on the wall too: one folder for the system
         for i in (1, 2) if two else (1,):
             given = (walls or {}).get(i)
             if isinstance(given, str):
                 missing.append(f"type {i} on the wall: {given}")
                 continue
             try:
-                laws[i, 0] = given if given is not None else si_law(grain=grains[i],
-                                                                    against="wall")  # fmt: skip
+                if given is None:
+                    given = si_law(grain=grains[i], against=WALL.against)
+                laws[i, 0] = given
             except InputError as exc:
                 missing.append(f"type {i} on the wall: {exc}")
     # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.

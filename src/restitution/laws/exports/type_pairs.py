@@ -15,6 +15,7 @@ import numpy as np
 
 from restitution.errors import InputError
 from restitution.laws.exports.constants import Constant, constant_at, maxwell_constant
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["SAME_SIZE_NOTE", "TWO_MATERIALS_NOTE", "TypePairs", "type_pair_constants"]
@@ -45,7 +46,7 @@ def _check_type_pair_laws(pair: SILaw, identical: SILaw, identical2: SILaw | Non
             "partner_grain); give that as the pair's law"
         )
     for law, which in ((identical, "1-1"), (identical2, "2-2")):
-        if law is not None and (law.law.partner is not None or law.against != "grain"):
+        if law is not None and (law.law.partner is not None or not partner_of(law).is_grain):
             raise InputError(
                 f"the {which} constant needs the law of two identical grains (si_law(..., "
                 f"against='grain') without a radius ratio), got {law.against_meaning!r}"

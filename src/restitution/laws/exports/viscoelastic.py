@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.laws.partners.base import partner_of
 
 __all__ = ["ContactScales", "DroppedPart", "Viscoelastic", "viscoelastic_model"]
 
@@ -235,7 +236,7 @@ def viscoelastic_model(damped, speeds_m_s, radius_m: float | None = None) -> Vis
                                                mi * mj / (mi + mj), g_one / 2.0)  # fmt: skip
     for i in radii:
         contacts[i, 0] = ContactScales(e_one, radii[i], mass[i], g_one)
-    if si.against == "wall":
+    if not partner_of(si).is_grain:
         law_pair = (1, 0)
     else:
         law_pair = (1, 2) if ratio != 1.0 else (1, 1)

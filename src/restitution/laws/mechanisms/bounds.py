@@ -20,6 +20,7 @@ from dataclasses import replace
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
 from restitution.laws.material_classes import material_class
+from restitution.laws.partners.base import partner_of
 from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
 
 __all__ = [
@@ -33,9 +34,9 @@ __all__ = [
 
 
 def wall_of(law) -> dict | None:
-    """The elastic wall of a law (its ``metadata["wall"]``), ``None`` for a rigid one."""
-    metadata = getattr(law, "metadata", None)
-    return None if metadata is None else metadata.get("wall")
+    """The elastic wall of a law (its partner kind's record in its file,
+    :meth:`restitution.laws.partners.base.PartnerKind.read`), ``None`` for a rigid one."""
+    return partner_of(law).read(law)
 
 
 def law_mechanisms(law) -> list[str]:
@@ -47,8 +48,9 @@ def law_mechanisms(law) -> list[str]:
     if "mechanisms" in metadata:
         return list(metadata["mechanisms"])
     names = ["waves"]
-    if wall_of(law) is not None:
-        names.append("wall")
+    loss = partner_of(law).loss  # an elastic wall's radiation
+    if loss is not None:
+        names.append(loss)
     parameters = (getattr(law, "metadata", None) or {}).get("parameters", {})
     if "relaxation_time_c_over_R" in parameters:
         names.append("viscous")
@@ -59,41 +61,21 @@ def contact_scales(si):
     """``(Hertz's law, mass)`` of the collision of ``si`` (an :class:`~restitution.laws.si_law.
     SILaw` of spheres) in its reduced units: on a rigid wall, on an elastic half-space (``E*``
     of both), or two spheres (their ``E*``, ``R_eff`` and reduced mass; identical spheres are
-    served as the wall at ``w/2``). :class:`InputError` for another body or a plate."""
-    from restitution.quasistatic.hertz_sphere import SPHERE_MASS, sphere_contact_law
-    from restitution.quasistatic.pulse import pair_contact_for
-
+    served as the wall at ``w/2``): the partner kind's :meth:`~restitution.laws.partners.base.
+    PartnerKind.contact`. :class:`InputError` for another body or a plate."""
     if si.grain.body != SPHERE.name:
         raise InputError(
             f"plastic flow is computed for spheres (Thornton's contact is built on Hertz's 3D "
             f"pressure); no comparable law of {si.grain.geometry}s is derived here "
             "(docs/plasticity.md): leave out the plastic options"
         )
-    nu = float(si.law.nu)
-    pair = si.law.partner
-    if pair is not None:
-        return pair_contact_for(SPHERE.geometry, nu, pair)
-    wall = wall_of(si.law)
-    if wall is None:
-        return sphere_contact_law(nu), SPHERE_MASS
-    if wall.get("kind") == "plate":
-        raise InputError(
-            "plastic flow on a thin plate is not modelled (Zener's plate model is elastic); use "
-            "a half-space or a rigid wall, or leave out the plastic options"
-        )
-    hs = half_space_of(si.law)
-    return replace(sphere_contact_law(nu), effective_modulus=hs.effective_modulus(nu)), SPHERE_MASS
+    return partner_of(si).contact(si)
 
 
 def half_space_of(law):
-    """The elastic half-space of a law's ``metadata["wall"]``
-    (:class:`restitution.bodies.wall.HalfSpace`), ``None`` for a rigid wall or a plate."""
-    from restitution.bodies.wall import HalfSpace
-
-    wall = wall_of(law)
-    if wall is None or wall.get("kind") == "plate":
-        return None
-    return HalfSpace(wall["modulus_ratio"], wall["density_ratio"], wall["nu"])
+    """The elastic half-space of a law's elastic wall (:class:`restitution.bodies.wall.
+    HalfSpace`), ``None`` for a rigid wall or a plate."""
+    return partner_of(law).half_space(law)
 
 
 def elastic_bound(si) -> tuple[float | None, str]:

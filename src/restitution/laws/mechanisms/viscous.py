@@ -84,14 +84,16 @@ def _walls(si, damped, note, bars):
     law of the wall itself, and for a pair of two sizes the sentence why there is none (the
     pair's ``tau c / R`` is the smaller grain's; the other grain's wall law is not made)."""
     from restitution.laws.damped import DampedLaw
+    from restitution.laws.partners.base import partner_of
+    from restitution.laws.partners.rigid_wall import KIND as WALL
     from restitution.laws.si_law import si_law
 
-    if si.against == "wall":
+    if not partner_of(si).is_grain:
         return {}
     if si.law.partner is not None:
         return {1: "a damped pair of two sizes or materials: the wall tables of its grains are "
                 "not made (give each grain's own export against the wall)"}  # fmt: skip
-    wall = DampedLaw(si_law(grain=si.grain, against="wall"), damped.tau, damped.tau_err,
+    wall = DampedLaw(si_law(grain=si.grain, against=WALL.against), damped.tau, damped.tau_err,
                      damped.radius_m, damped.measured)  # fmt: skip
     note(f"note: the damped law of the grain on the wall for the plugin: "
          f"{wall.table_collisions()} viscous collisions")  # fmt: skip

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from restitution.laws.mechanisms.base import register_mechanism
+from restitution.laws.partners.half_space import RADIATION
 
 __all__ = ["ElasticWaves", "WallWaves"]
 
@@ -44,7 +45,7 @@ class ElasticWaves:
 class WallWaves:
     """The elastic waves radiated into an elastic wall (a half-space or a plate)."""
 
-    name: str = "wall"
+    name: str = RADIATION  # the loss the elastic walls' partner kinds declare
     words: str = "elastic waves radiated into the wall"
     rank: float = 0.0
     options: tuple = ()

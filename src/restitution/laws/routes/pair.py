@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from restitution.bodies.pair.partner import UnequalPairError
 from restitution.errors import InputError
 from restitution.laws.law_nu import shipped_match
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.laws.route_law import route_law, route_serves
 from restitution.laws.routes.base import check_speed_count, computing_route, register_route
 from restitution.laws.routes.given import target
@@ -65,7 +66,8 @@ class PairRoute:
                 f"shipped: add --compute ({p.words()})"
             )
         grain = Grain(r.E, r.nu, r.rho, r.shape)
-        vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
+        # The pair's law takes the relative speed: v = w / c (the rigid wall's scale, k = 1).
+        vs = [float(grain.v_over_c(w, WALL.against)) for w in (*r.speeds, *r.measured_speeds)]
         check_speed_count(len(set(vs)), ROUTE_SECONDS_PER_SPEED,
                           f"the {body} pair's low-speed route")  # fmt: skip
         note(

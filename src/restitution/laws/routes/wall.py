@@ -41,8 +41,8 @@ class ElasticWallRoute:
         what = ("Zener's thin-plate model" if r.wall_thickness is not None
                 else "the ball's vibrations and the waves radiated into the wall")  # fmt: skip
         note(f"note: an elastic wall: each speed is computed now ({what}; seconds)")
-        vs = [float(grain.v_over_c(w, "wall")) for w in (*r.speeds, *r.measured_speeds)]
-        return SILaw(grain, "wall", wall_law(grain.law_nu, wall, vs))
+        vs = [float(grain.v_over_c(w, r.against)) for w in (*r.speeds, *r.measured_speeds)]
+        return SILaw(grain, r.against, wall_law(grain.law_nu, wall, vs))
 
     @staticmethod
     def _grid(r, note, progress: bool) -> SILaw:
@@ -59,7 +59,7 @@ class ElasticWallRoute:
         what = "exports" if r.export_dir is not None else "constant"
         note(f"note: an elastic wall: its law on a grid of speeds for the {what} is computed now "
              f"(about {budget.format_duration(seconds)})")  # fmt: skip
-        return SILaw(grain, "wall", wall_grid_law(grain.law_nu, wall, progress=progress))
+        return SILaw(grain, r.against, wall_grid_law(grain.law_nu, wall, progress=progress))
 
 
 register_route(ElasticWallRoute())

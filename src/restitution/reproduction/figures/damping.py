@@ -19,6 +19,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["MATERIAL", "MEASURED", "DampedCurve", "compute", "main", "plot"]
@@ -53,7 +54,7 @@ def compute(geometries=(*SPHERE.shapes, "cylinder"), speeds_m_s=None) -> tuple[D
     out = []
     for geometry in geometries:
         d = damped_law(
-            si_law(**MATERIAL, geometry=geometry, against="wall"),
+            si_law(**MATERIAL, geometry=geometry, against=WALL.against),
             measured_epsilon=MEASURED[0],
             measured_speed_m_s=MEASURED[1],
         )

@@ -20,6 +20,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["MechanismCurves", "compute", "main", "plot"]
@@ -62,7 +63,7 @@ def compute(speeds_m_s=None) -> MechanismCurves:
     from restitution.laws.si_law import si_law
 
     w = np.geomspace(1e-3, 100.0, 41) if speeds_m_s is None else np.asarray(speeds_m_s)
-    si = si_law(STEEL["E"], STEEL["nu"], STEEL["rho"], SPHERE.geometry, "wall")
+    si = si_law(STEEL["E"], STEEL["nu"], STEEL["rho"], SPHERE.geometry, WALL.against)
     tau = RELAXATION_TIME_S * si.grain.c_m_s / RADIUS_M
     law = plastic_law(si, yield_stress_pa=YIELD_STRESS_PA, tau=tau)
     points = law.points(list(w))

@@ -19,6 +19,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.sphere.kind import KIND as SPHERE
+from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.laws.si_law import si_law
 from restitution.reproduction.figures._style import add_notes, figure_main
 from restitution.status import Status
@@ -68,7 +69,7 @@ def compute(materials=MATERIALS, points: int = 120) -> tuple[SICurve, ...]:
     out = []
     for name, (E, nu, rho) in materials.items():
         for geometry in (*SPHERE.shapes, "cylinder"):
-            s = si_law(E=E, nu=nu, rho=rho, geometry=geometry, against="wall")
+            s = si_law(E=E, nu=nu, rho=rho, geometry=geometry, against=WALL.against)
             lo, hi = s.computed_range_m_s
             speeds = np.geomspace(lo, hi, points)
             pts = s.points(speeds)

@@ -21,6 +21,7 @@ from restitution.laws.exports.dem._registry import DemTarget, register_dem_targe
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "lammps_snippet", "lammps_viscoelastic"]
@@ -84,7 +85,7 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
         f"# {friction_line(friction, _FRICTION_WHERE)}",
         f"# {INSTALL_NOTE}",
     ]
-    if s.against == "wall":
+    if not partner_of(s).is_grain:
         elastic = wall_of(s.law)
         mixed, material = None, []
         if elastic is not None:  # the wall's own material: E' = 2 E* and nu = 0 (as for 1-2)

@@ -23,6 +23,7 @@ from restitution.laws.exports.dem._registry import DemTarget, register_dem_targe
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "liggghts_snippet", "liggghts_viscoelastic"]
@@ -40,7 +41,8 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None =
     grains = [_grain_of(s, c, i) for i in range(1, n + 1)]
     moduli = [g.E for g in grains]
     poisson = [g.nu for g in grains]
-    elastic = wall_of(s.law) if s.against == "wall" and n == 1 else None
+    on_wall = not partner_of(s).is_grain
+    elastic = wall_of(s.law) if on_wall and n == 1 else None
     wall_lines = []
     if elastic is not None:  # the wall its own atom type: LIGGGHTS mixes E* of the two types
         n = 2
@@ -59,7 +61,7 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None =
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
-            *([f"# {WALL_NOTE}"] if s.against == "wall" else []),
+            *([f"# {WALL_NOTE}"] if on_wall else []),
             f"# {friction_line(friction, 'coefficientFriction')}",
             "fix m1 all property/global youngsModulus peratomtype "
             + " ".join(f"{E:.8g}" for E in moduli),

@@ -20,6 +20,7 @@ from restitution.laws.exports.dem._registry import DemTarget, register_dem_targe
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "mercurydpm_snippet", "mercurydpm_viscoelastic"]
@@ -58,7 +59,7 @@ def _mercury_mass(s: SILaw, c: Constant | TypePairs) -> str:
             return f"{head} of each type pair: {each}; {both}"
         return f"{head} of the small and the large grain; {both}"
     m = "m = 4/3 pi rho R^3" if s.grain.kind.dimension == 3 else "m the particle mass"
-    which = "two identical grains: m" if s.against == "grain" else "a grain on a wall: 2 m"
+    which = partner_of(s).dem_mass
     return f"{head}; for {which}, {m}"
 
 
@@ -85,8 +86,7 @@ def _mercury_declarations(s: SILaw, c: Constant | TypePairs) -> list[str]:
             "const Mdouble radius = 1e-3;  // m: your grains' radius",
             f"const Mdouble m = {_mass_expr(s, 'radius', s.grain.rho)};  // kg, one grain",
             "const Mdouble mass = "
-            + ("m;  // kg, effective mass of two identical grains" if s.against == "grain"
-               else "2.0 * m;  // kg, effective mass of a grain on a wall (m2 infinite)"),
+            + partner_of(s).dem_mass_line,
         ]  # fmt: skip
         return lines
     rho2 = s.partner_grain.rho if s.partner_grain is not None else s.grain.rho
@@ -127,7 +127,7 @@ def _mercury_species(
 
 def _mercury_wall(s: SILaw) -> list[str]:
     """The comment an elastic wall needs: the linear species has no modulus to give it."""
-    elastic = wall_of(s.law) if s.against == "wall" else None
+    elastic = wall_of(s.law) if not partner_of(s).is_grain else None
     if elastic is None:
         return []
     E_w = float(elastic["modulus_ratio"]) * s.grain.E
@@ -165,7 +165,7 @@ def mercurydpm_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None
         [
             _comment(s, c, "//"),
             f"// {_particles(s)}",
-            *([f"// {WALL_NOTE}"] if s.against == "wall" else []),
+            *([f"// {WALL_NOTE}"] if not partner_of(s).is_grain else []),
             *_mercury_wall(s),
             f"// {friction_line(friction, 'a sliding-friction species')}",
             f"// tc: your collision time (s); {_mercury_mass(s, c)}",

@@ -23,6 +23,7 @@ from restitution.laws.exports.dem._registry import DemTarget, register_dem_targe
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
+from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "yade_snippet", "yade_viscoelastic"]
@@ -50,7 +51,7 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = Non
             mat(s.grain),
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})",
         ]
-        elastic = wall_of(s.law) if s.against == "wall" else None
+        elastic = wall_of(s.law) if not partner_of(s).is_grain else None
         if elastic is not None:  # the wall's material: YADE's Hertz takes E* of both
             wall = SimpleNamespace(E=float(elastic["modulus_ratio"]) * s.grain.E,
                                    nu=float(elastic["nu"]),
@@ -77,7 +78,7 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = Non
         [
             _comment(s, c, "#"),
             f"# {_particles(s)}",
-            *([f"# {WALL_NOTE}"] if s.against == "wall" else []),
+            *([f"# {WALL_NOTE}"] if not partner_of(s).is_grain else []),
             f"# {friction_line(friction, 'frictionAngle = atan(mu)')}",
             *body,
             "# use ip2 in the InteractionLoop with Law2_ScGeom_MindlinPhys_Mindlin()",
