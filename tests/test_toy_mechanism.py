@@ -88,6 +88,9 @@ class ToyLoss:
         if r.option_value("toy_loss") >= 1.0:
             raise InputError("--toy-loss must be below 1 (a fraction of the impact energy)")
 
+    def table(self, r, si, note, progress):
+        return _toy_table(si, r.option_value("toy_loss"))
+
     def answer(self, r, si, note, progress):
         table = _toy_table(si, r.option_value("toy_loss"))
         law = _ToyLaw(table)
@@ -146,11 +149,25 @@ def test_the_toy_is_asked_on_the_command_line_and_refused_in_one_line(toy, cli):
     assert len(err.strip().splitlines()) == 1
 
 
+def test_si_law_takes_the_toys_option_as_a_keyword(toy):
+    import restitution
+
+    law = restitution.si_law(**GLASS, toy_loss=FRACTION)
+    speeds = [0.1, 1.0, 10.0]
+    for p, q in zip(law.points(speeds), _elastic(tuple(speeds)), strict=True):
+        assert _close(p.epsilon, q), (p.epsilon, q.epsilon, q.epsilon_err)
+    assert ToyLoss.words in law.to_dict(speeds)["mechanisms"]
+
+
 def test_without_the_toy_its_option_is_unknown(cli):
     code, _, err = cli("law", *CLI_GLASS, "--speed", "1", "--toy-loss", "0.1")
     assert code != 0 and "--toy-loss" in err
     with pytest.raises(InputError, match="no option 'toy_loss'"):
         request(**GLASS, toy_loss=0.1)
+    import restitution
+
+    with pytest.raises(InputError, match="no option 'toy_loss'"):
+        restitution.si_law(**GLASS, toy_loss=0.1)
 
 
 def test_the_tables_and_the_plugin_tables_are_written_from_the_toy(toy, cli, tmp_path):

@@ -33,12 +33,13 @@ from restitution.dynamics.results import UNITS, CollisionResult
 from restitution.errors import InputError, RestitutionError
 from restitution.estimate import Estimate
 from restitution.laws import making as _making  # noqa: F401  (registers the computing routes)
+from restitution.laws.api import si_law
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_load import law
 from restitution.laws.plastic import PlasticLaw, plastic_law
 from restitution.laws.request import LawRequest
 from restitution.laws.serve import LawAnswer, serve
-from restitution.laws.si_law import SILaw, si_law
+from restitution.laws.si_law import SILaw
 from restitution.laws.units import Grain
 from restitution.limits.curves import PointEpsilon, epsilon_at
 from restitution.limits.store import StoreError

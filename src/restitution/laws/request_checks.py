@@ -269,7 +269,8 @@ def _check_elastic_wall(r) -> None:
             "an elastic wall is computed for spheres (a sphere on a half-space); use --shape "
             "sphere, or leave out the wall options (a rigid wall)"
         )
-    if r.radius is not None and r.wall_thickness is None and not r.damped:
+    if (r.radius is not None and r.wall_thickness is None and not r.damped
+            and "radius" not in used_fields(r)):  # fmt: skip
         raise InputError(
             "--radius goes with --wall-thickness (a plate) or --relaxation-time; a "
             "half-space needs no radius: leave it out"

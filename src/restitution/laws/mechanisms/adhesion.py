@@ -66,8 +66,9 @@ class Adhesion:
             )
         if r.elastic_wall is not None:
             raise InputError(
-                "adhesion on an elastic wall: not derived (the JKR pulse's force jumps radiate "
-                "without bound into a point-force wall); use a rigid wall, or leave out "
+                "adhesion on an elastic wall: not derived (the JKR pulse's radiation into a "
+                "point-force wall grows with the log of its cutoff, and its jumps' energy is "
+                "not split between ball and wall); use a rigid wall, or leave out "
                 "--work-of-adhesion"
             )
         if r.radius is None:

@@ -17,10 +17,11 @@ wall, the material's viscosity, plastic flow, adhesion. Each declares
 * whether a request asks for it (:meth:`Mechanism.asked`) and what it refuses before any law is
   loaded (:meth:`Mechanism.check`: where it does not apply, what it does not go with),
 * its slow-speed form (``slow_form``, in words: how ``1 - epsilon`` behaves as ``v -> 0``),
-* and, for a mechanism that changes the numbers (``answers``), the law it makes of the elastic
-  law (:meth:`Mechanism.law`): an object with ``points(speeds_m_s)``, ``to_dict(speeds_m_s,
-  points)``, ``mechanisms`` and ``as_si_law()`` (the law tabulated at the elastic law's speeds,
-  which the exports and the constants are written from).
+* and, for a mechanism of rank above 0, the answer it makes of the elastic law
+  (:meth:`Mechanism.answer`, through :func:`restitution.laws.answer.finish`, which writes the
+  constants and exports of the law it tabulates) and, optionally, ``table(request, si, note,
+  progress)``: its law at every speed of the elastic law as an SI law, which
+  :func:`restitution.laws.api.si_law` returns.
 
 **How losses join: the rule, once.** The mechanisms that act on the contact's force (viscosity,
 plastic flow, adhesion) act on one force pulse; the waves are then the elastic law's loss scaled

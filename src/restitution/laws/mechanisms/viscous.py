@@ -41,6 +41,11 @@ class Viscosity:
     def check(self, request) -> None:
         return None  # the request's own checks (restitution.laws.request_checks)
 
+    def table(self, request, si, note, progress: bool):
+        """The damped law at every speed of the elastic law, as an SI law (``si_law(...,
+        relaxation_time=..., radius=...)``)."""
+        return _table(request, si, note, progress)
+
     def answer(self, request, si, note, progress: bool):
         from restitution.errors import InputError
         from restitution.laws.answer import finish
@@ -76,6 +81,19 @@ class Viscosity:
                 walls = _walls(si, damped, note, bars)
         return finish(r, si, points, status, advice, note=note, by=damped, table=table,
                       model=model, walls=walls)  # fmt: skip
+
+
+def _table(r, si, note, progress: bool):
+    """The damped law at every computed speed of the elastic law ``si``, as an SI law."""
+    from restitution.laws.damped import damped_law
+    from restitution.limits.run_options import Progress
+
+    bars = Progress(None if progress else False)
+    damped = damped_law(si, relaxation_time_s=r.relaxation_time, radius_m=r.radius,
+                        measured_epsilon=r.measured_epsilon,
+                        measured_speed_m_s=r.measured_speed, progress=bars)  # fmt: skip
+    note(f"note: the damped law at every speed: {damped.table_collisions()} viscous collisions")
+    return damped.as_si_law(progress=bars)
 
 
 def _walls(si, damped, note, bars):
