@@ -83,21 +83,18 @@ from scipy.optimize import brentq
 
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError, real
-from restitution.estimate import Estimate
 from restitution.jsonable import finite_or_none
 from restitution.laws.damped import SPHERE_SIZE_COEFFICIENT, UNINFORMATIVE
 from restitution.laws.mechanisms.base import mechanism_fields
 from restitution.laws.mechanisms.bounds import flag_points, wall_of
-
-# The contact and the modes its pulse drives, PlasticLaw's (private there for now; its place is
-# beside contact_scales in laws/mechanisms/bounds.py).
-from restitution.laws.plastic import _contact
+from restitution.laws.plastic import pulse_contact
 from restitution.laws.si_law import SILaw
+from restitution.laws.si_point import SIPoint
 from restitution.quasistatic.adhesion import AdhesiveCollision, JKRContact, adhesive_collision
 from restitution.quasistatic.hertz import QuasistaticError
 from restitution.status import Status
 
-__all__ = ["TABOR_Z0_M", "AdhesiveLaw", "AdhesivePoint", "adhesive_law"]
+__all__ = ["TABOR_Z0_M", "AdhesiveLaw", "adhesive_point", "adhesive_law"]
 
 TABOR_Z0_M = 0.3e-9
 """The range of the surface forces in Tabor's parameter, m (an equilibrium spacing; assumed)."""
@@ -119,11 +116,26 @@ REFERENCES = (
 )
 
 
-@dataclass(frozen=True)
-class AdhesivePoint:
+def adhesive_point(
+    *,
+    speed_m_s,
+    v_over_c,
+    epsilon,
+    epsilon_err,
+    status,
+    note="",
+    epsilon_elastic,
+    epsilon_elastic_err,
+    epsilon_contact,
+    loss_adhesion,
+    loss_viscous,
+    loss_waves,
+    loss_waves_interference,
+    stuck,
+) -> SIPoint:
     """epsilon of a sticky (and possibly damping) sphere at one SI speed, with its parts.
 
-    Attributes
+    Parameters
     ----------
     speed_m_s, v_over_c : float
     epsilon, epsilon_err : float or None
@@ -145,29 +157,17 @@ class AdhesivePoint:
         The contact keeps the grain.
     status, note : str
     """
-
-    speed_m_s: float
-    v_over_c: float
-    epsilon: float | None
-    epsilon_err: float | None
-    epsilon_elastic: float | None
-    epsilon_elastic_err: float | None
-    epsilon_contact: float | None
-    loss_adhesion: float | None
-    loss_viscous: float | None
-    loss_waves: float | None
-    loss_waves_interference: float | None
-    stuck: bool
-    status: str
-    note: str = ""
-
-    def to_dict(self) -> dict:
-        return dict(self.__dict__)
-
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return Estimate(self.epsilon, self.epsilon_err, self.status, self.note)
+    parts = (
+        ("epsilon_elastic", epsilon_elastic),
+        ("epsilon_elastic_err", epsilon_elastic_err),
+        ("epsilon_contact", epsilon_contact),
+        ("loss_adhesion", loss_adhesion),
+        ("loss_viscous", loss_viscous),
+        ("loss_waves", loss_waves),
+        ("loss_waves_interference", loss_waves_interference),
+        ("stuck", stuck),
+    )
+    return SIPoint(speed_m_s, v_over_c, epsilon, epsilon_err, status, note, parts=parts)
 
 
 @dataclass(frozen=True, eq=False)
@@ -201,7 +201,7 @@ class AdhesiveLaw:
 
     @cached_property
     def _contact(self):
-        return _contact(self.si)
+        return pulse_contact(self.si)
 
     @cached_property
     def jkr(self) -> JKRContact:
@@ -267,11 +267,11 @@ class AdhesiveLaw:
         :mod:`restitution.laws.mechanisms.base`)."""
         return ["waves", "adhesion", *(["viscous"] if self.tau > 0 else [])]
 
-    def points(self, speeds_m_s) -> tuple[AdhesivePoint, ...]:
+    def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon and its parts at every speed (m/s); never raises for range."""
         return tuple(self._point(p) for p in self.si.points(speeds_m_s))
 
-    def _point(self, p) -> AdhesivePoint:
+    def _point(self, p) -> SIPoint:
         from restitution.quasistatic.plastic_collision import pulse_collision
 
         head = {"speed_m_s": p.speed_m_s, "v_over_c": p.v_over_c, "epsilon_elastic": p.epsilon,
@@ -279,17 +279,17 @@ class AdhesiveLaw:
         none = dict.fromkeys(("epsilon", "epsilon_err", "epsilon_contact", "loss_adhesion",
                               "loss_viscous", "loss_waves", "loss_waves_interference"))  # fmt: skip
         if p.epsilon is None:
-            return AdhesivePoint(**head, **none, stuck=False, note=p.note)
+            return adhesive_point(**head, **none, stuck=False, note=p.note)
         contact, v = self._contact, p.v_over_c
         try:
             actual = adhesive_collision(self.jkr, v, tau=self.tau)
             if actual.stuck:
-                return AdhesivePoint(**{**head, **none, "epsilon": 0.0, "epsilon_err": 0.0,
+                return adhesive_point(**{**head, **none, "epsilon": 0.0, "epsilon_err": 0.0,
                                         "epsilon_contact": 0.0}, stuck=True,
                                      note=self._stuck_note(p.speed_m_s))  # fmt: skip
             hertz = pulse_collision(contact.law, v, mass=contact.mass)
         except (InputError, QuasistaticError) as exc:
-            return AdhesivePoint(**{**head, **none, "status": Status.OUTSIDE}, stuck=False,
+            return adhesive_point(**{**head, **none, "status": Status.OUTSIDE}, stuck=False,
                                  note=f"contact: {exc}")  # fmt: skip
         ratio, ratio_bare, ratio_half, ratio_cross = _ratios(actual, hertz, contact.modes,
                                                              self.tau)  # fmt: skip
@@ -311,7 +311,7 @@ class AdhesiveLaw:
                     "mode set's upper half), is beyond the one-pulse model, which takes the "
                     "waves as a small loss; the grain probably sticks, but this is not "
                     "served")  # fmt: skip
-            return AdhesivePoint(**{**head, "status": Status.OUTSIDE}, epsilon=None,
+            return adhesive_point(**{**head, "status": Status.OUTSIDE}, epsilon=None,
                                  epsilon_err=None, **{**common, "loss_waves": None,
                                                       "loss_waves_interference": None},
                                  note=note)  # fmt: skip
@@ -335,7 +335,7 @@ class AdhesiveLaw:
                    "cannot place (a loss, or already in the hysteresis)")  # fmt: skip
             notes.append(f"not informative: the error is {err / eps:.2g} times epsilon, {why}")
         note = "; ".join(notes)
-        return AdhesivePoint(**head, epsilon=eps, epsilon_err=err, **common, note=note)
+        return adhesive_point(**head, epsilon=eps, epsilon_err=err, **common, note=note)
 
     def _stuck_note(self, speed_m_s: float) -> str:
         v_s = self.sticking_speed_m_s()

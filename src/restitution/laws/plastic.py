@@ -65,6 +65,7 @@ from restitution.quasistatic.plastic import onset_pressure_ratio, yield_speed
 __all__ = [
     "PlasticLaw",
     "plastic_point",
+    "pulse_contact",
     "fit_two_measurements",
     "infer_relaxation_time",
     "limiting_pressure",
@@ -83,7 +84,7 @@ class _Contact:
     conductance: float | None = None
 
 
-def _contact(si: SILaw) -> _Contact:
+def pulse_contact(si: SILaw) -> _Contact:
     """The contact of ``si``'s collision (:func:`restitution.laws.mechanisms.bounds.contact_scales`)
     with the modes its pulse drives (the sphere's, or both spheres' of a pair) and an elastic
     half-space's radiation conductance."""
@@ -313,7 +314,7 @@ class PlasticLaw:
 
     def points(self, speeds_m_s) -> tuple[SIPoint, ...]:
         """epsilon and its parts at every speed (m/s); never raises for range."""
-        contact = _contact(self.si)
+        contact = pulse_contact(self.si)
         return tuple(self._point(p, contact) for p in self.si.points(speeds_m_s))
 
     def _point(self, p, contact: _Contact, p_y: float | None = None, tau: float | None = None,
@@ -485,7 +486,7 @@ def _infer(law: PlasticLaw, eps_m: float, speed: float, which: str) -> tuple[flo
             f"the elastic law has no value at the measured speed {speed:g} m/s ({p.note}); "
             "measure at a speed the law serves"
         )
-    contact = _contact(si)
+    contact = pulse_contact(si)
     E = si.grain.E
     lo, hi = (math.log(x) for x in _range(which, contact))
     # The end of the range where epsilon is largest: no plastic flow, no damping.
@@ -606,7 +607,7 @@ def plastic_law(
     """
     if not isinstance(si, SILaw):
         raise InputError(f"si must be an SILaw (see si_law), got {type(si).__name__}")
-    _contact(si)  # refuses disks and plates first
+    pulse_contact(si)  # refuses disks and plates first
     measured = (measured_epsilon, measured_speed_m_s) != (None, None)
     if measured:
         if None in (measured_epsilon, measured_speed_m_s):
@@ -682,7 +683,7 @@ def fit_two_measurements(si: SILaw, first, second) -> PlasticLaw:
             "two measurements at one speed cannot fix two parameters: measure at two speeds"
         )
     slow, fast = _measured_point(si, w_s), _measured_point(si, w_f)
-    contact = _contact(si)
+    contact = pulse_contact(si)
     probe = PlasticLaw(si, si.grain.E, "probe")
     ratios = {id(slow): (1.0, 1.0, 1.0), id(fast): (1.0, 1.0, 1.0)}
     (p_lo, p_hi), (t_lo, t_hi) = _range("p_y", contact), _range("tau", contact)
