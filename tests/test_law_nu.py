@@ -188,3 +188,20 @@ def test_first_grid_interpolation_coverage_of_the_low_speed_points():
     sigmas = np.array(sigmas)
     assert sigmas.size == 400
     assert np.mean(sigmas <= 1.0) >= 0.68 and np.mean(sigmas <= 2.0) >= 0.95
+
+
+def test_outside_nan_gives_nan_outside_and_the_value_inside():
+    """Issue 62: a sphere between the shipped laws (glass, nu = 0.2481) asked at speeds partly
+    outside its range with outside="nan" raised scipy's "`y` must contain only finite values";
+    now the speeds outside are nan and those inside are what each gives alone (one code path:
+    the same numbers)."""
+    import restitution
+
+    law = restitution.si_law(63e9, 0.2481, 2500, "sphere", "wall").law
+    v = np.array([1e-9, 1e-4, 1e-2, 10.0])  # below, inside, inside, above (units of c)
+    eps, err = law.epsilon(v, outside="nan"), law.epsilon_err(v, outside="nan")
+    assert np.isnan(eps[[0, 3]]).all() and np.isnan(err[[0, 3]]).all()
+    for i in (1, 2):
+        assert eps[i] == law.epsilon(v[i]) and err[i] == law.epsilon_err(v[i])
+    with pytest.raises(InputError):
+        law.epsilon(v)  # the default still refuses a speed outside

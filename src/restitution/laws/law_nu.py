@@ -62,8 +62,18 @@ def shipped_match(nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None) -> 
 
 
 def _pchip(x: np.ndarray, y: np.ndarray, at: float) -> np.ndarray:
-    """PCHIP through ``(x, y[:, j])`` for every column ``j``, at ``at``; linear for 2 nodes."""
-    return PchipInterpolator(x, y, axis=0, extrapolate=True)(at)
+    """PCHIP through ``(x, y[:, j])`` for every column ``j``, at ``at``; linear for 2 nodes. A
+    column with a value missing (``nan``: a speed outside a grid law's range, asked with
+    ``outside="nan"``) is ``nan`` (issue 62: one such speed raised scipy's "`y` must contain
+    only finite values" for every speed)."""
+    y = np.asarray(y, dtype=float)
+    ok = np.all(np.isfinite(y), axis=0)
+    if np.all(ok):
+        return PchipInterpolator(x, y, axis=0, extrapolate=True)(at)
+    out = np.full(y.shape[1:], np.nan)
+    if np.any(ok):
+        out[ok] = PchipInterpolator(x, y[:, ok], axis=0, extrapolate=True)(at)
+    return out
 
 
 @dataclass(frozen=True, eq=False)
