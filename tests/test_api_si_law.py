@@ -6,10 +6,17 @@ alone); a mechanism that makes no law at every speed is refused in one line."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import pytest
 
 import restitution
 from restitution.errors import InputError
+from restitution.laws.mechanisms.base import (
+    MechanismOption,
+    register_mechanism,
+    unregister_mechanism,
+)
 from restitution.laws.request import request
 from restitution.laws.serve import serve
 
@@ -34,6 +41,33 @@ def test_the_damped_law_at_every_speed_agrees_with_the_answer():
     assert "viscous" in " ".join(law.to_dict(list(speeds))["mechanisms"])
 
 
+@dataclass(frozen=True)
+class _NoTable:
+    """A mechanism that answers at asked speeds only (no ``table``)."""
+
+    name: str = "no-table"
+    words: str = "a mechanism without a law at every speed"
+    rank: float = 6.0
+    options: tuple = (MechanismOption("no_table", "--no-table", "A number.", "", True),)
+    reads: tuple = ()
+    slow_form: str = "none"
+
+    def asked(self, r) -> bool:
+        return r.option_value("no_table") is not None
+
+    def check(self, r) -> None:
+        return None
+
+    def answer(self, r, si, note, progress):
+        raise AssertionError("not asked at speeds here")
+
+
 def test_a_mechanism_without_a_table_is_refused_in_one_line():
-    with pytest.raises(InputError, match="no law at every speed is made yet"):
-        restitution.si_law(**GLASS, yield_stress=1e9)
+    register_mechanism(_NoTable())
+    try:
+        with pytest.raises(InputError, match="no law at every speed is made yet") as caught:
+            restitution.si_law(**GLASS, no_table=1.0)
+        assert "\n" not in str(caught.value)
+        assert "serve(" in str(caught.value)  # the call that answers at asked speeds
+    finally:
+        unregister_mechanism("no-table")

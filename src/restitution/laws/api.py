@@ -22,7 +22,7 @@ from restitution.laws import mechanisms as _mechanisms  # noqa: F401  (registers
 from restitution.laws import routes as _routes  # noqa: F401  (registers them)
 from restitution.laws.mechanisms.base import answering
 from restitution.laws.request import request
-from restitution.laws.routes.base import route_for
+from restitution.laws.routes.base import law_at_every_speed
 from restitution.laws.si_law import SILaw
 from restitution.laws.si_law import si_law as elastic_si_law
 from restitution.laws.units import Grain
@@ -81,7 +81,7 @@ def si_law(
                      partner_rho=partner_grain.rho)  # fmt: skip
     r = request(**{k: v for k, v in given.items() if v is not None}, **options)
     mechanism = answering(r)
-    s = route_for(r).law(r, note or _silent, progress)
+    s = law_at_every_speed(r, note or _silent, progress)
     if mechanism is None:
         return s
     table = getattr(mechanism, "table", None)

@@ -492,7 +492,14 @@ class DampedLaw:
             partner=law.partner,
         )
         metadata = {**damped.metadata, "source": source, "points": records}
-        return SILaw(self.si.grain, self.si.against, replace(damped, metadata=metadata))
+        from restitution.laws.below_route import Below, below_seconds
+
+        lowest = np.array([float(law.v[0]) * 0.1])
+        each = below_seconds(law, lowest)  # the elastic route's, which its points below take
+        below = Below(self.points, each, "the damped law", batch=True)
+        return SILaw(
+            self.si.grain, self.si.against, replace(damped, metadata=metadata), below=below
+        )
 
     def to_dict(self, speeds_m_s, points=None) -> dict:
         """JSON of ``restitution law`` with damping: the elastic law's, with the relaxation

@@ -57,6 +57,7 @@ from restitution.laws.law_file import (
     write_table,
 )
 from restitution.laws.law_point import (
+    LOG_V,
     QUASISTATIC_ROUTE,
     LawPoint,
     _Recorded,
@@ -255,6 +256,17 @@ class EpsilonLaw:
         """Whether the computed points decrease monotonically with ``v``."""
         return bool(np.all(np.diff(self.epsilon_points) <= 0))
 
+    @cached_property
+    def _knots(self) -> np.ndarray:
+        """Where PCHIP takes the points: at ``v``, or at ``ln v`` for a law that says so
+        (``metadata["interpolate_in"] == "ln v"``: a table of a mechanism on a geometric grid,
+        :mod:`restitution.laws.tabulated`, whose epsilon is smooth in ``ln v``)."""
+        return np.log(self.v) if self.metadata.get("interpolate_in") == LOG_V else self.v
+
+    def _at_knots(self, arr: np.ndarray) -> np.ndarray:
+        """Speeds ``arr`` (``c``) on the axis of :attr:`_knots`."""
+        return np.log(arr) if self._knots is not self.v else arr
+
     def _interpolant(self, values: np.ndarray) -> PchipInterpolator:
         # The points' two interpolants are built once (issue 47: 1e5 speeds one at a time
         # built 2e5 of them).
@@ -262,15 +274,15 @@ class EpsilonLaw:
             return self._epsilon_interpolant
         if values is self.epsilon_err_points:
             return self._err_interpolant
-        return PchipInterpolator(self.v, values, extrapolate=False)
+        return PchipInterpolator(self._knots, values, extrapolate=False)
 
     @cached_property
     def _epsilon_interpolant(self) -> PchipInterpolator:
-        return PchipInterpolator(self.v, self.epsilon_points, extrapolate=False)
+        return PchipInterpolator(self._knots, self.epsilon_points, extrapolate=False)
 
     @cached_property
     def _err_interpolant(self) -> PchipInterpolator:
-        return PchipInterpolator(self.v, self.epsilon_err_points, extrapolate=False)
+        return PchipInterpolator(self._knots, self.epsilon_err_points, extrapolate=False)
 
     def _check(self, v: np.ndarray, outside: str) -> np.ndarray:
         if not (isinstance(outside, str) and outside in ("raise", "warn", "nan")):
@@ -310,7 +322,8 @@ class EpsilonLaw:
         bad = self._check(arr, outside)
         if self.at_points_only:
             return self._at_points(values, arr, bad, outside, np.ndim(v) == 0)
-        out = np.where(bad, np.nan, self._interpolant(values)(np.where(bad, self.v[0], arr)))
+        at = self._at_knots(np.where(bad, self.v[0], arr))
+        out = np.where(bad, np.nan, self._interpolant(values)(at))
         return float(out) if np.ndim(v) == 0 else out
 
     def _at_points(self, values, arr, bad, outside: str, scalar: bool):
@@ -357,7 +370,7 @@ class EpsilonLaw:
 
     @cached_property
     def _leave_one_out(self) -> np.ndarray:
-        return leave_one_out(self.v, self.epsilon_points)
+        return leave_one_out(self._knots, self.epsilon_points)
 
     def interpolation_err(self, v, *, outside: str = "raise"):
         """What PCHIP between the computed points may miss at ``v`` (units of epsilon).
@@ -382,8 +395,9 @@ class EpsilonLaw:
             return float(out) if np.ndim(v) == 0 else out
         x = np.where(bad, self.v[0], arr)
         j = np.clip(np.searchsorted(self.v, x, side="right") - 1, 0, self.v.size - 2)
-        lo, hi = self.v[j], self.v[j + 1]
-        s = np.clip((x - lo) / (hi - lo), 0.0, 1.0)
+        knots = self._knots
+        lo, hi = knots[j], knots[j + 1]
+        s = np.clip((self._at_knots(x) - lo) / (hi - lo), 0.0, 1.0)
         loo = np.maximum(self._leave_one_out[j], self._leave_one_out[j + 1])
         quasi = self.quasistatic
         modal_end = ~(quasi[j] & quasi[j + 1])

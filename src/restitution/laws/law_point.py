@@ -17,7 +17,12 @@ from scipy.interpolate import PchipInterpolator
 from restitution.estimate import Estimate
 from restitution.status import Status
 
-__all__ = ["QUASISTATIC_ROUTE", "LawPoint", "leave_one_out", "point_record"]
+__all__ = ["LOG_V", "QUASISTATIC_ROUTE", "LawPoint", "leave_one_out", "point_record"]
+
+LOG_V = "ln v"
+"""``metadata["interpolate_in"]`` of a law whose PCHIP takes its points at ``ln v`` (a
+mechanism's table on a geometric grid, :mod:`restitution.laws.tabulated`); every other law
+interpolates in ``v``."""
 
 QUASISTATIC_ROUTE = "quasistatic"
 """``route`` of a law point from the low-speed theory (:mod:`restitution.quasistatic.low_speed`);

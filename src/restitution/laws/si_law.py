@@ -18,11 +18,11 @@ Example (a glass cylinder with nu = 0.2481, which maps onto the shipped law nu_2
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
+from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
@@ -39,7 +39,6 @@ from restitution.laws.si_point import (
     SIPoint,
     cut_at_one,
     loss_shares_at,
-    low_speed_at,
     not_informative,
     point_status,
     quasistatic_note,
@@ -66,12 +65,17 @@ class SILaw:
     law : EpsilonLaw or NuInterpolatedLaw
         The reduced-unit law of ``grain.body`` for ``grain.law_nu`` (of the body on the wall, or
         of the pair).
+    below : Below, optional
+        Who answers below the law's slowest point instead of its low-speed route: the
+        mechanism of a table (:class:`restitution.laws.below_route.Below`, its points at asked
+        speeds), as the command line answers there.
     """
 
     grain: Grain
     against: str
     law: EpsilonLaw | NuInterpolatedLaw
     partner_grain: Grain | None = None
+    below: object = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.grain, Grain):
@@ -165,27 +169,86 @@ class SILaw:
         return float(arr) if np.ndim(v) == 0 else arr
 
     def epsilon(self, speed_m_s, *, outside: str = "raise"):
-        """epsilon at SI speed(s) ``w`` (m/s).
+        """epsilon at SI speed(s) ``w`` (m/s), one array in one pass.
 
-        ``outside`` is the law's (:meth:`EpsilonLaw.epsilon`): outside the law's range raise
-        ``InputError`` (``"raise"``), or return ``nan`` (``"nan"``; ``"warn"`` warns too).
+        Below the law's slowest point, when that point is its low-speed route's, the route
+        answers, as :meth:`points` and the command line do (seconds:
+        :func:`restitution.laws.below_route.below_values`). Elsewhere outside the law's range
+        ``outside`` is the law's (:meth:`EpsilonLaw.epsilon`): raise ``InputError``
+        (``"raise"``), or return ``nan`` (``"nan"``; ``"warn"`` warns too).
         """
-        return self.law.epsilon(self._inside(speed_m_s, outside), outside=outside)
+        return self._evaluate(speed_m_s, outside, 0)
 
     def epsilon_err(self, speed_m_s, *, outside: str = "raise"):
         """Error of :meth:`epsilon` at ``w`` (m/s); ``outside`` as there."""
-        return self.law.epsilon_err(self._inside(speed_m_s, outside), outside=outside)
+        return self._evaluate(speed_m_s, outside, 1)
 
-    def _inside(self, speed_m_s, outside: str):
-        """The reduced speeds of ``speed_m_s``; with ``outside="raise"`` a speed outside the
-        law's range is refused here, in m/s (the law would say it in units of ``c``)."""
+    def _evaluate(self, speed_m_s, outside: str, which: int):
+        """:meth:`epsilon` (``which`` 0) or its error (1)."""
         v = self._served_v(self._reduced(speed_m_s))
+        flat = np.atleast_1d(np.asarray(v, dtype=float)).ravel()
+        below = self._route_answers(flat)
+        f = self.law.epsilon if which == 0 else self.law.epsilon_err
+        if not below.any():
+            return f(self._inside(speed_m_s, outside), outside=outside)
+        try:
+            values = self._below_answers(flat[below])[which]
+        except InputError:
+            if outside == "raise":
+                raise
+            values = np.full(int(below.sum()), np.nan)
+        rest = self._inside(speed_m_s, outside, exempt=below)
+        out = np.atleast_1d(np.asarray(f(rest, outside=outside), dtype=float)).ravel().copy()
+        out[below] = values
+        return float(out[0]) if np.ndim(v) == 0 else out.reshape(np.shape(v))
+
+    def _route_answers(self, flat: np.ndarray) -> np.ndarray:
+        """Which of the reduced speeds ``flat`` lie below the law's slowest point where its
+        low-speed route continues it (:meth:`_route`; the slowest point is the route's own)."""
+        lowest = float(self.law.v[0])
+        below = (flat > 0) & (flat < lowest * (1.0 - SAME_SPEED))
+        if not below.any() or self.below is not None:
+            return below
+        if not bool(self.law.quasistatic[0]) or self._route() is None:
+            return np.zeros(flat.shape, bool)
+        return below
+
+    def _below_answers(self, v: np.ndarray):
+        """``(epsilon, error, shares)`` at the reduced speeds ``v`` (below the law), by
+        :func:`restitution.laws.below_route.below_values` for their unique values, the last
+        few answers kept (``epsilon`` and ``epsilon_err`` of one array compute once)."""
+        from restitution.laws.below_route import below_values
+
+        key = np.unique(v)
+        memo = self.__dict__.setdefault("_below_memo", {})
+        k = key.tobytes()
+        if k not in memo:
+            if len(memo) >= 4:
+                memo.pop(next(iter(memo)))
+            memo[k] = (
+                below_values(self.law, self._route(), key)
+                if self.below is None
+                else self.below.values(key, self.speed_scale_m_s, float(self.law.v[0]))
+            )
+        eps, err, shares = memo[k]
+        pos = np.searchsorted(key, v)
+        return eps[pos], err[pos], [shares[i] for i in pos]
+
+    def _inside(self, speed_m_s, outside: str, exempt=None):
+        """The reduced speeds of ``speed_m_s``; with ``outside="raise"`` a speed outside the
+        law's range is refused here, in m/s (the law would say it in units of ``c``).
+        ``exempt`` (a mask of the flattened speeds, answered elsewhere) are set to the law's
+        slowest speed."""
+        v = self._served_v(self._reduced(speed_m_s))
+        lo, hi = self.law.valid_range
+        if exempt is not None:
+            v = np.atleast_1d(np.asarray(v, dtype=float)).ravel().copy()
+            v[exempt] = lo
         if outside == "raise":
-            lo, hi = self.law.valid_range
             arr = np.atleast_1d(v)
             bad = ~((arr >= lo) & (arr <= hi))
             if np.any(bad):
-                w = np.atleast_1d(np.asarray(speed_m_s, dtype=float))
+                w = np.atleast_1d(np.asarray(speed_m_s, dtype=float)).ravel()
                 w = np.broadcast_to(w, arr.shape)[bad]
                 slo, shi = self.speed_range_m_s
                 raise InputError(
@@ -201,6 +264,11 @@ class SILaw:
         slowest point (the law's own, at the grain's exact Poisson number), or ``None``."""
         from restitution.laws.low_speed import low_speed_route
 
+        # The route is the elastic waves' alone: a law with more in its numbers (an elastic
+        # wall's radiation, a damped or plastic table) is not continued by it (it gave the ball
+        # on a rigid wall below an elastic wall's grid).
+        if law_mechanisms(self.law) != ["waves"]:
+            return None
         partner = self.law.partner
         name = low_speed_route(self.law.geometry, partner)
         if name is None:
@@ -209,24 +277,33 @@ class SILaw:
         return name, nu, partner
 
     def _below(self, speeds: list[float], note) -> dict[float, tuple]:
-        """epsilon and its error at speeds (``c``) below the law's slowest point, each computed
-        now by the law's low-speed route (the model the law's slowest points come from; one
-        speed at a time, so no interpolation). Skipped (``{}``) beyond :data:`BELOW_BUDGET_S`."""
-        route = self._route()
-        # Only a law whose slowest point is the route's own continues below it: there the route
-        # is known to hold (a law of collisions alone stops at its slowest collision).
-        if route is None or not speeds or not bool(self.law.quasistatic[0]):
+        """epsilon, its error and the shares at speeds (``c``) below the law's slowest point,
+        by the law's low-speed route (the model the law's slowest points come from), as
+        :meth:`epsilon` answers them (:func:`restitution.laws.below_route.below_values`: each
+        alone while few, else from a grid spanning them). Skipped (``{}``) beyond
+        :data:`BELOW_BUDGET_S`."""
+        from restitution.laws.below_route import below_seconds
+
+        if not speeds:
             return {}
-        name, nu, partner = route
-        plan = body_kind(self.law.geometry).production
-        each = getattr(plan, "seconds_per_low_point", 1.0) or 1.0
-        estimate = (len(speeds) + 1) * 4.0 * each
+        v = np.asarray(speeds, dtype=float)
+        if not self._route_answers(v).all():
+            return {}
+        if self.below is not None:
+            estimate = self.below.seconds(np.unique(v), float(self.law.v[0]))
+        else:
+            estimate = below_seconds(self.law, np.unique(v))
         if estimate > BELOW_BUDGET_S:
             return {}
         if estimate > 5.0 and note is not None:
+            by = self.below.words if self.below is not None else self._route()[0]
             note(f"computing {len(speeds)} speed(s) below the law's slowest point by its "
-                 f"low-speed route ({name}; about {estimate:.0f} s)")  # fmt: skip
-        return {v: low_speed_at(self.law.geometry, nu, partner, v) for v in speeds}
+                 f"low-speed route ({by}; about {estimate:.0f} s)")  # fmt: skip
+        eps, err, shares = self._below_answers(v)
+        return {
+            float(x): (float(e), float(d), s)
+            for x, e, d, s in zip(speeds, eps, err, shares, strict=True)
+        }
 
     def points(self, speeds_m_s, *, note=None) -> tuple[SIPoint, ...]:
         """epsilon, its error and its status at every speed (m/s); never raises for range.
@@ -252,6 +329,8 @@ class SILaw:
                 text = (
                     quasistatic_note(self.law) + "; computed at this speed by the route of "
                     "the law's slowest points (below them)"
+                    if self.below is None
+                    else f"computed at this speed by {self.below.words} (below its table)"
                 )
                 out.append(
                     SIPoint(float(w), v, eps, err, status, cut_at_one(text, eps, err), shares)

@@ -65,6 +65,7 @@ __all__ = [
     "grid_evaluations",
     "grid_seconds",
     "grid_speeds",
+    "route_grid_law",
     "tabulated_records",
     "wall_grid_law",
 ]
@@ -200,14 +201,35 @@ _KEPT: dict = {}
 def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
     from restitution.bodies.sphere.kind import KIND as SPHERE
     from restitution.laws.wall_route import check_route_cost
-    from restitution.limits.run_options import progress_of
 
     top = route_top(nu, wall, SLOWEST)
-    v = grid_speeds(top)
     check_route_cost(nu, wall, grid_evaluations(SLOWEST, top), "speeds of the wall's grid")
-    route = route_at(nu, wall)
+    what = PLATE_ROUTE if is_plate(wall) else HALF_SPACE_ROUTE
+    law = route_grid_law(route_at(nu, wall), nu, top, geometry=SPHERE.geometry, name=what,
+                         what="speeds of the wall's route", progress=progress)  # fmt: skip
+    kind = partner_of_body(wall)
+    kind.write(law, wall)
+    law.metadata["source"] = (
+        f"computed now on a grid of {law.v.size} speeds ({PER_DECADE} a decade, the PCHIP error "
+        f"measured at {INTERIOR} speeds inside every interval): a sphere on an elastic " + kind.name
+    )
+    return law
+
+
+def route_grid_law(
+    route, nu: float, top: float, *, geometry: str, name: str, partner=None, what: str,
+    progress=False,
+) -> EpsilonLaw:  # fmt: skip
+    """The law of a low-speed ``route`` (``v -> (epsilon, loss, loss_err, details)``, as
+    :func:`restitution.laws.wall_route.route_at`'s) on the grid from :data:`SLOWEST` to ``top``
+    (``c``): quasistatic points, each with the larger measured PCHIP gap of its two intervals in
+    its error (module docs). ``name`` is the route's, ``what`` the progress bar's words; the
+    caller checks the cost first."""
+    from restitution.limits.run_options import progress_of
+
+    v = grid_speeds(top)
     bars = progress_of(progress)
-    with bars.bar(v.size + INTERIOR * (v.size - 1), "speeds of the wall's route") as meter:
+    with bars.bar(v.size + INTERIOR * (v.size - 1), what) as meter:
         at, gap = _measured(route, v, meter)
     gaps = np.zeros(v.size)
     gaps[:-1] = gap
@@ -216,22 +238,14 @@ def _grid_law(nu: float, wall, progress) -> EpsilonLaw:
         low_speed_record(float(x), eps, lo, err, float(g), details)
         for x, (eps, lo, err, details), g in zip(v, at, gaps, strict=True)
     ]
-    what = PLATE_ROUTE if is_plate(wall) else HALF_SPACE_ROUTE
     parameters = {
-        "route": what,
+        "route": name,
         "grid": {"slowest": SLOWEST, "per_decade": PER_DECADE, "interior": INTERIOR},
         "top": top,
         "largest_interpolation_gap": float(gap.max()) if gap.size else 0.0,
         "v_min": float(v[0]),
         "v_max": float(v[-1]),
     }
-    law = EpsilonLaw.from_records(
-        nu, records, key="low_speed", parameters=parameters, geometry=SPHERE.geometry
+    return EpsilonLaw.from_records(
+        nu, records, key="low_speed", parameters=parameters, geometry=geometry, partner=partner
     )
-    kind = partner_of_body(wall)
-    kind.write(law, wall)
-    law.metadata["source"] = (
-        f"computed now on a grid of {v.size} speeds ({PER_DECADE} a decade, the PCHIP error "
-        f"measured at {INTERIOR} speeds inside every interval): a sphere on an elastic " + kind.name
-    )
-    return law

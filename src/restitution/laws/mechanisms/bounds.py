@@ -84,7 +84,10 @@ def elastic_bound(si) -> tuple[float | None, str]:
     class of the grain (and of a partner of another material), :mod:`restitution.laws.
     material_classes`; for disks and cylinders where their line contact first yields. ``(None,
     "")`` for plates and pairs of disks of two sizes or materials; ``(None, what the class does
-    instead)`` for a brittle or polymer class."""
+    instead)`` for a brittle or polymer class; ``(None, "")`` for a law with plastic flow in its
+    numbers (a plastic table, :mod:`restitution.laws.tabulated`)."""
+    if "plastic" in law_mechanisms(si.law):
+        return None, ""
     if si.grain.kind.planar:
         return _line_bound(si)
     try:

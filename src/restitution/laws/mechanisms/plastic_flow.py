@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from restitution.laws.mechanisms.base import MechanismOption, register_mechanism
 
-__all__ = ["PLASTIC_SECONDS_PER_SPEED", "PlasticFlow"]
+__all__ = ["PLASTIC_SECONDS_PER_SPEED", "PlasticFlow", "plastic_law_of"]
 
 PLASTIC_SECONDS_PER_SPEED = 2.0
 """Wall time of one speed of a plastic answer (three force pulses and the spectra of the modes
@@ -46,44 +46,105 @@ class PlasticFlow:
         return None  # the request's own checks (restitution.laws.request_checks)
 
     def answer(self, request, si, note, progress: bool):
-        from restitution.laws.answer import LawAnswer
-        from restitution.laws.plastic import (
-            fit_two_measurements,
-            infer_relaxation_time,
-            plastic_law,
-        )
+        from restitution.laws.answer import finish
         from restitution.laws.routes.base import check_speed_count
 
-        r, s = request, si
+        r = request
         check_speed_count(len(r.speeds), PLASTIC_SECONDS_PER_SPEED, "plastic flow on one pulse")
-        # The request refused what does not go together (request_checks._check_damping).
-        tau = 0.0 if r.relaxation_time is None else r.relaxation_time * s.grain.c_m_s / r.radius
-        if r.fixes_both:
-            note("note: fitting the relaxation time and the limiting pressure to the two "
-                 "measurements (nested root searches of the contact; half a minute)")  # fmt: skip
-            law = fit_two_measurements(
-                s,
-                (r.measured_epsilon, r.measured_speed),
-                (r.second_measured_epsilon, r.second_measured_speed),
-            )
-        elif r.fixes_limiting_pressure:
-            note("note: inferring the limiting pressure from the measurement (root searches of "
-                 "the contact; seconds)")  # fmt: skip
-            law = plastic_law(s, tau=tau, measured_epsilon=r.measured_epsilon,
-                              measured_speed_m_s=r.measured_speed)  # fmt: skip
-        else:
-            law = plastic_law(s, yield_stress_pa=r.yield_stress,
-                              partner_yield_stress_pa=r.partner_yield_stress,
-                              limiting_pressure_pa=r.limiting_pressure, tau=tau)  # fmt: skip
-            if r.measured_epsilon is not None:
-                note("note: inferring the relaxation time from the measurement with the plastic "
-                     "flow on (root searches of the contact; seconds)")  # fmt: skip
-                law = infer_relaxation_time(law, r.measured_epsilon, r.measured_speed)
+        law = plastic_law_of(r, si, note)
         note("note: plastic flow: each speed is computed now on one force pulse (about a second "
              "a speed)")  # fmt: skip
         points = law.points(list(r.speeds))
         status, advice = no_rebound_status(points)
-        return LawAnswer(r, s, points, status, advice, by=law)
+        table = walls = None
+        if r.constants or r.export_dir is not None:
+            # Constants, tables, snippets and the plugin of the plastic law: its table.
+            table = _table_of(law, si, note, progress)
+            if r.export_dir is not None:
+                walls = _walls(law, si, note, progress)
+        return finish(r, si, points, status, advice, note=note, by=law, table=table,
+                      walls=walls)  # fmt: skip
+
+    def table(self, request, si, note, progress: bool):
+        """The plastic law at every speed of the elastic law, tabulated once
+        (:func:`restitution.laws.tabulated.mechanism_table`): ``si_law(..., yield_stress=...)``
+        and the exports."""
+        return _table_of(plastic_law_of(request, si, note), si, note, progress)
+
+
+def _table_of(law, si, note, progress: bool):
+    """The table of the plastic law ``law`` on the elastic law ``si``."""
+    from restitution.laws.tabulated import mechanism_table
+
+    return mechanism_table(
+        si,
+        law.points,
+        words="plastic flow",
+        mechanisms=law.mechanisms,
+        parameters={
+            "limiting_pressure_pa": law.p_y,
+            "limiting_pressure_err_pa": law.p_y_err,
+            "limiting_pressure_source": law.source,
+            "tau_c_over_R": law.tau,
+            "tau_c_over_R_err": law.tau_err,
+        },  # fmt: skip
+        seconds_per_speed=PLASTIC_SECONDS_PER_SPEED,
+        note=note,
+        progress=progress,
+    )
+
+
+def _walls(law, si, note, progress: bool):
+    """The plastic law of the grain on the rigid wall for the plugin's wall table (the same
+    limiting pressure and ``tau c / R``: identical grains are one grain of the law), ``{}`` for
+    a law of the wall itself, and for a pair of two sizes or materials the sentence why there is
+    none."""
+    from dataclasses import replace
+
+    from restitution.laws.partners.base import partner_of
+    from restitution.laws.partners.rigid_wall import KIND as WALL
+    from restitution.laws.si_law import si_law
+
+    if not partner_of(si).is_grain:
+        return {}
+    if si.law.partner is not None:
+        return {1: "a plastic pair of two sizes or materials: the wall tables of its grains are "
+                "not made (give each grain's own export against the wall)"}  # fmt: skip
+    wall = replace(law, si=si_law(grain=si.grain, against=WALL.against))
+    note("note: the plastic law of the grain on the wall for the plugin")
+    return {1: _table_of(wall, wall.si, note, progress)}
+
+
+def plastic_law_of(request, si, note):
+    """The :class:`~restitution.laws.plastic.PlasticLaw` of ``request`` on the elastic law
+    ``si``: its limiting pressure given, from yield stresses, or inferred from one or two
+    measurements (then with the relaxation time), each inference told first."""
+    from restitution.laws.plastic import fit_two_measurements, infer_relaxation_time, plastic_law
+
+    r, s = request, si
+    # The request refused what does not go together (request_checks._check_damping).
+    tau = 0.0 if r.relaxation_time is None else r.relaxation_time * s.grain.c_m_s / r.radius
+    if r.fixes_both:
+        note("note: fitting the relaxation time and the limiting pressure to the two "
+             "measurements (nested root searches of the contact; half a minute)")  # fmt: skip
+        return fit_two_measurements(
+            s,
+            (r.measured_epsilon, r.measured_speed),
+            (r.second_measured_epsilon, r.second_measured_speed),
+        )
+    if r.fixes_limiting_pressure:
+        note("note: inferring the limiting pressure from the measurement (root searches of "
+             "the contact; seconds)")  # fmt: skip
+        return plastic_law(s, tau=tau, measured_epsilon=r.measured_epsilon,
+                           measured_speed_m_s=r.measured_speed)  # fmt: skip
+    law = plastic_law(s, yield_stress_pa=r.yield_stress,
+                      partner_yield_stress_pa=r.partner_yield_stress,
+                      limiting_pressure_pa=r.limiting_pressure, tau=tau)  # fmt: skip
+    if r.measured_epsilon is not None:
+        note("note: inferring the relaxation time from the measurement with the plastic "
+             "flow on (root searches of the contact; seconds)")  # fmt: skip
+        law = infer_relaxation_time(law, r.measured_epsilon, r.measured_speed)
+    return law
 
 
 def no_rebound_status(points) -> tuple[str, str | None]:

@@ -7,11 +7,13 @@ core.
 A **route** (:class:`Route`) answers two questions: does it serve this request
 (:meth:`Route.serves`), and what is the elastic law (:meth:`Route.law`, an
 :class:`~restitution.laws.si_law.SILaw` whose points the mechanisms then add their losses to).
-The routes shipped, in the order they are asked (:func:`routes`): an elastic wall (half-space
-or plate), a law file the user gives, a law computed on demand (``--compute``), a pair's
-low-speed route, the shipped laws (interpolated in ``nu``). A new route is one module that
-builds its object and calls :func:`register_route`; its ``order`` says where it is asked (the
-shipped laws serve everything else, so they stay last).
+A route that computes the asked speeds alone (an elastic wall, a pair's low-speed route) also has a
+``table``, its law at every speed of its range (:func:`law_at_every_speed`: what
+:func:`restitution.si_law` and the exports serve). The routes shipped, in the order they are asked
+(:func:`routes`): an elastic wall (half-space or plate), a law file the user gives, a law computed
+on demand (``--compute``), a pair's low-speed route, the shipped laws (interpolated in ``nu``). A
+new route is one module that builds its object and calls :func:`register_route`; its ``order`` says
+where it is asked (the shipped laws serve everything else, so they stay last).
 
 A **computing route** (:class:`ComputingRoute`) makes a law file while the request waits: the
 modal production settings and the static residual (``--route``). They belong to the making
@@ -35,6 +37,7 @@ __all__ = [
     "check_speed_count",
     "computing_route",
     "computing_routes",
+    "law_at_every_speed",
     "register_computing_route",
     "register_route",
     "route_for",
@@ -63,6 +66,15 @@ class Route(Protocol):
         ``note`` called for each line worth telling (what is computed and how long it takes)
         and ``progress`` the wish for a progress bar on stderr. Refuses, before anything is
         computed, what it cannot finish (:class:`~restitution.errors.InputError`)."""
+
+
+def law_at_every_speed(request, note, progress: bool = False):
+    """The elastic law of ``request`` at every speed of its range: the serving route's
+    ``table`` where it has one (a route that computes the asked speeds alone: an elastic wall,
+    a pair's low-speed route), else its :meth:`Route.law`, which serves every speed already."""
+    route = route_for(request)
+    table = getattr(route, "table", None)
+    return (route.law if table is None else table)(request, note, progress)
 
 
 class Plan(Protocol):

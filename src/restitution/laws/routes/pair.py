@@ -81,6 +81,43 @@ class PairRoute:
         return SILaw(Grain(r.E, r.nu, r.rho, r.shape), r.against, law,
                      partner_grain=r.partner_grain)  # fmt: skip
 
+    def table(self, request, note, progress: bool) -> SILaw:
+        """The pair's law at every speed of its route's reach (``si_law(..., radius_ratio=...)``
+        of two spheres): the route on a grid of speeds with the PCHIP gap measured inside every
+        interval (:func:`restitution.laws.wall_grid.route_grid_law`), its time told first."""
+        from restitution import budget
+        from restitution.laws.low_speed import low_speed_points, route_reach
+        from restitution.laws.wall_grid import SLOWEST, grid_evaluations, route_grid_law
+
+        r = request
+        law_nu, body, partner = target(r)
+        top = float(route_reach(body, law_nu, partner))
+        count = len(grid_evaluations(SLOWEST, top))
+        check_speed_count(count, ROUTE_SECONDS_PER_SPEED,
+                          f"the grid of the {body} pair's low-speed route")  # fmt: skip
+        note(f"note: two {body}s of this pair have no shipped law: their law at every speed is "
+             f"computed now by their low-speed route on a grid of speeds (about "
+             f"{budget.format_duration(count * ROUTE_SECONDS_PER_SPEED)})")  # fmt: skip
+
+        def route(v: float):
+            (rec,), _ = low_speed_points(law_nu, [v], geometry=body, partner=partner)
+            shares = {"shares": rec["shares"]} if "shares" in rec else {}
+            return rec["epsilon"], rec["energy_loss"], rec["estimate_err"], shares
+
+        try:
+            law = route_grid_law(route, law_nu, top, geometry=body, partner=partner,
+                                 name="the pair's low-speed route",
+                                 what=f"speeds of the {body} pair's route",
+                                 progress=progress)  # fmt: skip
+        except UnequalPairError as exc:
+            raise InputError(_unequal(r, exc)) from None
+        law.metadata["source"] = (
+            f"computed now on a grid of {law.v.size} speeds by the pair's low-speed route (the "
+            "PCHIP error measured inside every interval)"
+        )
+        return SILaw(Grain(r.E, r.nu, r.rho, r.shape), r.against, law,
+                     partner_grain=r.partner_grain)  # fmt: skip
+
 
 def _unequal(r, exc) -> str:
     """The refusal of a pair whose route's modes all belong to one grain, in ``law``'s words

@@ -44,6 +44,11 @@ class ElasticWallRoute:
         vs = [float(grain.v_over_c(w, r.against)) for w in (*r.speeds, *r.measured_speeds)]
         return SILaw(grain, r.against, wall_law(grain.law_nu, wall, vs))
 
+    def table(self, request, note, progress: bool) -> SILaw:
+        """The law at every speed of its range (``si_law(..., wall_E=...)``, exports): on a
+        grid of speeds (:func:`restitution.laws.wall_grid.wall_grid_law`)."""
+        return self._grid(request, note, progress)
+
     @staticmethod
     def _grid(r, note, progress: bool) -> SILaw:
         """The law on a grid of speeds, served at every speed of its range."""
@@ -56,7 +61,8 @@ class ElasticWallRoute:
         seconds = grid_seconds(grain.law_nu, wall)  # refuses a plate without a range first
         if r.export_dir is not None:
             check_output_dir(r.export_dir, "--export")  # before anything is computed
-        what = "exports" if r.export_dir is not None else "constant"
+        what = ("exports" if r.export_dir is not None
+                else "constant" if r.constants else "law at every speed")  # fmt: skip
         note(f"note: an elastic wall: its law on a grid of speeds for the {what} is computed now "
              f"(about {budget.format_duration(seconds)})")  # fmt: skip
         return SILaw(grain, r.against, wall_grid_law(grain.law_nu, wall, progress=progress))
