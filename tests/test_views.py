@@ -41,9 +41,15 @@ def test_rows_are_the_points(steel):
 def test_csv_holds_every_point_and_an_empty_cell_for_no_value(steel, tmp_path):
     path = steel.to_csv(tmp_path / "law.csv", SPEEDS)
     with open(path, newline="") as fh:
-        read = list(csv.DictReader(fh))
-    assert tuple(read[0]) == views.COLUMNS and len(read) == len(SPEEDS)
+        notes = [line for line in fh if line.startswith("#")]
+        fh.seek(0)
+        read = list(csv.DictReader(line for line in fh if not line.startswith("#")))
+    assert tuple(read[0]) == views.FRAME_COLUMNS and len(read) == len(SPEEDS)
     for r, p in zip(read, steel.points(SPEEDS), strict=True):
+        # Issue 62: a row names its note, whose text is written once above the header.
+        assert (r["note_id"] == "") == (p.note == "")
+        if p.note:
+            assert f"# note {r['note_id']}: {p.note}\n" in notes
         if p.epsilon is None:
             assert r["epsilon"] == "" and r["status"] == "outside"
         else:
@@ -55,8 +61,9 @@ def test_csv_holds_every_point_and_an_empty_cell_for_no_value(steel, tmp_path):
 def test_frame_is_the_rows_with_nan_for_no_value(steel):
     pd = pytest.importorskip("pandas")  # an optional dependency, in the test extra
     frame = steel.to_frame(SPEEDS)
-    assert isinstance(frame, pd.DataFrame) and tuple(frame.columns) == views.COLUMNS
+    assert isinstance(frame, pd.DataFrame) and tuple(frame.columns) == views.FRAME_COLUMNS
     for (_, row), p in zip(frame.iterrows(), steel.points(SPEEDS), strict=True):
+        assert frame.attrs["notes"].get(row["note_id"], "") == p.note  # issue 62: once
         if p.epsilon is None:
             assert math.isnan(row["epsilon"])
         else:

@@ -95,9 +95,11 @@ class _Doubts:
     """The request's plausibility warnings (:class:`~restitution.errors.PlausibilityWarning`),
     each one ``warning:`` line on stderr before the first note of the work (so before anything
     long starts) or after the answer; a refusal that comes first carries them in its one line
-    instead (a refused command says one line)."""
+    instead (a refused command says one line). :attr:`texts` keeps them all for the JSON's
+    ``warnings``."""
 
     def __init__(self, texts: list[str]) -> None:
+        self.texts = tuple(texts)
         self.pending = list(texts)
 
     def flush(self) -> None:
@@ -191,7 +193,9 @@ def law(fmt, as_json, plot_file, **options):
         answer = _answer(request, plot_file, doubts.note)
     doubts.flush()
     r = answer.request
-    emit(Report("law", r.inputs(), answer.to_dict(), answer.status, answer.advice,
+    # The warnings in the JSON too: a script reading it sees what stderr said.
+    payload = {**answer.to_dict(), "warnings": list(doubts.texts)}
+    emit(Report("law", r.inputs(), payload, answer.status, answer.advice,
                 answer.units, lambda: "\n".join(text_lines(answer)),
                 lambda: [p.to_dict() for p in answer.points]), fmt)  # fmt: skip
     if fmt == "text":

@@ -83,8 +83,7 @@ class LawAnswer:
         if self.by is not None:
             out = self.by.to_dict(speeds, self.points)
         else:
-            out = self.law.to_dict(speeds)
-            out["points"] = [p.to_dict() for p in self.points]
+            out = self.law.to_dict(speeds, points=self.points)
         if self.constant is not None:
             out["constant"] = self.constant.to_dict()
         if self.pairs is not None:
@@ -118,7 +117,8 @@ def write_exports(r, s: SILaw, constant, model, note, walls=None) -> tuple:
     if r.export_dir is None:
         return ()
     with writing(r.export_dir, "--export"):  # a full disk names the option and the folder
-        folder = exports.write_folder(s, constant, r.export_dir, model, r.friction, walls)
+        folder = exports.write_folder(s, constant, r.export_dir, model, r.friction, walls,
+                                      r.radius)  # fmt: skip
     if folder.no_closed_form is not None:
         note(f"note: no closed form written: {folder.no_closed_form}")
     if folder.no_plugin is not None:

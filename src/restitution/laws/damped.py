@@ -506,7 +506,9 @@ class DampedLaw:
         time and, per point, ``epsilon_elastic`` and ``epsilon_viscous`` beside ``epsilon``
         (``points``: these, computed and flagged before by :func:`restitution.laws.mechanisms.
         flag_points`, instead of integrating their viscous collisions again)."""
-        d = self.si.to_dict(speeds_m_s)
+        if points is None:
+            points, _ = flag_points(self.si, self.points(speeds_m_s))
+        d = self.si.to_dict(speeds_m_s, points=points)
         d["damping"] = {
             "model": "Kelvin-Voigt, one relaxation time (viscosities = tau x moduli); viscous "
             "loss of the quasistatic contact, F = F_el + tau dF_el/dt; losses of kinetic "
@@ -519,8 +521,6 @@ class DampedLaw:
             if self.measured is None
             else {"epsilon": self.measured[0], "speed_m_s": self.measured[1]},
         }
-        if points is None:
-            points, _ = flag_points(self.si, self.points(speeds_m_s))
         # The elastic law's JSON holds the speed from which plastic flow is expected.
         d.update(mechanism_fields([*law_mechanisms(self.si.law), "viscous"]))
         d["points"] = [p.to_dict() for p in points]

@@ -24,15 +24,16 @@ for the body ``geometry`` and from its laws only,
 from __future__ import annotations
 
 import os
+import warnings
 from dataclasses import dataclass
+from functools import cached_property
 from importlib import resources
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
-from restitution.errors import InputError, real
-from restitution.laws.law import EpsilonLaw, _check_partner
+from restitution.errors import InputError, describe, real
+from restitution.laws.law import EpsilonLaw, _check_partner, _speeds
 from restitution.laws.law_file import _curve_command, _file_nu, law_filename
 from restitution.laws.law_load import NU_MATCH, _refuse_other_body, law
 
@@ -61,19 +62,96 @@ def shipped_match(nu: float, geometry: str = DEFAULT_GEOMETRY, partner=None) -> 
     return nearest if nearest is not None and abs(nearest - nu) <= NU_MATCH else None
 
 
-def _pchip(x: np.ndarray, y: np.ndarray, at: float) -> np.ndarray:
-    """PCHIP through ``(x, y[:, j])`` for every column ``j``, at ``at``; linear for 2 nodes. A
-    column with a value missing (``nan``: a speed outside a grid law's range, asked with
-    ``outside="nan"``) is ``nan`` (issue 62: one such speed raised scipy's "`y` must contain
-    only finite values" for every speed)."""
+def _interval(x: np.ndarray, at: float) -> int:
+    """The interval ``x[i] <= at < x[i + 1]`` of ``at`` (the last one closed), as
+    :class:`scipy.interpolate.PPoly` finds it."""
+    return int(np.clip(np.searchsorted(x, at, side="right") - 1, 0, len(x) - 2))
+
+
+def _window(x: np.ndarray, at: float) -> np.ndarray:
+    """The nodes a PCHIP through ``x`` uses at ``at``: the two of its interval and one
+    neighbour on each side (PCHIP's slope at a node is made of its two secants), at most 4."""
+    i = _interval(x, at)
+    return np.arange(max(i - 1, 0), min(i + 3, len(x)))
+
+
+def _end_slope(h0: float, h1: float, m0: np.ndarray, m1: np.ndarray) -> np.ndarray:
+    """PCHIP's one-sided slope at an end node, as scipy's ``PchipInterpolator._edge_case``:
+    zero where it points against the end's secant, three times that secant where the two
+    secants differ in sign and it is steeper."""
+    d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1)
+    s0 = np.sign(m0)
+    flat = np.sign(d) != s0
+    steep = (s0 != np.sign(m1)) & (np.abs(d) > 3.0 * np.abs(m0))
+    steep &= ~flat
+    d[flat] = 0.0
+    d[steep] = 3.0 * m0[steep]
+    return d
+
+
+def _pchip_local(x: np.ndarray, y: np.ndarray, at: float, ends: tuple[bool, bool]):
+    """PCHIP in ``x`` through every column of ``y`` at ``at``, from the nodes of its
+    :func:`_window` only.
+
+    ``x`` (shape (m,)) and ``y`` (shape (m, K)) hold the window's nodes, ``ends`` whether its
+    first and last node end the whole grid (their slopes are then the one-sided ones). The
+    arithmetic is scipy's, column by column (the slopes of ``PchipInterpolator``, the cubic of
+    ``CubicHermiteSpline``, the sum of ``PPoly``), on ``K`` columns at once and on one interval
+    (issue 62: scipy's cubics on every interval of 10^6 columns took 0.6 s). A column with a
+    value that is not finite gives ``nan``.
+    """
     y = np.asarray(y, dtype=float)
-    ok = np.all(np.isfinite(y), axis=0)
-    if np.all(ok):
-        return PchipInterpolator(x, y, axis=0, extrapolate=True)(at)
-    out = np.full(y.shape[1:], np.nan)
-    if np.any(ok):
-        out[ok] = PchipInterpolator(x, y[:, ok], axis=0, extrapolate=True)(at)
+    j = _interval(x, at)
+    h = np.diff(x)
+    m = (y[1:] - y[:-1]) / h[:, None]
+    if len(x) == 2:  # two nodes: a line
+        d0 = d1 = m[0]
+    else:
+        d0, d1 = (_node_slope(h, m, k, len(x), ends) for k in (j, j + 1))
+    s = at - x[j]
+    # c1 s^2 + c0 s^3 of CubicHermiteSpline, summed as PPoly sums: y + d0 s + c1 s^2 + c0 s^3.
+    t = d0 + d1
+    t -= 2 * m[j]
+    t /= h[j]
+    c1 = m[j] - d0
+    c1 /= h[j]
+    c1 -= t
+    t /= h[j]  # c0
+    out = d0 * s
+    out += y[j]
+    c1 *= s * s
+    out += c1
+    t *= s * s * s
+    out += t
+    bad = ~np.isfinite(y).all(axis=0)
+    if bad.any():
+        out[bad] = np.nan
     return out
+
+
+def _node_slope(h, m, k: int, n: int, ends: tuple[bool, bool]) -> np.ndarray:
+    """PCHIP's slope at node ``k`` of ``n`` (spacings ``h``, secants ``m``): the weighted
+    harmonic mean of its two secants (zero where they differ in sign or one is zero), the
+    one-sided slope at an end of the grid."""
+    if k == 0:
+        if not ends[0]:
+            raise ValueError("the slope of a window's first node is not the grid's")
+        return _end_slope(h[0], h[1], m[0], m[1])
+    if k == n - 1:
+        if not ends[1]:
+            raise ValueError("the slope of a window's last node is not the grid's")
+        return _end_slope(h[-1], h[-2], m[-1], m[-2])
+    w1, w2 = 2 * h[k] + h[k - 1], h[k] + 2 * h[k - 1]
+    flat = np.sign(m[k]) != np.sign(m[k - 1])
+    flat |= m[k] == 0
+    flat |= m[k - 1] == 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mean = w1 / m[k - 1]
+        mean += w2 / m[k]
+        mean /= w1 + w2
+        mean = np.divide(1.0, mean, out=mean)
+    mean[flat] = 0.0
+    return mean
 
 
 @dataclass(frozen=True, eq=False)
@@ -86,13 +164,20 @@ class NuInterpolatedLaw:
         The Poisson number served (2D for the disk, 3D for the sphere).
     nodes : tuple of EpsilonLaw
         Grid laws of one body, at least three, increasing in ``nu``, with ``nodes[0].nu < nu <
-        nodes[-1].nu``.
+        nodes[-1].nu``, each interpolating between its points (none served at its points
+        only).
 
     Notes
     -----
     Exposes the evaluation API of :class:`restitution.laws.law.EpsilonLaw` (``epsilon``,
     ``epsilon_err``, ``valid_range``, ``v``, ``epsilon_points``, ``epsilon_err_points``,
     ``asymptotic_ok``, ``quasistatic``) so that exports take either.
+
+    The PCHIP in ``nu`` at one ``nu`` uses four grid laws at most (:func:`_window`), so only
+    those are evaluated, and as one array per law (issue 62: 10^6 speeds took 2.6 s with every
+    law evaluated twice and scipy's cubic built on every interval of every speed; the numbers
+    are the same to round-off, ``tests/test_views_fast.py``). The points behind the law
+    (:attr:`v`, :attr:`asymptotic_ok`, ...) are computed once.
     """
 
     nu: float
@@ -114,15 +199,21 @@ class NuInterpolatedLaw:
                 f"nu = {self.nu:g} is outside the grid {nus[0]:g} ... {nus[-1]:g}; "
                 "interpolation does not extrapolate"
             )
+        if any(getattr(n, "at_points_only", False) for n in self.nodes):
+            raise InputError(
+                "interpolation in nu needs laws that interpolate between their points; a law "
+                "served at its computed speeds only has no value between them"
+            )
 
-    @property
+    @cached_property
     def geometry(self) -> str:
         """The body of the grid laws."""
         return self.nodes[0].geometry
 
-    @property
+    @cached_property
     def partner(self):
-        """The grid laws' partner (``None``: the body on the wall)."""
+        """The grid laws' partner (``None``: the body on the wall; read for every speed of
+        :meth:`SILaw.points`, so read once)."""
         return self.nodes[0].partner
 
     @property
@@ -130,12 +221,12 @@ class NuInterpolatedLaw:
         """The routes that made the grid laws' points (:attr:`EpsilonLaw.routes`)."""
         return tuple(sorted({r for law_ in self.nodes for r in law_.routes}))
 
-    @property
+    @cached_property
     def grid(self) -> np.ndarray:
         """The grid's Poisson numbers, shape (M,)."""
-        return np.array([n.nu for n in self.nodes])
+        return _frozen(np.array([n.nu for n in self.nodes]))
 
-    @property
+    @cached_property
     def valid_range(self) -> tuple[float, float]:
         """The speeds every grid law covers, units of ``c``."""
         return (
@@ -143,10 +234,86 @@ class NuInterpolatedLaw:
             min(n.valid_range[1] for n in self.nodes),
         )
 
-    def _node_values(self, v: np.ndarray, outside: str) -> tuple[np.ndarray, np.ndarray]:
-        eps = np.array([np.atleast_1d(n.epsilon(v, outside=outside)) for n in self.nodes])
-        err = np.array([np.atleast_1d(n.epsilon_err(v, outside=outside)) for n in self.nodes])
-        return eps, err
+    # -- evaluation ----------------------------------------------------------------------
+
+    def _serve(self, v, outside: str, values) -> float | np.ndarray:
+        """``values(w)`` (``w`` a 1-D array of speeds inside :attr:`valid_range`) at the speeds
+        ``v`` of any shape, ``nan`` outside the range (raised or warned first, as ``outside``
+        asks; :meth:`EpsilonLaw.epsilon`)."""
+        arr = _speeds(v)
+        flat = arr.ravel()
+        bad = self._outside(flat, outside)
+        if np.any(bad):
+            out = np.full(flat.shape, np.nan)
+            out[~bad] = _in_blocks(values, flat[~bad])
+        else:
+            out = _in_blocks(values, flat)
+        return float(out[0]) if np.ndim(v) == 0 else out.reshape(arr.shape)
+
+    def _outside(self, v: np.ndarray, outside: str) -> np.ndarray:
+        """Where ``v`` is outside :attr:`valid_range` (where a grid law has no value), raised or
+        warned as ``outside`` asks."""
+        if not (isinstance(outside, str) and outside in ("raise", "warn", "nan")):
+            raise InputError(f"outside must be 'raise', 'warn' or 'nan', not {describe(outside)}")
+        lo, hi = self.valid_range
+        bad = ~((v >= lo) & (v <= hi))
+        if np.any(bad) and outside != "nan":
+            meaning = "speed towards the wall" if self.partner is None else "relative speed"
+            text = (
+                f"speed(s) {np.unique(v[bad])[:5].tolist()} outside the range {lo:g} <= v <= "
+                f"{hi:g} (units of c, {meaning}) every grid law of the {self.geometry} covers, "
+                f"interpolated to {_what(self.nu, self.geometry)}"
+            )
+            if outside == "raise":
+                raise InputError(
+                    f"{text}; the law does not extrapolate (compute the law for this nu with "
+                    f"`{_curve_command(self.geometry, self.nu, self.partner)}`, or pass "
+                    "outside='nan')"
+                )
+            warnings.warn(text + "; returning nan", stacklevel=4)
+        return bad
+
+    def _pchip_in_nu(self, get, name: str, at: float, skip: int | None = None) -> np.ndarray:
+        """PCHIP in ``nu`` at ``at`` through the grid laws' ``name`` (``"epsilon"`` or
+        ``"epsilon_err"``; ``get(k, name)`` the law ``k``'s values), without the law ``skip``
+        (a leave-one-out prediction); only the laws of its :func:`_window` are evaluated."""
+        keep = np.array([k for k in range(len(self.nodes)) if k != skip])
+        x = self.grid[keep]
+        w = _window(x, at)
+        y = np.array([get(k, name) for k in keep[w]])
+        return _pchip_local(x[w], y, at, (w[0] == 0, w[-1] == len(x) - 1))
+
+    def _node_values(self, v: np.ndarray):
+        """``get(k, name)``: the grid law ``k``'s ``name`` at ``v`` (inside every law's range),
+        each evaluated once."""
+        memo = {}
+
+        def get(k: int, name: str) -> np.ndarray:
+            if (k, name) not in memo:
+                memo[k, name] = getattr(self.nodes[k], name)(v, outside="nan")
+            return memo[k, name]
+
+        return get
+
+    def _around(self) -> tuple[list[int], float]:
+        """The grid laws whose leave-one-out errors make :meth:`interpolation_err` (those of
+        ``nu``'s interval that are not end laws) and ``t``, the position of ``nu`` in the
+        interval."""
+        x = self.grid
+        i = int(np.clip(np.searchsorted(x, self.nu) - 1, 0, len(x) - 2))
+        t = (self.nu - x[i]) / (x[i + 1] - x[i])
+        return [k for k in (i, i + 1) if 0 < k < len(x) - 1], t
+
+    def _leave_one_out_at(self, get, k: int) -> np.ndarray:
+        """``|prediction of law k from the others - law k|`` (``get``: :meth:`_node_values`)."""
+        return np.abs(
+            self._pchip_in_nu(get, "epsilon", float(self.grid[k]), skip=k) - get(k, "epsilon")
+        )
+
+    def _interpolation_err_at(self, get) -> np.ndarray:
+        around, t = self._around()
+        loo = np.array([self._leave_one_out_at(get, k) for k in around])
+        return np.max(loo, axis=0) * 4.0 * t * (1.0 - t)
 
     def leave_one_out(self, v, *, outside: str = "raise") -> np.ndarray:
         """``|prediction without node k - node k|`` at speed(s) ``v``: the PCHIP of the other
@@ -157,14 +324,14 @@ class NuInterpolatedLaw:
         numpy.ndarray, shape (M, K)
             One row per grid law; ``nan`` for the two end laws (no extrapolation).
         """
-        v = np.atleast_1d(np.asarray(v, dtype=float))
-        eps, _ = self._node_values(v, outside)
-        x = self.grid
-        out = np.full(eps.shape, np.nan)
-        for k in range(1, len(x) - 1):
-            keep = np.arange(len(x)) != k
-            out[k] = np.abs(_pchip(x[keep], eps[keep], x[k]) - eps[k])
-        return out
+        arr = np.atleast_1d(_speeds(v))
+        flat = arr.ravel()
+        bad = self._outside(flat, outside)
+        get = self._node_values(flat[~bad])
+        out = np.full((len(self.nodes), flat.size), np.nan)
+        for k in range(1, len(self.nodes) - 1):
+            out[k, ~bad] = self._leave_one_out_at(get, k)
+        return out.reshape((len(self.nodes), *arr.shape))
 
     def interpolation_err(self, v, *, outside: str = "raise"):
         """Estimate of the interpolation error at ``self.nu``, speed(s) ``v``:
@@ -184,34 +351,30 @@ class NuInterpolatedLaw:
         speeds of each law). The earlier estimate, the grid's largest leave-one-out error at
         any ``nu``, was 4-38 times the true error and jumped at the grid values.
         """
-        loo = self.leave_one_out(v, outside=outside)
-        x = self.grid
-        i = int(np.clip(np.searchsorted(x, self.nu) - 1, 0, len(x) - 2))
-        t = (self.nu - x[i]) / (x[i + 1] - x[i])
-        around = [k for k in (i, i + 1) if 0 < k < len(x) - 1]  # the end laws have none
-        out = np.max(loo[around], axis=0) * 4.0 * t * (1.0 - t)
-        return float(out[0]) if np.ndim(v) == 0 else out
+        return self._serve(v, outside, lambda w: self._interpolation_err_at(self._node_values(w)))
 
     def epsilon(self, v, *, outside: str = "raise"):
-        """Interpolated ``epsilon`` at speed(s) ``v`` towards the wall (units of ``c``)."""
-        arr = np.atleast_1d(np.asarray(v, dtype=float))
-        eps, _ = self._node_values(arr, outside)
-        out = _pchip(self.grid, eps, self.nu)
-        return float(out[0]) if np.ndim(v) == 0 else out
+        """Interpolated ``epsilon`` at speed(s) ``v`` towards the wall (units of ``c``);
+        ``outside`` as :meth:`EpsilonLaw.epsilon`'s, for the range every grid law covers."""
+        return self._serve(
+            v, outside, lambda w: self._pchip_in_nu(self._node_values(w), "epsilon", self.nu)
+        )
 
     def epsilon_err(self, v, *, outside: str = "raise"):
         """Error of :meth:`epsilon`: interpolated point error (+) leave-one-out error."""
-        arr = np.atleast_1d(np.asarray(v, dtype=float))
-        _, err = self._node_values(arr, outside)
-        point = np.abs(_pchip(self.grid, err, self.nu))
-        out = np.hypot(point, self.interpolation_err(arr, outside=outside))
-        return float(out[0]) if np.ndim(v) == 0 else out
+
+        def err(w: np.ndarray) -> np.ndarray:
+            get = self._node_values(w)
+            point = np.abs(self._pchip_in_nu(get, "epsilon_err", self.nu))
+            return np.hypot(point, self._interpolation_err_at(get))
+
+        return self._serve(v, outside, err)
 
     __call__ = epsilon
 
-    # -- the points behind the law, as EpsilonLaw has them --------------------------------
+    # -- the points behind the law, as EpsilonLaw has them (computed once) ----------------
 
-    @property
+    @cached_property
     def v(self) -> np.ndarray:
         """Speeds computed for any grid law inside the range they all cover, increasing: each
         law's own points where epsilon(v) turns (:mod:`restitution.laws.making.refine`) are kept, so
@@ -220,26 +383,26 @@ class NuInterpolatedLaw:
         every = set()
         for n in self.nodes:
             every |= set(np.round(n.v, 12))
-        return np.array(sorted(x for x in every if lo <= x <= hi))
+        return _frozen(np.array(sorted(x for x in every if lo <= x <= hi)))
 
-    @property
+    @cached_property
     def epsilon_points(self) -> np.ndarray:
-        return np.atleast_1d(self.epsilon(self.v))
+        return _frozen(np.atleast_1d(self.epsilon(self.v)))
 
-    @property
+    @cached_property
     def epsilon_err_points(self) -> np.ndarray:
-        return np.atleast_1d(self.epsilon_err(self.v))
+        return _frozen(np.atleast_1d(self.epsilon_err(self.v)))
 
-    @property
+    @cached_property
     def asymptotic_ok(self) -> np.ndarray:
         """A point is asymptotic when every grid law's points around it passed their checks
         (:meth:`EpsilonLaw.checked`: the point itself where a law computed it)."""
         ok = np.ones(self.v.size, bool)
         for n in self.nodes:
             ok &= np.atleast_1d(n.checked(self.v))
-        return ok
+        return _frozen(ok)
 
-    @property
+    @cached_property
     def quasistatic(self) -> np.ndarray:
         """A point is from the low-speed theory when, in any grid law, it is such a point or
         lies between two of them."""
@@ -249,7 +412,7 @@ class NuInterpolatedLaw:
             hi = np.clip(np.searchsorted(n.v, self.v, side="left"), 0, n.v.size - 1)
             lo = np.clip(np.searchsorted(n.v, self.v, side="right") - 1, 0, n.v.size - 1)
             out |= q[lo] & q[hi]
-        return out
+        return _frozen(out)
 
     @property
     def source(self) -> str:
@@ -257,6 +420,27 @@ class NuInterpolatedLaw:
             f"PCHIP in nu between the laws for nu = {', '.join(f'{x:g}' for x in self.grid)} "
             "(error includes the interpolation error estimated from leave-one-out errors)"
         )
+
+
+_BLOCK = 1 << 16
+"""Speeds evaluated together: the some fifty array operations of a PCHIP in ``nu`` run on
+blocks that stay in the processor's cache (twice as fast at 10^6 speeds as one pass each)."""
+
+
+def _in_blocks(values, w: np.ndarray) -> np.ndarray:
+    """``values(w)`` block by block (:data:`_BLOCK`); the same numbers (each speed alone)."""
+    if w.size <= _BLOCK:
+        return values(w)
+    out = np.empty(w.size)
+    for start in range(0, w.size, _BLOCK):
+        out[start : start + _BLOCK] = values(w[start : start + _BLOCK])
+    return out
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    """``a``, read-only: an array computed once and handed to every caller."""
+    a.flags.writeable = False
+    return a
 
 
 def _what(nu: float, geometry: str) -> str:

@@ -273,9 +273,9 @@ class LawRequest:
         metadata=option(
             "--radius",
             "Radius of the grain, m (with --relaxation-time, or with --measured-epsilon to "
-            "state tau in seconds and export the DEM codes' viscoelastic contact; for two "
-            "sizes the smaller grain's). The elastic law needs no radius; the viscous loss "
-            "depends on tau c / R.",
+            "state tau in seconds and export the DEM codes' viscoelastic contact, or with "
+            "--export to set the DEM snippets' time step in seconds; for two sizes the smaller "
+            "grain's). The elastic law needs no radius; the viscous loss depends on tau c / R.",
             unit="m",
             positive=True,
         ),

@@ -173,8 +173,9 @@ def _check_identical_law_files(r) -> None:
 def _check_damping(r) -> None:
     """The damping options together: a measurement is an epsilon and a speed; a relaxation
     time needs the radius (and a radius alone means nothing, but a plate's or an elastic
-    wall's, whose checks say so); a measurement that fixes the relaxation time and the
-    relaxation time given are one too many."""
+    wall's, whose checks say so, or an export's, whose snippets take their time step from
+    it); a measurement that fixes the relaxation time and the relaxation time given are one
+    too many."""
     if (r.measured_epsilon is None) != (r.measured_speed is None):
         raise InputError("--measured-epsilon and --measured-speed go together; give both")
     if r.relaxation_time is not None and r.radius is None:
@@ -186,11 +187,13 @@ def _check_damping(r) -> None:
         and r.relaxation_time is None
         and r.measured_epsilon is None
         and (r.wall_thickness is None and r.wall_E is None)
+        and r.export_dir is None
         and "radius" not in used_fields(r)
     ):
         raise InputError(
-            f"--radius goes with --relaxation-time or --measured-epsilon (damping){_sized()}; "
-            "give damping or leave out --radius"
+            f"--radius goes with --relaxation-time or --measured-epsilon (damping){_sized()}, "
+            "or --export DIR (the DEM snippets' time step); give one of them or leave out "
+            "--radius"
         )
     if (r.relaxation_time is not None and r.measured_epsilon is not None
             and r.measured_fixes not in ("limiting-pressure", "both")):  # fmt: skip
@@ -248,13 +251,11 @@ def _check_plastic(r) -> None:
             "one measurement fixes one parameter: give the yield stress (or limiting "
             "pressure), or let --measured-fixes limiting-pressure fix it, not both"
         )
-    needs = [what for what, asked in (("--export", r.export_dir is not None),
-             ("--reference-speed/--maxwell-temperature", r.constants),
-             ("--compute", r.compute)) if asked]  # fmt: skip
-    if needs:
+    if r.compute:
         raise InputError(
-            f"{' and '.join(needs)} with plastic flow: not available yet (the plastic law is "
-            "computed at the asked speeds only); leave them out"
+            "--compute with plastic flow: not available yet (plastic flow is computed on a "
+            "shipped or given elastic law); compute the elastic law first (law ... --compute, "
+            "without the plastic options), then give it with --law-file"
         )
 
 
@@ -270,10 +271,10 @@ def _check_elastic_wall(r) -> None:
             "sphere, or leave out the wall options (a rigid wall)"
         )
     if (r.radius is not None and r.wall_thickness is None and not r.damped
-            and "radius" not in used_fields(r)):  # fmt: skip
+            and r.export_dir is None and "radius" not in used_fields(r)):  # fmt: skip
         raise InputError(
-            "--radius goes with --wall-thickness (a plate) or --relaxation-time; a "
-            "half-space needs no radius: leave it out"
+            "--radius goes with --wall-thickness (a plate), --relaxation-time or --export DIR "
+            "(the DEM snippets' time step); a half-space needs no radius: leave it out"
         )
     needs = [what for what, asked in (("damping", r.damped),
              ("--law-file", r.law_file is not None),

@@ -13,9 +13,12 @@ number in Python: ``wall_E='63e9'`` is refused with the number it seems to mean
 (``give a number, e.g. wall_E=63e9``), not parsed.
 
 A value allowed but outside the range of real grains and walls (:data:`PLAUSIBLE`: a 5 m grain,
-a yield stress above any metal's, a friction coefficient of 1e300) is not refused: the request
-warns once (:func:`warn_implausible`, a :class:`~restitution.errors.PlausibilityWarning` naming
-the option, the range and, where a unit brings the number into it, the number meant).
+a plate 600 radii thick, a yield stress above any metal's or above its material's theoretical
+strength ``E/10``, a friction coefficient of 1e300) is not refused: the request warns once
+(:func:`warn_implausible`, a :class:`~restitution.errors.PlausibilityWarning` naming the option,
+the range and, where a unit brings the number into it, the number meant). Each range says where
+it comes from next to its entry; the command line prints each warning as one ``warning:`` line
+on stderr and lists them in its JSON (``warnings``).
 """
 
 from __future__ import annotations
@@ -270,6 +273,9 @@ _DENSITY = Plausible(10.0, 3e4, "a density", "from foams and aerogels to osmium,
 # ceramics, far harder, fracture before they flow.
 _YIELD = Plausible(1e5, 1e10, "a yield stress", "from indium and lead to the strongest steel "
                    "wires, 5-6 GPa; no metal's is above about 10 GPa", _STRESSES)  # fmt: skip
+_THEORETICAL = Plausible(0.0, 0.1, "a yield stress in its material's Young moduli",
+                         "a solid's theoretical strength is about E/10; real ones yield far "
+                         "below it, steels at E/1000-E/100")  # fmt: skip
 
 PLAUSIBLE: dict[str, Plausible] = {
     "E": _MODULUS,
@@ -306,6 +312,13 @@ PLAUSIBLE: dict[str, Plausible] = {
     ),
     "yield_stress": _YIELD,
     "partner_yield_stress": _YIELD,
+    # A yield stress in the material's own modulus: the theoretical strength of a perfect
+    # crystal is about E/10 (Frenkel's estimate of the ideal shear strength, G/2pi; Kelly and
+    # Macmillan, Strong Solids), and real solids yield far below it (steels at E/1000-E/100,
+    # the strongest wires near E/40). A stress the absolute range lets through (500 MPa) is
+    # still no yield stress of a polymer with E = 3 GPa.
+    "yield_stress/E": _THEORETICAL,
+    "partner_yield_stress/partner_E": _THEORETICAL,
     # Thornton's limiting pressure is the pressure of first yield, 0.7-1.9 times the yield
     # stress (restitution.quasistatic.plastic.onset_pressure_ratio over nu in (-0.9, 0.5)).
     "limiting_pressure": Plausible(

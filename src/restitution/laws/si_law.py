@@ -27,7 +27,7 @@ from restitution.errors import InputError, describe, is_real, real_array
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.mechanisms.base import mechanism_fields
-from restitution.laws.mechanisms.bounds import flag_points, law_mechanisms
+from restitution.laws.mechanisms.bounds import elastic_bound, flag_points, law_mechanisms
 from restitution.laws.partners.base import partner_of
 from restitution.laws.partners.grain import KIND as GRAIN
 from restitution.laws.partners.rigid_wall import KIND as WALL
@@ -38,11 +38,12 @@ from restitution.laws.si_point import (
     STATUSES,
     SIPoint,
     cut_at_one,
-    loss_shares_at,
     not_informative,
-    point_status,
+    point_statuses,
     quasistatic_note,
     route_reach_of,
+    shares_at_all,
+    values_checked,
 )
 from restitution.laws.units import Grain, partner_factor
 from restitution.status import Status
@@ -317,14 +318,16 @@ class SILaw:
         vs = [float(v) for v in np.atleast_1d(self._reduced(ws))]
         lowest = float(self.law.v[0])
         below = self._below(sorted({v for v in vs if v < lowest * (1.0 - SAME_SPEED)}), note)
-        statuses = [point_status(self.law, v) for v in vs]
+        statuses = point_statuses(self.law, vs)
         served = self._served_all(vs, statuses, below)
         direct = len(set(vs)) <= DIRECT_WALL_SHARES  # a wall's split at the speed itself
+        shares = shares_at_all(self.law, vs, direct)
+        checked = values_checked(self.law)
         out = []
-        for w, v, (status, text) in zip(ws, vs, statuses, strict=True):
+        for w, v, (status, text), share in zip(ws, vs, statuses, shares, strict=True):
             eps = err = None
             if v in below:
-                eps, err, shares = below[v]
+                eps, err, split = below[v]
                 status = Status.QUASISTATIC
                 text = (
                     quasistatic_note(self.law) + "; computed at this speed by the route of "
@@ -333,7 +336,7 @@ class SILaw:
                     else f"computed at this speed by {self.below.words} (below its table)"
                 )
                 out.append(
-                    SIPoint(float(w), v, eps, err, status, cut_at_one(text, eps, err), shares)
+                    SIPoint(float(w), v, eps, err, status, cut_at_one(text, eps, err), split)
                 )
                 continue
             if status != Status.OUTSIDE:
@@ -342,7 +345,7 @@ class SILaw:
                     status, text = Status.OUTSIDE, str(found)
                 else:
                     eps, err = found
-                    why = not_informative(self.law, v, eps, err)
+                    why = not_informative(self.law, v, eps, err) if checked else None
                     if why is not None:  # an elastic wall's value that says nothing
                         status, text, eps, err = Status.OUTSIDE, why, None, None
             if status == Status.OUTSIDE:
@@ -354,7 +357,7 @@ class SILaw:
                     text += f"; the law serves {lo:.4g} m/s <= w <= {hi:.4g} m/s"
             else:
                 text = cut_at_one(text, eps, err)
-            share = None if status == Status.OUTSIDE else loss_shares_at(self.law, v, direct)
+            share = None if status == Status.OUTSIDE else share
             out.append(SIPoint(float(w), v, eps, err, status, text, share))
         return tuple(out)
 
@@ -410,7 +413,7 @@ class SILaw:
 
         return views.plot(self, path, speeds_m_s, ax=ax, marks=marks)
 
-    def to_dict(self, speeds_m_s) -> dict:
+    def to_dict(self, speeds_m_s, points=None) -> dict:
         """The JSON of ``restitution law``: constants, partner, the mechanisms in the numbers,
         and the points (each above the speed where plastic flow is expected saying so,
         :func:`restitution.laws.mechanisms.bounds.flag_points`).
@@ -421,7 +424,10 @@ class SILaw:
         """
         lo, hi = self.computed_range_m_s
         g = self.grain
-        points, bound = flag_points(self, self.points(speeds_m_s))
+        if points is None:
+            points, bound = flag_points(self, self.points(speeds_m_s))
+        else:  # the answer's own, flagged already (not computed twice: issue 62)
+            bound = elastic_bound(self)[0]
         head = {"c_m_s": g.c_m_s}
         if g.kind.planar:
             head["nu_2d"] = g.nu_2d

@@ -8,8 +8,10 @@ the C header and the Fortran include that evaluate the law's table (``epsilon.h`
 target (:data:`~restitution.laws.exports.dem.DEM_TARGETS`, ``epsilon_<file_name>``): the
 code's own viscoelastic contact where it has one and a model is given, else the constant; and
 the LAMMPS plugin's tables and input lines, which carry the whole law per contact
-(:mod:`~restitution.laws.exports.plugin_files`). Speeds in m/s, every file in SI units; each
-file is written whole or not at all (:mod:`restitution.atomic`).
+(:mod:`~restitution.laws.exports.plugin_files`). Every snippet and the plugin's lines end with
+the time step of each contact type (:mod:`~restitution.laws.exports.time_step`), set where the
+grains' radius is known. Speeds in m/s, every file in SI units; each file is written whole or
+not at all (:mod:`restitution.atomic`).
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem import DEM_TARGETS
 from restitution.laws.exports.plugin_files import plugin_files
 from restitution.laws.exports.table import write_csv, write_table
+from restitution.laws.exports.time_step import TimeSteps, time_steps
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.si_law import SILaw
 
@@ -60,12 +63,15 @@ class ExportFolder:
     no_plugin : str or None
         Why no LAMMPS plugin tables were written (the plugin cannot carry the law), else
         ``None``.
+    time_steps : TimeSteps or None
+        The time step of each contact type that the snippets and the plugin's lines carry.
     """
 
     paths: tuple[Path, ...]
     closed_form: ClosedForm | None
     no_closed_form: str | None
     no_plugin: str | None = None
+    time_steps: TimeSteps | None = None
 
 
 def write_folder(
@@ -75,6 +81,7 @@ def write_folder(
     viscoelastic=None,
     friction: float | None = None,
     walls=None,
+    radius_m: float | None = None,
 ) -> ExportFolder:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``) or ``viscoelastic`` (a damped sphere law's
@@ -85,7 +92,9 @@ def write_folder(
     :func:`~restitution.laws.exports.plugin_files.plugin_files`); files of an earlier export
     this one does not write (a closed form, snippets) are removed when they are unchanged, so
     the folder holds one law's files only; a file the package did not write (or one changed
-    since) is never replaced or removed: the export is refused, naming it."""
+    since) is never replaced or removed: the export is refused, naming it. ``radius_m``: the
+    (type-1) grains' radius, m, for the time steps in seconds (default: the viscoelastic
+    model's; without one the times are per millimetre of radius and no step is set)."""
     out = Path(out)
     # The three-parameter form exists only where it follows the points within their errors;
     # the C and Fortran evaluate the law's table either way.
@@ -95,8 +104,11 @@ def write_folder(
     except RestitutionError as exc:
         fit = None
         refusal = str(exc)
+    if radius_m is None and viscoelastic is not None:
+        radius_m = viscoelastic.radii_m[1]
+    steps = time_steps(s, constant, radius_m, walls)
     try:
-        plugin, no_plugin = plugin_files(s, constant, walls), None
+        plugin, no_plugin = plugin_files(s, constant, walls, steps), None
     except InputError as exc:
         plugin, no_plugin = {}, str(exc)
     stem = "epsilon"
@@ -111,7 +123,8 @@ def write_folder(
         atomic.write_text(stage / names[-2], c_header(s, fit))
         atomic.write_text(stage / names[-1], fortran_include(s, fit))
         for target in DEM_TARGETS.values():
-            if viscoelastic is not None and target.viscoelastic is not None:
+            native = viscoelastic is not None and target.viscoelastic is not None
+            if native:
                 make, what = target.viscoelastic, viscoelastic
             elif constant is not None:
                 make, what = target.snippet, constant
@@ -119,9 +132,11 @@ def write_folder(
                 continue
             text = make(s, what) if friction is None else _with_friction(target, make, s, what,
                                                                          friction)  # fmt: skip
+            if target.time_step is not None:
+                text = "\n".join([text.rstrip("\n"), *target.time_step(steps, native), ""])
             names.append(f"{stem}_{target.file_name}")
             atomic.write_text(stage / names[-1], text)
         for name, text in plugin.items():
             names.append(name)
             atomic.write_text(stage / name, text)
-    return ExportFolder(tuple(out / name for name in names), fit, refusal, no_plugin)
+    return ExportFolder(tuple(out / name for name in names), fit, refusal, no_plugin, steps)

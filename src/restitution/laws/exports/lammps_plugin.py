@@ -575,7 +575,8 @@ def lammps_plugin_input(
         "# restitution LAMMPS plugin (docs/lammps-plugin.md): Hertz normal force with Tsuji's",
         "# damping fixed per contact from epsilon(w) at its impact speed w (m/s). FRICTIONLESS:",
         "# no tangential force (add your own). Needs units si, atom_style sphere, comm_modify",
-        "# vel yes, fix nve/sphere, one MPI rank; run lmp with LD_LIBRARY_PATH=<venv>/lib.",
+        "# vel yes, fix nve/sphere; run lmp with LD_LIBRARY_PATH=<venv>/lib, on any number of",
+        "# MPI ranks (<venv>/bin/mpiexec -n N lmp ...: the same numbers as on one).",
         f"plugin load {os.fspath(plugin)}",
     ]
     if not pairs and wall is None:

@@ -12,8 +12,11 @@ wall, whatever its size): one folder for a system of walls and grains. SI units.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from restitution.errors import InputError
 from restitution.laws.exports._heading import _header
+from restitution.laws.exports.dem.lammps import lammps_time_step
 from restitution.laws.exports.lammps_plugin import (
     PLUGIN_NAME,
     PluginWall,
@@ -28,7 +31,7 @@ from restitution.laws.partners.base import partner_of
 from restitution.laws.partners.rigid_wall import KIND as WALL
 from restitution.laws.si_law import si_law
 
-__all__ = ["INPUT_NAME", "plugin_files"]
+__all__ = ["INPUT_NAME", "SystemContacts", "plugin_files", "system_contacts"]
 
 INPUT_NAME = "epsilon_lammps_plugin.in"
 """The input lines' file in an export folder."""
@@ -40,20 +43,50 @@ def _table_name(i: int, j: int) -> str:
     )  # fmt: skip
 
 
-def plugin_files(s, c=None, walls=None) -> dict[str, str]:
-    """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
-    :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
-    :class:`TypePairs` ``c`` (their 1-1 and 2-2 laws); a ``Constant`` or ``None`` adds nothing.
-    ``walls``: the law of each grain type on the wall as the answer's mechanisms make it
-    (``{type: SILaw}``, or a sentence why there is none), instead of the shipped elastic law of
-    the grain on a wall: a damped grain's wall table is damped.
+@dataclass(frozen=True)
+class SystemContacts:
+    """The contacts of the system an export serves, each with its law (SI units).
 
-    Raises
-    ------
-    InputError
-        Where the plugin cannot carry the law (an epsilon below the map's range, a table
-        without two knots): the message says why.
+    Attributes
+    ----------
+    laws : dict
+        ``(i, j) -> SILaw`` per pair of particle types (``i <= j``) and ``(i, 0)`` for type
+        ``i`` on the wall, in the order the plugin writes their tables.
+    grains : dict
+        ``type -> Grain`` (material and geometry of each particle type).
+    missing : list of str
+        The contacts without a law, each with why (a grain's wall law that could not be had).
+    two_materials : bool
+        Whether the types are of two materials (one wall fix per type's group).
     """
+
+    laws: dict
+    grains: dict
+    missing: list
+    two_materials: bool
+
+    def contact_modulus(self, i: int, j: int) -> float:
+        """``E*`` (Pa) of the contact ``(i, j)``: two grains' materials, or type ``i`` on the
+        wall of its law (an elastic wall's material, else rigid)."""
+        a = self.grains[i]
+        if j != 0:
+            b = self.grains[j]
+            return contact_modulus(a.E, a.nu, b.E, b.nu)
+        law = self.laws.get((i, 0), self.laws.get((1, 0)))  # one wall for every type
+        elastic = wall_of(law.law) if law is not None else None
+        if elastic is None:
+            return contact_modulus(a.E, a.nu)
+        return contact_modulus(a.E, a.nu, float(elastic["modulus_ratio"]) * a.E,
+                               float(elastic["nu"]))  # fmt: skip
+
+
+def system_contacts(s, c=None, walls=None) -> SystemContacts:
+    """The contacts of the system the law ``s`` (an :class:`~restitution.laws.si_law.SILaw`)
+    and, for grains of two sizes or materials, the :class:`TypePairs` ``c`` (their 1-1 and 2-2
+    laws) serve: the law's own contact; for grains, also each material on the wall (the
+    shipped law of that grain on a wall, whatever its size, or ``walls``: the law of each grain
+    type on the wall as the answer's mechanisms make it, ``{type: SILaw}``, or a sentence why
+    there is none)."""
     g = s.grain
     laws = {}
     partner = partner_of(s)
@@ -67,7 +100,7 @@ def plugin_files(s, c=None, walls=None) -> dict[str, str]:
     else:
         laws[1, 1] = s
     two = isinstance(c, TypePairs) and c.two_materials
-    grains = c.grains if two else {1: g, 2: g}
+    grains = {1: g, 2: s.partner_grain or g}
     missing = []
     if partner.is_grain:  # each material on the wall too: one folder for the system
         for i in (1, 2) if two else (1,):
@@ -81,6 +114,28 @@ def plugin_files(s, c=None, walls=None) -> dict[str, str]:
                 laws[i, 0] = given
             except InputError as exc:
                 missing.append(f"type {i} on the wall: {exc}")
+    return SystemContacts(laws, grains, missing, two)
+
+
+def plugin_files(s, c=None, walls=None, steps=None) -> dict[str, str]:
+    """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
+    :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
+    :class:`TypePairs` ``c`` (their 1-1 and 2-2 laws); a ``Constant`` or ``None`` adds nothing.
+    ``walls``: the law of each grain type on the wall as the answer's mechanisms make it
+    (``{type: SILaw}``, or a sentence why there is none), instead of the shipped elastic law of
+    the grain on a wall: a damped grain's wall table is damped (:func:`system_contacts`).
+    ``steps``: the contacts' time steps
+    (:class:`~restitution.laws.exports.time_step.TimeSteps`), written after the lines.
+
+    Raises
+    ------
+    InputError
+        Where the plugin cannot carry the law (an epsilon below the map's range, a table
+        without two knots): the message says why.
+    """
+    g = s.grain
+    system = system_contacts(s, c, walls)
+    laws, missing, two = system.laws, system.missing, system.two_materials
     # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
     plane = "yplane" if g.kind.planar else "zplane"
     files, pairs, walls = {}, {}, []
@@ -89,16 +144,11 @@ def plugin_files(s, c=None, walls=None) -> dict[str, str]:
         what = f"type {i} on the wall" if j == 0 else f"types {i}-{j}"
         files[name] = plugin_table(pchip_table(law), [*_header(law), f"contact: {what}"])
         if j == 0:
-            a = grains[i]
             group, fix_id = (f"restitution_type{i}", f"wall{i}") if two else ("all", "wall")
-            elastic = wall_of(law.law)  # an elastic wall's material, else rigid
-            estar = (contact_modulus(a.E, a.nu) if elastic is None else
-                     contact_modulus(a.E, a.nu, float(elastic["modulus_ratio"]) * a.E,
-                                     float(elastic["nu"])))  # fmt: skip
+            estar = system.contact_modulus(i, 0)
             walls.append((i, PluginWall(estar, name, plane=plane, group=group, fix_id=fix_id)))
         else:
-            a, b = grains[i], grains[j]
-            pairs[i, j] = (contact_modulus(a.E, a.nu, b.E, b.nu), name)
+            pairs[i, j] = (system.contact_modulus(i, j), name)
     lines = [f"# {line}" for line in _header(s)]
     lines += [
         f"# the plugin: build it with `restitution lammps-plugin --out DIR` and put {PLUGIN_NAME}",
@@ -120,5 +170,7 @@ def plugin_files(s, c=None, walls=None) -> dict[str, str]:
     lines += [f"group {w.group} type {i}" for i, w in walls if w.group != "all"]
     # "./": dlopen looks for a bare file name on the library path, not where LAMMPS runs.
     body = lammps_plugin_input(f"./{PLUGIN_NAME}", pairs, [w for _, w in walls])
+    if steps is not None:
+        body += "\n".join(lammps_time_step(steps)) + "\n"
     files[INPUT_NAME] = "\n".join(lines) + "\n" + body
     return files

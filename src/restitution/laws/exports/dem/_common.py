@@ -100,6 +100,15 @@ def _particles(s: SILaw) -> str:
     )
 
 
+def time_step_lines(steps, mark: str, command) -> list[str]:
+    """The time-step lines of a snippet whose code integrates Hertz's contact: the comments of
+    ``steps`` (a :class:`~restitution.laws.exports.time_step.TimeSteps`) after ``mark`` and,
+    when the grains' radius is known, ``command(dt)``, the code's own line setting the step
+    ``dt`` (s)."""
+    lines = [f"{mark} {line}" for line in steps.lines()]
+    return [*lines, command(steps.time_step_s)] if steps.sized else lines
+
+
 def _grain_of(s: SILaw, c: Constant | TypePairs, i: int):
     """The grain of particle type ``i``: the partner's material for type 2 of two materials."""
     return c.grains[i] if isinstance(c, TypePairs) else s.grain

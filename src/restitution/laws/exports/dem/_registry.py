@@ -37,12 +37,20 @@ class DemTarget:
         law in its own viscoelastic contact
         (:class:`~restitution.laws.exports.viscoelastic.Viscoelastic`), the velocity dependence
         instead of a constant; ``None`` when the code has no such model.
+    time_step : callable or None
+        ``time_step(steps, viscoelastic) -> list of str``: the lines that set the code's time
+        step for the contacts of the export (``steps``, a
+        :class:`~restitution.laws.exports.time_step.TimeSteps`): comments with each contact's
+        time and, where the grains' radius is known, the code's own command; ``viscoelastic``
+        says whether the snippet is the code's viscoelastic one. ``None``: the export adds
+        nothing on the step.
     """
 
     name: str
     file_name: str
     snippet: Callable[..., str]
     viscoelastic: Callable[..., str] | None = None
+    time_step: Callable[..., list[str]] | None = None
 
 
 DEM_TARGETS: dict[str, DemTarget] = {}

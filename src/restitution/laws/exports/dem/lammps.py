@@ -15,6 +15,7 @@ from restitution.laws.exports.dem._common import (
     _grain_of,
     _particles,
     friction_line,
+    time_step_lines,
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
@@ -24,7 +25,7 @@ from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "lammps_snippet", "lammps_viscoelastic"]
+__all__ = ["TARGET", "lammps_time_step", "lammps_snippet", "lammps_viscoelastic"]
 
 
 INSTALL_NOTE = (
@@ -189,12 +190,19 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = 
     return "\n".join([*lines, ""])
 
 
+def lammps_time_step(steps, viscoelastic: bool = False) -> list[str]:
+    """The snippet's time-step lines (:func:`~restitution.laws.exports.dem._common.
+    time_step_lines`), the constant's and the viscoelastic contact's alike: both are Hertz's."""
+    return time_step_lines(steps, "#", lambda dt: f"timestep {dt:.3g}")
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="lammps",
         file_name="lammps.in",
         snippet=lammps_snippet,
         viscoelastic=lammps_viscoelastic,
+        time_step=lammps_time_step,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

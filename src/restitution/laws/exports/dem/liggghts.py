@@ -17,6 +17,7 @@ from restitution.laws.exports.dem._common import (
     _grain_of,
     _particles,
     friction_line,
+    time_step_lines,
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
@@ -26,7 +27,7 @@ from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "liggghts_snippet", "liggghts_viscoelastic"]
+__all__ = ["TARGET", "liggghts_time_step", "liggghts_snippet", "liggghts_viscoelastic"]
 
 
 def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
@@ -139,12 +140,19 @@ def liggghts_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None 
     )
 
 
+def liggghts_time_step(steps, viscoelastic: bool = False) -> list[str]:
+    """The snippet's time-step lines (:func:`~restitution.laws.exports.dem._common.
+    time_step_lines`), the constant's and the viscoelastic contact's alike: both are Hertz's."""
+    return time_step_lines(steps, "#", lambda dt: f"timestep {dt:.3g}")
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="liggghts",
         file_name="liggghts.in",
         snippet=liggghts_snippet,
         viscoelastic=liggghts_viscoelastic,
+        time_step=liggghts_time_step,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

@@ -14,6 +14,7 @@ from restitution.laws.exports.dem._common import (
     _constants,
     _particles,
     friction_line,
+    time_step_lines,
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
@@ -23,7 +24,7 @@ from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "mercurydpm_snippet", "mercurydpm_viscoelastic"]
+__all__ = ["TARGET", "mercurydpm_time_step", "mercurydpm_snippet", "mercurydpm_viscoelastic"]
 
 
 def _mass_ratio(s: SILaw, r: float) -> str:
@@ -225,12 +226,31 @@ def mercurydpm_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | Non
     )
 
 
+def mercurydpm_time_step(steps, viscoelastic: bool = False) -> list[str]:
+    """The snippet's time-step lines. The viscoelastic snippet's species is Hertz's:
+    :func:`~restitution.laws.exports.dem._common.time_step_lines` with ``setTimeStep``. The
+    constant's linear species lasts the user's ``tc`` at every speed: ``setTimeStep(tc / 50)``,
+    with Hertz's contact times of the material for the choice of ``tc``."""
+    if viscoelastic:
+        return time_step_lines(steps, "//", lambda dt: f"setTimeStep({dt:.3g});  // s")
+    n = steps.steps_per_contact
+    return [
+        f"// time step: dt = tc/{n} (a linear species' contact lasts tc at every speed; {n} "
+        "steps per contact keep epsilon within about 1 % of the loss 1 - epsilon, "
+        "restitution.laws.exports.time_step); Hertz's contact of this material, for choosing "
+        "tc, lasts t_c = 2.868 (m*^2/(E*^2 R* w))^(1/5) at the fastest impact w of each law:",
+        *(f"// {line}" for line in steps.contact_lines()),
+        f"setTimeStep(tc / {n}.0);",
+    ]
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="mercurydpm",
         file_name="mercurydpm.cpp",
         snippet=mercurydpm_snippet,
         viscoelastic=mercurydpm_viscoelastic,
+        time_step=mercurydpm_time_step,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

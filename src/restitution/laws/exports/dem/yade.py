@@ -17,6 +17,7 @@ from restitution.laws.exports.dem._common import (
     _constants,
     _particles,
     friction_line,
+    time_step_lines,
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
@@ -26,7 +27,7 @@ from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "yade_snippet", "yade_viscoelastic"]
+__all__ = ["TARGET", "yade_time_step", "yade_snippet", "yade_viscoelastic"]
 
 RIGID = 1e6
 """The wall material's modulus over the grains': ``E*`` then differs from the rigid wall's
@@ -142,9 +143,19 @@ def yade_viscoelastic(
     )
 
 
+def yade_time_step(steps, viscoelastic: bool = False) -> list[str]:
+    """The snippet's time-step lines (:func:`~restitution.laws.exports.dem._common.
+    time_step_lines`), the constant's and the viscoelastic contact's alike: both are Hertz's."""
+    return time_step_lines(steps, "#", lambda dt: f"O.dt = {dt:.3g}  # s")
+
+
 TARGET = register_dem_target(
     DemTarget(
-        name="yade", file_name="yade.py", snippet=yade_snippet, viscoelastic=yade_viscoelastic
+        name="yade",
+        file_name="yade.py",
+        snippet=yade_snippet,
+        viscoelastic=yade_viscoelastic,
+        time_step=yade_time_step,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

@@ -3,7 +3,6 @@
 #include "fix_wall_restitution.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "update.h"
@@ -17,7 +16,8 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using Restitution::RestitutionTable;
 
-FixWallRestitution::FixWallRestitution(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixWallRestitution::FixWallRestitution(LAMMPS *lmp, int narg, char **arg) :
+    FixAtomContacts(lmp, narg, arg), opened(0.0)
 {
   if (narg != 7)
     error->all(FLERR,
@@ -49,18 +49,13 @@ FixWallRestitution::FixWallRestitution(LAMMPS *lmp, int narg, char **arg) : Fix(
 
 int FixWallRestitution::setmask()
 {
-  return POST_FORCE;
+  return POST_FORCE | FixAtomContacts::setmask();
 }
 
 void FixWallRestitution::init()
 {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "fix wall/restitution needs per-atom radius and mass: use atom_style sphere");
-  if (comm->nprocs > 1)
-    error->all(FLERR,
-               "fix wall/restitution keeps its per-contact state on one MPI rank; run on 1 rank "
-               "(it has {})",
-               comm->nprocs);
   if (strcmp(update->unit_style, "si") != 0)
     error->all(FLERR, "fix wall/restitution reads speeds in m/s and E* in Pa: use 'units si'");
   if (axis == 2 && domain->dimension == 2)
@@ -87,7 +82,7 @@ void FixWallRestitution::post_force(int /*vflag*/)
     if (gap >= radius[i]) continue;
     const double vn = v[i][axis];    // away from the wall: > 0
 
-    Restitution::ContactState *state = contacts.find(tag[i], 0);
+    Restitution::ContactState *state = contacts.find(i, 0);
     if (!state) {
       const double w = std::fabs(vn);
       double eps = 0.0, beta = 0.0;
@@ -97,17 +92,21 @@ void FixWallRestitution::post_force(int /*vflag*/)
         error->one(FLERR, "fix wall/restitution, atom {} (type {}) on the wall: {}", tag[i],
                    atom->type[i], err.what());
       }
-      state = contacts.open(tag[i], 0, w, eps, beta);
+      state = contacts.open(i, 0, w, eps, beta);
+      opened += 1.0;
     }
 
     double energy;
     f[i][axis] += Restitution::tsuji_normal_force(estar, radius[i], rmass[i], state->beta,
                                                   radius[i] - gap, -vn, energy);
   }
-  contacts.sweep();
+  contacts.sweep(nlocal);
 }
 
 double FixWallRestitution::compute_vector(int n)
 {
-  return n == 0 ? static_cast<double>(contacts.live()) : static_cast<double>(contacts.opened());
+  const double mine = n == 0 ? contacts.count(atom->nlocal, atom->tag, false) : opened;
+  double all = 0.0;
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+  return all;
 }

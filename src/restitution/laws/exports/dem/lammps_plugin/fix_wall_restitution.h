@@ -6,21 +6,21 @@
 //
 // The grains sit on the + side of the plane (coordinate > coord). E* (Pa): 1/E* = (1 -
 // nu^2)/E (+ (1 - nu_w^2)/E_w for an elastic wall); R* = the grain's radius, m* = its mass.
-// zplane needs dimension 3. Needs units si and one MPI rank. Global vector of 2: the contacts
-// open now, the contacts opened so far.
+// zplane needs dimension 3. Needs units si; runs on any number of MPI ranks (each grain's wall
+// contact travels with it, fix_atom_contacts.h). Global vector of 2, summed over the ranks: the
+// contacts open now, the contacts opened so far.
 
 #ifndef RESTITUTION_FIX_WALL_RESTITUTION_H
 #define RESTITUTION_FIX_WALL_RESTITUTION_H
 
-#include "contact_store.h"
-#include "fix.h"
+#include "fix_atom_contacts.h"
 #include "restitution_table.h"
 
 #include <string>
 
 namespace LAMMPS_NS {
 
-class FixWallRestitution : public Fix {
+class FixWallRestitution : public FixAtomContacts {
  public:
   FixWallRestitution(class LAMMPS *, int, char **);
 
@@ -35,7 +35,7 @@ class FixWallRestitution : public Fix {
   int axis;            // 0, 1, 2: the plane's normal
   double coord;        // the plane's position along axis, m
   Restitution::RestitutionTable table;
-  Restitution::ContactStore contacts;
+  double opened;       // contacts opened on this rank so far
 };
 
 }    // namespace LAMMPS_NS

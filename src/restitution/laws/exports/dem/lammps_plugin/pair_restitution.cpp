@@ -11,15 +11,22 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "fix_atom_contacts.h"
+#include "modify.h"
 #include "tsuji_contact.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 using Restitution::RestitutionTable;
 
-PairRestitution::PairRestitution(LAMMPS *lmp) : Pair(lmp), estar(nullptr), table_of(nullptr)
+// The fix that keeps the pair's contacts on their atoms (fix_atom_contacts.h).
+static const char *const STORE_ID = "RESTITUTION_CONTACTS_PAIR";
+
+PairRestitution::PairRestitution(LAMMPS *lmp) :
+    Pair(lmp), estar(nullptr), table_of(nullptr), store(nullptr), opened(0.0)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -33,6 +40,8 @@ PairRestitution::PairRestitution(LAMMPS *lmp) : Pair(lmp), estar(nullptr), table
 PairRestitution::~PairRestitution()
 {
   delete[] pvector;
+  // A new pair_style starts without contacts, as it did with the map of the first version.
+  if (store && modify->get_fix_by_id(STORE_ID)) modify->delete_fix(STORE_ID);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -98,17 +107,21 @@ void PairRestitution::init_style()
     error->all(FLERR, "pair restitution needs per-atom radius and mass: use atom_style sphere");
   if (!comm->ghost_velocity)
     error->all(FLERR, "pair restitution needs ghost velocities: add 'comm_modify vel yes'");
-  if (comm->nprocs > 1)
-    error->all(FLERR,
-               "pair restitution keeps its per-contact state on one MPI rank; run on 1 rank "
-               "(it has {})",
-               comm->nprocs);
   if (strcmp(update->unit_style, "si") != 0)
     error->all(FLERR, "pair restitution reads speeds in m/s and E* in Pa: use 'units si'");
   if (atom->natoms >= (bigint(1) << 32))
     error->all(FLERR, "pair restitution keys contacts by atom IDs below 2^32");
 
-  neighbor->add_request(this, NeighConst::REQ_SIZE);
+  // A newton-off list whatever the newton setting: each rank meets every contact of the atoms
+  // it owns and keeps its state on them, so a contact's state never depends on which rank
+  // computed it before (with newton on only one of two ranks would see it).
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_NEWTON_OFF);
+  if (!store) {
+    Fix *fix = modify->get_fix_by_id(STORE_ID);
+    if (!fix) fix = modify->add_fix(std::string(STORE_ID) + " all RESTITUTION_CONTACTS");
+    store = dynamic_cast<FixAtomContacts *>(fix);
+    if (!store) error->all(FLERR, "pair restitution: fix {} is not its contact store", STORE_ID);
+  }
 
   // The neighbor cutoff of a type pair: the sum of the two types' largest radii.
   const int n = atom->ntypes + 1;
@@ -141,13 +154,14 @@ void PairRestitution::compute(int eflag, int vflag)
   const int *type = atom->type;
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
 
   const int inum = list->inum;
   const int *ilist = list->ilist, *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
+  Restitution::AtomContacts &contacts = store->contacts;
   contacts.begin();
+  pushes.clear();
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
@@ -169,8 +183,14 @@ void PairRestitution::compute(int eflag, int vflag)
       const double vn = (v[i][0] - v[j][0]) * nx + (v[i][1] - v[j][1]) * ny +
           (v[i][2] - v[j][2]) * nz;
 
-      Restitution::ContactState *state = contacts.find(tag[i], tag[j]);
-      if (!state) {
+      // The contact's state on each atom this rank owns; a ghost's owner keeps its own copy,
+      // fixed from the same positions and velocities at the first touch.
+      const bool jlocal = j < nlocal;
+      Restitution::ContactState *state = contacts.find(i, tag[j]);
+      Restitution::ContactState *mirror = jlocal ? contacts.find(j, tag[i]) : nullptr;
+      if (!state && mirror) {
+        state = contacts.open(i, tag[j], mirror->w, mirror->epsilon, mirror->beta);
+      } else if (!state) {
         const RestitutionTable &table = tables[table_of[itype][jtype]];
         const double w = std::fabs(vn);
         double eps = 0.0, beta = 0.0;
@@ -180,8 +200,11 @@ void PairRestitution::compute(int eflag, int vflag)
           error->one(FLERR, "pair restitution, atoms {} and {} (types {} {}): {}", tag[i],
                      tag[j], itype, jtype, err.what());
         }
-        state = contacts.open(tag[i], tag[j], w, eps, beta);
+        state = contacts.open(i, tag[j], w, eps, beta);
+        // Counted once over all ranks: by the owner of the atom with the lower ID.
+        if (tag[i] < tag[j] || jlocal) opened += 1.0;
       }
+      if (jlocal && !mirror) contacts.open(j, tag[i], state->w, state->epsilon, state->beta);
 
       const double rstar = radius[i] * radius[j] / radsum;
       const double mstar = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
@@ -189,18 +212,26 @@ void PairRestitution::compute(int eflag, int vflag)
       const double fn = Restitution::tsuji_normal_force(estar[itype][jtype], rstar, mstar,
                                                         state->beta, radsum - r, -vn, energy);
       const double fx = fn * nx, fy = fn * ny, fz = fn * nz;
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx;
-        f[j][1] -= fy;
-        f[j][2] -= fz;
-      }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fx, fy, fz, dx, dy, dz);
+      pushes.push_back(Push{i, static_cast<std::int64_t>(tag[j]), {fx, fy, fz}});
+      if (jlocal) pushes.push_back(Push{j, static_cast<std::int64_t>(tag[i]), {-fx, -fy, -fz}});
+      if (evflag) ev_tally_xyz(i, j, nlocal, 0, energy, 0.0, fx, fy, fz, dx, dy, dz);
     }
   }
-  contacts.sweep();
-  pvector[0] = static_cast<double>(contacts.live());
-  pvector[1] = static_cast<double>(contacts.opened());
+  // Each atom's forces summed in the order of its partners' IDs, not of the neighbor list
+  // (which depends on how the box is cut into ranks): the same sum, bit for bit, on any number
+  // of ranks. The force of one contact is the same bits seen from either atom (dx, vn and the
+  // reduced radius and mass are symmetric), so both owners agree.
+  std::sort(pushes.begin(), pushes.end(), [](const Push &a, const Push &b) {
+    if (a.atom != b.atom) return a.atom < b.atom;
+    if (a.partner != b.partner) return a.partner < b.partner;
+    return std::lexicographical_compare(a.f, a.f + 3, b.f, b.f + 3);
+  });
+  for (const Push &p : pushes) {
+    f[p.atom][0] += p.f[0];
+    f[p.atom][1] += p.f[1];
+    f[p.atom][2] += p.f[2];
+  }
+  contacts.sweep(nlocal);
+  pvector[0] = contacts.count(nlocal, tag, true);
+  pvector[1] = opened;
 }

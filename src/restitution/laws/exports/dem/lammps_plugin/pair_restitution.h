@@ -5,16 +5,20 @@
 //   pair_coeff i j E* table_file       (i <= j; every type pair explicitly, no mixing)
 //
 // E* (Pa): 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j. R* and m* come from the two atoms'
-// radii and masses (atom_style sphere). Needs units si, comm_modify vel yes and one MPI rank.
-// compute pair restitution gives two numbers: the contacts open now, the contacts opened so far.
+// radii and masses (atom_style sphere). Needs units si and comm_modify vel yes; runs on any
+// number of MPI ranks, with newton on or off: the contacts travel with their atoms
+// (fix_atom_contacts.h), each rank computes every contact of the atoms it owns (a newton-off
+// list) and sums the forces on each atom in the order of the partners' IDs, so that a run gives
+// the same numbers on any number of ranks (docs/lammps-plugin.md). compute pair restitution
+// gives two numbers, summed over the ranks: the contacts open now, the contacts opened so far.
 
 #ifndef RESTITUTION_PAIR_RESTITUTION_H
 #define RESTITUTION_PAIR_RESTITUTION_H
 
-#include "contact_store.h"
 #include "pair.h"
 #include "restitution_table.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -36,7 +40,16 @@ class PairRestitution : public Pair {
   int **table_of;       // index into tables of each type pair
   std::vector<Restitution::RestitutionTable> tables;
   std::vector<double> maxrad;    // largest radius of each type, m
-  Restitution::ContactStore contacts;
+  class FixAtomContacts *store;    // the atoms' contacts, carried with them between ranks
+  double opened;                   // contacts opened on this rank so far
+
+  // One atom's force from one contact, summed in a fixed order (compute()).
+  struct Push {
+    int atom;                 // local index
+    std::int64_t partner;     // the partner's atom ID
+    double f[3];
+  };
+  std::vector<Push> pushes;
 
   void allocate();
 };

