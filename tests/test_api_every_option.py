@@ -72,6 +72,13 @@ def test_damped_glass_beads_are_the_damped_law(cli):
     # command line's, under the viscous loss); the stated errors are 1e-4 to 6e-3.
     assert np.all(np.abs(eps - want) <= 0.1 * err), (eps - want, err)
     assert np.all(np.abs(eps - want) <= 1e-6)
+    # The split in one pass: at the table's own speeds the two losses are the command line's
+    # parts of the same sum (1 - eps^2 = loss_waves + loss_viscous, docs/damping.md).
+    w = np.asarray(law.law.v[::60], dtype=float) * law.speed_scale_m_s
+    parts = law.losses(w)
+    np.testing.assert_allclose(parts["loss_waves"] + parts["loss_viscous"], parts["loss_total"],
+                               rtol=1e-12, atol=1e-15)  # fmt: skip
+    assert np.all(parts["loss_viscous"] > 10 * parts["loss_waves"])  # 1 mm glass: viscous
 
 
 @pytest.mark.slow

@@ -93,6 +93,9 @@ def test_the_tables_points_are_the_mechanisms_and_its_stops_where_it_gives_no_re
     assert math.isnan(t.epsilon(STOP_M_S, outside="nan"))
     assert "tabulated now at" in notes[0]
     assert t.law._records()[3]["loss_plastic"] == 0.1  # the parts kept per point
+    parts = t.losses([w[1], np.sqrt(w[1] * w[2]), 2.0 * STOP_M_S])
+    np.testing.assert_allclose(parts["loss_plastic"][:2], 0.1, rtol=1e-15)
+    assert np.isnan(parts["loss_plastic"][2]) and np.isnan(parts["loss_total"][2])
 
 
 def test_statuses_at_the_table_points_are_the_elastic_laws(table):

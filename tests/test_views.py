@@ -98,7 +98,24 @@ def test_law_plot_refuses_before_computing(cli, tmp_path):
             "--against", "wall", "--speed", "1")  # fmt: skip
     code, out, err = cli(*base, "--plot", str(tmp_path / "law.xyz"))
     assert code == 2 and "unknown figure format" in err and err.count("\n") == 1
-    code, out, err = cli(*base, "--measured-epsilon", "0.9", "--measured-speed", "1",
+    sphere = ("law", "--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--shape", "sphere",
+              "--against", "wall", "--speed", "1")  # fmt: skip
+    code, out, err = cli(*sphere, "--work-of-adhesion", "0.4", "--radius", "1e-5",
                          "--plot", str(tmp_path / "law.png"))  # fmt: skip
-    assert code == 2 and "--plot draws an elastic law" in err
+    assert code == 2 and "--plot draws a law at every speed" in err and "adhesion" in err
     assert not (tmp_path / "law.png").exists()
+
+
+def test_law_plot_draws_a_damped_law_with_its_answer_on_it(cli, tmp_path):
+    """A damping grain's plot is its damped law at every speed (the mechanism's table), the
+    asked speeds marked on it, the mechanisms named in the title."""
+    import matplotlib.pyplot as plt
+
+    path = tmp_path / "damped.png"
+    code, out, err = cli("law", "--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--shape",
+                         "sphere", "--against", "grain", "--measured-epsilon", "0.9",
+                         "--measured-speed", "1", "--radius", "1e-3", "--speed", "0.1", "1",
+                         "--plot", str(path))  # fmt: skip
+    assert code == 0, err
+    assert f"wrote {path}" in err and matplotlib.image.imread(path).shape[0] > 100
+    plt.close("all")

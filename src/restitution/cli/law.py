@@ -212,19 +212,29 @@ def law(fmt, as_json, plot_file, **options):
 
 def _answer(request: LawRequest, plot_file, say):
     """The served answer, and its plot when asked (refused before anything is computed)."""
+    from restitution.laws.mechanisms.base import answering
     from restitution.laws.serve import serve
 
+    mechanism = answering(request)
+    table = None if mechanism is None else getattr(mechanism, "table", None)
     if plot_file is not None:
-        if request.damped or request.plastic:
+        if mechanism is not None and table is None:
             raise InputError(
-                "--plot draws an elastic law; for a damping or yielding grain leave out --plot "
-                "and read the rows (--format csv), or plot the elastic law without the damping "
-                "and plastic options"
+                f"--plot draws a law at every speed, which {mechanism.words} does not make "
+                "yet; leave out --plot and read the rows (--format csv)"
             )
         check_figure_file(plot_file, "--plot")  # before anything is computed
     answer = serve(request, note=say, progress=not quiet())
     if plot_file is not None:
+        drawn = answer.law
+        if table is not None:  # the mechanism's law at every speed, the answer's points on it
+            elastic = drawn
+            if getattr(elastic.law, "at_points_only", False):
+                from restitution.laws.routes.base import law_at_every_speed
+
+                elastic = law_at_every_speed(request, say, not quiet())
+            drawn = table(request, elastic, say, not quiet())
         with writing(plot_file, "--plot"):  # a full disk names the option and the file
-            answer.law.plot(plot_file, marks=answer.points)
+            drawn.plot(plot_file, marks=answer.points)
         say(f"wrote {plot_file}")
     return answer

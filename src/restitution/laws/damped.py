@@ -452,7 +452,8 @@ class DampedLaw:
         v = np.asarray(law.v, dtype=float)[served]
         total = self.table_collisions()
         with progress_of(progress).bar(total, "damped law: viscous collisions") as meter:
-            _, eps, err = self._parts(v, law.epsilon(v), law.epsilon_err(v), advance=meter)
+            eps_el = law.epsilon(v)
+            eps_v, eps, err = self._parts(v, eps_el, law.epsilon_err(v), advance=meter)
         # Where the two losses add up to all the kinetic energy the sum means nothing: the
         # table stops below the first such speed (issue 47: it served 0 +- 1e298 as ok).
         spent = np.flatnonzero(~(eps > 0.0))
@@ -467,6 +468,7 @@ class DampedLaw:
                 )
             served[np.flatnonzero(served)[stop:]] = False
             v, eps, err = v[:stop], eps[:stop], err[:stop]
+            eps_el, eps_v = eps_el[:stop], eps_v[:stop]
             limit = (
                 f"; served up to {v[-1] * self.si.speed_scale_m_s:.4g} m/s: above, the losses "
                 "add up to all the kinetic energy"
@@ -474,10 +476,12 @@ class DampedLaw:
         else:
             limit = ""
         quasi = np.asarray(getattr(law, "quasistatic", np.zeros(served.size, bool)), bool)[served]
+        # Each point keeps its two losses (fractions of the impact energy): SILaw.losses.
         records = [
-            {"v": float(x), **({"route": QUASISTATIC_ROUTE} if q else {})}
-            for x, q in zip(v, quasi, strict=True)
-        ]
+            {"v": float(x), "loss_waves": float(1.0 - e**2), "loss_viscous": float(1.0 - d**2),
+             **({"route": QUASISTATIC_ROUTE} if q else {})}
+            for x, q, e, d in zip(v, quasi, eps_el, eps_v, strict=True)
+        ]  # fmt: skip
         source = (
             f"{self.si.law_source}, damped: tau c/R = {self.tau:.6g} +- {self.tau_err:.2g}{limit}"
         )

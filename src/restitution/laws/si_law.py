@@ -203,6 +203,39 @@ class SILaw:
         out[below] = values
         return float(out[0]) if np.ndim(v) == 0 else out.reshape(np.shape(v))
 
+    def statuses(self, speeds_m_s) -> np.ndarray:
+        """The status of every speed (m/s) as :meth:`points` gives it, as one array of strings
+        (the same rules, without the points' numbers and notes)."""
+        return np.array([str(p.status) for p in self.points(speeds_m_s)], dtype=object)
+
+    def losses(self, speeds_m_s) -> dict[str, np.ndarray]:
+        """The losses at every speed (m/s) in one pass: fractions of the impact energy, one
+        array a name. ``loss_total`` is ``1 - epsilon^2``; a law whose computed speeds keep
+        their mechanisms' parts (a damped or plastic table: ``loss_waves``, ``loss_viscous``,
+        ``loss_plastic``, ...) gives each, linear in ``ln w`` between those speeds; a law of one
+        mechanism gives it under its name (``loss_waves``). ``nan`` where no value is served
+        (and for the parts below a table's slowest speed, which its mechanism answers whole)."""
+        w = np.atleast_1d(np.asarray(speeds_m_s, dtype=float))
+        eps = np.asarray(self.epsilon(w, outside="nan"), dtype=float)
+        out = {"loss_total": 1.0 - eps**2}
+        records = self.law._records() if isinstance(self.law, EpsilonLaw) else []
+        names = sorted(set.intersection(*(
+            {k for k, x in r.items() if k.startswith("loss_") and isinstance(x, float)}
+            for r in records
+        ))) if records else []  # fmt: skip
+        if not names:
+            mechanisms = law_mechanisms(self.law)
+            if len(mechanisms) == 1:
+                out[f"loss_{mechanisms[0]}"] = out["loss_total"].copy()
+            return out
+        v = np.log(np.asarray(self.law.v, dtype=float))
+        at = np.log(np.maximum(self._reduced(w), 1e-300))
+        inside = (at >= v[0]) & (at <= v[-1]) & np.isfinite(eps)
+        for name in names:
+            part = np.interp(at, v, [r[name] for r in records])
+            out[name] = np.where(inside, part, np.nan)
+        return out
+
     def _route_answers(self, flat: np.ndarray) -> np.ndarray:
         """Which of the reduced speeds ``flat`` lie below the law's slowest point where its
         low-speed route continues it (:meth:`_route`; the slowest point is the route's own)."""
