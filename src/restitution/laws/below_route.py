@@ -128,14 +128,32 @@ class Below:
     batch: bool = False
     """Whether ``points_at`` takes many speeds at once at the cost of a grid (the damped law:
     its viscous table and the elastic law's own continuation): then it is asked once."""
+    zero_below: float | None = None
+    """A speed (m/s) below which there is no rebound (a sticking speed): ``epsilon = 0 +- 0``
+    there, not computed."""
 
-    def seconds(self, key: np.ndarray, lowest: float) -> float:
+    def _computed(self, key: np.ndarray, scale: float) -> np.ndarray:
+        """Which of ``key`` are computed (not below :attr:`zero_below`)."""
+        if self.zero_below is None:
+            return np.ones(key.shape, bool)
+        return key * scale >= self.zero_below
+
+    def seconds(self, key: np.ndarray, lowest: float, scale: float = 1.0) -> float:
         """Estimated wall time of :meth:`values`, seconds."""
-        return _evaluations(key, lowest)[0] * self.seconds_per_speed
+        key = key[self._computed(key, scale)] if self.zero_below is not None else key
+        return _evaluations(key, lowest)[0] * self.seconds_per_speed if key.size else 0.0
 
     def values(self, key: np.ndarray, scale: float, lowest: float):
         """``(epsilon, error, shares)`` at the reduced speeds ``key`` (unique, increasing,
-        below ``lowest``; ``w = scale v``), as :func:`below_values` answers an elastic law."""
+        below ``lowest``; ``w = scale v``), as :func:`below_values` answers an elastic law;
+        ``epsilon = 0 +- 0`` below :attr:`zero_below`."""
+        computed = self._computed(key, scale)
+        if not computed.all():
+            eps, err = np.zeros(key.size), np.zeros(key.size)
+            if computed.any():
+                e, d, _ = self.values(key[computed], scale, lowest)
+                eps[computed], err[computed] = e, d
+            return eps, err, [None] * key.size
         seconds = self.seconds(key, lowest)
         if seconds > BELOW_BUDGET_S:
             raise InputError(

@@ -324,7 +324,7 @@ class SILaw:
         if not self._route_answers(v).all():
             return {}
         if self.below is not None:
-            estimate = self.below.seconds(np.unique(v), float(self.law.v[0]))
+            estimate = self.below.seconds(np.unique(v), float(self.law.v[0]), self.speed_scale_m_s)
         else:
             estimate = below_seconds(self.law, np.unique(v))
         if estimate > BELOW_BUDGET_S:

@@ -14,7 +14,9 @@ exports) is instead a table, built once (:func:`mechanism_table`):
   asymptotic, quasistatic) and the statuses between them follow the same rules as the elastic
   law's (:func:`restitution.laws.si_point.point_status`). The table stops below the first speed
   where the mechanism gives no value (the grain does not rebound, or its contact leaves the
-  model): it serves nothing there, as the command line answers nothing.
+  model): it serves nothing there, as the command line answers nothing. A grain that sticks
+  below a speed (adhesion) starts the table at the first speed with a rebound; below it the
+  mechanism answers (``epsilon = 0`` below its sticking speed).
 * **What interpolation misses.** Between two table speeds the law interpolates epsilon (PCHIP in
   ``ln v``: :data:`~restitution.laws.law_point.LOG_V`; in ``v`` a table of four speeds a decade
   missed up to 5 times the error it measured). What that misses is measured twice: the
@@ -93,6 +95,7 @@ def mechanism_table(
     note=None,
     progress=False,
     per_decade: int = PER_DECADE,
+    zero_below: float | None = None,
 ):
     """The law of a mechanism at every speed of the elastic law ``si`` (module docs).
 
@@ -117,6 +120,10 @@ def mechanism_table(
         Called with the estimate before anything is computed.
     progress : Progress or bool
         A bar over the evaluations on stderr (:func:`restitution.limits.run_options.progress_of`).
+    zero_below : float, optional
+        The speed (m/s) below which the mechanism gives no rebound (``epsilon = 0``: a grain
+        that sticks), answered so without computing; between it and the table's first speed
+        the mechanism answers (:class:`~restitution.laws.below_route.Below`).
 
     Returns
     -------
@@ -148,15 +155,19 @@ def mechanism_table(
             found.append(points_at([float(x) * scale])[0])
             meter(1)
     at, between = found[: v.size], found[v.size :]
+    # Below the first rebound (a grain that sticks) the table starts later; above the next
+    # speed without one (a crushed contact) it stops.
+    start = next((i for i, p in enumerate(at) if _served(p)), v.size)
     full = v.size
-    keep = next((i for i, p in enumerate(at) if not _served(p)), full)
-    if keep < 2:
+    keep = next((i for i in range(start, full) if not _served(at[i])), full)
+    if keep - start < 2:
         raise InputError(
             f"{words}: fewer than two speeds of the elastic law have a rebound "
             f"({at[min(keep, v.size - 1)].note}); no law at every speed is tabulated"
         )
     reason = _why_stopped(at[keep]) if keep < full else None
-    v, idx, at, between = v[:keep], idx[:keep], at[:keep], between[: keep - 1]
+    v, idx, at = v[start:keep], idx[start:keep], at[start:keep]
+    mid, between = mid[start : keep - 1], between[start : keep - 1]
     eps = np.array([p.epsilon for p in at], dtype=float)
     gap = np.zeros(v.size - 1)
     through = PchipInterpolator(np.log(v), eps)  # as the table interpolates (LOG_V)
@@ -209,7 +220,7 @@ def mechanism_table(
         f"{si.law_source}, with {words}: tabulated at {v.size} speeds ({per_decade} a decade, "
         f"what PCHIP misses measured at every interval's middle){stop}"
     )
-    below = Below(points_at, seconds_per_speed, words)
+    below = Below(points_at, seconds_per_speed, words, zero_below=zero_below)
     return SILaw(si.grain, si.against, table, partner_grain=si.partner_grain, below=below)
 
 

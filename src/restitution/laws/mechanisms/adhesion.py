@@ -108,5 +108,34 @@ class Adhesion:
         status, advice = overall_status(points)
         return LawAnswer(r, si, points, status, advice, by=law)
 
+    def table(self, request, si, note, progress: bool):
+        """The adhesive law at every speed (``si_law(..., work_of_adhesion=...)``): tabulated
+        once from the first speed with a rebound (:func:`restitution.laws.tabulated.
+        mechanism_table`), ``epsilon = 0`` below the sticking speed."""
+        from restitution.laws.adhesive import adhesive_law
+        from restitution.laws.tabulated import mechanism_table
+
+        r = request
+        tau = 0.0 if r.relaxation_time is None else r.relaxation_time * si.grain.c_m_s / r.radius
+        law = adhesive_law(si, work_of_adhesion=r.option_value(WORK_OF_ADHESION.keyword),
+                           radius_m=r.radius, tau=tau)  # fmt: skip
+        stick = law.sticking_speed_m_s()
+        return mechanism_table(
+            si,
+            law.points,
+            words="adhesion",
+            mechanisms=law.mechanisms,
+            parameters={
+                "work_of_adhesion_j_m2": law.work_of_adhesion,
+                "radius_m": r.radius,
+                "tau_c_over_R": tau,
+                "sticking_speed_m_s": stick,
+            },  # fmt: skip
+            seconds_per_speed=ADHESION_SECONDS_PER_SPEED,
+            note=note,
+            progress=progress,
+            zero_below=stick,
+        )
+
 
 register_mechanism(Adhesion())
