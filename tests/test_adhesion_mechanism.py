@@ -101,7 +101,9 @@ def test_the_adhesive_law_at_every_speed_covers_the_command_line():
     eps, err = table.epsilon(w), table.epsilon_err(w)
     direct = serve(request(**opts, speeds=list(w))).points
     assert eps[0] == 0.0 and direct[0].epsilon == 0.0  # stuck: below the sticking speed
-    print("misses / stated error:", [abs(e - p.epsilon) / d if d else 0.0
-                                     for e, d, p in zip(eps, err, direct, strict=True)])
+    print(
+        "misses / stated error:",
+        [abs(e - p.epsilon) / d if d else 0.0 for e, d, p in zip(eps, err, direct, strict=True)],
+    )
     for e, d, p in zip(eps, err, direct, strict=True):
         assert abs(e - p.epsilon) <= d, (p.speed_m_s, e, p.epsilon, d)
