@@ -36,6 +36,7 @@ from restitution.errors import InputError, describe
 
 __all__ = [
     "WALL_KEY",
+    "NoWall",
     "PartnerKind",
     "against_choices",
     "by_against",
@@ -146,6 +147,25 @@ class PartnerKind(Protocol):
 
 
 _KINDS: dict[str, PartnerKind] = {}
+
+
+class NoWall:
+    """The answers of a partner kind that is no elastic wall (the rigid wall, a grain): no
+    half-space, no slow form of its own, nothing in a law file. A kind inherits them instead
+    of writing them again."""
+
+    def half_space(self, law):
+        return None
+
+    def slow_form(self, planar: bool):
+        return None
+
+    def read(self, law) -> dict | None:
+        return None
+
+    def write(self, law, wall) -> None:
+        """Nothing: the law carries no record of this partner (a pair's law carries its
+        partner in its own ``partner``)."""
 
 
 def register_partner(kind: PartnerKind) -> PartnerKind:

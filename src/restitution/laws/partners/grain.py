@@ -16,14 +16,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from restitution.bodies.pair.partner import Partner
-from restitution.laws.partners.base import register_partner
+from restitution.laws.partners.base import NoWall, register_partner
 from restitution.laws.partners.rigid_wall import rigid_contact
 
 __all__ = ["KIND", "GrainPartner"]
 
 
 @dataclass(frozen=True)
-class GrainPartner:
+class GrainPartner(NoWall):
     """A second grain (module docs)."""
 
     name: str = "grain"
@@ -74,18 +74,6 @@ class GrainPartner:
         if pair is not None:
             return pair_contact_for(SPHERE.geometry, float(si.law.nu), pair)
         return rigid_contact(si)
-
-    def half_space(self, law):
-        return None
-
-    def slow_form(self, planar: bool):
-        return None
-
-    def read(self, law) -> dict | None:
-        return None
-
-    def write(self, law, wall) -> None:
-        """Nothing here: a pair's law carries its partner in the law's own ``partner``."""
 
 
 KIND = register_partner(GrainPartner())

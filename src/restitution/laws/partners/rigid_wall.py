@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from restitution.laws.partners.base import register_partner
+from restitution.laws.partners.base import NoWall, register_partner
 
 __all__ = ["KIND", "RigidWall", "rigid_contact"]
 
@@ -27,7 +27,7 @@ def rigid_contact(si):
 
 
 @dataclass(frozen=True)
-class RigidWall:
+class RigidWall(NoWall):
     """The rigid flat wall (module docs)."""
 
     name: str = "wall"
@@ -59,18 +59,6 @@ class RigidWall:
 
     def contact(self, si):
         return rigid_contact(si)
-
-    def half_space(self, law):
-        return None
-
-    def slow_form(self, planar: bool):
-        return None
-
-    def read(self, law) -> dict | None:
-        return None
-
-    def write(self, law, wall) -> None:
-        """Nothing: a law on the rigid wall carries no record of it."""
 
 
 KIND = register_partner(RigidWall())
