@@ -17,7 +17,7 @@ using namespace FixConst;
 using Restitution::RestitutionTable;
 
 FixWallRestitution::FixWallRestitution(LAMMPS *lmp, int narg, char **arg) :
-    FixAtomContacts(lmp, narg, arg), opened(0.0)
+    FixAtomContacts(lmp, narg, arg), per_contact(false), opened(0.0)
 {
   if (narg != 7)
     error->all(FLERR,
@@ -26,10 +26,17 @@ FixWallRestitution::FixWallRestitution(LAMMPS *lmp, int narg, char **arg) :
   estar = utils::numeric(FLERR, arg[3], false, lmp);
   if (!(estar > 0.0)) error->all(FLERR, "fix wall/restitution: E* must be > 0 Pa, got {}", estar);
   try {
-    table = RestitutionTable::read(arg[4]);
+    per_contact = Restitution::ContactLaw::is_contact_file(arg[4]);
+    if (per_contact)
+      contact = Restitution::ContactLaw::read(arg[4]);
+    else
+      table = RestitutionTable::read(arg[4]);
   } catch (const Restitution::TableError &err) {
     error->all(FLERR, "fix wall/restitution: {}", err.what());
   }
+  if (per_contact && contact.is_pair())
+    error->all(FLERR, "fix wall/restitution: {} is a law of two grains (pair_coeff), not of a "
+               "grain on the wall", arg[4]);
   if (strcmp(arg[5], "xplane") == 0)
     axis = 0;
   else if (strcmp(arg[5], "yplane") == 0)
@@ -87,7 +94,12 @@ void FixWallRestitution::post_force(int /*vflag*/)
       const double w = std::fabs(vn);
       double eps = 0.0, beta = 0.0;
       try {
-        beta = table.first_touch(w, eps);
+        if (per_contact) {
+          eps = contact.wall(w, estar, radius[i], rmass[i]).epsilon;
+          beta = contact.beta(eps);
+        } else {
+          beta = table.first_touch(w, eps);
+        }
       } catch (const Restitution::TableError &err) {
         error->one(FLERR, "fix wall/restitution, atom {} (type {}) on the wall: {}", tag[i],
                    atom->type[i], err.what());

@@ -26,7 +26,8 @@ using Restitution::RestitutionTable;
 static const char *const STORE_ID = "RESTITUTION_CONTACTS_PAIR";
 
 PairRestitution::PairRestitution(LAMMPS *lmp) :
-    Pair(lmp), estar(nullptr), table_of(nullptr), store(nullptr), opened(0.0)
+    Pair(lmp), estar(nullptr), table_of(nullptr), contact_of(nullptr), store(nullptr),
+    opened(0.0)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -47,6 +48,7 @@ PairRestitution::~PairRestitution()
     memory->destroy(cutsq);
     memory->destroy(estar);
     memory->destroy(table_of);
+    memory->destroy(contact_of);
   }
 }
 
@@ -58,10 +60,12 @@ void PairRestitution::allocate()
   memory->create(cutsq, n, n, "pair:cutsq");
   memory->create(estar, n, n, "pair:estar");
   memory->create(table_of, n, n, "pair:table_of");
+  memory->create(contact_of, n, n, "pair:contact_of");
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
       table_of[i][j] = -1;
+      contact_of[i][j] = -1;
       estar[i][j] = 0.0;
     }
 }
@@ -83,18 +87,35 @@ void PairRestitution::coeff(int narg, char **arg)
   const double e = utils::numeric(FLERR, arg[2], false, lmp);
   if (!(e > 0.0)) error->all(FLERR, "pair_coeff for restitution: E* must be > 0 Pa, got {}", e);
 
+  int table = -1, contact = -1;
   try {
-    tables.push_back(RestitutionTable::read(arg[3]));
+    if (Restitution::ContactLaw::is_contact_file(arg[3])) {
+      contact_laws.push_back(Restitution::ContactLaw::read(arg[3]));
+      first_type.push_back(ilo);
+      contact = static_cast<int>(contact_laws.size()) - 1;
+    } else {
+      tables.push_back(RestitutionTable::read(arg[3]));
+      table = static_cast<int>(tables.size()) - 1;
+    }
   } catch (const Restitution::TableError &err) {
     error->all(FLERR, "pair_coeff {} {}: {}", arg[0], arg[1], err.what());
   }
-  const int index = static_cast<int>(tables.size()) - 1;
+  if (contact >= 0) {
+    const Restitution::ContactLaw &law = contact_laws[contact];
+    if (!law.is_pair())
+      error->all(FLERR, "pair_coeff {} {}: {} is a law of a grain on the wall (fix "
+                 "wall/restitution), not of two grains", arg[0], arg[1], arg[3]);
+    if (law.materials() == 2 && !(ilo == ihi && jlo == jhi && ilo < jlo))
+      error->all(FLERR, "pair_coeff {} {}: {} holds two materials, the first type i's and the "
+                 "second type j's: give it for one pair of types i < j", arg[0], arg[1], arg[3]);
+  }
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = (jlo > i ? jlo : i); j <= jhi; j++) {
       estar[i][j] = e;
-      table_of[i][j] = index;
+      table_of[i][j] = table;
+      contact_of[i][j] = contact;
       setflag[i][j] = 1;
       count++;
     }
@@ -142,6 +163,7 @@ double PairRestitution::init_one(int i, int j)
                lo, hi);
   estar[hi][lo] = estar[lo][hi];
   table_of[hi][lo] = table_of[lo][hi];
+  contact_of[hi][lo] = contact_of[lo][hi];
   return maxrad[i] + maxrad[j];
 }
 
@@ -191,11 +213,21 @@ void PairRestitution::compute(int eflag, int vflag)
       if (!state && mirror) {
         state = contacts.open(i, tag[j], mirror->w, mirror->epsilon, mirror->beta);
       } else if (!state) {
-        const RestitutionTable &table = tables[table_of[itype][jtype]];
         const double w = std::fabs(vn);
         double eps = 0.0, beta = 0.0;
         try {
-          beta = table.first_touch(w, eps);
+          const int law = contact_of[itype][jtype];
+          if (law >= 0) {
+            // The contact's own radii and masses; which material is whose by the types.
+            const Restitution::ContactLaw &contact = contact_laws[law];
+            const int mi = contact.materials() == 2 && itype != first_type[law] ? 1 : 0;
+            const int mj = contact.materials() == 2 ? 1 - mi : 0;
+            eps = contact.pair(w, estar[itype][jtype], radius[i], rmass[i], mi, radius[j],
+                               rmass[j], mj).epsilon;
+            beta = contact.beta(eps);
+          } else {
+            beta = tables[table_of[itype][jtype]].first_touch(w, eps);
+          }
         } catch (const Restitution::TableError &err) {
           error->one(FLERR, "pair restitution, atoms {} and {} (types {} {}): {}", tag[i],
                      tag[j], itype, jtype, err.what());

@@ -2,7 +2,12 @@
 // fixed per contact from the tabulated epsilon(w) at the contact's impact speed.
 //
 //   pair_style restitution
-//   pair_coeff i j E* table_file       (i <= j; every type pair explicitly, no mixing)
+//   pair_coeff i j E* file             (i <= j; every type pair explicitly, no mixing)
+//
+// The file is a table per type pair (restitution_table.h: epsilon(w) for one pair of radii) or
+// a law per contact (contact_law.h: epsilon from each contact's own radii, masses and impact
+// speed, for grains of any sizes); its first line says which. A law per contact of two
+// materials is given for one pair of types i < j (its first material is type i's).
 //
 // E* (Pa): 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j. R* and m* come from the two atoms'
 // radii and masses (atom_style sphere). Needs units si and comm_modify vel yes; runs on any
@@ -16,6 +21,7 @@
 #define RESTITUTION_PAIR_RESTITUTION_H
 
 #include "pair.h"
+#include "contact_law.h"
 #include "restitution_table.h"
 
 #include <cstdint>
@@ -37,8 +43,11 @@ class PairRestitution : public Pair {
 
  protected:
   double **estar;       // E* of each type pair, Pa
-  int **table_of;       // index into tables of each type pair
+  int **table_of;       // index into tables of each type pair (-1: a law per contact)
+  int **contact_of;     // index into contact_laws of each type pair (-1: a table)
   std::vector<Restitution::RestitutionTable> tables;
+  std::vector<Restitution::ContactLaw> contact_laws;
+  std::vector<int> first_type;    // the type of each law per contact's first material
   std::vector<double> maxrad;    // largest radius of each type, m
   class FixAtomContacts *store;    // the atoms' contacts, carried with them between ranks
   double opened;                   // contacts opened on this rank so far

@@ -1,6 +1,7 @@
 // The table file's reader and its two interpolants (grammar in restitution_table.h).
 
 #include "restitution_table.h"
+#include "table_reader.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -12,135 +13,10 @@
 
 namespace Restitution {
 
-namespace {
-
-  // The cubic Hermite polynomial on [x0, x1] through (x0, y0), (x1, y1) with slopes d0, d1:
-  // the same expression as the Python side (PchipTable.__call__, the C header of c_fortran).
-  double hermite(double x, double x0, double x1, double y0, double y1, double d0, double d1)
-  {
-    const double h = x1 - x0;
-    const double t = (x - x0) / h;
-    const double s = 1.0 - t;
-    return (1.0 + 2.0 * t) * s * s * y0 + t * s * s * h * d0 + t * t * (3.0 - 2.0 * t) * y1 -
-        t * t * s * h * d1;
-  }
-
-  // Index lo of the interval [x[lo], x[lo + 1]] holding v (x increasing, x[0] <= v <= x.back()).
-  std::size_t interval(const std::vector<double> &x, double v)
-  {
-    auto it = std::upper_bound(x.begin(), x.end(), v);
-    std::size_t hi = static_cast<std::size_t>(it - x.begin());
-    if (hi >= x.size()) hi = x.size() - 1;
-    if (hi == 0) hi = 1;
-    return hi - 1;
-  }
-
-  // The non-comment lines of a text, each with its line number.
-  struct Line {
-    int number;
-    std::vector<std::string> words;
-  };
-
-  std::vector<Line> content_lines(const std::string &text)
-  {
-    std::vector<Line> lines;
-    std::istringstream in(text);
-    std::string raw;
-    int number = 0;
-    while (std::getline(in, raw)) {
-      ++number;
-      std::size_t first = raw.find_first_not_of(" \t\r");
-      if (first == std::string::npos || raw[first] == '#') continue;
-      std::istringstream words(raw);
-      Line line{number, {}};
-      std::string word;
-      while (words >> word) line.words.push_back(word);
-      lines.push_back(line);
-    }
-    return lines;
-  }
-
-  class Reader {
-   public:
-    Reader(const std::string &text, const std::string &name) :
-        lines_(content_lines(text)), name_(name)
-    {
-    }
-
-    [[noreturn]] void fail(const std::string &what) const
-    {
-      int number = pos_ < lines_.size() ? lines_[pos_].number : -1;
-      std::string where = number > 0 ? " line " + std::to_string(number) : " at its end";
-      throw TableError("restitution table " + name_ + where + ": " + what);
-    }
-
-    const Line &next(const std::string &expected)
-    {
-      if (pos_ >= lines_.size()) fail("ends early; expected " + expected);
-      return lines_[pos_++];
-    }
-
-    // A keyword line "key v1 v2 ..." with exactly nwords words in all.
-    const Line &keyword(const std::string &key, std::size_t nwords, const std::string &form)
-    {
-      const Line &line = next("'" + form + "'");
-      if (line.words[0] != key || line.words.size() != nwords) {
-        --pos_;
-        fail("expected '" + form + "'");
-      }
-      return line;
-    }
-
-    double number(const Line &line, std::size_t i)
-    {
-      const std::string &word = line.words.at(i);
-      char *end = nullptr;
-      errno = 0;
-      double value = std::strtod(word.c_str(), &end);
-      if (end == word.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(value)) {
-        --pos_;
-        fail("'" + word + "' is not a finite number");
-      }
-      return value;
-    }
-
-    long count(const Line &line, std::size_t i)
-    {
-      const std::string &word = line.words.at(i);
-      char *end = nullptr;
-      long value = std::strtol(word.c_str(), &end, 10);
-      if (end == word.c_str() || *end != '\0' || value < 2) {
-        --pos_;
-        fail("'" + word + "' is not a count of at least 2");
-      }
-      return value;
-    }
-
-    // n rows of three numbers each.
-    void rows(long n, std::vector<double> &a, std::vector<double> &b, std::vector<double> &c,
-              const std::string &form)
-    {
-      for (long k = 0; k < n; ++k) {
-        const Line &line = next("a row '" + form + "'");
-        if (line.words.size() != 3) {
-          --pos_;
-          fail("expected a row '" + form + "'");
-        }
-        a.push_back(number(line, 0));
-        b.push_back(number(line, 1));
-        c.push_back(number(line, 2));
-      }
-    }
-
-    bool done() const { return pos_ >= lines_.size(); }
-
-   private:
-    std::vector<Line> lines_;
-    std::string name_;
-    std::size_t pos_ = 0;
-  };
-
-}    // namespace
+using detail::hermite;
+using detail::interval;
+using detail::Line;
+using detail::Reader;
 
 RestitutionTable RestitutionTable::read(const std::string &path)
 {
@@ -153,8 +29,6 @@ RestitutionTable RestitutionTable::read(const std::string &path)
 
 RestitutionTable RestitutionTable::parse(const std::string &text, const std::string &name)
 {
-  RestitutionTable t;
-  t.name_ = name;
   Reader r(text, name);
 
   const Line &head = r.keyword("restitution-table", 2, "restitution-table 1");
@@ -162,6 +36,23 @@ RestitutionTable RestitutionTable::parse(const std::string &text, const std::str
   const Line &units = r.keyword("units", 2, "units si");
   if (units.words[1] != "si") r.fail("units " + units.words[1] + " are not si");
 
+  RestitutionTable t = read_curve(r, name);
+
+  const Line &map = r.keyword("beta-map", 2, "beta-map M");
+  r.rows(r.count(map, 1), t.map_eps_, t.map_beta_, t.map_slope_,
+         "epsilon beta dbeta_dlnepsilon");
+  r.keyword("end", 1, "end");
+  if (!r.done()) r.fail("has lines after 'end'");
+
+  for (double e : t.map_eps_) t.map_lneps_.push_back(std::log(e));
+  t.check_map();
+  return t;
+}
+
+RestitutionTable RestitutionTable::read_curve(detail::Reader &r, const std::string &name)
+{
+  RestitutionTable t;
+  t.name_ = name;
   const Line &knots = r.keyword("knots", 2, "knots N");
   r.rows(r.count(knots, 1), t.w_, t.eps_, t.slope_, "w_m_s epsilon slope_s_m");
 
@@ -181,20 +72,12 @@ RestitutionTable RestitutionTable::parse(const std::string &text, const std::str
   } else {
     r.fail("expected 'below power L0 w0 q' or 'below log L0 w0 ws p'");
   }
-
-  const Line &map = r.keyword("beta-map", 2, "beta-map M");
-  r.rows(r.count(map, 1), t.map_eps_, t.map_beta_, t.map_slope_,
-         "epsilon beta dbeta_dlnepsilon");
-  r.keyword("end", 1, "end");
-  if (!r.done()) r.fail("has lines after 'end'");
-
-  for (double e : t.map_eps_) t.map_lneps_.push_back(std::log(e));
-  t.check();
+  t.check_curve();
   return t;
 }
 
 // The table's promises, checked once at load so that a lookup cannot meet a bad knot.
-void RestitutionTable::check() const
+void RestitutionTable::check_curve() const
 {
   auto fail = [this](const std::string &what) {
     throw TableError("restitution table " + name_ + ": " + what);
@@ -204,6 +87,18 @@ void RestitutionTable::check() const
     if (k > 0 && !(w_[k] > w_[k - 1])) fail("knot speeds must increase strictly");
     if (!(eps_[k] > 0.0 && eps_[k] <= 1.0)) fail("knot epsilons must lie in (0, 1]");
   }
+  if (std::fabs(w0_ - w_.front()) > 1e-12 * w_.front())
+    fail("the continuation's w0 must be the slowest knot's speed");
+  if (!(loss0_ >= 0.0 && loss0_ < 1.0)) fail("the continuation's L0 must lie in [0, 1)");
+  if (!(exponent_ > 0.0)) fail("the continuation's exponent must be > 0");
+  if (below_log_ && !(ws_ > w0_)) fail("the log continuation needs ws > w0");
+}
+
+void RestitutionTable::check_map() const
+{
+  auto fail = [this](const std::string &what) {
+    throw TableError("restitution table " + name_ + ": " + what);
+  };
   for (std::size_t k = 0; k < map_eps_.size(); ++k) {
     if (!(map_eps_[k] > 0.0)) fail("beta-map epsilons must be > 0");
     if (k > 0 && !(map_eps_[k] > map_eps_[k - 1])) fail("beta-map epsilons must increase");
@@ -211,11 +106,6 @@ void RestitutionTable::check() const
   }
   if (map_eps_.back() != 1.0 || map_beta_.back() != 0.0)
     fail("the beta-map must end at epsilon = 1, beta = 0");
-  if (std::fabs(w0_ - w_.front()) > 1e-12 * w_.front())
-    fail("the continuation's w0 must be the slowest knot's speed");
-  if (!(loss0_ >= 0.0 && loss0_ < 1.0)) fail("the continuation's L0 must lie in [0, 1)");
-  if (!(exponent_ > 0.0)) fail("the continuation's exponent must be > 0");
-  if (below_log_ && !(ws_ > w0_)) fail("the log continuation needs ws > w0");
   double lowest = *std::min_element(eps_.begin(), eps_.end());
   if (lowest < map_eps_.front())
     fail("its smallest epsilon " + std::to_string(lowest) +
@@ -271,6 +161,7 @@ double RestitutionTable::first_touch(double w, double &eps) const
 
 double RestitutionTable::beta(double eps) const
 {
+  if (map_eps_.empty()) throw TableError("restitution table " + name_ + " has no beta-map");
   if (!(eps >= map_eps_.front() && eps <= 1.0)) {
     std::ostringstream msg;
     msg.precision(10);

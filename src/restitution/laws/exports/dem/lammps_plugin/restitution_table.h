@@ -31,6 +31,10 @@
 
 namespace Restitution {
 
+namespace detail {
+  class Reader;
+}
+
 class TableError : public std::runtime_error {
  public:
   explicit TableError(const std::string &what) : std::runtime_error(what) {}
@@ -43,6 +47,10 @@ class RestitutionTable {
   // Parse the file; throws TableError naming the file, the line and what is wrong.
   static RestitutionTable read(const std::string &path);
   static RestitutionTable parse(const std::string &text, const std::string &name);
+  // The knots and the continuation alone ("knots N", the rows, the "below" line), read from a
+  // file being read (the wall's elastic law in a file of the law per contact, contact_law.h):
+  // epsilon() serves, beta() and first_touch() do not (no map).
+  static RestitutionTable read_curve(detail::Reader &r, const std::string &name);
 
   // epsilon at impact speed w (m/s); NaN with status Above or BadSpeed.
   double epsilon(double w, Status &status) const;
@@ -67,7 +75,8 @@ class RestitutionTable {
   std::vector<double> map_eps_, map_lneps_, map_beta_, map_slope_;    // beta(ln epsilon)
 
   double below(double w) const;
-  void check() const;
+  void check_curve() const;
+  void check_map() const;
 };
 
 }    // namespace Restitution
