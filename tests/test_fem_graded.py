@@ -15,6 +15,7 @@ from numpy.testing import assert_allclose
 
 from restitution import InputError, Material
 from restitution.bodies.disk.contact import max_compression_estimate
+from restitution.estimate import Estimate
 from restitution.fem.graded import (
     contact_half_width,
     graded_settings,
@@ -308,10 +309,10 @@ class _Law:
 
 def test_judge_reports_differences_in_combined_errors_and_coverage():
     points = [
-        ReferencePoint(0.33, 0.01, 0.90 + 0.5 * 0.05, 0.03, True),  # 0.5 sigma
-        ReferencePoint(0.33, 0.1, 0.90 - 1.5 * 0.05, 0.03, True),  # -1.5 sigma
-        ReferencePoint(0.33, 0.3, 0.90 + 3.0 * 0.05, 0.03, True),  # 3 sigma
-        ReferencePoint(0.9, 0.1, 0.5, 0.01, True),  # other nu: skipped with a mapping
+        ReferencePoint(0.33, 0.01, Estimate(0.90 + 0.5 * 0.05, 0.03, "ok")),  # 0.5 sigma
+        ReferencePoint(0.33, 0.1, Estimate(0.90 - 1.5 * 0.05, 0.03, "ok")),  # -1.5 sigma
+        ReferencePoint(0.33, 0.3, Estimate(0.90 + 3.0 * 0.05, 0.03, "ok")),  # 3 sigma
+        ReferencePoint(0.9, 0.1, Estimate(0.5, 0.01, "ok")),  # other nu: skipped with a mapping
     ]
     law = _Law(0.90, 0.04)
     judged = judge_law(points, {0.33: law})

@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from restitution.bodies.wall import HalfSpace, Plate
+from restitution.estimate import Estimate
 from restitution.laws.wall_points import (
     SPEED_MATCH,
     WallReferencePoint,
@@ -21,7 +22,8 @@ GLASS = (0.3, 2500.0 / 7850.0, 0.2481)
 
 def _point(wall, v=2e-3, eps=0.9, err=1e-5, ok=True):
     loss = 1.0 - eps * eps
-    return WallReferencePoint(0.3, wall, v, eps, err, loss, 2.0 * eps * err, ok)
+    estimate = Estimate(eps, err, "ok" if ok else "not-asymptotic")
+    return WallReferencePoint(0.3, wall, v, estimate, loss, 2.0 * eps * err)
 
 
 def test_a_stored_point_answers_its_ball_wall_and_speed():

@@ -5,9 +5,17 @@ Units: epsilon is dimensionless (rebound speed over impact speed); its error too
 A collision sweep's extrapolated point, a finite-element limit, a low-speed theory's point, a
 law's point, an answer in SI units, a damping grain's point and a constant for a DEM code each
 keep their own details, but each says what it estimates in the same words:
-:class:`Estimate`, from its ``estimate`` property. Its :class:`~restitution.status.Status`
+:class:`Estimate`, from its ``estimate`` attribute. Its :class:`~restitution.status.Status`
 says where the number comes from and whether it passed its route's checks; the status carries
 its advice (:attr:`restitution.status.Status.advice`), as diffrax's ``RESULTS`` do.
+
+Three types hold an epsilon with its error (issue 60; ``tests/test_record_types.py`` counts
+them): :class:`Estimate` itself, a law's point in reduced units
+(:class:`restitution.laws.law_point.LawPoint`, which holds an :class:`Estimate`) and an answer
+in SI units (:class:`restitution.laws.si_point.SIPoint`). Any other record either holds an
+:class:`Estimate` (a stored reference point, a constant for a DEM code; :class:`EstimateView`
+gives it the names its readers know) or keeps what its route computes, the energy loss and its
+error, and derives epsilon from it.
 """
 
 from __future__ import annotations
@@ -17,7 +25,7 @@ from dataclasses import dataclass
 
 from restitution.status import Status
 
-__all__ = ["ERROR_MEANING", "Estimate", "estimate_of"]
+__all__ = ["ERROR_MEANING", "Estimate", "EstimateView", "estimate_of", "nan_for_none"]
 
 ERROR_MEANING = (
     "one standard deviation of the estimate as its route states it: for a modal extrapolation "
@@ -60,6 +68,19 @@ class Estimate:
             if value is not None and not math.isfinite(value):
                 object.__setattr__(self, name, None)
 
+    @classmethod
+    def from_record(cls, record) -> Estimate:
+        """The estimate of a stored point (a mapping, e.g. a point of a reference file): its
+        ``epsilon`` and ``epsilon_err`` (``None`` for none), ``ok`` or ``not-asymptotic`` from
+        its ``asymptotic_ok``, and its ``message``."""
+        eps, err = record["epsilon"], record["epsilon_err"]
+        return cls(
+            None if eps is None else float(eps),
+            None if err is None else float(err),
+            Status.OK if bool(record["asymptotic_ok"]) else Status.NOT_ASYMPTOTIC,
+            str(record.get("message", "")),
+        )
+
     @property
     def asymptotic(self) -> bool:
         """Whether it passed every check of its route (:attr:`Status.asymptotic`)."""
@@ -92,3 +113,44 @@ def estimate_of(epsilon, epsilon_err, asymptotic_ok: bool, message: str = "") ->
     ``not-asymptotic``."""
     status = Status.OK if asymptotic_ok else Status.NOT_ASYMPTOTIC
     return Estimate(epsilon, epsilon_err, status, "" if asymptotic_ok else message)
+
+
+def nan_for_none(value: float | None) -> float:
+    """An estimate's number as a float: ``value``, or ``nan`` for ``None`` (no value)."""
+    return math.nan if value is None else value
+
+
+class EstimateView:
+    """What a record that holds an :class:`Estimate` (its field ``estimate``) answers under the
+    names its readers know: ``epsilon`` and ``epsilon_err`` as floats (``nan`` where the
+    estimate has none, as such records stored them before they held one), ``status``,
+    ``asymptotic_ok`` and ``message``."""
+
+    __slots__ = ()
+
+    estimate: Estimate
+
+    @property
+    def epsilon(self) -> float:
+        """The estimate's epsilon; ``nan`` where it has none."""
+        return nan_for_none(self.estimate.epsilon)
+
+    @property
+    def epsilon_err(self) -> float:
+        """Its error; ``nan`` where it has none."""
+        return nan_for_none(self.estimate.epsilon_err)
+
+    @property
+    def status(self) -> Status:
+        """The estimate's status."""
+        return self.estimate.status
+
+    @property
+    def asymptotic_ok(self) -> bool:
+        """Whether it passed every check of its route."""
+        return self.estimate.asymptotic
+
+    @property
+    def message(self) -> str:
+        """Why not, in the route's words."""
+        return self.estimate.message

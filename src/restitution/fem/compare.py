@@ -42,26 +42,41 @@ class Comparison:
     fem_levels : tuple of int
     fem_dofs : tuple of int
         Degrees of freedom of the half disk at each level.
-    fem_epsilon, fem_error : float
-        Finest FEM epsilon and its error estimate (last Cauchy difference; ``nan`` with one
-        level).
     modal : tuple of CollisionResult
         One per number of modes, ascending.
     modal_limit : LinearLimit or None
         Extrapolation of ``1 - eps^2`` to ``N -> infinity`` (``None`` with fewer than 2 ``N``).
-    modal_epsilon, modal_error : float
-        Extrapolated epsilon and its error.
+
+    Each method's epsilon and error are read from its runs: :attr:`fem_epsilon`,
+    :attr:`fem_error` (:func:`fem_refinement`), :attr:`modal_epsilon`, :attr:`modal_error`
+    (:func:`modal_extrapolation`).
     """
 
     fem: tuple[CollisionResult, ...]
     fem_levels: tuple[int, ...]
     fem_dofs: tuple[int, ...]
-    fem_epsilon: float
-    fem_error: float
     modal: tuple[CollisionResult, ...]
     modal_limit: LinearLimit | None
-    modal_epsilon: float
-    modal_error: float
+
+    @property
+    def fem_epsilon(self) -> float:
+        """The finest FEM epsilon."""
+        return _finest(self.fem)[0]
+
+    @property
+    def fem_error(self) -> float:
+        """Its error estimate: the last Cauchy difference (``nan`` with one level)."""
+        return _finest(self.fem)[1]
+
+    @property
+    def modal_epsilon(self) -> float:
+        """The extrapolated modal epsilon (the last run's with one ``N``)."""
+        return _modal_limit(self.modal, self.modal_limit)[0]
+
+    @property
+    def modal_error(self) -> float:
+        """Its error (``nan`` with one ``N``)."""
+        return _modal_limit(self.modal, self.modal_limit)[1]
 
     @property
     def difference(self) -> float:
@@ -114,9 +129,14 @@ def fem_refinement(
         level = replace(settings, refine=int(k))
         results.append(fem_collide(material, v, alpha, geometry=geometry, settings=level))
         dofs.append(model_for(material, v, alpha, level, geometry).disk.n_dofs)
+    return results, dofs, *_finest(results)
+
+
+def _finest(results) -> tuple[float, float]:
+    """The finest level's epsilon and the last Cauchy difference (``nan`` with one level)."""
     eps = results[-1].epsilon
     err = abs(eps - results[-2].epsilon) if len(results) > 1 else float("nan")
-    return results, dofs, eps, err
+    return eps, err
 
 
 def modal_extrapolation(
@@ -146,12 +166,18 @@ def modal_extrapolation(
         warnings.simplefilter("ignore")
         for n in counts:
             results.append(collide(pool.lowest(n), v, alpha, **collide_options))
-    if len(counts) < 2:
-        return results, None, results[-1].epsilon, float("nan")
-    loss = np.array([r.energy_loss for r in results])
-    limit = extrapolate_modes(np.array(counts), loss)
-    eps, err = epsilon_from_loss(limit.limit, limit.limit_err)
-    return results, limit, eps, err
+    limit = None
+    if len(counts) >= 2:
+        loss = np.array([r.energy_loss for r in results])
+        limit = extrapolate_modes(np.array(counts), loss)
+    return results, limit, *_modal_limit(results, limit)
+
+
+def _modal_limit(results, limit: LinearLimit | None) -> tuple[float, float]:
+    """epsilon of ``limit`` and its error; the last run's epsilon and ``nan`` without one."""
+    if limit is None:
+        return results[-1].epsilon, float("nan")
+    return epsilon_from_loss(limit.limit, limit.limit_err)
 
 
 def compare_fem_modal(
@@ -189,16 +215,12 @@ def compare_fem_modal(
         raise InputError(f"levels must be distinct and ascending, got {levels}")
     if not counts:
         raise InputError("give at least one number of modes")
-    fem, dofs, fem_eps, fem_err = fem_refinement(material, v, alpha, levels, settings, geometry)
-    modal, limit, modal_eps, modal_err = modal_extrapolation(material, v, alpha, counts, geometry)
+    fem, dofs, *_ = fem_refinement(material, v, alpha, levels, settings, geometry)
+    modal, limit, *_ = modal_extrapolation(material, v, alpha, counts, geometry)
     return Comparison(
         fem=tuple(fem),
         fem_levels=levels,
         fem_dofs=tuple(dofs),
-        fem_epsilon=fem_eps,
-        fem_error=fem_err,
         modal=tuple(modal),
         modal_limit=limit,
-        modal_epsilon=modal_eps,
-        modal_error=modal_err,
     )

@@ -19,8 +19,10 @@ from typing import Protocol
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError
-from restitution.estimate import estimate_of
+from restitution.estimate import Estimate, estimate_of, nan_for_none
 from restitution.jsonable import finite_or_none
+from restitution.laws.law_point import law_estimate
+from restitution.status import Status
 
 __all__ = ["JudgedPoint", "LawJudgement", "LawLike", "judge_law", "judge_shipped_law"]
 
@@ -41,21 +43,41 @@ class JudgedPoint:
     ----------
     nu, v : float
         Poisson number, speed towards the wall (``c``).
-    reference, reference_err : float
-        Reference epsilon and its error.
-    law, law_err : float
-        The law's epsilon and error at ``v`` (``nan`` when the law could not be evaluated).
+    reference_estimate : Estimate
+        The reference point's epsilon, error and status; :attr:`reference` and
+        :attr:`reference_err` read it.
+    law_estimate : Estimate
+        The law's at ``v`` (:func:`restitution.laws.law_point.law_estimate`; ``outside``
+        when the law could not be evaluated); :attr:`law` and :attr:`law_err` read it.
     note : str
         Why the law gave no value, or the reference's own flag.
     """
 
     nu: float
     v: float
-    reference: float
-    reference_err: float
-    law: float
-    law_err: float
+    reference_estimate: Estimate
+    law_estimate: Estimate
     note: str = ""
+
+    @property
+    def reference(self) -> float:
+        """Reference epsilon (``nan`` without one)."""
+        return nan_for_none(self.reference_estimate.epsilon)
+
+    @property
+    def reference_err(self) -> float:
+        """Its error."""
+        return nan_for_none(self.reference_estimate.epsilon_err)
+
+    @property
+    def law(self) -> float:
+        """The law's epsilon at ``v`` (``nan`` when the law could not be evaluated)."""
+        return nan_for_none(self.law_estimate.epsilon)
+
+    @property
+    def law_err(self) -> float:
+        """Its error."""
+        return nan_for_none(self.law_estimate.epsilon_err)
 
     @property
     def difference(self) -> float:
@@ -77,13 +99,21 @@ class JudgedPoint:
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary (``nan`` as ``None``)."""
-        out = {
-            k: finite_or_none(v) if isinstance(v, float) else v for k, v in self.__dict__.items()
+        numbers = {
+            "nu": self.nu,
+            "v": self.v,
+            "reference": self.reference,
+            "reference_err": self.reference_err,
+            "law": self.law,
+            "law_err": self.law_err,
         }
-        out["difference"] = finite_or_none(self.difference)
-        out["combined_error"] = finite_or_none(self.combined_error)
-        out["sigma"] = finite_or_none(self.sigma)
-        return out
+        return {
+            **{k: finite_or_none(x) for k, x in numbers.items()},
+            "note": self.note,
+            "difference": finite_or_none(self.difference),
+            "combined_error": finite_or_none(self.combined_error),
+            "sigma": finite_or_none(self.sigma),
+        }
 
 
 @dataclass(frozen=True)
@@ -166,20 +196,11 @@ def judge_law(points: Iterable, laws: Mapping[float, LawLike] | LawLike) -> LawJ
         )
         note = "" if ref.asymptotic else "reference flagged"
         try:
-            value, err = float(law.epsilon(p.v)), float(law.epsilon_err(p.v))
+            at_law = law_estimate(law, p.v)
         except (InputError, ValueError) as exc:
-            value, err, note = math.nan, math.nan, f"no law value: {exc}"
-        rows.append(
-            JudgedPoint(
-                nu=float(p.nu),
-                v=float(p.v),
-                reference=float(p.epsilon),
-                reference_err=float(p.epsilon_err),
-                law=value,
-                law_err=err,
-                note=note,
-            )
-        )
+            at_law = Estimate(None, None, Status.OUTSIDE, str(exc))
+            note = f"no law value: {exc}"
+        rows.append(JudgedPoint(float(p.nu), float(p.v), ref, at_law, note))
     return LawJudgement(points=tuple(rows))
 
 

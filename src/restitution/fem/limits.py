@@ -169,7 +169,9 @@ class FemEpsilon:
         Poisson number (the body's own) and speed towards the wall (``c``).
     alpha : float or None
         The fixed wall hardness (``1/R``) when only ``h -> 0`` was taken; ``None`` for both.
-    epsilon, epsilon_err, energy_loss, energy_loss_err : float
+    energy_loss, energy_loss_err : float
+        The limit of ``1 - epsilon^2`` and its error; :attr:`epsilon`, :attr:`epsilon_err` and
+        :attr:`estimate` derive from them.
     asymptotic_ok : bool
     message : str
     runs : tuple of FemRun
@@ -194,8 +196,6 @@ class FemEpsilon:
     nu: float
     v: float
     alpha: float | None
-    epsilon: float
-    epsilon_err: float
     energy_loss: float
     energy_loss_err: float
     asymptotic_ok: bool
@@ -210,6 +210,16 @@ class FemEpsilon:
     levels: tuple[int, ...]
     wall_time_s: float
     geometry: str = DEFAULT_GEOMETRY
+
+    @property
+    def epsilon(self) -> float:
+        """``sqrt(1 - energy_loss)`` (``nan`` for a loss outside ``[0, 1)``)."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
+
+    @property
+    def epsilon_err(self) -> float:
+        """Its error, ``energy_loss_err / (2 epsilon)``."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
 
     @property
     def alphas(self) -> tuple[float, ...]:
@@ -468,15 +478,12 @@ def _assemble(
         else:
             loss_err = alpha_limit.limit_err
         loss_value = alpha_limit.limit
-    eps, eps_err = epsilon_from_loss(loss_value, loss_err)
-    if not math.isfinite(eps):
+    if not math.isfinite(epsilon_from_loss(loss_value, loss_err)[0]):
         problems.append(f"energy loss {loss_value:.4g} is outside [0, 1)")
     return FemEpsilon(
         nu=material.nu,
         v=v,
         alpha=None if alpha is None else float(alpha),
-        epsilon=eps,
-        epsilon_err=eps_err,
         energy_loss=loss_value,
         energy_loss_err=loss_err,
         asymptotic_ok=not problems,

@@ -139,6 +139,7 @@ class FemPairEpsilon:
     energy_loss_err = property(lambda self: self.limits.energy_loss_err, doc="Its error.")
     asymptotic_ok = property(lambda self: self.limits.asymptotic_ok, doc="No flag raised.")
     message = property(lambda self: self.limits.message, doc="The flags, when raised.")
+    estimate = property(lambda self: self.limits.estimate, doc="epsilon as an Estimate.")
     runs = property(lambda self: self.limits.runs, doc="The grid (:class:`FemRun`).")
 
     def summary(self) -> str:

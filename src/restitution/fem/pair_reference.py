@@ -31,7 +31,6 @@ from __future__ import annotations
 
 import datetime
 import json
-import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from importlib import resources
@@ -42,7 +41,7 @@ from restitution.bodies.kinds import body_kind
 from restitution.bodies.pair.partner import Partner
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
-from restitution.estimate import Estimate, estimate_of
+from restitution.estimate import Estimate, EstimateView
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun
 from restitution.fem.pair_limits import fem_pair_epsilon
@@ -137,7 +136,7 @@ def fem_pair_code_version() -> str:
 
 
 @dataclass(frozen=True)
-class PairReferencePoint:
+class PairReferencePoint(EstimateView):
     """One FEM reference value of a pair.
 
     Attributes
@@ -147,29 +146,22 @@ class PairReferencePoint:
     partner : Partner
     w : float
         Relative normal speed of the centres, ``c1``.
-    epsilon, epsilon_err : float
-    asymptotic_ok : bool
-    message : str
+    estimate : Estimate
+        epsilon of the relative speed, its error, ``ok`` or ``not-asymptotic`` and the message,
+        as stored; ``epsilon``, ``epsilon_err``, ``asymptotic_ok`` and ``message`` read it
+        (:class:`~restitution.estimate.EstimateView`).
     """
 
     nu: float
     partner: Partner
     w: float
-    epsilon: float
-    epsilon_err: float
-    asymptotic_ok: bool
-    message: str = ""
+    estimate: Estimate
 
     @property
     def v(self) -> float:
         """The speed a law is evaluated at (``w``): so :func:`restitution.fem.judge.judge_law`
         takes these points with the law of their pair."""
         return self.w
-
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok)
 
 
 def _key(point: dict) -> tuple:
@@ -316,10 +308,7 @@ def load_pair_reference(
                 nu=float(p["nu"]),
                 partner=Partner.from_key(p["partner"]),
                 w=float(p["w"]),
-                epsilon=math.nan if p["epsilon"] is None else float(p["epsilon"]),
-                epsilon_err=math.nan if p["epsilon_err"] is None else float(p["epsilon_err"]),
-                asymptotic_ok=bool(p["asymptotic_ok"]),
-                message=str(p.get("message", "")),
+                estimate=Estimate.from_record(p),
             )
             for p in doc["points"]
         )

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import datetime
 import json
-import math
 import platform
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -28,7 +27,7 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
-from restitution.estimate import Estimate, estimate_of
+from restitution.estimate import Estimate, EstimateView
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.limits import LEVELS, FemRun, fem_epsilon
 from restitution.fem.section import fem_geometries
@@ -105,29 +104,22 @@ def _environment() -> dict:
 
 
 @dataclass(frozen=True)
-class ReferencePoint:
+class ReferencePoint(EstimateView):
     """One FEM reference value.
 
     Attributes
     ----------
     nu, v : float
         Poisson number and speed towards the wall (``c``).
-    epsilon, epsilon_err : float
-    asymptotic_ok : bool
-    message : str
+    estimate : Estimate
+        epsilon, its error, ``ok`` or ``not-asymptotic`` and the message, as stored;
+        ``epsilon``, ``epsilon_err``, ``asymptotic_ok`` and ``message`` read it
+        (:class:`~restitution.estimate.EstimateView`).
     """
 
     nu: float
     v: float
-    epsilon: float
-    epsilon_err: float
-    asymptotic_ok: bool
-    message: str = ""
-
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok)
+    estimate: Estimate
 
 
 def compute_reference(
@@ -246,14 +238,7 @@ def load_reference(
                 f"{path} is the FEM reference of the {doc['geometry']}, not of the {geometry}"
             )
         points = tuple(
-            ReferencePoint(
-                nu=float(p["nu"]),
-                v=float(p["v"]),
-                epsilon=math.nan if p["epsilon"] is None else float(p["epsilon"]),
-                epsilon_err=math.nan if p["epsilon_err"] is None else float(p["epsilon_err"]),
-                asymptotic_ok=bool(p["asymptotic_ok"]),
-                message=str(p.get("message", "")),
-            )
+            ReferencePoint(nu=float(p["nu"]), v=float(p["v"]), estimate=Estimate.from_record(p))
             for p in doc["points"]
         )
     except (ValueError, KeyError, TypeError) as exc:

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.bodies.wall import HalfSpace
+from restitution.estimate import Estimate, estimate_of
 from restitution.fem.elasticity import as_material
 from restitution.fem.graded import ContactGrading, default_grading
 from restitution.fem.impact import FemCollisionError, FemSettings
@@ -110,6 +111,15 @@ class FemWallEpsilon:
     @property
     def asymptotic_ok(self) -> bool:
         return self.limits.asymptotic_ok and all(math.isfinite(c.difference) for c in self.checks)
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`
+        (a check that did not run flags it)."""
+        failed = [f"the {c.name} check did not run" for c in self.checks
+                  if not math.isfinite(c.difference)]  # fmt: skip
+        why = "; ".join(filter(None, [self.limits.message, *failed]))
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok, why)
 
     def to_dict(self) -> dict:
         """JSON-ready: the limits' dictionary with the wall, the block and the checks."""

@@ -45,6 +45,7 @@ from restitution.errors import (
     is_real_array,
     real,
 )
+from restitution.estimate import Estimate
 from restitution.laws.law_file import (
     _describe,
     _metadata,
@@ -235,10 +236,12 @@ class EpsilonLaw:
         return tuple(
             LawPoint(
                 float(v),
-                float(e),
-                float(s),
-                Status.QUASISTATIC if q else Status.OK if ok else Status.NOT_ASYMPTOTIC,
-                str(rec.get("message", "")),
+                Estimate(
+                    float(e),
+                    float(s),
+                    Status.QUASISTATIC if q else Status.OK if ok else Status.NOT_ASYMPTOTIC,
+                    str(rec.get("message", "")),
+                ),
             )
             for v, e, s, ok, q, rec in zip(
                 self.v,

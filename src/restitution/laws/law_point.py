@@ -14,10 +14,17 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 
-from restitution.estimate import Estimate
+from restitution.estimate import Estimate, EstimateView, estimate_of
 from restitution.status import Status
 
-__all__ = ["LOG_V", "QUASISTATIC_ROUTE", "LawPoint", "leave_one_out", "point_record"]
+__all__ = [
+    "LOG_V",
+    "QUASISTATIC_ROUTE",
+    "LawPoint",
+    "law_estimate",
+    "leave_one_out",
+    "point_record",
+]
 
 LOG_V = "ln v"
 """``metadata["interpolate_in"]`` of a law whose PCHIP takes its points at ``ln v`` (a
@@ -73,29 +80,31 @@ class _Recorded:
 
 
 @dataclass(frozen=True)
-class LawPoint:
-    """One computed point of a law.
+class LawPoint(EstimateView):
+    """One computed point of a law: a speed and what the law states there.
 
     Attributes
     ----------
     v : float
         Speed towards the wall, units of ``c``.
-    epsilon, epsilon_err : float
-        Extrapolated coefficient of restitution and its error.
-    status : {"ok", "not-asymptotic", "quasistatic"}
-        ``ok`` when the point's extrapolations passed their checks; ``message`` says why not.
-        ``quasistatic`` for a point of the low-speed theory
-        (:mod:`restitution.quasistatic.low_speed`), which has no extrapolation.
-    message : str
+    estimate : Estimate
+        Extrapolated coefficient of restitution, its error and status: ``ok`` when the
+        point's extrapolations passed their checks, ``not-asymptotic`` when not (its
+        ``message`` says why), ``quasistatic`` for a point of the low-speed theory
+        (:mod:`restitution.quasistatic.low_speed`), which has no extrapolation. ``epsilon``,
+        ``epsilon_err``, ``status`` and ``message`` read it (:class:`EstimateView`).
     """
 
     v: float
-    epsilon: float
-    epsilon_err: float
-    status: str
-    message: str = ""
+    estimate: Estimate
 
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return Estimate(self.epsilon, self.epsilon_err, self.status, self.message)
+
+def law_estimate(law, v: float) -> Estimate:
+    """``law``'s epsilon and error at ``v`` (``c``) as an :class:`Estimate`: ``ok`` where the
+    computed points around ``v`` passed their checks (``law.checked(v)``, as
+    :class:`~restitution.laws.law.EpsilonLaw` answers it), ``not-asymptotic`` where not; a law
+    without ``checked`` (any object with ``epsilon(v)`` and ``epsilon_err(v)``) is taken at its
+    word. Raises what the law raises at a speed it does not serve."""
+    value, err = float(law.epsilon(v)), float(law.epsilon_err(v))
+    checked = getattr(law, "checked", None)
+    return estimate_of(value, err, True if checked is None else bool(checked(v)))

@@ -37,7 +37,7 @@ from pathlib import Path
 
 from restitution.bodies.wall import HalfSpace, wall_from_dict
 from restitution.errors import CorruptFileError, InputError
-from restitution.estimate import Estimate, estimate_of
+from restitution.estimate import Estimate, EstimateView
 from restitution.jsonable import digest_matches
 from restitution.laws.partners.base import WALL_KEY
 
@@ -64,23 +64,19 @@ _SAME = 1e-6
 
 
 @dataclass(frozen=True)
-class WallReferencePoint:
-    """One FEM reference value of a sphere on a wall (``nu`` the ball's, ``v`` in ``c``)."""
+class WallReferencePoint(EstimateView):
+    """One FEM reference value of a sphere on a wall (``nu`` the ball's, ``v`` in ``c``): its
+    ``estimate`` (epsilon, its error, ``ok`` or ``not-asymptotic`` and the message, as stored;
+    ``epsilon``, ``epsilon_err``, ``asymptotic_ok`` and ``message`` read it,
+    :class:`~restitution.estimate.EstimateView`) and the energy loss with its error, as
+    stored (``nan`` for none)."""
 
     nu: float
     wall: HalfSpace
     v: float
-    epsilon: float
-    epsilon_err: float
+    estimate: Estimate
     energy_loss: float
     energy_loss_err: float
-    asymptotic_ok: bool
-    message: str = ""
-
-    @property
-    def estimate(self) -> Estimate:
-        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
-        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok)
 
 
 def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePoint, ...]:
@@ -110,12 +106,9 @@ def load_wall_reference(path: str | Path | None = None) -> tuple[WallReferencePo
                 nu=float(p["nu"]),
                 wall=wall_from_dict(p[WALL_KEY]),
                 v=float(p["v"]),
-                epsilon=number(p["epsilon"]),
-                epsilon_err=number(p["epsilon_err"]),
+                estimate=Estimate.from_record(p),
                 energy_loss=number(p["energy_loss"]),
                 energy_loss_err=number(p["energy_loss_err"]),
-                asymptotic_ok=bool(p["asymptotic_ok"]),
-                message=str(p.get("message", "")),
             )
             for p in doc["points"]
         )

@@ -172,10 +172,9 @@ class PointEpsilon:
     alpha : float or None
         The fixed wall hardness (``1/R``) when only ``N -> infinity`` was taken; ``None`` when
         both limits were taken.
-    epsilon, epsilon_err : float
-        Extrapolated coefficient of restitution and its error.
     energy_loss, energy_loss_err : float
-        ``1 - epsilon^2`` and its error.
+        The extrapolated ``1 - epsilon^2`` and its error; :attr:`epsilon`, :attr:`epsilon_err`
+        and :attr:`estimate` derive from them.
     asymptotic_ok : bool
         Whether the extrapolation passed its checks; ``message`` says why not.
     message : str
@@ -191,8 +190,6 @@ class PointEpsilon:
     nu: float
     v: float
     alpha: float | None
-    epsilon: float
-    epsilon_err: float
     energy_loss: float
     energy_loss_err: float
     asymptotic_ok: bool
@@ -200,6 +197,17 @@ class PointEpsilon:
     fit: CombinedLimit | LinearLimit
     settings: SweepSettings
     failures: tuple = ()
+
+    @property
+    def epsilon(self) -> float:
+        """The extrapolated coefficient of restitution, ``sqrt(1 - energy_loss)`` (``nan`` for
+        a loss outside ``[0, 1)``)."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
+
+    @property
+    def epsilon_err(self) -> float:
+        """Its error, ``energy_loss_err / (2 epsilon)``."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary: epsilon, epsilon_err, the grid and the fits."""
@@ -353,12 +361,10 @@ def epsilon_at(
     if alpha is None:
         fit = combined_limit(data.alpha, data.n_modes, data.loss, order=settings.order)
         loss, loss_err, ok, msg = fit.limit, fit.limit_err, fit.asymptotic_ok, fit.message
-        eps, eps_err = fit.epsilon, fit.epsilon_err
     else:
         fit = extrapolate_modes(data.n_modes, data.loss[0])
         loss, loss_err, ok, msg = fit.limit, fit.limit_err, fit.asymptotic_ok, fit.message
-        eps, eps_err = epsilon_from_loss(loss, loss_err)
-        if not math.isfinite(eps):
+        if not math.isfinite(epsilon_from_loss(loss, loss_err)[0]):
             ok = False
             msg = "; ".join(filter(None, [msg, f"energy loss {loss:.4g} is outside [0, 1)"]))
     if failures:
@@ -368,8 +374,6 @@ def epsilon_at(
         nu,
         v,
         alpha,
-        eps,
-        eps_err,
         loss,
         loss_err,
         ok,

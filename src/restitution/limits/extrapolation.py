@@ -421,9 +421,8 @@ class CombinedLimit:
         ``"modes_first"`` (``N -> inf`` at each ``alpha``, then ``alpha -> inf``) or
         ``"alpha_first"``; the primary order.
     limit, limit_err : float
-        Extrapolated loss and its error (module docstring).
-    epsilon, epsilon_err : float
-        ``sqrt(1 - limit)`` and its error (``nan`` if the limit is outside ``[0, 1)``).
+        Extrapolated loss and its error (module docstring); :attr:`epsilon`,
+        :attr:`epsilon_err` and :attr:`estimate` derive from them.
     first : tuple of LinearLimit
         First-stage fits of the primary order (one per ``alpha`` for ``modes_first``).
     second : LinearLimit
@@ -453,8 +452,6 @@ class CombinedLimit:
     order: str
     limit: float
     limit_err: float
-    epsilon: float
-    epsilon_err: float
     first: tuple[LinearLimit, ...]
     second: LinearLimit
     check_first: tuple[LinearLimit, ...]
@@ -465,6 +462,16 @@ class CombinedLimit:
     settings: dict = field(default_factory=dict)
     notes: str = ""
     alpha_curvature: float = 0.0
+
+    @property
+    def epsilon(self) -> float:
+        """``sqrt(1 - limit)`` (``nan`` if the limit is outside ``[0, 1)``)."""
+        return epsilon_from_loss(self.limit, self.limit_err)[0]
+
+    @property
+    def epsilon_err(self) -> float:
+        """Its error, ``limit_err / (2 epsilon)``."""
+        return epsilon_from_loss(self.limit, self.limit_err)[1]
 
     def to_dict(self, *, fits: bool = True) -> dict:
         """JSON-ready dictionary; ``fits=False`` leaves out the individual fits."""
@@ -623,8 +630,7 @@ def combined_limit(
     # (after every verdict above, which keeps its own rules).
     bend = alpha_curvature_shift(second if primary else check_second)
     err = math.hypot(err, bend)
-    eps, eps_err = epsilon_from_loss(second.limit, err)
-    if not math.isfinite(eps):
+    if not math.isfinite(epsilon_from_loss(second.limit, err)[0]):
         problems.append(f"extrapolated energy loss {second.limit:.4g} is outside [0, 1)")
     return CombinedLimit(
         alpha=alpha,
@@ -633,8 +639,6 @@ def combined_limit(
         order=order,
         limit=second.limit,
         limit_err=err,
-        epsilon=eps,
-        epsilon_err=eps_err,
         first=first,
         second=second,
         check_first=check_first,

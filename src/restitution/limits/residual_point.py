@@ -41,6 +41,7 @@ import numpy as np
 from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import body_kind
 from restitution.dynamics.residual import collide_residual
+from restitution.estimate import Estimate, estimate_of
 from restitution.limits.extrapolation import (
     alpha_curvature_shift,
     epsilon_from_loss,
@@ -64,6 +65,8 @@ NODES_PER_CONTACT = 80.0
 class ResidualPoint:
     """epsilon at one speed by the residual route, with its error budget (module docstring).
 
+    ``energy_loss``, ``energy_loss_err``: the hard-wall limit of the loss and its error
+    (:attr:`epsilon`, :attr:`epsilon_err` and :attr:`estimate` derive from them);
     ``losses``: shape (walls, 3), the loss at ``N1, N2, N3``; ``mode_err``, ``step_err``:
     per wall; ``alpha_err``: the hard-wall fit's error (with the points' errors);
     ``curvature``: the wall's curvature shift; ``seconds``: wall-clock time of the point;
@@ -74,8 +77,6 @@ class ResidualPoint:
     geometry: str
     nu: float
     v: float
-    epsilon: float
-    epsilon_err: float
     energy_loss: float
     energy_loss_err: float
     walls: tuple[float, ...]
@@ -90,6 +91,21 @@ class ResidualPoint:
     message: str
     seconds: float
     partner: dict | None = None
+
+    @property
+    def epsilon(self) -> float:
+        """``sqrt(1 - energy_loss)`` (``nan`` for a loss outside ``[0, 1)``)."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
+
+    @property
+    def epsilon_err(self) -> float:
+        """Its error, ``energy_loss_err / (2 epsilon)``."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
+
+    @property
+    def estimate(self) -> Estimate:
+        """epsilon, its error and its status as one :class:`~restitution.estimate.Estimate`."""
+        return estimate_of(self.epsilon, self.epsilon_err, self.asymptotic_ok, self.message)
 
 
 def residual_point(
@@ -134,13 +150,10 @@ def residual_point(
     fit = extrapolate_alpha(np.array(alphas), losses[:, -1], loss_err=point_err)
     curvature = alpha_curvature_shift(fit)
     loss_err = math.hypot(fit.limit_err, curvature)
-    eps, eps_err = epsilon_from_loss(fit.limit, loss_err)
     return ResidualPoint(
         geometry=geometry,
         nu=float(nu),
         v=float(v),
-        epsilon=eps,
-        epsilon_err=eps_err,
         energy_loss=float(fit.limit),
         energy_loss_err=loss_err,
         walls=walls,

@@ -240,15 +240,7 @@ def half_space_loss(modes, v: float, wall):
             "take little of it)"
         )
     err = ball.energy_loss_err + waves * (PULSE_EXPONENT * spread + waves)
-    eps = math.sqrt(1.0 - loss)
-    return replace(
-        ball,
-        energy_loss=loss,
-        energy_loss_err=err,
-        epsilon=eps,
-        epsilon_err=err / (2.0 * eps),
-        shares=(ball.energy_loss, waves),
-    )
+    return replace(ball, energy_loss=loss, energy_loss_err=err, shares=(ball.energy_loss, waves))
 
 
 def ball_envelope(modes, v: float, wall) -> float:
@@ -338,10 +330,9 @@ def _ball_part(modes, v: float, law):
     order = np.argsort(modes.omega, kind="stable")
     tail = float(terms[order[len(modes) // 2 :]].sum())  # twice the phase mean, as low_speed's
     loss, err = 0.5 * envelope, 0.5 * envelope + tail
-    eps = math.sqrt(1.0 - loss)
     return LowSpeedLoss(
-        v=float(v), nu=float(modes.nu), energy_loss=loss, energy_loss_err=err, epsilon=eps,
-        epsilon_err=err / (2.0 * eps), band=(0.0, envelope), tail=tail, n_modes=len(modes),
+        v=float(v), nu=float(modes.nu), energy_loss=loss, energy_loss_err=err,
+        band=(0.0, envelope), tail=tail, n_modes=len(modes),
         contact_time=tau, max_compression=float(hertz.max_compression[0]),
         spread=CONTACT_TIME_SPREAD, shares=(loss,),
     )  # fmt: skip

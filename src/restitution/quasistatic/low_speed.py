@@ -110,9 +110,8 @@ class LowSpeedLoss:
     nu : float
         The sphere's 3D Poisson number.
     energy_loss, energy_loss_err : float
-        ``1 - epsilon^2`` (Rayleigh's estimate, Duhamel integral) and its error (band plus tail).
-    epsilon, epsilon_err : float
-        ``sqrt(1 - energy_loss)`` and ``energy_loss_err / (2 epsilon)``.
+        ``1 - epsilon^2`` (Rayleigh's estimate, Duhamel integral) and its error (band plus
+        tail); :attr:`epsilon`, :attr:`epsilon_err` and :attr:`estimate` derive from them.
     band : tuple of float
         ``(low, high)`` ends of the loss as the contact time runs over its uncertainty.
     tail : float
@@ -133,8 +132,6 @@ class LowSpeedLoss:
     nu: float
     energy_loss: float
     energy_loss_err: float
-    epsilon: float
-    epsilon_err: float
     band: tuple[float, float]
     tail: float
     n_modes: int
@@ -143,8 +140,22 @@ class LowSpeedLoss:
     spread: float
     shares: tuple[float, ...] = ()
 
+    @property
+    def epsilon(self) -> float:
+        """``sqrt(1 - energy_loss)``."""
+        return math.sqrt(1.0 - self.energy_loss)
+
+    @property
+    def epsilon_err(self) -> float:
+        """``energy_loss_err / (2 epsilon)``."""
+        return self.energy_loss_err / (2.0 * self.epsilon)
+
     def to_dict(self) -> dict:
-        return finite_tree(asdict(self))
+        """JSON-ready: the fields, epsilon and its error after the loss's."""
+        fields = list(asdict(self).items())
+        at = [name for name, _ in fields].index("energy_loss_err") + 1
+        eps = [("epsilon", self.epsilon), ("epsilon_err", self.epsilon_err)]
+        return finite_tree(dict(fields[:at] + eps + fields[at:]))
 
     @property
     def estimate(self) -> Estimate:
@@ -226,14 +237,11 @@ def low_speed_loss(
         shares = tuple(float(ray.mode_energy[member == i].sum()) for i in (0, 1))
     loss = ray.energy_fraction
     err = max(high - loss, loss - low) + tail
-    eps = math.sqrt(1.0 - loss)
     return LowSpeedLoss(
         v=float(v),
         nu=float(modes.nu),
         energy_loss=float(loss),
         energy_loss_err=float(err),
-        epsilon=eps,
-        epsilon_err=float(err / (2.0 * eps)),
         band=(float(low), float(high)),
         tail=tail,
         n_modes=len(modes),

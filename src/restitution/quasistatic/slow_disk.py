@@ -374,9 +374,8 @@ class SlowLoss:
         Speed (``c``) and two-dimensional Poisson number.
     energy_loss, energy_loss_err : float
         ``1 - epsilon^2`` at the highest cut that fits, and its error: the convergence error
-        plus :data:`MODEL_SPREAD` of the loss.
-    epsilon, epsilon_err : float
-        ``sqrt(1 - energy_loss)`` and ``energy_loss_err / (2 epsilon)``.
+        plus :data:`MODEL_SPREAD` of the loss; :attr:`epsilon`, :attr:`epsilon_err` and
+        :attr:`estimate` derive from them.
     cuts, losses : tuple of float
         The cuts that fit and the loss at each.
     convergence_err : float
@@ -391,8 +390,6 @@ class SlowLoss:
     nu: float
     energy_loss: float
     energy_loss_err: float
-    epsilon: float
-    epsilon_err: float
     cuts: tuple[float, ...]
     losses: tuple[float, ...]
     convergence_err: float
@@ -400,8 +397,22 @@ class SlowLoss:
     contact_time: float
     max_compression: float
 
+    @property
+    def epsilon(self) -> float:
+        """``sqrt(1 - energy_loss)``."""
+        return math.sqrt(1.0 - self.energy_loss)
+
+    @property
+    def epsilon_err(self) -> float:
+        """``energy_loss_err / (2 epsilon)``."""
+        return self.energy_loss_err / (2.0 * self.epsilon)
+
     def to_dict(self) -> dict:
-        return finite_tree(asdict(self))
+        """JSON-ready: the fields, epsilon and its error after the loss's."""
+        fields = list(asdict(self).items())
+        at = [name for name, _ in fields].index("energy_loss_err") + 1
+        eps = [("epsilon", self.epsilon), ("epsilon_err", self.epsilon_err)]
+        return finite_tree(dict(fields[:at] + eps + fields[at:]))
 
     @property
     def estimate(self) -> Estimate:
@@ -429,14 +440,11 @@ def slow_loss(modes: ModalBody, v: float, *, cuts=SLOW_CUTS) -> SlowLoss:
     conv = max(abs(loss - x) for x in losses[-3:-1])
     model = MODEL_SPREAD * loss
     err = conv + model
-    eps = math.sqrt(1.0 - loss)
     return SlowLoss(
         v=float(v),
         nu=float(modes.nu),
         energy_loss=float(loss),
         energy_loss_err=float(err),
-        epsilon=eps,
-        epsilon_err=float(err / (2.0 * eps)),
         cuts=tuple(fitting),
         losses=tuple(float(x) for x in losses),
         convergence_err=float(conv),

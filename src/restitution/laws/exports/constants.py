@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
-from restitution.estimate import Estimate
+from restitution.estimate import Estimate, EstimateView
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 from restitution.status import Status
@@ -29,30 +29,25 @@ __all__ = [
 
 
 @dataclass(frozen=True)
-class Constant:
+class Constant(EstimateView):
     """One coefficient of restitution for codes that take a constant per pair.
 
     Attributes
     ----------
-    epsilon, epsilon_err : float
-        The constant and its error.
-    how : str
-        What it is: the law at a reference speed, or an average over a named distribution.
-    status : str
-        Status of the law where the constant comes from
-        (:data:`restitution.laws.si_point.STATUSES`);
-        for an average, the worst status carrying more than 1 % of the weight.
+    estimate : Estimate
+        The constant, its error, the status of the law where it comes from
+        (:data:`restitution.laws.si_point.STATUSES`; for an average, the worst status carrying
+        more than 1 % of the weight) and, as its message, what it is (:attr:`how`).
+        ``epsilon``, ``epsilon_err`` and ``status`` read it
+        (:class:`~restitution.estimate.EstimateView`).
     """
 
-    epsilon: float
-    epsilon_err: float
-    how: str
-    status: str
+    estimate: Estimate
 
     @property
-    def estimate(self) -> Estimate:
-        """The constant as one :class:`~restitution.estimate.Estimate` (its status the law's)."""
-        return Estimate(self.epsilon, self.epsilon_err, self.status, self.how)
+    def how(self) -> str:
+        """What it is: the law at a reference speed, or an average over a named distribution."""
+        return self.estimate.message
 
     def to_dict(self) -> dict:
         return {
@@ -68,12 +63,8 @@ def constant_at(s: SILaw, speed_m_s: float) -> Constant:
     (p,) = s.points([speed_m_s])
     if p.epsilon is None:
         raise InputError(f"no epsilon at {speed_m_s:g} m/s: {p.note}")
-    return Constant(
-        p.epsilon,
-        p.epsilon_err,
-        f"epsilon at w = {speed_m_s:g} m/s ({s.against}: {s.against_meaning})",
-        p.status,
-    )
+    how = f"epsilon at w = {speed_m_s:g} m/s ({s.against}: {s.against_meaning})"
+    return Constant(Estimate(p.epsilon, p.epsilon_err, p.status, how))
 
 
 _ORDER = (
@@ -253,10 +244,5 @@ def distribution_constant(s: SILaw, speeds_m_s, rates, *, how: str = "") -> Cons
         (st for st, f in share.items() if f > 0.01), key=_ORDER.index, default=Status.COMPUTED
     )
     by_status = ", ".join(f"{k} {v:.0%}" for k, v in sorted(share.items()))
-    return Constant(
-        value,
-        spread,
-        f"{how or 'dissipation-weighted average over the given speeds'}; weight by status: "
-        + by_status,
-        worst,
-    )
+    what = how or "dissipation-weighted average over the given speeds"
+    return Constant(Estimate(value, spread, worst, f"{what}; weight by status: {by_status}"))

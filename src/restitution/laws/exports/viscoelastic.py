@@ -39,6 +39,7 @@ import numpy as np
 
 from restitution.errors import InputError
 from restitution.laws.partners.base import partner_of
+from restitution.laws.si_point import SIPoint
 
 __all__ = ["ContactScales", "DroppedPart", "Viscoelastic", "viscoelastic_model"]
 
@@ -84,18 +85,19 @@ class DroppedPart:
 
     Attributes
     ----------
-    speed_m_s : float
-        Impact speed (the law's meaning: towards the wall, or the relative normal speed).
-    epsilon_law, epsilon_law_err : float
-        The damped law: waves and viscosity (its error: one standard deviation).
+    law : SIPoint
+        The damped law's point (waves and viscosity; its error one standard deviation).
     epsilon_model : float
         The viscous loss alone, what the codes' model (1) gives.
     """
 
-    speed_m_s: float
-    epsilon_law: float
-    epsilon_law_err: float
+    law: SIPoint
     epsilon_model: float
+
+    speed_m_s = property(lambda self: self.law.speed_m_s, doc="Impact speed, m/s (the law's).")
+    epsilon_law = property(lambda self: self.law.epsilon, doc="The damped law's epsilon.")
+    epsilon_law_err = property(lambda self: self.law.epsilon_err, doc="Its error.")
+    estimate = property(lambda self: self.law.estimate, doc="The law's point as an Estimate.")
 
     @property
     def dropped(self) -> float:
@@ -241,7 +243,7 @@ def viscoelastic_model(damped, speeds_m_s, radius_m: float | None = None) -> Vis
     else:
         law_pair = (1, 2) if ratio != 1.0 else (1, 1)
     dropped = tuple(
-        DroppedPart(p.speed_m_s, p.epsilon, p.epsilon_err, p.epsilon_viscous)
+        DroppedPart(p, p.epsilon_viscous)
         for p in damped.points(list(speeds_m_s))
         if p.epsilon is not None and p.epsilon_viscous is not None
     )

@@ -29,6 +29,8 @@ from restitution.bodies.disk.kind import KIND as DISK
 from restitution.bodies.kinds import body_kind
 from restitution.bodies.sphere.kind import KIND as SPHERE
 from restitution.errors import InputError
+from restitution.estimate import Estimate, estimate_of, nan_for_none
+from restitution.laws.law_point import law_estimate
 
 __all__ = [
     "CHECK_POINTS",
@@ -112,12 +114,13 @@ class Comparison:
     ----------
     geometry, nu, v, tau
         The point (reduced units).
-    modal, modal_err : float
-        The damped modal model's extrapolated epsilon and its error.
-    modal_asymptotic : bool
-        Whether its extrapolation passed every check.
-    elastic, elastic_err : float
-        The shipped elastic law at ``v``.
+    modal_estimate : Estimate
+        The damped modal model's extrapolated epsilon, its error and whether its extrapolation
+        passed every check; :attr:`modal`, :attr:`modal_err` and :attr:`modal_asymptotic`
+        read it.
+    elastic_estimate : Estimate
+        The shipped elastic law at ``v`` (:func:`restitution.laws.law_point.law_estimate`);
+        :attr:`elastic` and :attr:`elastic_err` read it.
     viscous : float
         The quasistatic viscous collision's epsilon.
     predicted : float
@@ -138,11 +141,8 @@ class Comparison:
     nu: float
     v: float
     tau: float
-    modal: float
-    modal_err: float
-    modal_asymptotic: bool
-    elastic: float
-    elastic_err: float
+    modal_estimate: Estimate
+    elastic_estimate: Estimate
     viscous: float
     predicted: float
     sigma: float
@@ -154,11 +154,55 @@ class Comparison:
     sigma_own: float | None
 
     @property
+    def modal(self) -> float:
+        """The modal model's epsilon."""
+        return nan_for_none(self.modal_estimate.epsilon)
+
+    @property
+    def modal_err(self) -> float:
+        """Its error."""
+        return nan_for_none(self.modal_estimate.epsilon_err)
+
+    @property
+    def modal_asymptotic(self) -> bool:
+        """Whether its extrapolation passed every check."""
+        return self.modal_estimate.asymptotic
+
+    @property
+    def elastic(self) -> float:
+        """The elastic law's epsilon at ``v``."""
+        return nan_for_none(self.elastic_estimate.epsilon)
+
+    @property
+    def elastic_err(self) -> float:
+        """Its error."""
+        return nan_for_none(self.elastic_estimate.epsilon_err)
+
+    def to_dict(self) -> dict:
+        """The numbers under the names the reference file keeps (``comparison_at_writing``)."""
+        return {
+            "geometry": self.geometry,
+            "nu": self.nu,
+            "v": self.v,
+            "tau": self.tau,
+            "modal": self.modal,
+            "modal_err": self.modal_err,
+            "modal_asymptotic": self.modal_asymptotic,
+            "elastic": self.elastic,
+            "elastic_err": self.elastic_err,
+            **{name: getattr(self, name) for name in _AFTER},
+        }
+
+    @property
     def viscous_ratio(self) -> float:
         """The modal body's viscous loss (its loss of kinetic energy less the elastic law's)
         over the quasistatic viscous collision's: 1 when the sum holds."""
         elastic_loss = 1.0 - self.elastic**2
         return ((1.0 - self.modal**2) - elastic_loss) / (1.0 - self.viscous**2)
+
+
+_AFTER = ("viscous", "predicted", "sigma", "compression", "compression_err", "hertz_compression",
+          "viscous_own", "predicted_own", "sigma_own")  # fmt: skip
 
 
 def _hertz(geometry: str, nu: float, E: float = 1.0):
@@ -192,9 +236,9 @@ def compare(geometry: str, nu: float, v: float, tau: float, modal: float, modal_
     from restitution.laws.law_load import law
     from restitution.quasistatic.viscoelastic import viscous_collision
 
-    elastic_law = law(nu, geometry=geometry)
-    el = float(elastic_law.epsilon(v))
-    el_err = float(elastic_law.epsilon_err(v))
+    elastic = law_estimate(law(nu, geometry=geometry), v)
+    modal_estimate = estimate_of(modal, modal_err, bool(modal_asymptotic))
+    el, el_err = nan_for_none(elastic.epsilon), nan_for_none(elastic.epsilon_err)
     plain = viscous_collision(_hertz(geometry, nu), v, tau)
     vis = float(plain.epsilon[0])
     pred = math.sqrt(el**2 + vis**2 - 1.0)
@@ -209,8 +253,8 @@ def compare(geometry: str, nu: float, v: float, tau: float, modal: float, modal_
         own_hi = float(viscous_collision(_hertz(geometry, nu, hi), v, tau).epsilon[0])
         spread = abs(math.sqrt(el**2 + own_hi**2 - 1.0) - pred_own)
         sigma_own = (modal - pred_own) / math.hypot(err, spread)
-    return Comparison(geometry, nu, v, tau, modal, modal_err, bool(modal_asymptotic), el, el_err,
-                      vis, pred, (modal - pred) / err, compression, compression_err,
+    return Comparison(geometry, nu, v, tau, modal_estimate, elastic, vis, pred,
+                      (modal - pred) / err, compression, compression_err,
                       float(plain.elastic_max_compression[0]), own, pred_own,
                       sigma_own)  # fmt: skip
 
@@ -308,7 +352,7 @@ def main(argv=None) -> None:
                 "seconds": seconds,
                 "elastic_compression": d0,
                 "elastic_compression_err": d0_err,
-                "comparison_at_writing": {**c.__dict__, "viscous_ratio": c.viscous_ratio},
+                "comparison_at_writing": {**c.to_dict(), "viscous_ratio": c.viscous_ratio},
             }
         )
         print(f"{geometry} nu={nu:g} v={v:g} tau={tau:g}: modal {limit.epsilon:.6f} +- "

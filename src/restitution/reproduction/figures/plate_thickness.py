@@ -23,6 +23,7 @@ import numpy as np
 
 from restitution.atomic import replacing
 from restitution.bodies.wall import HalfSpace, Plate
+from restitution.estimate import Estimate
 from restitution.reproduction.figures._style import add_notes, figure_main
 
 __all__ = ["ThicknessCurve", "compute", "main", "plot"]
@@ -45,20 +46,22 @@ class ThicknessCurve:
         Zener's model (``nan`` where the ball does not rebound).
     valid : numpy.ndarray of bool, shape (K,)
         Whether the thin-plate model holds there.
-    half_space, half_space_err : float
-        The block's epsilon and error.
+    block : Estimate
+        The half-space's epsilon and error (:attr:`half_space`, :attr:`half_space_err`).
     """
 
     thickness_mm: np.ndarray
     epsilon: np.ndarray
     epsilon_err: np.ndarray
     valid: np.ndarray
-    half_space: float
-    half_space_err: float
+    block: Estimate
     speed_m_s: float = SPEED_M_S
     fem: tuple = ()
     """``(thickness_mm, epsilon, epsilon_err)`` of the stored FEM points at this speed
     (``inf`` for the block)."""
+
+    half_space = property(lambda self: self.block.epsilon, doc="The block's epsilon.")
+    half_space_err = property(lambda self: self.block.epsilon_err, doc="Its error.")
 
 
 def _fem_points(v: float, ratios) -> tuple:
@@ -102,7 +105,7 @@ def compute(thickness_mm=None, speed_m_s: float = SPEED_M_S) -> ThicknessCurve:
     modes = get_modes(STEEL["nu"], LOW_SPEED_MODES, geometry=SPHERE.geometry)
     block = half_space_loss(modes, v, HalfSpace(*ratios))
     return ThicknessCurve(np.asarray(h, dtype=float), np.array(eps), np.array(err),
-                          np.array(ok), block.epsilon, block.epsilon_err, float(speed_m_s),
+                          np.array(ok), block.estimate, float(speed_m_s),
                           _fem_points(v, ratios))  # fmt: skip
 
 
