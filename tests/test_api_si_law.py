@@ -62,12 +62,19 @@ class _NoTable:
         raise AssertionError("not asked at speeds here")
 
 
-def test_a_mechanism_without_a_table_is_refused_in_one_line():
+def test_a_mechanism_without_a_table_is_refused_in_one_line(cli, tmp_path):
     register_mechanism(_NoTable())
     try:
         with pytest.raises(InputError, match="no law at every speed is made yet") as caught:
             restitution.si_law(**GLASS, no_table=1.0)
         assert "\n" not in str(caught.value)
         assert "serve(" in str(caught.value)  # the call that answers at asked speeds
+        # The command line's --plot refuses it before anything is computed.
+        figure = tmp_path / "law.png"
+        code, _, err = cli("law", "--E", "63e9", "--nu", "0.24", "--rho", "2500", "--shape",
+                           "sphere", "--against", "wall", "--speed", "1", "--no-table", "1",
+                           "--plot", str(figure))  # fmt: skip
+        assert code == 2 and "--plot draws a law at every speed" in err, err
+        assert not figure.exists()
     finally:
         unregister_mechanism("no-table")

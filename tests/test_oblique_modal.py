@@ -187,6 +187,21 @@ def test_mirror_image(rim20):
     assert len(a.phases) > 2  # stick and slip, not only sliding
 
 
+def test_a_slip_out_of_a_stick_starts_on_the_right_side():
+    """A stick holds v_s a hair (1e-2 rtol |v|) off zero, maybe on the wrong side of the slip
+    that follows it; the slip's end is counted from there. Counted from zero the event was
+    never met: at 80 modes, alpha = 2000, v = 0.01, mu = 0.5, 45 degrees the last slip ran
+    against its direction, friction did -0.37 E0 of work and beta came out 1.786 at rtol =
+    1e-10 (0.367 at 1e-11). Now beta = 0.3668395 and the friction work 0.1297684 at rtol =
+    1e-9, 1e-10 and 1e-11 alike (measured: within 3e-10 of each other)."""
+    rim = rim_modes(compute_modes(NU, count=80))
+    out = oblique_collision(rim, 0.01, 0.01, 0.5, 2000.0)
+    assert len(out.phases) == 25
+    assert_allclose(out.beta, 0.3668395, atol=1e-6)
+    assert_allclose(out.friction_work, 0.1297684, atol=1e-6)
+    assert abs(out.energy_balance) < 1e-9
+
+
 def test_converges_in_the_tolerance_and_the_nodes(rim20):
     """beta through stick and slip against rtol = 1e-12: 6.3e-10 at 1e-8 and 3.5e-11 at 1e-9
     (measured; about linear in rtol from 1e-7 to 1e-11); twice the rim nodes change it by

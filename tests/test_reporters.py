@@ -88,6 +88,7 @@ def _cases(store, tmp_path, paper_args):
     cases = {
         "collide": "collide --v 0.1 --modes 8",
         "collide-pair": "collide --v 0.05 --radius-ratio 1.4 --modes 6",
+        "collide-oblique": "collide --v 0.05 --alpha 100 --modes 6 --angle 45 --friction 0.5",
         "collide-mode": "collide --v 0.1 --modes 8 --excite mode --amplitude 0.01",
         "collide-thermal": "collide --v 0.1 --modes 8 --excite thermal --temperature 0.25 "
         "--samples 2",
@@ -109,6 +110,7 @@ def _cases(store, tmp_path, paper_args):
 ROWS = {  # rows of each case's CSV, and columns it must have
     "collide": (8, {"index", "n", "l", "omega", "energy_after"}),
     "collide-pair": (6, {"index", "body", "omega", "energy_after"}),
+    "collide-oblique": (11, {"index", "family", "n", "l", "omega", "energy_after"}),
     "collide-mode": (8, {"index", "omega", "energy_before", "energy_after"}),
     "collide-thermal": (2, {"epsilon", "mode_energy_before", "mode_energy_after"}),
     "bounce": (2, {"k", "v", "epsilon", "v_constant_epsilon"}),

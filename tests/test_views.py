@@ -98,12 +98,7 @@ def test_law_plot_refuses_before_computing(cli, tmp_path):
             "--against", "wall", "--speed", "1")  # fmt: skip
     code, out, err = cli(*base, "--plot", str(tmp_path / "law.xyz"))
     assert code == 2 and "unknown figure format" in err and err.count("\n") == 1
-    sphere = ("law", "--E", "63e9", "--nu", "0.2481", "--rho", "2500", "--shape", "sphere",
-              "--against", "wall", "--speed", "1")  # fmt: skip
-    code, out, err = cli(*sphere, "--work-of-adhesion", "0.4", "--radius", "1e-5",
-                         "--plot", str(tmp_path / "law.png"))  # fmt: skip
-    assert code == 2 and "--plot draws a law at every speed" in err and "adhesion" in err
-    assert not (tmp_path / "law.png").exists()
+    # A mechanism without a law at every speed: tests/test_api_si_law.py.
 
 
 def test_law_plot_draws_a_damped_law_with_its_answer_on_it(cli, tmp_path):

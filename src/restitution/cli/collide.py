@@ -156,7 +156,13 @@ def _vibrating() -> str:
     help="Wall hardness alpha of V = exp(alpha x)/alpha, in 1/R.",
 )
 @click.option(
-    "--modes", "n_modes", type=int, default=1600, show_default=True, help="Number of modes kept."
+    "--modes",
+    "n_modes",
+    type=int,
+    default=1600,
+    show_default=True,
+    help="Number of modes kept (with --angle: 160 unless given, as that route is slower; "
+    "docs/oblique.md).",
 )
 @click.option(
     "--select",
@@ -187,7 +193,7 @@ def _vibrating() -> str:
     help="Mesh refinement level for --method fem (1: epsilon within ~1e-5 of level 2 "
     "at nu = 0.33, v = 0.1, in seconds; each level halves the element size).",
 )
-@force_option("--method fem and --excite thermal: ")
+@force_option("--method fem, --excite thermal and --angle: ")
 @click.option(
     "--energy-tol",
     type=float,
@@ -266,6 +272,22 @@ def _vibrating() -> str:
     "moduli); every mode is damped at tau omega^2 and the dissipated energy is reported. Runs "
     "--integrator split (docs/damping.md). 0: elastic.",
 )
+@click.option(
+    "--angle",
+    type=float,
+    default=None,
+    help="An oblique impact: angle of incidence from the wall's normal, degrees in [0, 90); "
+    "--v stays the normal speed, the tangential one is v tan(angle). Needs --friction; the "
+    "disk only (docs/oblique.md).",
+)
+@click.option(
+    "--friction",
+    "friction",
+    type=float,
+    default=None,
+    help="With --angle: Coulomb's friction coefficient mu >= 0 of the wall (0: frictionless, "
+    "the head-on epsilon).",
+)
 @partner_options
 @format_options
 @strict_option
@@ -299,6 +321,8 @@ def collide(
     modulus_ratio,
     density_ratio,
     relaxation_time,
+    angle,
+    friction,
     fmt,
     as_json,
     strict,
@@ -312,12 +336,20 @@ def collide(
     body instead of the wall: units of the first body, v the relative speed, energies fractions
     of the kinetic energy in the centre-of-mass frame (docs/two-disks.md). With --method fem a
     run that would not fit in memory, or take more than the bound of one run (unless --force),
-    is refused before its mesh is made.
+    is refused before its mesh is made. With --angle and --friction the disk hits the wall
+    obliquely with Coulomb friction: epsilon_normal, beta, the spin, the friction work and the
+    energy left in the modes (docs/oblique.md).
     """
     fmt = output_format(fmt, as_json)
+    if angle is not None or friction is not None:
+        from restitution.cli.collide_oblique import collide_oblique
+
+        return collide_oblique(ctx, angle, friction, fmt, strict)
     body = body_nu(nu, plane, geometry)
     if method != "fem" and excite != "thermal":  # one collision bounds its steps itself
-        refuse_ignored(ctx, {"force": "--force"}, "without --method fem or --excite thermal")
+        refuse_ignored(
+            ctx, {"force": "--force"}, "without --method fem, --excite thermal or --angle"
+        )
     partner = partner_from(ctx, nu, plane, geometry)
     integrator = _damped_integrator(ctx, relaxation_time, integrator, excite, method, select)
     if partner is not None:

@@ -1,0 +1,317 @@
+"""``restitution collide --angle DEG --friction MU``: one oblique impact on the wall with Coulomb
+friction.
+
+A thin layer over :func:`restitution.dynamics.oblique.oblique_collision` (docs/oblique.md, "The
+modal oblique collision"): the options become one :class:`ObliqueRequest`, where every refusal is
+made before a mode is computed; then the rim in both mode families is built, the work estimated,
+told on stderr and refused beyond the bound of one run, the collision run, and one
+:class:`~restitution.cli.report.Report` printed as text, JSON or CSV (one row per mode of the
+rim).
+
+Units: ``E = rho = R = 1`` of the disk (two-dimensional constants); ``--v`` is the normal speed
+towards the wall in ``c``, the tangential speed is ``v tan(angle)``; spins in ``c / R``; energies
+are fractions of the initial kinetic energy ``E0 = (m/2) v^2 / cos(angle)^2``.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from dataclasses import dataclass
+
+from restitution import budget
+from restitution.bodies.cache import check_mode_request, get_modes
+from restitution.bodies.disk.modes import ModeSet
+from restitution.bodies.disk.rim import FAMILIES, rim_modes
+from restitution.bodies.kinds import body_kind, kinds
+from restitution.cli._common import (
+    EXIT_NOT_CONVERGED,
+    LINEAR_SPEED,
+    PARTNER_OPTIONS,
+    body_nu,
+    given,
+    note,
+    nu_inputs,
+    positive_finite,
+    refuse_ignored,
+    stretched,
+)
+from restitution.cli.report import Report, emit, rich_text
+from restitution.dynamics.oblique_cost import check_reach
+from restitution.errors import InputError
+from restitution.status import Status
+
+__all__ = ["DEFAULT_MODES", "ObliqueRequest", "collide_oblique", "oblique_request"]
+
+DEFAULT_MODES = 160
+"""Symmetric modes of the oblique route when ``--modes`` is left out (about 330 on the rim).
+
+The head-on default, 1600, would take minutes on this route (SciPy's DOP853 with a Python
+right-hand side; estimated 1.5 min at ``v = 0.05``, ``alpha = 500`` and 20 min at ``v = 0.2``,
+``alpha = 2000``, :func:`restitution.dynamics.oblique_cost.oblique_work`); 160 took 2-11 s at
+``alpha = 500`` and ``v = 0.005-0.05`` (21-51 s at ``v = 0.2``; 3-196 s over ``alpha =
+100-2000``, ``v = 0.005-0.2``) and stays below the regime where results are suspect (more
+than :data:`~restitution.dynamics.oblique_cost.SUSPECT_MODES` modes). ``epsilon_normal``
+depends on the modes as the head-on epsilon does (one run is no limit ``N -> infinity``);
+``beta`` in partial slip at low speed moves much more (docs/oblique.md: -0.82 at 40 modes to
+-0.32 at 640): give more modes to see it move."""
+
+_RIMS = {ModeSet: rim_modes}
+"""The rim in both mode families of each mode class that has one (a body kind's mode class ->
+its builder): the kinds the oblique route takes. A kind gains the route by adding its builder
+here (or, better, as an attribute of its :class:`~restitution.bodies.kinds.BodyKind`)."""
+
+_NOT_OBLIQUE = {
+    **PARTNER_OPTIONS,
+    "excite": "--excite",
+    "mode_index": "--mode-index",
+    "amplitude": "--amplitude",
+    "phase": "--phase",
+    "temperature": "--temperature",
+    "samples": "--samples",
+    "seed": "--seed",
+    "plot": "--plot",
+    "method": "--method",
+    "mesh_refine": "--mesh-refine",
+    "select": "--select",
+    "integrator": "--integrator",
+    "energy_tol": "--energy-tol",
+    "step_check": "--step-check",
+    "relaxation_time": "--relaxation-time",
+}
+"""Options of ``collide`` the oblique route does not take (parameter -> flag): a wall, not a
+second body; a body at rest; the modal route with DOP853 phase by phase (its own tolerance, no
+step judge); no damping."""
+
+
+def _oblique_kinds() -> list[str]:
+    return [k.geometry for k in kinds().values() if k.mode_class in _RIMS]
+
+
+@dataclass(frozen=True)
+class ObliqueRequest:
+    """What ``collide --angle --friction`` asks, checked.
+
+    Attributes
+    ----------
+    geometry : str
+        The body kind.
+    nu, plane : float, str or None
+        ``--nu`` and ``--plane`` as given; ``nu_body`` the Poisson number the modes take.
+    v : float
+        Normal speed towards the wall, ``c``, in (0, 1).
+    angle : float
+        Angle of incidence from the wall's normal, degrees, in [0, 90).
+    mu : float
+        Coulomb's friction coefficient, >= 0.
+    alpha : float
+        Wall hardness, ``1 / R``.
+    modes : int
+        Symmetric modes (the head-on count); the rim holds about twice as many.
+    force : bool
+        Run beyond the time bound of one run.
+    """
+
+    geometry: str
+    nu: float
+    plane: str | None
+    nu_body: float
+    v: float
+    angle: float
+    mu: float
+    alpha: float
+    modes: int
+    force: bool = False
+
+    @property
+    def v_tangential(self) -> float:
+        """Tangential speed of the centre before, ``v tan(angle)``, ``c``."""
+        return self.v * math.tan(math.radians(self.angle))
+
+    def inputs(self) -> dict:
+        """The ``inputs`` of the JSON envelope."""
+        return {
+            "geometry": self.geometry,
+            **nu_inputs(self.nu, self.plane, self.geometry),
+            "v": self.v,
+            "angle": self.angle,
+            "friction": self.mu,
+            "alpha": self.alpha,
+            "modes": self.modes,
+        }
+
+
+def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueRequest:
+    """The request of ``collide``'s options with ``--angle`` and ``--friction``, or a one-line
+    refusal (:class:`InputError`) before anything is computed."""
+    p = ctx.params
+    geometry = p["geometry"]
+    if body_kind(geometry).mode_class not in _RIMS:
+        raise InputError(
+            f"oblique impacts are computed for the {', '.join(_oblique_kinds())} so far; leave "
+            f"out --angle and --friction for a head-on collision of the {geometry}"
+        )
+    if angle is None or mu is None:
+        missing, present = ("--friction", "--angle") if mu is None else ("--angle", "--friction")
+        raise InputError(
+            f"{present} needs {missing}: an oblique impact is --angle DEG (from the wall's "
+            "normal, 0 is head-on) with --friction MU (Coulomb's coefficient, 0 frictionless)"
+        )
+    if not (math.isfinite(angle) and 0.0 <= angle < 90.0):
+        raise InputError(f"--angle must lie in [0, 90) degrees from the wall's normal, got {angle}")
+    if not (math.isfinite(mu) and mu >= 0.0):
+        raise InputError(f"--friction must be a number >= 0 (Coulomb's coefficient), got {mu}")
+    refuse_ignored(ctx, _NOT_OBLIQUE, "with --angle (an oblique impact on the wall, at rest)")
+    v = p["v"]
+    if not (0.0 < v < 1.0):
+        raise InputError(f"--v must lie in (0, 1) (the normal speed, units of c), got {v}")
+    alpha = positive_finite("--alpha", p["alpha"])
+    check_reach(v, alpha, ("--v", "--alpha"))
+    modes = p["n_modes"] if given(ctx, "n_modes") else DEFAULT_MODES
+    if modes < 1:
+        raise InputError(f"--modes must be at least 1, got {modes}")
+    nu_body = body_nu(p["nu"], p["plane"], geometry)
+    check_mode_request(nu_body, modes, None, geometry)
+    return ObliqueRequest(geometry, p["nu"], p["plane"], nu_body, v, float(angle), float(mu),
+                          alpha, int(modes), bool(p["force"]))  # fmt: skip
+
+
+def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
+    """``collide --angle DEG --friction MU``: the request, the work, the run, the report."""
+    from restitution.dynamics.oblique import oblique_collision
+    from restitution.dynamics.oblique_cost import SPREAD, SUSPECT, oblique_work, suspect_advice
+    from restitution.dynamics.run import CollisionError
+
+    req = oblique_request(ctx, angle, mu)
+    modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
+    rim = _RIMS[type(modes)](modes)
+    work = oblique_work(rim, req.v, req.alpha)
+    budget.check_memory_total(
+        "--modes",
+        req.modes,
+        work.memory_bytes,
+        f"the rim's {len(rim)} modes on {work.nodes} nodes",
+        lambda _limit: "fewer modes or a softer wall (--alpha)",
+    )
+    budget.check_time_total(
+        "--modes",
+        req.modes,
+        work.seconds,
+        f"DOP853 phase by phase, {len(rim)} rim modes on {work.nodes} nodes; measured runs "
+        f"took up to {SPREAD:g} times the estimate",
+        lambda limit: f"about {work.modes_within(limit, req.modes)} modes fit",
+        force=req.force,
+        override="--force",
+    )
+    note(
+        f"note: oblique impact with {req.modes} modes ({len(rim)} on the rim): about "
+        f"{budget.format_duration(work.seconds)} expected"
+    )
+    start = time.perf_counter()
+    try:
+        result = oblique_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
+    except CollisionError as exc:
+        raise CollisionError(
+            f"{exc} (rtol and friction are arguments of restitution.dynamics.oblique."
+            "oblique_collision, not options of the command)"
+        ) from exc
+    wall = time.perf_counter() - start
+    status, advice = stretched(Status.OK, None, req.v, LINEAR_SPEED, result)
+    suspect = suspect_advice(req.modes, req.alpha, req.mu)
+    if suspect is not None and status == Status.OK:
+        status, advice = SUSPECT, suspect
+    rows = _mode_rows(rim, result)
+    payload = {
+        "v_tangential": req.v_tangential,
+        "epsilon_normal": result.epsilon_normal,
+        "beta": result.beta,
+        "beta_meaning": "-v_c(after)/v_c(before), v_c = v_t - R omega the rigid contact "
+        "point's tangential velocity: -1 smooth, +1 reversed; null at angle 0",
+        "v_tangential_after": result.v_tangential,
+        "spin_after": result.spin,
+        "contact_velocity_after": result.contact_velocity,
+        "e0": result.e0,
+        "translation_energy": result.translation_energy,
+        "rotation_energy": result.rotation_energy,
+        "vibration_energy": result.vibration_energy,
+        "friction_work": result.friction_work,
+        "wall_energy": result.wall_energy,
+        "energy_balance": result.energy_balance,
+        "normal_impulse": result.normal_impulse,
+        "tangential_impulse": result.tangential_impulse,
+        "lever_correction": result.lever_correction,
+        "normal_torque_correction": result.normal_torque_correction,
+        "phases": [{"phase": name, "t": t} for name, t in result.phases],
+        "t_end": result.t_end,
+        "steps": result.steps,
+        "rim_modes": len(rim),
+        "estimated_time_s": work.seconds,
+        "wall_time_s": wall,
+        "mode_energies_after": rows,
+    }
+    emit(Report("collide", req.inputs(), payload, status, advice, _units(req.geometry),
+                text=lambda: _text(req, result, len(rim), wall, status, advice),
+                rows=lambda: rows), fmt)  # fmt: skip
+    if status != Status.OK:
+        if fmt != "json":
+            note(f"warning: status {status}: {advice}")
+        if strict:
+            sys.exit(EXIT_NOT_CONVERGED)
+
+
+def _units(geometry: str) -> dict:
+    """The body's units with the oblique impact's speeds, spins, angles and energies."""
+    units = dict(body_kind(geometry).units)
+    mass = units["energy"].rsplit(", ", 1)[-1]
+    units.update(
+        speed=f"c = sqrt(E/rho) (v: the {geometry}'s normal speed towards the wall; the "
+        "tangential speed is v tan(angle))",
+        spin="c/R (positive in the rolling sense of a positive tangential speed)",
+        angle="degrees from the wall's normal",
+        impulse=f"momentum: the mass ({mass}) times c",
+        energy="fraction of the initial kinetic energy E0 = (m/2) (v^2 + v_tangential^2), "
+        f"{mass}; e0 in E R^dimension",
+    )
+    return units
+
+
+def _mode_rows(rim, result) -> list[dict]:
+    """One row per mode of the rim, in its order: family, labels, frequency, energy after
+    (fraction of E0)."""
+    return [
+        {
+            "index": i,
+            "family": FAMILIES[int(rim.family[i])],
+            "n": int(rim.n[i]),
+            "l": int(rim.l[i]),
+            "omega": float(rim.omega[i]),
+            "energy_after": float(result.mode_energy[i]),
+        }
+        for i in range(len(rim))
+    ]
+
+
+def _text(req, result, n_rim, wall, status, advice) -> str:
+    def draw(console):
+        beta = "undefined at angle 0" if math.isnan(result.beta) else f"{result.beta:.6f}"
+        phases = ", ".join(f"{name} at {t:.4g}" for name, t in result.phases[:6])
+        more = f" and {len(result.phases) - 6} more" if len(result.phases) > 6 else ""
+        console.print(
+            f"[bold]epsilon_normal = {result.epsilon_normal:.8f}  beta = {beta}  "
+            f"spin after = {result.spin:.6g} c/R[/bold]\n"
+            f"oblique impact of the {req.geometry}, nu = {req.nu_body:g}: v = {req.v:g} c "
+            f"normal, {req.v_tangential:.6g} c tangential ({req.angle:g} degrees from the "
+            f"normal), friction mu = {req.mu:g}, alpha = {req.alpha:g}, {req.modes} modes "
+            f"({n_rim} on the rim, both families)\n"
+            f"after (fractions of E0): translation {result.translation_energy:.6g}, rotation "
+            f"{result.rotation_energy:.6g}, left in the modes {result.vibration_energy:.6g}, "
+            f"friction work {result.friction_work:.6g}; energy balance "
+            f"{result.energy_balance:.2e}\n"
+            f"contact: {len(result.phases)} phases ({phases}{more}; R/c), stop at "
+            f"{result.t_end:.4g} R/c, {result.steps} DOP853 steps, {wall:.2f} s"
+        )
+        if status != Status.OK:
+            console.print(f"[yellow]status {status}: {advice}[/yellow]")
+
+    return rich_text(draw)
