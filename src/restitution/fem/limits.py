@@ -52,7 +52,12 @@ from restitution.limits.defaults import (
     default_products,
     walls_at,
 )
-from restitution.limits.extrapolation import LinearLimit, epsilon_from_loss, extrapolate_alpha
+from restitution.limits.extrapolation import (
+    FromLoss,
+    LinearLimit,
+    epsilon_from_loss,
+    extrapolate_alpha,
+)
 
 __all__ = ["LEVELS", "FemEpsilon", "FemGrid", "FemRun", "fem_epsilon", "grid_of"]
 
@@ -160,7 +165,7 @@ class FemRun:
 
 
 @dataclass(frozen=True, eq=False)
-class FemEpsilon:
+class FemEpsilon(FromLoss):
     """epsilon at one speed from the FEM route, with the grid and fits behind it.
 
     Attributes
@@ -210,16 +215,6 @@ class FemEpsilon:
     levels: tuple[int, ...]
     wall_time_s: float
     geometry: str = DEFAULT_GEOMETRY
-
-    @property
-    def epsilon(self) -> float:
-        """``sqrt(1 - energy_loss)`` (``nan`` for a loss outside ``[0, 1)``)."""
-        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
-
-    @property
-    def epsilon_err(self) -> float:
-        """Its error, ``energy_loss_err / (2 epsilon)``."""
-        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
 
     @property
     def alphas(self) -> tuple[float, ...]:

@@ -26,6 +26,7 @@ from restitution.estimate import Estimate, estimate_of
 from restitution.jsonable import finite_or_none
 from restitution.limits.extrapolation import (
     CombinedLimit,
+    FromLoss,
     LinearLimit,
     combined_limit,
     epsilon_from_loss,
@@ -162,7 +163,7 @@ def compute_curves(
 
 
 @dataclass(frozen=True, eq=False)
-class PointEpsilon:
+class PointEpsilon(FromLoss):
     """epsilon at one speed, with the grid and fits behind it.
 
     Attributes
@@ -197,17 +198,6 @@ class PointEpsilon:
     fit: CombinedLimit | LinearLimit
     settings: SweepSettings
     failures: tuple = ()
-
-    @property
-    def epsilon(self) -> float:
-        """The extrapolated coefficient of restitution, ``sqrt(1 - energy_loss)`` (``nan`` for
-        a loss outside ``[0, 1)``)."""
-        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
-
-    @property
-    def epsilon_err(self) -> float:
-        """Its error, ``energy_loss_err / (2 epsilon)``."""
-        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary: epsilon, epsilon_err, the grid and the fits."""

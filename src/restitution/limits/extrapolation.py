@@ -80,6 +80,7 @@ from restitution.jsonable import finite_or_none
 
 __all__ = [
     "CombinedLimit",
+    "FromLoss",
     "LinearLimit",
     "alpha_curvature_shift",
     "combined_limit",
@@ -403,6 +404,28 @@ def epsilon_from_loss(loss: float, loss_err: float) -> tuple[float, float]:
         return float("nan"), float("nan")
     eps = math.sqrt(1.0 - loss)
     return eps, loss_err / (2.0 * eps)
+
+
+class FromLoss:
+    """``epsilon`` and ``epsilon_err`` of a record that holds an energy loss and its error
+    (fields ``energy_loss``, ``energy_loss_err``): :func:`epsilon_from_loss` of them, ``nan``
+    for a loss outside ``[0, 1)``."""
+
+    __slots__ = ()
+
+    energy_loss: float
+    energy_loss_err: float
+    estimate: Estimate  # each record's own (its status and message), as every such record has
+
+    @property
+    def epsilon(self) -> float:
+        """``sqrt(1 - energy_loss)`` (``nan`` for a loss outside ``[0, 1)``)."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
+
+    @property
+    def epsilon_err(self) -> float:
+        """Its error, ``energy_loss_err / (2 epsilon)``."""
+        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
 
 
 @dataclass(frozen=True, eq=False)

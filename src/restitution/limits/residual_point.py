@@ -43,8 +43,8 @@ from restitution.bodies.kinds import body_kind
 from restitution.dynamics.residual import collide_residual
 from restitution.estimate import Estimate, estimate_of
 from restitution.limits.extrapolation import (
+    FromLoss,
     alpha_curvature_shift,
-    epsilon_from_loss,
     extrapolate_alpha,
 )
 from restitution.limits.sweep import window_scale
@@ -62,7 +62,7 @@ NODES_PER_CONTACT = 80.0
 
 
 @dataclass(frozen=True)
-class ResidualPoint:
+class ResidualPoint(FromLoss):
     """epsilon at one speed by the residual route, with its error budget (module docstring).
 
     ``energy_loss``, ``energy_loss_err``: the hard-wall limit of the loss and its error
@@ -91,16 +91,6 @@ class ResidualPoint:
     message: str
     seconds: float
     partner: dict | None = None
-
-    @property
-    def epsilon(self) -> float:
-        """``sqrt(1 - energy_loss)`` (``nan`` for a loss outside ``[0, 1)``)."""
-        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[0]
-
-    @property
-    def epsilon_err(self) -> float:
-        """Its error, ``energy_loss_err / (2 epsilon)``."""
-        return epsilon_from_loss(self.energy_loss, self.energy_loss_err)[1]
 
     @property
     def estimate(self) -> Estimate:
