@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from restitution.laws.exports.pchip import LOG_KNOTS_INSIDE
 from restitution.laws.request import request
 from restitution.laws.serve import serve
 
@@ -16,15 +17,12 @@ STEEL_KW = dict(E=210e9, nu=0.3, rho=7850.0, shape="sphere")
 
 
 def _knots(path):
-    rows = []
-    for line in path.read_text().splitlines():
-        parts = line.split()
-        if len(parts) == 3 and not line.startswith("#"):
-            try:
-                rows.append([float(x) for x in parts])
-            except ValueError:
-                continue
-    return np.array(rows)
+    """The table's knots ``(w, epsilon, slope)``: the ``knots N`` rows after its header (the
+    map beta(epsilon) follows them)."""
+    lines = [x for x in path.read_text().splitlines() if x.strip() and not x.startswith("#")]
+    at = next(i for i, x in enumerate(lines) if x.split()[0] == "knots")
+    count = int(lines[at].split()[1])
+    return np.array([[float(y) for y in x.split()] for x in lines[at + 1 : at + 1 + count]])
 
 
 @pytest.mark.slow
@@ -40,9 +38,12 @@ def test_a_plastic_steel_export_has_every_file_and_the_walls_plastic_law(cli, tm
     head = wall.read_text()
     assert "plastic flow (Thornton" in head and "upper bound (no plastic flow)" not in head
     knots = _knots(wall)
-    assert knots.shape[0] >= 10
-    # Three knots above the yield speed: the plastic law of the grain on the wall there.
-    pick = knots[(knots[:, 0] > 0.1) & (knots[:, 0] < 50.0)][::3][:3]
+    # The table's computed speeds, with LOG_KNOTS_INSIDE knots of its interpolant between each
+    # two (the plastic table interpolates in ln v; the plugin's cubic is in w).
+    computed = knots[:: LOG_KNOTS_INSIDE + 1]
+    assert (knots.shape[0] - 1) % (LOG_KNOTS_INSIDE + 1) == 0 and computed.shape[0] >= 10
+    # Three computed speeds above the yield speed: the plastic law of the grain on the wall.
+    pick = computed[(computed[:, 0] > 0.1) & (computed[:, 0] < 50.0)][::3][:3]
     assert len(pick) == 3
     direct = serve(request(**STEEL_KW, against="wall", yield_stress=1e9, radius=1e-3,
                            speeds=list(pick[:, 0]))).points  # fmt: skip
