@@ -644,6 +644,7 @@ def test_the_export_folder_runs_as_written(tmp_path, plugin, cli):
 
 def test_the_export_writes_a_table_per_contact_and_their_input_lines():
     from restitution.laws import exports
+    from restitution.laws.exports.any_size import ANY_SIZE_INPUT
     from restitution.laws.exports.plugin_files import INPUT_NAME, plugin_files
 
     steel = (STEEL["E"], STEEL["nu"], STEEL["rho"])
@@ -654,7 +655,14 @@ def test_the_export_writes_a_table_per_contact_and_their_input_lines():
     names = ["epsilon_lammps_plugin_11.table", "epsilon_lammps_plugin_12.table",
              "epsilon_lammps_plugin_22.table", "epsilon_lammps_plugin_wall1.table",
              INPUT_NAME]  # fmt: skip
-    assert sorted(files) == sorted(names)
+    # Beside them the law per contact of the one material, for every pair of its types
+    # (tests/test_any_size_export.py).
+    laws = ["epsilon_lammps_plugin_11.law", "epsilon_lammps_plugin_wall1.law", ANY_SIZE_INPUT]
+    assert sorted(files) == sorted(names + laws)
+    for i, j in ((1, 1), (1, 2), (2, 2)):
+        assert f"pair_coeff {i} {j} " in files[ANY_SIZE_INPUT]
+        assert files[ANY_SIZE_INPUT].count(f"pair_coeff {i} {j} ") == 1
+    assert files[ANY_SIZE_INPUT].count("epsilon_lammps_plugin_11.law") == 3
     # 1-1 and 2-2 are the law of identical grains, 1-2 the pair's: each file its own knots.
     for name, law in (("11", same), ("12", pair), ("22", same)):
         got = read_table(files[f"epsilon_lammps_plugin_{name}.table"])
@@ -675,9 +683,11 @@ def test_the_export_writes_a_table_per_contact_and_their_input_lines():
     )
     # One constant of a pair: the 1-2 table only, and the lines say how to get the others.
     only = plugin_files(pair, exports.constant_at(pair, 1.0))
-    assert sorted(only) == ["epsilon_lammps_plugin.in", "epsilon_lammps_plugin_12.table",
-                            "epsilon_lammps_plugin_wall1.table"]  # fmt: skip
+    assert sorted(only) == sorted(["epsilon_lammps_plugin.in", "epsilon_lammps_plugin_12.table",
+                                   "epsilon_lammps_plugin_wall1.table", *laws])  # fmt: skip
     assert "to export 1-1 and 2-2 too" in only[INPUT_NAME]
+    # The law per contact serves every pair of the two types all the same.
+    assert only[ANY_SIZE_INPUT].count("epsilon_lammps_plugin_11.law") == 3
 
 
 @pytest.mark.slow

@@ -108,7 +108,8 @@ def write_folder(
         radius_m = viscoelastic.radii_m[1]
     steps = time_steps(s, constant, radius_m, walls)
     try:
-        plugin, no_plugin = plugin_files(s, constant, walls, steps), None
+        tau = None if viscoelastic is None else viscoelastic.relaxation_time_s
+        plugin, no_plugin = plugin_files(s, constant, walls, steps, tau), None
     except InputError as exc:
         plugin, no_plugin = {}, str(exc)
     stem = "epsilon"

@@ -16,6 +16,11 @@ from dataclasses import dataclass
 
 from restitution.errors import InputError
 from restitution.laws.exports._heading import _header
+from restitution.laws.exports.any_size import (
+    ANY_SIZE_INPUT,
+    any_size_files,
+    any_size_header,
+)
 from restitution.laws.exports.dem.lammps import lammps_time_step
 from restitution.laws.exports.lammps_plugin import (
     PLUGIN_NAME,
@@ -117,7 +122,7 @@ def system_contacts(s, c=None, walls=None) -> SystemContacts:
     return SystemContacts(laws, grains, missing, two)
 
 
-def plugin_files(s, c=None, walls=None, steps=None) -> dict[str, str]:
+def plugin_files(s, c=None, walls=None, steps=None, relaxation_time_s=None) -> dict[str, str]:
     """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
     :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
     :class:`TypePairs` ``c`` (their 1-1 and 2-2 laws); a ``Constant`` or ``None`` adds nothing.
@@ -126,6 +131,9 @@ def plugin_files(s, c=None, walls=None, steps=None) -> dict[str, str]:
     the grain on a wall: a damped grain's wall table is damped (:func:`system_contacts`).
     ``steps``: the contacts' time steps
     (:class:`~restitution.laws.exports.time_step.TimeSteps`), written after the lines.
+    ``relaxation_time_s``: a damped law's Kelvin-Voigt time (s), for the laws per contact of
+    spheres (:mod:`~restitution.laws.exports.any_size`), which the folder holds beside the
+    tables where the package has them.
 
     Raises
     ------
@@ -133,23 +141,46 @@ def plugin_files(s, c=None, walls=None, steps=None) -> dict[str, str]:
         Where the plugin cannot carry the law (an epsilon below the map's range, a table
         without two knots): the message says why.
     """
-    g = s.grain
     system = system_contacts(s, c, walls)
-    laws, missing, two = system.laws, system.missing, system.two_materials
-    # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
-    plane = "yplane" if g.kind.planar else "zplane"
-    files, pairs, walls = {}, {}, []
-    for (i, j), law in laws.items():
-        name = _table_name(i, j)
+    files = {}
+    for (i, j), law in system.laws.items():
         what = f"type {i} on the wall" if j == 0 else f"types {i}-{j}"
-        files[name] = plugin_table(pchip_table(law), [*_header(law), f"contact: {what}"])
+        files[_table_name(i, j)] = plugin_table(pchip_table(law), [*_header(law),
+                                                                   f"contact: {what}"])  # fmt: skip
+    lines = [f"# {line}" for line in _header(s)]
+    sizes = any_size_files(s, system, relaxation_time_s)
+    if sizes.files:
+        lines.append(f"# grains of any sizes: {ANY_SIZE_INPUT} (the law per contact) in place "
+                     "of this file's tables, which hold the exported radii only")  # fmt: skip
+    else:
+        lines.append(f"# no law per contact (grains of any sizes): {sizes.why}")
+    tables = {key: _table_name(*key) for key in system.laws}
+    files[INPUT_NAME] = _input(s, system, tables, steps, lines)
+    if sizes.files:
+        files.update(sizes.files)
+        head = [f"# {line}" for line in any_size_header(s, relaxation_time_s or 0.0)] + [
+            "# the time step below is for the exported radius: Hertz's contact time goes as the",
+            "# radius at a given speed, so scale it by your smallest radius over that one",
+        ]  # fmt: skip
+        files[ANY_SIZE_INPUT] = _input(s, system, sizes.names, steps, head)
+    return files
+
+
+def _input(s, system: SystemContacts, names: dict, steps, lines: list[str]) -> str:
+    """The input lines of the plugin for the contacts ``names`` (``(i, j) -> file``, ``j = 0``
+    the wall) of ``system``, after the comment ``lines``."""
+    missing, two = system.missing, system.two_materials
+    # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
+    plane = "yplane" if s.grain.kind.planar else "zplane"
+    pairs, walls = {}, []
+    for (i, j), name in names.items():
         if j == 0:
             group, fix_id = (f"restitution_type{i}", f"wall{i}") if two else ("all", "wall")
             estar = system.contact_modulus(i, 0)
             walls.append((i, PluginWall(estar, name, plane=plane, group=group, fix_id=fix_id)))
         else:
             pairs[i, j] = (system.contact_modulus(i, j), name)
-    lines = [f"# {line}" for line in _header(s)]
+    lines = list(lines)
     lines += [
         f"# the plugin: build it with `restitution lammps-plugin --out DIR` and put {PLUGIN_NAME}",
         "# here (or give its path after plugin load); the tables are read from where LAMMPS runs;",
@@ -172,5 +203,4 @@ def plugin_files(s, c=None, walls=None, steps=None) -> dict[str, str]:
     body = lammps_plugin_input(f"./{PLUGIN_NAME}", pairs, [w for _, w in walls])
     if steps is not None:
         body += "\n".join(lammps_time_step(steps)) + "\n"
-    files[INPUT_NAME] = "\n".join(lines) + "\n" + body
-    return files
+    return "\n".join(lines) + "\n" + body
