@@ -50,3 +50,19 @@ def test_figure_script_on_a_coarse_grid(table, tmp_path):
     oblique_beta.plot_normal(f, tmp_path / "eps.png")
     assert (tmp_path / "beta.png").stat().st_size > 10_000
     assert (tmp_path / "eps.png").stat().st_size > 10_000
+
+
+@pytest.mark.slow
+def test_a_stored_row_is_what_the_production_route_gives(table):
+    """The cheapest stored row (5 m/s, 80 degrees: one slip; about 20 s), recomputed now by
+    the table's own route, agrees with the file within a tenth of its stored error (a
+    regression check of the shipped numbers)."""
+    import dataclasses
+
+    from restitution.laws.making.oblique_table import STEEL_TABLE, compute_table
+
+    plan = dataclasses.replace(STEEL_TABLE, speeds=(5.0,), angles=(80.0,))
+    (new,) = compute_table(plan, say=lambda _text: None)["rows"]
+    (old,) = [r for r in table["rows"] if r["speed_m_s"] == 5.0 and r["angle_deg"] == 80.0]
+    assert abs(new["beta"] - old["beta"]) <= 0.1 * old["beta_error"]
+    assert abs(new["epsilon_normal"] - old["epsilon_normal"]) <= 0.1 * old["epsilon_normal_error"]

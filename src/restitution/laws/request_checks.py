@@ -54,8 +54,8 @@ def check_options(r) -> None:
             raise InputError(f"--friction must be a number >= 0, got {r.friction!r}")
         if r.export_dir is None and r.angle is None:
             raise InputError(
-                "--friction goes into the DEM snippets (add --export DIR) or into an oblique "
-                "impact (add --angle DEG)"
+                "--friction goes into the DEM snippets: add --export DIR (or --angle DEG for "
+                "an oblique impact)"
             )
     if r.angle is not None:
         _check_oblique(r)
