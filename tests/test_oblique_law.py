@@ -54,6 +54,13 @@ def test_si_point_is_the_reduced_route_at_the_speed_and_wall_converted_by_hand()
     assert p.spin_rad_s == pytest.approx(runs[8].spin * c / 0.01, rel=1e-12)
     assert p.spin_R_m_s == pytest.approx(runs[8].spin * c, rel=1e-12)
     assert p.status == Status.COMPUTED_NOT_ASYMPTOTIC and "half the modes" in p.advice
+    from dataclasses import replace
+
+    from restitution.laws.serve import serve
+
+    (law_point,) = serve(replace(r, angle=None, friction=None, radius=None)).points
+    assert p.epsilon_head_on_law == law_point.epsilon and p.head_on_law_status
+    assert p.epsilon_head_on_law_error == law_point.epsilon_err
     assert a.status == Status.COMPUTED_NOT_ASYMPTOTIC
 
 

@@ -224,6 +224,12 @@ def oblique_lines(a) -> list[str]:
             f"{f'{spin:.5g} +- {err:.1g}':>22} "
             f"{f'{p.friction_work:.4f} +- {p.friction_work_error:.1g}':>20}  {p.status}"
         )
+        if p.epsilon_head_on_law is not None:
+            lines.append(
+                f"{'':>9} head-on law at this speed (N, alpha -> infinity): epsilon = "
+                f"{p.epsilon_head_on_law:.6f} +- {p.epsilon_head_on_law_error:.2g} "
+                f"({p.head_on_law_status}): read epsilon_normal against it"
+            )
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
         lines.append(

@@ -77,6 +77,11 @@ class ObliquePoint:
         Friction work and the integration's energy balance, fractions of ``E0``.
     phases : int
         Stick/slip phases of the contact.
+    epsilon_head_on_law, epsilon_head_on_law_error, head_on_law_status : float, float, str
+        The head-on law of the material at this speed (``N, alpha -> infinity``, what ``law``
+        without ``--angle`` answers), to read ``epsilon_normal`` against: the gap is the
+        distance of one mode count on one wall from the limit (docs/oblique.md); ``None`` where
+        no law serves this material.
     status, advice : Status, str
     wall_time_s : float
         Both runs, s.
@@ -99,6 +104,9 @@ class ObliquePoint:
     friction_work_error: float
     energy_balance: float
     phases: int
+    epsilon_head_on_law: float | None
+    epsilon_head_on_law_error: float | None
+    head_on_law_status: str | None
     status: Status
     advice: str
     wall_time_s: float
@@ -207,10 +215,12 @@ def oblique_answer(
     seconds = sum(oblique_work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
     note(
         f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes: about "
-        f"{seconds:.0f} s expected (measured runs took 0.3 to 3.6 times the estimate)"
+        f"{seconds:.0f} s expected (a time fit to walls up to alpha = 4000; on the harder walls "
+        "of slow impacts it overestimates: 96 s estimated, 18-28 s measured for steel at 1 m/s)"
     )
+    head_on = _head_on(r, note)
     points = []
-    for w, v, alpha in plans:
+    for (w, v, alpha), law_point in zip(plans, head_on, strict=True):
         start = time.perf_counter()
         # On these hard walls (alpha ~ 1e4-1e5) DOP853's rejected trial steps overshoot into the
         # wall and overflow exp(alpha X); the step is rejected and retried, and the accepted
@@ -219,11 +229,26 @@ def oblique_answer(
         with np.errstate(over="ignore", invalid="ignore"):
             runs = {n: oblique_collision(b, v, v * tan, r.friction, alpha)
                     for n, b in bodies.items()}  # fmt: skip
-        points.append(_point(r, grain, w, v, alpha, runs, modes, time.perf_counter() - start))
+        wall = time.perf_counter() - start
+        points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point))
     return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))
 
 
-def _point(r, grain, w, v, alpha, runs, modes, wall) -> ObliquePoint:
+def _head_on(r, note) -> list:
+    """The head-on law's points at ``r``'s speeds (``None`` each where no law serves)."""
+    from dataclasses import replace
+
+    from restitution.errors import InputError
+    from restitution.laws.serve import serve
+
+    try:
+        return list(serve(replace(r, angle=None, friction=None, radius=None)).points)
+    except InputError as exc:
+        note(f"note: no head-on law to read epsilon_normal against ({exc})")
+        return [None] * len(r.speeds)
+
+
+def _point(r, grain, w, v, alpha, runs, modes, wall, law_point) -> ObliquePoint:
     fine, coarse = runs[modes], runs[modes // 2]
     c = grain.c_m_s
     spin, spin_err = fine.spin * c, abs(fine.spin - coarse.spin) * c
@@ -253,6 +278,9 @@ def _point(r, grain, w, v, alpha, runs, modes, wall) -> ObliquePoint:
         friction_work_error=abs(fine.friction_work - coarse.friction_work),
         energy_balance=fine.energy_balance,
         phases=len(fine.phases),
+        epsilon_head_on_law=None if law_point is None else law_point.epsilon,
+        epsilon_head_on_law_error=None if law_point is None else law_point.epsilon_err,
+        head_on_law_status=None if law_point is None else str(law_point.status),
         status=status,
         advice=advice,
         wall_time_s=wall,
