@@ -38,7 +38,12 @@ def _fast(**kw):
 
 def test_si_point_is_the_reduced_route_at_the_speed_and_wall_converted_by_hand():
     r = _fast(angle=30.0, friction=0.3, radius=0.01)
-    a = oblique_answer(r, modes=8)
+    from dataclasses import replace
+
+    from restitution.laws.serve import serve
+
+    (law_point,) = serve(replace(r, angle=None, friction=None, radius=None)).points
+    a = oblique_answer(r, modes=8, head_on=[law_point])
     p = a.points[0]
     c = math.sqrt(210e9 / ((1 - 0.09) * 7850.0))  # plane strain: E / (1 - nu^2)
     v = 200.0 / c
@@ -54,11 +59,6 @@ def test_si_point_is_the_reduced_route_at_the_speed_and_wall_converted_by_hand()
     assert p.spin_rad_s == pytest.approx(runs[8].spin * c / 0.01, rel=1e-12)
     assert p.spin_R_m_s == pytest.approx(runs[8].spin * c, rel=1e-12)
     assert p.status == Status.COMPUTED_NOT_ASYMPTOTIC and "half the modes" in p.advice
-    from dataclasses import replace
-
-    from restitution.laws.serve import serve
-
-    (law_point,) = serve(replace(r, angle=None, friction=None, radius=None)).points
     assert p.epsilon_head_on_law == law_point.epsilon and p.head_on_law_status
     assert p.epsilon_head_on_law_error == law_point.epsilon_err
     assert a.status == Status.COMPUTED_NOT_ASYMPTOTIC
@@ -123,6 +123,8 @@ def test_steel_cylinder_at_1_m_s_30_degrees_mu_0_3_in_one_command(cli):
     for key in ("epsilon_normal_error", "beta_error", "spin_rad_s_error", "friction_work_error"):
         assert p[key] >= 0.0
     assert abs(p["energy_balance"]) < 1e-9
+    assert 0.0 < p["epsilon_head_on_law"] < 1.0 and p["head_on_law_status"]  # served beside it
     code, out, err = cli("law", *STEEL_ARGS, "--speed", "1", "--angle", "30", "--friction",
                          "0.3")  # fmt: skip
     assert code == 0 and "beta" in out and "m/s (omega R" in out and "+-" in out, err
+    assert "head-on law at this speed" in out

@@ -185,7 +185,7 @@ def _silent(text: str) -> None:
 
 
 def oblique_answer(
-    request, note: Callable[[str], None] = _silent, *, modes: int = MODES
+    request, note: Callable[[str], None] = _silent, *, modes: int = MODES, head_on=None
 ) -> ObliqueAnswer:
     """The oblique impact of ``request`` (a :class:`~restitution.laws.request.LawRequest` with
     ``angle`` and ``friction``) at each of its speeds (module docs).
@@ -198,6 +198,9 @@ def oblique_answer(
         Told the estimated time before the runs.
     modes : int
         Symmetric modes (default :data:`MODES`); the error from ``modes // 2``.
+    head_on : sequence of SIPoint or None, optional
+        The head-on law's points at the request's speeds (:func:`restitution.laws.serve.serve`
+        passes them), reported beside ``epsilon_normal``; ``None``: none.
     """
     r = request
     grain = r.grain
@@ -218,7 +221,7 @@ def oblique_answer(
         f"{seconds:.0f} s expected (a time fit to walls up to alpha = 4000; on the harder walls "
         "of slow impacts it overestimates: 96 s estimated, 18-28 s measured for steel at 1 m/s)"
     )
-    head_on = _head_on(r, note)
+    head_on = [None] * len(r.speeds) if head_on is None else list(head_on)
     points = []
     for (w, v, alpha), law_point in zip(plans, head_on, strict=True):
         start = time.perf_counter()
@@ -232,20 +235,6 @@ def oblique_answer(
         wall = time.perf_counter() - start
         points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point))
     return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))
-
-
-def _head_on(r, note) -> list:
-    """The head-on law's points at ``r``'s speeds (``None`` each where no law serves)."""
-    from dataclasses import replace
-
-    from restitution.errors import InputError
-    from restitution.laws.serve import serve
-
-    try:
-        return list(serve(replace(r, angle=None, friction=None, radius=None)).points)
-    except InputError as exc:
-        note(f"note: no head-on law to read epsilon_normal against ({exc})")
-        return [None] * len(r.speeds)
 
 
 def _point(r, grain, w, v, alpha, runs, modes, wall, law_point) -> ObliquePoint:

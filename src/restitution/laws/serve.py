@@ -40,6 +40,20 @@ def _silent(text: str) -> None:
     """The default ``note``: say nothing."""
 
 
+def _head_on(r, note) -> list | None:
+    """The head-on law's points at the oblique request ``r``'s speeds, to read its
+    ``epsilon_normal`` against (``None`` where no law serves the material)."""
+    from dataclasses import replace
+
+    from restitution.errors import InputError
+
+    try:
+        return list(serve(replace(r, angle=None, friction=None, radius=None)).points)
+    except InputError as exc:
+        note(f"note: no head-on law to read epsilon_normal against ({exc})")
+        return None
+
+
 def serve(
     request: LawRequest, *, note: Callable[[str], None] = _silent, progress: bool = False
 ) -> LawAnswer | ObliqueAnswer:
@@ -72,7 +86,7 @@ def serve(
     if r.oblique:  # an oblique impact is computed at the asked speeds, not read from a law
         from restitution.laws.oblique import oblique_answer
 
-        return oblique_answer(r, note)
+        return oblique_answer(r, note, head_on=_head_on(r, note))
     mechanism = answering(r)  # its refusals before any law is loaded
     s = route_for(r).law(r, note, progress)
     if mechanism is None:
