@@ -17,7 +17,9 @@ Where each status occurs:
   ``QUASISTATIC``, ``OUTSIDE``;
 * the envelope of a command's JSON (:func:`restitution.cli._common.envelope`): ``OK``,
   ``NOT_ASYMPTOTIC``, ``POINTS_FAILED``, ``FAILED_SAMPLES``, ``LARGE_DEFORMATION`` (``collide``
-  beyond ``v = 0.3 c``), or a collision's status.
+  beyond ``v = 0.3 c``), or a collision's status;
+* an oblique impact (``collide --angle``, ``law --angle``): ``OK``, ``COMPUTED_NOT_ASYMPTOTIC``
+  (one mode count, not extrapolated), ``LARGE_DEFORMATION``, ``SUSPECT``.
 """
 
 from __future__ import annotations
@@ -77,6 +79,12 @@ class Status(enum.StrEnum):
     OUTSIDE = "outside"
     """Outside the computed range of a law: no value (a law never extrapolates)."""
 
+    SUSPECT = "suspect"
+    """An oblique impact in the regime where the modal route is not trusted (more than 320
+    modes on a wall of ``alpha >= 4000`` with friction above 0.1: the contact can break into
+    dozens of stick/slip phases with an erratic force; docs/oblique.md, "Caution");
+    :func:`restitution.dynamics.oblique_cost.suspect_advice` says what to compare it with."""
+
     @property
     def advice(self) -> str | None:
         """What to do about a result of this status (``None``: nothing); one line that works
@@ -118,4 +126,7 @@ _ADVICE: dict[Status, str] = {
     ),
     Status.LARGE_DEFORMATION: "use v <= 0.3 c (0.6 c relative for a pair): linear elasticity",
     Status.OUTSIDE: "give speeds inside the law's computed range; a law never extrapolates",
+    Status.SUSPECT: (
+        "compare with the same impact at 320 modes or on a softer wall before using the number"
+    ),
 }

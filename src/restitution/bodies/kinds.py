@@ -231,6 +231,12 @@ class BodyKind:
         Whether the body is the ball of radius ``R`` of its dimension (the disk, the sphere),
         the body the finite-element route meshes: on the half disk, a planar kind's upper half
         or a three-dimensional kind's meridian section (:mod:`restitution.fem.section`).
+    oblique_body : callable or None
+        ``oblique_body(modes)``: from a mode set of this kind, the body an oblique collision
+        with Coulomb friction takes (the disk: its rim in both mode families,
+        :func:`restitution.bodies.disk.rim.rim_modes`, which
+        :func:`restitution.dynamics.oblique.oblique_collision` consumes); ``None``: no oblique
+        route for this kind yet (``law --angle`` and ``collide --angle`` refuse it).
     """
 
     geometry: str
@@ -266,6 +272,7 @@ class BodyKind:
     default_nus: tuple[float, ...] = ()
     vibrating: bool = False
     ball: bool = False
+    oblique_body: Callable | None = None
 
     @property
     def name(self) -> str:

@@ -22,8 +22,7 @@ from dataclasses import dataclass
 
 from restitution import budget
 from restitution.bodies.cache import check_mode_request, get_modes
-from restitution.bodies.disk.modes import ModeSet
-from restitution.bodies.disk.rim import FAMILIES, rim_modes
+from restitution.bodies.disk.rim import FAMILIES
 from restitution.bodies.kinds import body_kind, kinds
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
@@ -57,11 +56,6 @@ depends on the modes as the head-on epsilon does (one run is no limit ``N -> inf
 ``beta`` in partial slip at low speed moves much more (docs/oblique.md: -0.82 at 40 modes to
 -0.32 at 640): give more modes to see it move."""
 
-_RIMS = {ModeSet: rim_modes}
-"""The rim in both mode families of each mode class that has one (a body kind's mode class ->
-its builder): the kinds the oblique route takes. A kind gains the route by adding its builder
-here (or, better, as an attribute of its :class:`~restitution.bodies.kinds.BodyKind`)."""
-
 _NOT_OBLIQUE = {
     **PARTNER_OPTIONS,
     "excite": "--excite",
@@ -86,7 +80,7 @@ step judge); no damping."""
 
 
 def _oblique_kinds() -> list[str]:
-    return [k.geometry for k in kinds().values() if k.mode_class in _RIMS]
+    return [k.geometry for k in kinds().values() if k.oblique_body is not None]
 
 
 @dataclass(frozen=True)
@@ -147,7 +141,7 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
     refusal (:class:`InputError`) before anything is computed."""
     p = ctx.params
     geometry = p["geometry"]
-    if body_kind(geometry).mode_class not in _RIMS:
+    if body_kind(geometry).oblique_body is None:
         raise InputError(
             f"oblique impacts are computed for the {', '.join(_oblique_kinds())} so far; leave "
             f"out --angle and --friction for a head-on collision of the {geometry}"
@@ -185,7 +179,7 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
 
     req = oblique_request(ctx, angle, mu)
     modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
-    rim = _RIMS[type(modes)](modes)
+    rim = body_kind(req.geometry).oblique_body(modes)
     work = oblique_work(rim, req.v, req.alpha)
     budget.check_memory_total(
         "--modes",

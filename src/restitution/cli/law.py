@@ -25,7 +25,7 @@ from restitution.cli._common import (
     quiet_option,
 )
 from restitution.cli.epsilon import _ListCommand
-from restitution.cli.law_text import status_notes, text_lines
+from restitution.cli.law_text import oblique_lines, status_notes, text_lines
 from restitution.cli.report import Report, emit, format_options, output_format
 from restitution.errors import InputError, PlausibilityWarning, RestitutionError
 from restitution.laws.mechanisms.base import extra_options
@@ -195,10 +195,11 @@ def law(fmt, as_json, plot_file, **options):
     r = answer.request
     # The warnings in the JSON too: a script reading it sees what stderr said.
     payload = {**answer.to_dict(), "warnings": list(doubts.texts)}
+    lines = oblique_lines if r.oblique else text_lines
     emit(Report("law", r.inputs(), payload, answer.status, answer.advice,
-                answer.units, lambda: "\n".join(text_lines(answer)),
+                answer.units, lambda: "\n".join(lines(answer)),
                 lambda: [p.to_dict() for p in answer.points]), fmt)  # fmt: skip
-    if fmt == "text":
+    if fmt == "text" and not r.oblique:
         for line in status_notes(answer):
             note(line)
     missing = [p for p in answer.points if p.epsilon is None]
@@ -218,6 +219,11 @@ def _answer(request: LawRequest, plot_file, say):
     mechanism = answering(request)
     table = None if mechanism is None else getattr(mechanism, "table", None)
     if plot_file is not None:
+        if request.oblique:
+            raise InputError(
+                "--plot draws a law at every speed; an oblique impact (--angle) is computed at "
+                "the asked speeds only: leave out --plot and read the rows (--format csv)"
+            )
         if mechanism is not None and table is None:
             raise InputError(
                 f"--plot draws a law at every speed, which {mechanism.words} does not make "

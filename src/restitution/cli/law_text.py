@@ -196,3 +196,46 @@ def _uninformative_part(note: str) -> str:
         if head in note:
             return note[note.index(head) :]
     return note
+
+
+def oblique_lines(a) -> list[str]:
+    """The oblique answer (:class:`restitution.laws.oblique.ObliqueAnswer`) for people: the
+    grain and the impact, a row per speed with each number's change from half the modes."""
+    r = a.request
+    lines = [
+        r.grain.describe(),
+        f"oblique impact on the rigid wall: {r.angle:g} degrees from the normal, friction mu = "
+        f"{r.friction:g}; each speed is the normal one (tangential: w tan(angle)), no spin "
+        "before; modal oblique route (docs/oblique.md), +- the change from half the modes",
+    ]
+    spin_unit = "rad/s" if r.radius is not None else "m/s (omega R; --radius gives rad/s)"
+    lines.append(
+        f"{'w (m/s)':>9} {'v/c':>10} {'epsilon_normal':>22} {'beta':>20} "
+        f"{'spin after':>22} {'friction work':>20}  status"
+    )
+    for p in a.points:
+        spin, err = (
+            (p.spin_rad_s, p.spin_rad_s_error) if r.radius else (p.spin_R_m_s, p.spin_R_m_s_error)
+        )
+        beta = "undefined" if p.beta is None else f"{p.beta:.5f} +- {p.beta_error:.1g}"
+        lines.append(
+            f"{p.speed_m_s:>9.4g} {p.v:>10.4g} "
+            f"{f'{p.epsilon_normal:.6f} +- {p.epsilon_normal_error:.1g}':>22} {beta:>20} "
+            f"{f'{spin:.5g} +- {err:.1g}':>22} "
+            f"{f'{p.friction_work:.4f} +- {p.friction_work_error:.1g}':>20}  {p.status}"
+        )
+        if p.epsilon_head_on_law is not None:
+            lines.append(
+                f"{'':>9} head-on law at this speed (N, alpha -> infinity): epsilon = "
+                f"{p.epsilon_head_on_law:.6f} +- {p.epsilon_head_on_law_error:.2g} "
+                f"({p.head_on_law_status}): read epsilon_normal against it"
+            )
+    if a.points:
+        walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
+        lines.append(
+            f"spin in {spin_unit}, positive in the rolling sense; friction work as a fraction "
+            f"of the kinetic energy before; {a.points[0].modes} modes; walls alpha = {walls} "
+            "(1/R); total time "
+            f"{sum(p.wall_time_s for p in a.points):.1f} s"
+        )
+    return lines

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from restitution.dynamics.contact.exponential import NEGLIGIBLE
 from restitution.errors import InputError
+from restitution.status import Status
 
 __all__ = [
     "SUSPECT",
@@ -44,10 +45,9 @@ SPREAD = 3.6
 _STORED_STEPS = 5000  # steps whose states solve_ivp keeps (measured up to 3950)
 _NODE_ARRAYS = 10  # arrays of (nodes, rim modes) alive at once: the shapes and their products
 
-SUSPECT = "suspect"
-"""Status of a result in the regime where the route is not trusted (:func:`suspect_advice`).
-It belongs in :class:`restitution.status.Status` and README's table of statuses; it is kept
-here until it joins them."""
+SUSPECT = Status.SUSPECT
+"""Status of a result in the regime where the route is not trusted (:func:`suspect_advice`):
+:attr:`restitution.status.Status.SUSPECT`."""
 
 SUSPECT_MODES = 320
 """Above this many symmetric modes ..."""

@@ -222,12 +222,26 @@ class LawRequest:
             positive=True,
         ),
     )
+    angle: float | None = field(
+        default=None,
+        metadata=option(
+            "--angle",
+            "Oblique impact on the rigid wall: the angle of incidence from the wall's normal, "
+            "degrees, in [0, 90), with --friction MU. Each speed w is the normal speed (the "
+            "tangential one is w tan(angle), no spin before); the answer is epsilon_normal, "
+            "beta, the spin after and the friction work, each with the change from half the "
+            "modes as its error, computed by the modal oblique route (docs/oblique.md; "
+            "cylinder and thin disk so far). --radius adds the spin in rad/s.",
+            unit="deg",
+        ),
+    )
     friction: float | None = field(
         default=None,
         metadata=option(
             "--friction",
-            "Sliding friction coefficient mu the DEM snippets of --export set (default none: "
-            "they set mu = 0 and say so); restitution computes only the normal coefficient.",
+            "Sliding friction coefficient mu: with --angle, Coulomb's coefficient of the "
+            "oblique impact computed; otherwise the one the DEM snippets of --export set "
+            "(default none: they set mu = 0 and say so).",
         ),
     )
     maxwell_temperature: float | None = field(
@@ -536,6 +550,11 @@ class LawRequest:
         return given != (None,) * 3 or self.fixes_limiting_pressure or self.fixes_both
 
     @property
+    def oblique(self) -> bool:
+        """Whether an oblique impact is asked (``--angle``; :mod:`restitution.laws.oblique`)."""
+        return self.angle is not None
+
+    @property
     def constants(self) -> bool:
         """Whether a constant for one-number codes is asked for."""
         return (self.reference_speed, self.maxwell_temperature) != (None, None)
@@ -554,6 +573,7 @@ class LawRequest:
             "reference_speed": self.reference_speed,
             "maxwell_temperature": self.maxwell_temperature, "export": path(self.export_dir),
             "friction": self.friction,
+            **({} if self.angle is None else {"angle_deg": self.angle}),
             "measured_epsilon": self.measured_epsilon,
             "measured_speed_m_s": self.measured_speed,
             "relaxation_time_s": self.relaxation_time, "radius_m": self.radius,

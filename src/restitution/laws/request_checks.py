@@ -52,8 +52,14 @@ def check_options(r) -> None:
     if r.friction is not None:
         if r.friction < 0.0:
             raise InputError(f"--friction must be a number >= 0, got {r.friction!r}")
-        if r.export_dir is None:
-            raise InputError("--friction goes into the DEM snippets: add --export DIR")
+        if r.export_dir is None and r.angle is None:
+            raise InputError(
+                "--friction goes into the DEM snippets: add --export DIR (or --angle DEG for "
+                "an oblique impact)"
+            )
+    if r.angle is not None:
+        _check_oblique(r)
+        return
     _check_ratio(r)
     _check_damping(r)
     other = r.partner_grain
@@ -78,6 +84,54 @@ def check_options(r) -> None:
         raise InputError(
             "--store holds the modal route's collisions; the residual route keeps its "
             "points in the cache: leave out --store or --route residual"
+        )
+
+
+OBLIQUE_FIELDS = frozenset({"E", "nu", "rho", "shape", "against", "speeds", "angle", "friction",
+                            "radius"})  # fmt: skip
+"""The request fields an oblique impact (``--angle``) reads; any other given is refused."""
+
+
+def _check_oblique(r) -> None:
+    """``--angle``: its range, its friction, and no option that it would not read (it is a
+    grain of one material on the rigid wall, elastic, computed at the asked speeds)."""
+    from dataclasses import fields
+
+    if not (math.isfinite(r.angle) and 0.0 <= r.angle < 90.0):
+        raise InputError(
+            f"--angle must lie in [0, 90) degrees from the wall's normal, got {r.angle}"
+        )
+    if r.friction is None:
+        raise InputError(
+            "--angle needs --friction MU (Coulomb's coefficient, 0 frictionless): an oblique "
+            "impact is both"
+        )
+    for f in fields(r):
+        if f.name in OBLIQUE_FIELDS or f.name == "extra":
+            continue
+        if getattr(r, f.name) != f.default:
+            raise InputError(
+                f"{f.metadata['option']} does not go with --angle (an oblique impact of an "
+                "elastic grain on the rigid wall, computed at the asked speeds); leave it out"
+            )
+    given = [k for k, v in dict(r.extra).items() if v is not None]
+    if given:
+        raise InputError(
+            f"--{given[0].replace('_', '-')} does not go with --angle (an oblique impact of an "
+            "elastic grain on the rigid wall); leave it out"
+        )
+    wall = owner("wall_E").against
+    if r.against != wall:
+        raise InputError(
+            f"oblique impacts are computed against the rigid wall so far; use --against {wall}"
+        )
+    kind = body_kind(BODIES[r.shape])
+    if kind.oblique_body is None:
+        shapes = [s for s, name in BODIES.items() if body_kind(name).oblique_body is not None]
+        raise InputError(
+            f"oblique impacts (--angle) of the {r.shape} are not computed yet (the {kind.geometry}"
+            f"'s oblique route is not built); --shape {' or '.join(shapes)} have one, or leave "
+            f"out --angle and --friction for the {r.shape}'s head-on law"
         )
 
 

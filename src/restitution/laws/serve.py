@@ -29,6 +29,7 @@ from restitution.laws import mechanisms as _mechanisms  # noqa: F401  (registers
 from restitution.laws import routes as _routes  # noqa: F401  (registers them)
 from restitution.laws.answer import LawAnswer, elastic_answer
 from restitution.laws.mechanisms.base import answering
+from restitution.laws.oblique import ObliqueAnswer
 from restitution.laws.request import LawRequest
 from restitution.laws.routes.base import route_for
 
@@ -39,9 +40,23 @@ def _silent(text: str) -> None:
     """The default ``note``: say nothing."""
 
 
+def _head_on(r, note) -> list | None:
+    """The head-on law's points at the oblique request ``r``'s speeds, to read its
+    ``epsilon_normal`` against (``None`` where no law serves the material)."""
+    from dataclasses import replace
+
+    from restitution.errors import InputError
+
+    try:
+        return list(serve(replace(r, angle=None, friction=None, radius=None)).points)
+    except InputError as exc:
+        note(f"note: no head-on law to read epsilon_normal against ({exc})")
+        return None
+
+
 def serve(
     request: LawRequest, *, note: Callable[[str], None] = _silent, progress: bool = False
-) -> LawAnswer:
+) -> LawAnswer | ObliqueAnswer:
     """The answer to ``request`` (module docs).
 
     Parameters
@@ -56,6 +71,11 @@ def serve(
         a damped law's viscous collisions (inferring its relaxation time; tabulating it for
         the exports or constants, which a note announces with their number).
 
+    Returns
+    -------
+    LawAnswer or ObliqueAnswer
+        The latter for an oblique impact (``request.angle``; :mod:`restitution.laws.oblique`).
+
     Raises
     ------
     InputError
@@ -63,6 +83,10 @@ def serve(
         with the command or option that makes one.
     """
     r = request
+    if r.oblique:  # an oblique impact is computed at the asked speeds, not read from a law
+        from restitution.laws.oblique import oblique_answer
+
+        return oblique_answer(r, note, head_on=_head_on(r, note))
     mechanism = answering(r)  # its refusals before any law is loaded
     s = route_for(r).law(r, note, progress)
     if mechanism is None:

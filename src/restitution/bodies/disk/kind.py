@@ -15,6 +15,7 @@ import numpy as np
 
 from restitution.bodies.disk import contact
 from restitution.bodies.disk.modes import _ALGORITHM_VERSION, ModeSet, compute_modes, weyl_count
+from restitution.bodies.disk.rim import rim_modes
 from restitution.bodies.disk.surface import edge_basis
 from restitution.bodies.kinds import (
     BodyKind,
@@ -163,6 +164,7 @@ KIND = register(
         default_nus=(0.33, 0.9),
         vibrating=True,
         ball=True,
+        oblique_body=rim_modes,
     )
 )
 """The disk of the paper."""

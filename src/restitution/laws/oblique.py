@@ -1,0 +1,276 @@
+"""The oblique impact of a real grain on the rigid wall with Coulomb friction, in SI units.
+
+Units: SI at this edge (m/s, rad/s, Pa, kg/m^3, m, degrees); inside, the grain's reduced units
+(``E = rho = R = 1`` of its body kind's constants, speeds in ``c``, spins in ``c / R``).
+
+``law --angle DEG --friction MU`` (:class:`~restitution.laws.request.LawRequest` with ``angle``)
+is answered here: each asked speed ``w`` is the grain's normal speed towards the wall, ``v = w /
+c`` (:meth:`~restitution.laws.units.Grain.v_over_c`), the tangential speed ``v tan(angle)``, no
+spin before. The body kind's oblique body (:attr:`restitution.bodies.kinds.BodyKind.
+oblique_body`: the disk's rim in both mode families) hits the exponential wall of hardness
+``alpha = p / delta_max(v)``, ``p`` the softest of the kind's walls
+(:attr:`~restitution.bodies.kinds.BodyKind.alpha_products`, 40 for the disk: the wall the head-on
+law's sweeps start from), in :func:`restitution.dynamics.oblique.oblique_collision`, at
+:data:`MODES` modes and at half as many. The numbers are those of :data:`MODES` modes; the
+error of each is its change from half the modes: a measure of how far one mode count is from
+converged, **not** an extrapolation to ``N, alpha -> infinity`` (the head-on laws' route, which
+the oblique route cannot yet afford; docs/oblique.md). Hence every point's status is at best
+:attr:`~restitution.status.Status.COMPUTED_NOT_ASYMPTOTIC`.
+
+A kind without an oblique route (the sphere, so far) is refused where the request is built
+(:mod:`restitution.laws.request_checks`); nothing here names a kind.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from restitution.bodies.cache import get_modes
+from restitution.bodies.kinds import body_kind
+from restitution.dynamics.oblique import oblique_collision
+from restitution.dynamics.oblique_cost import check_reach, oblique_work, suspect_advice
+from restitution.laws.units import BODIES
+from restitution.status import Status
+
+__all__ = ["LARGE_SPEED", "MODES", "ObliqueAnswer", "ObliquePoint", "oblique_answer"]
+
+MODES = 160
+"""Symmetric modes of each oblique point (the rim holds about twice as many), as ``collide
+--angle``'s default; the error is the change from ``MODES // 2``."""
+
+LARGE_SPEED = 0.3
+"""Above this normal speed (``c``) linear elasticity is stretched: status ``large-deformation``
+(as ``collide``)."""
+
+_NOT_EXTRAPOLATED = (
+    "one mode count on one wall, not extrapolated to N, alpha -> infinity: the error is the "
+    "change from half the modes; beta in partial slip still moves with the modes "
+    "(docs/oblique.md)"
+)
+
+
+@dataclass(frozen=True)
+class ObliquePoint:
+    """One speed of an oblique answer. Speeds m/s, spins rad/s (``spin_rad_s``; ``None``
+    without a radius) and m/s (``spin_R_m_s = omega R``), energies fractions of the kinetic
+    energy before; each ``*_error`` is the change from half the modes.
+
+    Attributes
+    ----------
+    speed_m_s, v : float
+        Normal speed towards the wall, m/s and ``c``.
+    v_tangential : float
+        Tangential speed before, ``c``.
+    alpha, modes : float, int
+        The wall (``1 / R``) and the symmetric modes.
+    epsilon_normal, beta : float
+        ``-v_n(after) / v_n``; ``-v_c(after) / v_c(before)`` of the contact point (``None`` at
+        angle 0).
+    spin_R_m_s, spin_rad_s : float
+        Spin after (rolling sense) times ``R``, m/s; and in rad/s with the radius.
+    friction_work, energy_balance : float
+        Friction work and the integration's energy balance, fractions of ``E0``.
+    phases : int
+        Stick/slip phases of the contact.
+    epsilon_head_on_law, epsilon_head_on_law_error, head_on_law_status : float, float, str
+        The head-on law of the material at this speed (``N, alpha -> infinity``, what ``law``
+        without ``--angle`` answers), to read ``epsilon_normal`` against: the gap is the
+        distance of one mode count on one wall from the limit (docs/oblique.md); ``None`` where
+        no law serves this material.
+    status, advice : Status, str
+    wall_time_s : float
+        Both runs, s.
+    """
+
+    speed_m_s: float
+    v: float
+    v_tangential: float
+    alpha: float
+    modes: int
+    epsilon_normal: float
+    epsilon_normal_error: float
+    beta: float | None
+    beta_error: float | None
+    spin_R_m_s: float
+    spin_R_m_s_error: float
+    spin_rad_s: float | None
+    spin_rad_s_error: float | None
+    friction_work: float
+    friction_work_error: float
+    energy_balance: float
+    phases: int
+    epsilon_head_on_law: float | None
+    epsilon_head_on_law_error: float | None
+    head_on_law_status: str | None
+    status: Status
+    advice: str
+    wall_time_s: float
+
+    @property
+    def epsilon(self) -> float:
+        """The normal coefficient (what ``law`` checks every point has)."""
+        return self.epsilon_normal
+
+    @property
+    def note(self) -> str:
+        """The advice (what ``law`` says of a point)."""
+        return self.advice
+
+    def to_dict(self) -> dict:
+        """The point as JSON values."""
+        return {k: (str(v) if isinstance(v, Status) else v) for k, v in asdict(self).items()}
+
+
+@dataclass(frozen=True)
+class ObliqueAnswer:
+    """What :func:`oblique_answer` returns (the same object for a notebook and ``law``)."""
+
+    request: object
+    shape: str
+    nu_body: float
+    c_m_s: float
+    points: tuple[ObliquePoint, ...]
+
+    @property
+    def status(self) -> Status:
+        """The worst of the points' statuses (``suspect``, ``large-deformation``,
+        ``computed-not-asymptotic``)."""
+        order = (Status.SUSPECT, Status.LARGE_DEFORMATION, Status.COMPUTED_NOT_ASYMPTOTIC)
+        got = {p.status for p in self.points}
+        return next((s for s in order if s in got), Status.OK)
+
+    @property
+    def advice(self) -> str | None:
+        """The advice of the first point of the answer's status."""
+        return next((p.advice for p in self.points if p.status == self.status), None)
+
+    @property
+    def units(self) -> dict:
+        """The units of every number of :meth:`to_dict`."""
+        return {
+            "speed": "m/s (speed_m_s: normal speed towards the wall; v, v_tangential: units of "
+            f"c = {self.c_m_s:.6g} m/s)",
+            "angle": "degrees from the wall's normal",
+            "spin": "spin_rad_s: rad/s (positive in the rolling sense); spin_R_m_s: spin times "
+            "the radius, m/s",
+            "energy": "fraction of the kinetic energy before",
+            "alpha": "1/R",
+            "wall_time": "s",
+        }
+
+    def to_dict(self) -> dict:
+        """The command's JSON payload."""
+        r = self.request
+        return {
+            "route": "modal oblique (restitution.dynamics.oblique), "
+            f"{self.points[0].modes if self.points else MODES} modes, error from half",
+            "shape": self.shape,
+            "nu_body": self.nu_body,
+            "c_m_s": self.c_m_s,
+            "angle_deg": r.angle,
+            "friction": r.friction,
+            "beta_meaning": "-v_c(after)/v_c(before), v_c = v_t - R omega the contact point's "
+            "tangential velocity: -1 smooth, +1 reversed",
+            "points": [p.to_dict() for p in self.points],
+        }
+
+
+def _silent(text: str) -> None:
+    """The default ``note``: say nothing."""
+
+
+def oblique_answer(
+    request, note: Callable[[str], None] = _silent, *, modes: int = MODES, head_on=None
+) -> ObliqueAnswer:
+    """The oblique impact of ``request`` (a :class:`~restitution.laws.request.LawRequest` with
+    ``angle`` and ``friction``) at each of its speeds (module docs).
+
+    Parameters
+    ----------
+    request : LawRequest
+        Checked where it was built (the kind has an oblique route, the partner is the wall).
+    note : callable
+        Told the estimated time before the runs.
+    modes : int
+        Symmetric modes (default :data:`MODES`); the error from ``modes // 2``.
+    head_on : sequence of SIPoint or None, optional
+        The head-on law's points at the request's speeds (:func:`restitution.laws.serve.serve`
+        passes them), reported beside ``epsilon_normal``; ``None``: none.
+    """
+    r = request
+    grain = r.grain
+    kind = body_kind(BODIES[r.shape])
+    nu = grain.law_nu
+    tan = math.tan(math.radians(r.angle))
+    plans = []
+    for w in r.speeds:
+        v = float(grain.v_over_c(w, r.against))
+        alpha = kind.alpha_products[0] / kind.max_compression(v, nu)
+        check_reach(v, alpha, ("the normal speed (c)", "alpha"))
+        plans.append((w, v, alpha))
+    bodies = {n: kind.oblique_body(get_modes(nu, count=n, geometry=kind.geometry))
+              for n in (modes // 2, modes)}  # fmt: skip
+    seconds = sum(oblique_work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
+    note(
+        f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes: about "
+        f"{seconds:.0f} s expected (a time fit to walls up to alpha = 4000; on the harder walls "
+        "of slow impacts it overestimates: 96 s estimated, 18-28 s measured for steel at 1 m/s)"
+    )
+    head_on = [None] * len(r.speeds) if head_on is None else list(head_on)
+    points = []
+    for (w, v, alpha), law_point in zip(plans, head_on, strict=True):
+        start = time.perf_counter()
+        # On these hard walls (alpha ~ 1e4-1e5) DOP853's rejected trial steps overshoot into the
+        # wall and overflow exp(alpha X); the step is rejected and retried, and the accepted
+        # run balances its energy to ~1e-12 (the point's energy_balance), so the warnings of
+        # those trials are not shown.
+        with np.errstate(over="ignore", invalid="ignore"):
+            runs = {n: oblique_collision(b, v, v * tan, r.friction, alpha)
+                    for n, b in bodies.items()}  # fmt: skip
+        wall = time.perf_counter() - start
+        points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point))
+    return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))
+
+
+def _point(r, grain, w, v, alpha, runs, modes, wall, law_point) -> ObliquePoint:
+    fine, coarse = runs[modes], runs[modes // 2]
+    c = grain.c_m_s
+    spin, spin_err = fine.spin * c, abs(fine.spin - coarse.spin) * c
+    rad = None if r.radius is None else 1.0 / r.radius
+    beta = None if math.isnan(fine.beta) else fine.beta
+    status, advice = Status.COMPUTED_NOT_ASYMPTOTIC, _NOT_EXTRAPOLATED
+    suspect = suspect_advice(modes, alpha, r.friction)
+    if v > LARGE_SPEED:
+        status, advice = Status.LARGE_DEFORMATION, Status.LARGE_DEFORMATION.advice
+    if suspect is not None:
+        status, advice = Status.SUSPECT, suspect
+    return ObliquePoint(
+        speed_m_s=float(w),
+        v=v,
+        v_tangential=fine.v_tangential_before,
+        alpha=alpha,
+        modes=modes,
+        epsilon_normal=fine.epsilon_normal,
+        epsilon_normal_error=abs(fine.epsilon_normal - coarse.epsilon_normal),
+        beta=beta,
+        beta_error=None if beta is None else abs(fine.beta - coarse.beta),
+        spin_R_m_s=spin,
+        spin_R_m_s_error=spin_err,
+        spin_rad_s=None if rad is None else spin * rad,
+        spin_rad_s_error=None if rad is None else spin_err * rad,
+        friction_work=fine.friction_work,
+        friction_work_error=abs(fine.friction_work - coarse.friction_work),
+        energy_balance=fine.energy_balance,
+        phases=len(fine.phases),
+        epsilon_head_on_law=None if law_point is None else law_point.epsilon,
+        epsilon_head_on_law_error=None if law_point is None else law_point.epsilon_err,
+        head_on_law_status=None if law_point is None else str(law_point.status),
+        status=status,
+        advice=advice,
+        wall_time_s=wall,
+    )
