@@ -61,6 +61,12 @@ def test_si_point_is_the_reduced_route_at_the_speed_and_wall_converted_by_hand()
     assert p.status == Status.COMPUTED_NOT_ASYMPTOTIC and "half the modes" in p.advice
     assert p.epsilon_head_on_law == law_point.epsilon and p.head_on_law_status
     assert p.epsilon_head_on_law_error == law_point.epsilon_err
+    # epsilon_normal's error: the change from half the modes, the distance from the head-on
+    # law and that law's error, in quadrature.
+    parts = (runs[8].epsilon_normal - runs[4].epsilon_normal,
+             runs[8].epsilon_normal - law_point.epsilon, law_point.epsilon_err)  # fmt: skip
+    assert p.epsilon_normal_error == pytest.approx(math.hypot(*parts), rel=1e-12)
+    assert p.epsilon_normal_error >= abs(p.epsilon_normal - law_point.epsilon)
     assert a.status == Status.COMPUTED_NOT_ASYMPTOTIC
 
 
