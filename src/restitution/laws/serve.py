@@ -15,7 +15,7 @@ Notes (what was computed, what was left out) go to the ``note`` callable instead
 Example
 -------
 >>> from restitution.laws.request import LawRequest
->>> a = serve(LawRequest(E=63e9, nu=0.2481, rho=2500, geometry="cylinder", against="wall",
+>>> a = serve(LawRequest(E=63e9, nu=0.2481, rho=2500, shape="cylinder", against="wall",
 ...                      speeds=(1.0,)))
 >>> 0.99 < a.points[0].epsilon < 1.0
 True
