@@ -106,16 +106,17 @@ def test_thorntons_part_is_the_packages(pair, wall):
     # v_y of the contact's own constants: the package's yield speed of that law; epsilon_T its
     # closed form (quasistatic.plastic) at w / v_y.
     law = plastic_law(_si(2.0), yield_stress_pa=YIELD)
+    assert pair.plastic.limiting_pressure_pa == law.p_y  # the onset pressure, 1.6128 Y
     w = 1.0
     got = pair(w, 1e-3, mass(1e-3), 2e-3, mass(2e-3), E_PAIR)
-    assert math.isclose(got.speed_over_yield, w / law.yield_speed_m_s(), rel_tol=1e-5)
+    assert math.isclose(got.speed_over_yield, w / law.yield_speed_m_s(), rel_tol=1e-14)
     assert math.isclose(got.epsilon_contact, float(thornton_epsilon(got.speed_over_yield)),
                         rel_tol=1e-14)  # fmt: skip
     on_wall = plastic_law(restitution.si_law(STEEL.E, STEEL.nu, STEEL.rho, "sphere", "wall"),
                           yield_stress_pa=YIELD)  # fmt: skip
     for r in (0.5e-3, 3e-3):  # the wall's v_y has no radius
         got = wall(w, r, mass(r), E_WALL)
-        assert math.isclose(got.speed_over_yield, w / on_wall.yield_speed_m_s(), rel_tol=1e-5)
+        assert math.isclose(got.speed_over_yield, w / on_wall.yield_speed_m_s(), rel_tol=1e-14)
 
 
 def test_a_plastic_grain_on_the_wall_is_the_packages_law(wall):
