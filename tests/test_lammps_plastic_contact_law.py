@@ -49,6 +49,7 @@ def laws(tmp_path_factory):
         "plastic.law": pair_contact_law(STEEL, yield_stress_pa=YIELD),
         "plastic_wall.law": wall_contact_law(STEEL, yield_stress_pa=YIELD),
         "elastic.law": pair_contact_law(STEEL),
+        "hard_wall.law": wall_contact_law(STEEL, limiting_pressure_pa=2e10),
     }
     for name, law in made.items():
         (folder / name).write_text(contact_law_file(law, [name]))
@@ -124,7 +125,12 @@ def test_the_probe_evaluates_the_plastic_law_as_python(plugin, laws):
     folder, made = laws
     probe = str(plugin.with_name(lp.PROBE_NAME))
     rng = np.random.default_rng(62)
-    cases = {"plastic.law": [], "plastic_wall.law": []}
+    # the hard wall (p_y = 20 GPa, v_y = 18.7 m/s): at 1000 m/s below the route's x_lo
+    cases = {
+        "plastic.law": [],
+        "plastic_wall.law": [],
+        "hard_wall.law": [(w, E_WALL, 1e-3, mass(1e-3)) for w in (10.0, 500.0, 1000.0)],
+    }
     for _ in range(150):
         w, r1 = 10 ** rng.uniform(-2, 1.5), 10 ** rng.uniform(-3.5, -2.5)
         r2 = r1 * 10 ** rng.uniform(-0.5, 0.5)
@@ -152,3 +158,6 @@ def test_the_probe_evaluates_the_plastic_law_as_python(plugin, laws):
             np.testing.assert_allclose(elastic, want.elastic_loss, rtol=1e-12, atol=1e-14)
             np.testing.assert_allclose(beta, want.beta, rtol=1e-13, atol=1e-16)
     assert outside < 150  # most inside (slow contacts of small grains beyond the table)
+    hard = subprocess.run([probe, str(folder / "hard_wall.law"), "wall", "1000.0", repr(E_WALL),
+                           "0.001", repr(mass(1e-3))], capture_output=True, text=True)  # fmt: skip
+    assert "below the 7.007" in hard.stdout and "low-speed route's reach" in hard.stdout

@@ -195,6 +195,12 @@ def test_what_the_plastic_law_refuses():
         got = soft(w, 1e-3, mass(1e-3), E_WALL)
         assert got.epsilon is None and "no epsilon is extrapolated" in got.note
         assert what in got.note and "plastic pulse's waves" in got.note
+    # a limiting pressure of 20 GPa: v_y = 18.7 m/s on the wall; at 1000 m/s (u = 53, inside the
+    # wall law's modal range) the contact lasts 6.8 transit times, below the route's x_lo = 7.0
+    hard = wall_contact_law(STEEL, limiting_pressure_pa=2e10)
+    got = hard(1000.0, 1e-3, mass(1e-3), E_WALL)
+    assert got.epsilon is None and "below the 7.007" in got.note
+    assert "low-speed route's reach" in got.note
 
 
 def test_doctests():

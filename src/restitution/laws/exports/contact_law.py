@@ -152,6 +152,13 @@ class PlasticFlow:
                     f"the {w.u_top:.6g} to which the table of the plastic pulse's waves reaches; "
                     "no epsilon is extrapolated"
                 )
+            if x < w.x[0]:
+                raise _Outside(
+                    f"{what}: the contact time is {x:.4g} transit times of the grain of radius "
+                    f"{radius:.6g} m, below the {w.x[0]:.4g} from which the package's estimate "
+                    "of its vibrations holds (the low-speed route's reach); no epsilon is "
+                    "extrapolated"
+                )
             raise _Outside(
                 f"{what}: the contact time is {x:.4g} transit times of the grain of radius "
                 f"{radius:.6g} m, beyond the {w.x[-1]:.4g} to which the table of the plastic "

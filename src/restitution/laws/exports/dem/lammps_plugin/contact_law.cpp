@@ -224,7 +224,13 @@ double ContactLaw::ratio(double x, double u, double radius, const std::string &w
                      " times the contact's yield speed, beyond the " + number(u_top) +
                      " to which the table of the plastic pulse's waves reaches; no epsilon is "
                      "extrapolated");
-  if (!(x >= k.front() && x <= k.back()))
+  if (x < k.front())
+    throw TableError(what + ": the contact time is " + number(x) +
+                     " transit times of the grain of radius " + number(radius) +
+                     " m, below the " + number(k.front()) +
+                     " from which the package's estimate of its vibrations holds (the low-speed "
+                     "route's reach); no epsilon is extrapolated");
+  if (!(x <= k.back()))
     throw TableError(what + ": the contact time is " + number(x) +
                      " transit times of the grain of radius " + number(radius) +
                      " m, beyond the " + number(k.back()) +
