@@ -164,20 +164,24 @@ class PulseCollision:
         panels of ``per_panel`` nodes and at most a third of the shortest period on each
         piece, graded towards the first touch and the separation."""
         omega = np.asarray(omega, dtype=float)
-        top = float(np.max(omega, initial=1.0))
-        ts, ws = [], []
-        last = len(self._pieces) - 1
-        for i, p in enumerate(self._pieces):
-            a, b = p.s0 * self._scale / self.v, p.s1 * self._scale / self.v
-            t, w = panel_nodes(a, b, top, start=i == 0, end=i == last, per_panel=per_panel)
-            ts.append(t)
-            ws.append(w)
-        t, w = np.concatenate(ts), np.concatenate(ws)
+        t, w = self.quadrature(float(np.max(omega, initial=1.0)), per_panel=per_panel)
         if viscous == "both":
             forces = np.stack([self.force(t), self.force(t, viscous=False)], axis=1)
         else:
             forces = self.force(t, viscous=bool(viscous))
         return pulse_spectrum(forces, (t, w), omega)
+
+    def quadrature(self, omega_max: float, *, per_panel: int = 8) -> tuple[np.ndarray, np.ndarray]:
+        """``(t, w)``: the nodes (``R / c``) and weights :meth:`spectrum` integrates on up to
+        the frequency ``omega_max`` (``c / R``), Gauss-Legendre panels on each piece."""
+        ts, ws = [], []
+        last = len(self._pieces) - 1
+        for i, p in enumerate(self._pieces):
+            a, b = p.s0 * self._scale / self.v, p.s1 * self._scale / self.v
+            t, w = panel_nodes(a, b, omega_max, start=i == 0, end=i == last, per_panel=per_panel)
+            ts.append(t)
+            ws.append(w)
+        return np.concatenate(ts), np.concatenate(ws)
 
     def mode_energy(self, modes, *, viscous: bool | str = True) -> np.ndarray:
         """The energy the pulse leaves in each of ``modes`` (a :class:`~restitution.bodies.

@@ -1,6 +1,8 @@
 """The file of the LAMMPS plugin's law per contact (docs/lammps-plugin.md, "A law per contact"):
 the text ``pair_coeff i j E* FILE`` and ``fix ... wall/restitution E* FILE ...`` read when its
-first line is ``restitution-contact 1`` (a ``restitution-table 1`` is the table per type pair).
+first line is ``restitution-contact 1``, or ``restitution-contact 2`` for a law with plastic flow
+(a ``restitution-table 1`` is the table per type pair). A law without plastic flow is written as
+version 1, byte for byte as before; the plugin reads both.
 
 Grammar (``contact_law.h``; ``#`` starts a comment line, numbers with 17 significant digits)::
 
@@ -24,6 +26,18 @@ Grammar (``contact_law.h``; ``#`` starts a comment line, numbers with 17 signifi
     beta-map M                                  Tsuji's beta(epsilon)
     epsilon beta dbeta_dlnepsilon               M rows
     end
+
+Version 2 (plastic flow) adds, after the relaxation time's viscous map, ::
+
+    plastic-flow P_Y_PA                         Thornton's limiting pressure, Pa
+    material E_PA NU RHO_KG_M3                  (a wall only: the grain's, for x = t_c c / R)
+
+and, before the beta-map, the wave ratio ``r(x, u)`` of the (one) material::
+
+    wave-ratio K ETA_STEP                       K knots in eta = arccosh(u), ETA_STEP apart from 0
+    eta-knot ETA                                K times, each followed by
+    ratio-knots N                               N rows
+    x r dr_dx
 """
 
 from __future__ import annotations
@@ -40,10 +54,13 @@ from restitution.laws.exports.lammps_plugin import (
 )
 from restitution.laws.exports.sphere_loss import BEYOND_POWER
 
-__all__ = ["CONTACT_FORMAT", "contact_law_file"]
+__all__ = ["CONTACT_FORMAT", "PLASTIC_CONTACT_FORMAT", "contact_law_file"]
 
 CONTACT_FORMAT = "restitution-contact 1"
 """The first line of a file of the law per contact."""
+
+PLASTIC_CONTACT_FORMAT = "restitution-contact 2"
+"""The first line of a file of the law per contact with plastic flow."""
 
 
 def _rows(*columns) -> list[str]:
@@ -62,6 +79,32 @@ def _viscous_lines(law) -> list[str]:
         "# ln_q epsilon_v depsilon_v_dlnq",
         *_rows(v.u, v.epsilon, v.slope),
     ]
+
+
+def _plastic_lines(law, material: bool) -> list[str]:
+    p = law.plastic
+    lines = [
+        "# plastic flow: Thornton's contact of limiting pressure P_Y (" + p.source + "); yield",
+        "# speed v_y = sqrt((pi^5 / 30) P_Y^5 R*^3 / (E*^4 m*)), u = w / v_y; epsilon^2 =",
+        "# epsilon_T(u)^2 - (the waves, each sphere's loss times r(x, u))",
+        f"plastic-flow {_number(p.limiting_pressure_pa)}",
+    ]
+    if material:
+        g = law.grain
+        lines.append(f"material {_number(g.E)} {_number(g.nu)} {_number(g.rho)}")
+    return lines
+
+
+def _ratio_lines(waves) -> list[str]:
+    lines = [
+        "# r(x, u): the plastic pulse's Rayleigh sum over Hertz's; cubic Hermite in x at the four",
+        "# nearest knots in eta = arccosh(u), Lagrange's cubic through them in eta; 1 for u <= 1",
+        f"wave-ratio {waves.eta.size} {_number(waves.eta[1] - waves.eta[0])}",
+    ]
+    for j, eta in enumerate(waves.eta):
+        lines += [f"eta-knot {_number(eta)}", f"ratio-knots {waves.x.size}"]
+        lines += _rows(waves.x, waves.ratio[j], waves.slope[j])
+    return lines
 
 
 def _pair_lines(law: PairContactLaw) -> list[str]:
@@ -84,6 +127,8 @@ def _pair_lines(law: PairContactLaw) -> list[str]:
             *_rows(loss.x, loss.g, loss.slope),
             f"beyond power {_number(BEYOND_POWER)}",
         ]
+    if law.plastic is not None:
+        lines += _ratio_lines(law.plastic.waves)
     return lines
 
 
@@ -96,6 +141,7 @@ def _wall_lines(law: WallContactLaw) -> list[str]:
         "# w_m_s epsilon slope_s_m",
         *_rows(t.w_m_s, t.epsilon, t.slope_s_m),
         _continuation_line(t.below),
+        *([] if law.plastic is None else _ratio_lines(law.plastic.waves)),
     ]
 
 
@@ -131,15 +177,17 @@ def contact_law_file(law: PairContactLaw | WallContactLaw, comments: Sequence[st
         )
     m = tsuji_map()
     lines = [f"# {part}" for c in comments for part in str(c).splitlines() or [""]]
+    plastic = law.plastic is not None
     lines += [
         "# LAMMPS plugin law per contact (docs/lammps-plugin.md, 'A law per contact'):",
         "# pair_style restitution / fix wall/restitution read it. At a contact's first touch",
         "# 1 - epsilon^2 = L_el + L_v from the contact's own radii, masses, E* and impact speed w",
         "# (m/s); Tsuji's beta(epsilon) is then kept for the contact.",
-        CONTACT_FORMAT,
+        PLASTIC_CONTACT_FORMAT if plastic else CONTACT_FORMAT,
         "units si",
         f"contact {kind}",
         *_viscous_lines(law),
+        *(_plastic_lines(law, isinstance(law, WallContactLaw)) if plastic else []),
         *body,
         "# beta(epsilon) of Tsuji's damping: cubic Hermite in ln(epsilon)",
         f"beta-map {m.epsilon.size}",

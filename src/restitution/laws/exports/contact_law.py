@@ -17,6 +17,19 @@ The package adds the losses of kinetic energy of its mechanisms (:mod:`restituti
   group ``q = (3/2) tau (K / mu)^(2/5) w^(1/5)`` of the contact
   (:mod:`~restitution.laws.exports.viscous_map`), 0 for an elastic material.
 
+With plastic flow (a limiting pressure ``p_y``, the package's plastic law
+:mod:`restitution.laws.plastic`: Thornton's force and the waves on one pulse) the contact has the
+yield speed ``v_y`` of its own ``E*, R*, m*`` and ``p_y``
+(:func:`~restitution.laws.exports.plastic_waves.yield_speed`), and with ``u = w / v_y``::
+
+    epsilon^2 = epsilon_T(u)^2 - sum_i L_i r_i(x_i, u),
+
+``epsilon_T`` Thornton's closed form (:func:`restitution.quasistatic.plastic.thornton_epsilon`,
+1 for ``u <= 1``), ``L_i`` each sphere's elastic loss above (the wall's: its law's) and ``r_i``
+how much more the plastic pulse drives that sphere's modes than Hertz's
+(:mod:`~restitution.laws.exports.plastic_waves`; 1 for ``u <= 1``). Not with damping: the
+package's pulse then carries both forces, a function of ``(u, q)`` that is not tabulated here.
+
 :class:`PairContactLaw` and :class:`WallContactLaw` evaluate what the plugin's C++ evaluates
 (``contact_law.cpp``), in the same order of operations; :mod:`~restitution.laws.exports.
 contact_file` writes them for it. A contact outside what the package answers (the route's reach,
@@ -34,6 +47,7 @@ from restitution.bodies.sphere.surface import CONTACT_TIME_CONSTANT
 from restitution.errors import InputError, real
 from restitution.laws.exports.lammps_plugin import TSUJI_EPSILON_MIN, tsuji_map
 from restitution.laws.exports.pchip import PchipTable, TableStatus, pchip_table
+from restitution.laws.exports.plastic_waves import PlasticWaves, plastic_waves, yield_speed
 from restitution.laws.exports.sphere_loss import SphereLoss, sphere_loss
 from restitution.laws.exports.viscous_map import ViscousMap, viscous_group, viscous_map
 from restitution.laws.units import Grain
@@ -42,6 +56,7 @@ from restitution.status import Status
 __all__ = [
     "ContactAnswer",
     "PairContactLaw",
+    "PlasticFlow",
     "WallContactLaw",
     "pair_contact_law",
     "wall_contact_law",
@@ -59,10 +74,16 @@ class ContactAnswer:
         plugin stops the run with :attr:`note`).
     elastic_loss, viscous_loss : float
         ``L_el`` and ``L_v`` (fractions of the contact's kinetic energy); NaN where not reached.
+        With plastic flow ``L_el`` is the waves on the plastic pulse.
     status : Status
         ``OK`` or ``OUTSIDE``.
     note : str
         Why there is no epsilon, and what to do; empty when there is one.
+    epsilon_contact : float
+        Thornton's epsilon of the contact alone (1 without plastic flow or below its yield
+        speed).
+    speed_over_yield : float
+        ``u = w / v_y`` (0 without plastic flow).
     """
 
     epsilon: float | None
@@ -70,6 +91,8 @@ class ContactAnswer:
     viscous_loss: float
     status: Status = Status.OK
     note: str = ""
+    epsilon_contact: float = 1.0
+    speed_over_yield: float = 0.0
 
     @property
     def beta(self) -> float | None:
@@ -82,17 +105,81 @@ def _outside(note: str, elastic=math.nan, viscous=math.nan) -> ContactAnswer:
     return ContactAnswer(None, elastic, viscous, Status.OUTSIDE, note)
 
 
-def _sum(elastic: float, viscous: float, what: str) -> ContactAnswer:
-    """epsilon of the two losses added (the package's sum), or the refusal below the map."""
-    square = 1.0 - elastic - viscous
+def _sum(elastic: float, viscous: float, what: str, contact: float = 1.0,
+         u: float = 0.0) -> ContactAnswer:  # fmt: skip
+    """epsilon of the losses added to the contact's (the package's sum; ``contact``: Thornton's
+    epsilon), or the refusal below the map."""
+    square = contact * contact - elastic - viscous
     if not square >= TSUJI_EPSILON_MIN**2:
-        return _outside(
-            f"{what}: the losses to vibrations ({elastic:.3g}) and viscosity ({viscous:.3g}) "
-            f"leave epsilon below {TSUJI_EPSILON_MIN} (the plugin's least)",
-            elastic,
-            viscous,
-        )
-    return ContactAnswer(math.sqrt(square), elastic, viscous)
+        plastic = "" if contact == 1.0 else f" with the plastic flow's (epsilon {contact:.4g})"
+        return ContactAnswer(None, elastic, viscous, Status.OUTSIDE,
+                             f"{what}: the losses to vibrations ({elastic:.3g}) and viscosity "
+                             f"({viscous:.3g}){plastic} leave epsilon below {TSUJI_EPSILON_MIN} "
+                             "(the plugin's least)", contact, u)  # fmt: skip
+    return ContactAnswer(math.sqrt(square), elastic, viscous, Status.OK, "", contact, u)
+
+
+@dataclass(frozen=True)
+class PlasticFlow:
+    """The plastic flow of a law per contact (module docs).
+
+    Attributes
+    ----------
+    limiting_pressure_pa : float
+        Thornton's limiting pressure ``p_y``, Pa.
+    source : str
+        Where it comes from (:func:`restitution.laws.plastic.limiting_pressure`).
+    waves : PlasticWaves
+        The wave ratio ``r(x, u)`` of the material.
+    """
+
+    limiting_pressure_pa: float
+    source: str
+    waves: PlasticWaves
+
+    def speed_over_yield(self, w, estar, rstar, mstar) -> float:
+        """``u = w / v_y`` of a contact (SI)."""
+        return w / yield_speed(self.limiting_pressure_pa, estar, rstar, mstar)
+
+    def ratio(self, x: float, u: float, what: str, radius: float) -> float:
+        """``r(x, u)``; raises :class:`_Outside` beyond the table."""
+        r = self.waves(x, u)
+        if math.isnan(r):
+            w = self.waves
+            if u > w.u_top:
+                raise _Outside(
+                    f"{what}: the impact speed is {u:.6g} times the contact's yield speed, beyond "
+                    f"the {w.u_top:.6g} to which the table of the plastic pulse's waves reaches; "
+                    "no epsilon is extrapolated"
+                )
+            if x < w.x[0]:
+                raise _Outside(
+                    f"{what}: the contact time is {x:.4g} transit times of the grain of radius "
+                    f"{radius:.6g} m, below the {w.x[0]:.4g} from which the package's estimate "
+                    "of its vibrations holds (the low-speed route's reach); no epsilon is "
+                    "extrapolated"
+                )
+            raise _Outside(
+                f"{what}: the contact time is {x:.4g} transit times of the grain of radius "
+                f"{radius:.6g} m, beyond the {w.x[-1]:.4g} to which the table of the plastic "
+                "pulse's waves reaches (a yielding contact this slow against the grain's modes: "
+                "a limiting pressure far below this one's material); no epsilon is extrapolated"
+            )
+        return r
+
+
+class _Outside(Exception):
+    """A contact outside the plastic table (its message is the note)."""
+
+
+def _thornton(u: float) -> float:
+    """Thornton's epsilon at ``u`` (:func:`restitution.quasistatic.plastic.thornton_epsilon`),
+    in the C++'s order of operations."""
+    if u <= 1.0:
+        return 1.0
+    s = u * u
+    x = (1.0 + math.sqrt((24.0 * s - 4.0) / 5.0)) / 3.0
+    return (3.0 * x - 1.0) / (2.0 * math.sqrt(s) * x**0.25)
 
 
 def _viscous_loss(vmap: ViscousMap, tau: float, estar, rstar, mstar, w) -> float:
@@ -117,12 +204,15 @@ class PairContactLaw:
         Each material's curve ``G`` (:func:`~restitution.laws.exports.sphere_loss.sphere_loss`).
     viscous : ViscousMap
         ``epsilon_v(q)``.
+    plastic : PlasticFlow or None
+        The plastic flow of the grains (one material), or none.
     """
 
     grains: tuple[Grain, Grain]
     relaxation_time_s: float
     losses: tuple[SphereLoss, SphereLoss]
     viscous: ViscousMap
+    plastic: PlasticFlow | None = None
 
     def __call__(self, w, r1, m1, r2, m2, estar) -> ContactAnswer:
         """The contact of grain 1 (radius ``r1`` m, mass ``m1`` kg, of the first material) and
@@ -145,6 +235,7 @@ class PairContactLaw:
                 "low-speed route's reach); no epsilon is extrapolated"
             )
         tc = CONTACT_TIME_CONSTANT * dmax / w  # Hertz's (sphere_loss.contact_time)
+        u = 0.0 if self.plastic is None else self.plastic.speed_over_yield(w, estar, rstar, mstar)
         elastic = 0.0
         for grain, loss, r, m in zip(self.grains, self.losses, (r1, r2), (m1, m2), strict=True):
             x = tc * grain.c_m_s / r
@@ -155,11 +246,17 @@ class PairContactLaw:
                     "its vibrations holds (its lowest mode is too slow against the contact: the "
                     "low-speed route's reach); no epsilon is extrapolated"
                 )
-            elastic += mstar / m * float(loss(x)[0])
+            part = mstar / m * float(loss(x)[0])
+            if u > 1.0:
+                try:
+                    part *= self.plastic.ratio(x, u, what, r)
+                except _Outside as exc:
+                    return _outside(str(exc))
+            elastic += part
         viscous = _viscous_loss(self.viscous, self.relaxation_time_s, estar, rstar, mstar, w)
         if math.isnan(viscous):
             return _outside(f"{what}: the viscous loss alone leaves epsilon below 0.008", elastic)
-        return _sum(elastic, viscous, what)
+        return _sum(elastic, viscous, what, _thornton(u), u)
 
     def epsilon(self, w, r1, m1, r2, m2, estar) -> float:
         """:meth:`__call__`'s epsilon; NaN outside."""
@@ -181,12 +278,15 @@ class WallContactLaw:
         Its elastic law on the wall (the plugin's table of it).
     viscous : ViscousMap
         ``epsilon_v(q)``.
+    plastic : PlasticFlow or None
+        The grain's plastic flow, or none.
     """
 
     grain: Grain
     relaxation_time_s: float
     wall: PchipTable
     viscous: ViscousMap
+    plastic: PlasticFlow | None = None
 
     def __call__(self, w, r, m, estar) -> ContactAnswer:
         """The contact of a grain of radius ``r`` (m) and mass ``m`` (kg) hitting the wall at
@@ -203,10 +303,19 @@ class WallContactLaw:
             )
         eps_el = float(self.wall(w))
         elastic = 1.0 - eps_el * eps_el
+        u = 0.0 if self.plastic is None else self.plastic.speed_over_yield(w, estar, r, m)
+        if u > 1.0:
+            k = 4.0 / 3.0 * estar * math.sqrt(r)
+            dmax = (1.25 * m * w * w / k) ** 0.4
+            x = CONTACT_TIME_CONSTANT * dmax / w * self.grain.c_m_s / r
+            try:
+                elastic *= self.plastic.ratio(x, u, what, r)
+            except _Outside as exc:
+                return _outside(str(exc))
         viscous = _viscous_loss(self.viscous, self.relaxation_time_s, estar, r, m, w)
         if math.isnan(viscous):
             return _outside(f"{what}: the viscous loss alone leaves epsilon below 0.008", elastic)
-        return _sum(elastic, viscous, what)
+        return _sum(elastic, viscous, what, _thornton(u), u)
 
     def epsilon(self, w, r, m, estar) -> float:
         """:meth:`__call__`'s epsilon; NaN outside."""
@@ -232,12 +341,65 @@ def _relaxation(tau) -> float:
     return tau
 
 
+def _plastic(grain: Grain, tau: float, yield_stress_pa, limiting_pressure_pa, two: bool):
+    """The :class:`PlasticFlow` of ``grain`` from a yield stress or the limiting pressure (Pa),
+    or ``None`` when neither is given."""
+    from restitution.quasistatic.plastic import onset_pressure_ratio
+
+    if yield_stress_pa is None and limiting_pressure_pa is None:
+        return None
+    if yield_stress_pa is not None and limiting_pressure_pa is not None:
+        raise InputError(
+            "give the yield stress or the limiting pressure, not both (the limiting pressure is "
+            "what the yield stress is turned into)"
+        )
+    if two:
+        raise InputError(
+            "plastic flow in the law per contact is done for one material (both grains yield at "
+            "the same pressure); for two materials use a table per type pair from the package's "
+            "plastic law of that pair"
+        )
+    if tau > 0.0:
+        raise InputError(
+            "plastic flow with damping is not in the law per contact: the package puts "
+            "Thornton's and the viscous force on one pulse, a function of u = w / v_y and the "
+            "viscous group q not tabulated here; give relaxation_time_s = 0, or use a table per "
+            "type pair from the package's plastic law with its relaxation time"
+        )
+    if yield_stress_pa is not None:
+        y = real(yield_stress_pa, "yield_stress_pa", "> 0 (Pa)")
+        if not (math.isfinite(y) and y > 0.0):
+            raise InputError(f"yield_stress_pa must be a finite number > 0 (Pa), got {y!r}")
+        ratio = onset_pressure_ratio(grain.nu)
+        p_y = ratio * y
+        source = f"onset of yield: {ratio:.4f} x the grain's yield stress {y:.4g} Pa"
+    else:
+        p_y = real(limiting_pressure_pa, "limiting_pressure_pa", "> 0 (Pa)")
+        if not (math.isfinite(p_y) and p_y > 0.0):
+            raise InputError(f"limiting_pressure_pa must be a finite number > 0 (Pa), got {p_y!r}")
+        source = "given"
+    if p_y >= grain.E:
+        raise InputError(
+            f"the limiting pressure {p_y:.3g} Pa is at or above the Young modulus {grain.E:.3g} Pa "
+            "of the grain: no material yields there; check the units (Pa)"
+        )
+    return PlasticFlow(p_y, source, plastic_waves(grain.law_nu))
+
+
 def pair_contact_law(
-    grain: Grain, partner: Grain | None = None, *, relaxation_time_s: float = 0.0
+    grain: Grain,
+    partner: Grain | None = None,
+    *,
+    relaxation_time_s: float = 0.0,
+    yield_stress_pa: float | None = None,
+    limiting_pressure_pa: float | None = None,
 ) -> PairContactLaw:
     """The law per contact of two spheres of ``grain``'s material (or of ``grain`` and
     ``partner``), of any radii, with the Kelvin-Voigt relaxation time ``relaxation_time_s``
-    (s; 0 for elastic grains; one time for both: the package does not model two).
+    (s; 0 for elastic grains; one time for both: the package does not model two), and with
+    plastic flow from the yield stress ``yield_stress_pa`` (Pa; the limiting pressure is its
+    onset pressure, as :func:`restitution.laws.plastic.limiting_pressure` takes it) or from the
+    limiting pressure ``limiting_pressure_pa`` (Pa) itself: one material, no damping.
 
     Builds each material's curve and the viscous map: a few seconds the first time in a
     process.
@@ -253,19 +415,29 @@ def pair_contact_law(
     first = _sphere(grain, "the grain")
     second = first if partner is None else _sphere(partner, "the partner")
     tau = _relaxation(relaxation_time_s)
+    plastic = _plastic(first, tau, yield_stress_pa, limiting_pressure_pa, second != first)
     losses = (sphere_loss(first.law_nu), sphere_loss(second.law_nu))
-    return PairContactLaw((first, second), tau, losses, viscous_map())
+    return PairContactLaw((first, second), tau, losses, viscous_map(), plastic)
 
 
-def wall_contact_law(grain: Grain, *, relaxation_time_s: float = 0.0, wall=None) -> WallContactLaw:
+def wall_contact_law(
+    grain: Grain,
+    *,
+    relaxation_time_s: float = 0.0,
+    wall=None,
+    yield_stress_pa: float | None = None,
+    limiting_pressure_pa: float | None = None,
+) -> WallContactLaw:
     """The law per contact of spheres of ``grain``'s material, of any radius, on the rigid wall,
     with the relaxation time ``relaxation_time_s`` (s; 0 for elastic grains); ``wall``: the
     grain's elastic law on the wall (an :class:`~restitution.laws.si_law.SILaw`), by default
-    the shipped one."""
+    the shipped one; plastic flow as :func:`pair_contact_law` takes it (the rigid wall does not
+    yield)."""
     from restitution.laws.partners.rigid_wall import KIND as WALL
     from restitution.laws.si_law import si_law
 
     grain = _sphere(grain, "the grain")
     tau = _relaxation(relaxation_time_s)
+    plastic = _plastic(grain, tau, yield_stress_pa, limiting_pressure_pa, False)
     law = si_law(grain=grain, against=WALL.against) if wall is None else wall
-    return WallContactLaw(grain, tau, pchip_table(law), viscous_map())
+    return WallContactLaw(grain, tau, pchip_table(law), viscous_map(), plastic)

@@ -83,7 +83,9 @@ ContactLaw ContactLaw::parse(const std::string &text, const std::string &name)
   Reader r(text, name);
 
   const Line &head = r.keyword("restitution-contact", 2, "restitution-contact 1");
-  if (head.words[1] != "1") r.fail("format version " + head.words[1] + " is not 1");
+  if (head.words[1] != "1" && head.words[1] != "2")
+    r.fail("format version " + head.words[1] + " is not 1 or 2");
+  law.plastic_ = head.words[1] == "2";
   const Line &units = r.keyword("units", 2, "units si");
   if (units.words[1] != "si") r.fail("units " + units.words[1] + " are not si");
   const Line &kind = r.keyword("contact", 2, "contact pair' or 'contact wall");
@@ -103,6 +105,20 @@ ContactLaw ContactLaw::parse(const std::string &text, const std::string &name)
   law.viscous_ = curve(r, nv, "ln_q epsilon_v depsilon_v_dlnq");
   for (double e : law.viscous_.y)
     if (!(e > 0.0 && e <= 1.0)) r.fail("viscous-map epsilons must lie in (0, 1]");
+
+  if (law.plastic_) {
+    const Line &flow = r.keyword("plastic-flow", 2, "plastic-flow P_Y_PA");
+    law.p_y_ = r.number(flow, 1);
+    if (!(law.p_y_ > 0.0)) r.fail("the limiting pressure must be > 0 Pa");
+    if (law.tau_ != 0.0) r.fail("plastic flow with damping is not in the law per contact");
+    if (!law.pair_) {
+      const Line &mat = r.keyword("material", 4, "material E_PA NU RHO_KG_M3");
+      const double E = r.number(mat, 1), nu = r.number(mat, 2), rho = r.number(mat, 3);
+      if (!(E > 0.0 && rho > 0.0 && nu > -1.0 && nu < 0.5))
+        r.fail("a material needs E > 0, -1 < nu < 0.5 and rho > 0");
+      law.c_grain_ = std::sqrt(E / rho);
+    }
+  }
 
   if (law.pair_) {
     const Line &count = r.keyword("materials", 2, "materials K");
@@ -130,9 +146,11 @@ ContactLaw ContactLaw::parse(const std::string &text, const std::string &name)
       if (!(one.power > 0.0)) r.fail("the power beyond the last knot must be > 0");
       law.materials_.push_back(one);
     }
+    if (law.plastic_ && k != 1) r.fail("plastic flow is in the law per contact of one material");
   } else {
     law.wall_ = RestitutionTable::read_curve(r, name);
   }
+  if (law.plastic_) law.read_ratio(r);
 
   const Line &map = r.keyword("beta-map", 2, "beta-map M");
   std::vector<double> eps, beta, slope;
@@ -152,6 +170,89 @@ ContactLaw ContactLaw::parse(const std::string &text, const std::string &name)
   law.map_.d = slope;
   law.map_min_ = eps.front();
   return law;
+}
+
+void ContactLaw::read_ratio(Reader &r)
+{
+  const Line &head = r.keyword("wave-ratio", 3, "wave-ratio K ETA_STEP");
+  const long k = r.count(head, 1);
+  if (k < 4) r.fail("the wave ratio needs at least 4 knots in eta");
+  eta_step_ = r.number(head, 2);
+  if (!(eta_step_ > 0.0)) r.fail("the eta step must be > 0");
+  for (long j = 0; j < k; ++j) {
+    const Line &knot = r.keyword("eta-knot", 2, "eta-knot ETA");
+    const double eta = r.number(knot, 1);
+    if (std::fabs(eta - j * eta_step_) > 1e-12 * (1.0 + eta))
+      r.fail("the eta knots must be 0, ETA_STEP, 2 ETA_STEP, ...");
+    eta_.push_back(eta);
+    const Line &count = r.keyword("ratio-knots", 2, "ratio-knots N");
+    ratio_.push_back(curve(r, r.count(count, 1), "x r dr_dx"));
+    if (ratio_.back().x != ratio_.front().x) r.fail("every eta knot needs the same x knots");
+    for (double v : ratio_.back().y)
+      if (!(v > 0.0)) r.fail("the wave ratio must be > 0");
+  }
+}
+
+double ContactLaw::speed_over_yield(double w, double estar, double rstar, double mstar) const
+{
+  if (!plastic_) return 0.0;
+  const double pi = 3.141592653589793;
+  return w / std::sqrt(std::pow(pi, 5.0) / 30.0 * std::pow(p_y_, 5.0) * std::pow(rstar, 3.0) /
+                       (std::pow(estar, 4.0) * mstar));
+}
+
+namespace {
+
+  // Thornton's epsilon at u = w / v_y (restitution.quasistatic.plastic.thornton_epsilon).
+  double thornton(double u)
+  {
+    if (u <= 1.0) return 1.0;
+    const double s = u * u;
+    const double x = (1.0 + std::sqrt((24.0 * s - 4.0) / 5.0)) / 3.0;
+    return (3.0 * x - 1.0) / (2.0 * std::sqrt(s) * std::pow(x, 0.25));
+  }
+
+}    // namespace
+
+double ContactLaw::ratio(double x, double u, double radius, const std::string &what) const
+{
+  if (u <= 1.0) return 1.0;
+  const std::vector<double> &k = ratio_.front().x;
+  const double u_top = std::cosh(eta_.back());
+  if (!(u <= u_top))
+    throw TableError(what + ": the impact speed is " + number(u) +
+                     " times the contact's yield speed, beyond the " + number(u_top) +
+                     " to which the table of the plastic pulse's waves reaches; no epsilon is "
+                     "extrapolated");
+  if (x < k.front())
+    throw TableError(what + ": the contact time is " + number(x) +
+                     " transit times of the grain of radius " + number(radius) +
+                     " m, below the " + number(k.front()) +
+                     " from which the package's estimate of its vibrations holds (the low-speed "
+                     "route's reach); no epsilon is extrapolated");
+  if (!(x <= k.back()))
+    throw TableError(what + ": the contact time is " + number(x) +
+                     " transit times of the grain of radius " + number(radius) +
+                     " m, beyond the " + number(k.back()) +
+                     " to which the table of the plastic pulse's waves reaches (a yielding "
+                     "contact this slow against the grain's modes: a limiting pressure far below "
+                     "this one's material); no epsilon is extrapolated");
+  const double eta = std::acosh(u);
+  const double h = eta_[1] - eta_[0];
+  const long n = static_cast<long>(eta_.size());
+  const long first = std::min(std::max(static_cast<long>(eta / h) - 1, 0L), n - 4);
+  const std::size_t lo = interval(k, x);
+  const double t = (eta - eta_[static_cast<std::size_t>(first)]) / h;
+  double out = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    double weight = 1.0;
+    for (int b = 0; b < 4; ++b)
+      if (b != a) weight *= (t - b) / static_cast<double>(a - b);
+    const HermiteCurve &row = ratio_[static_cast<std::size_t>(first + a)];
+    out += weight * hermite(x, k[lo], k[lo + 1], row.y[lo], row.y[lo + 1], row.d[lo],
+                            row.d[lo + 1]);
+  }
+  return out;
 }
 
 double ContactLaw::viscous_loss(double estar, double rstar, double mstar, double w,
@@ -175,14 +276,18 @@ double ContactLaw::viscous_loss(double estar, double rstar, double mstar, double
   return 1.0 - eps * eps;
 }
 
-ContactLaw::Parts ContactLaw::sum(double elastic, double viscous, const std::string &what) const
+ContactLaw::Parts ContactLaw::sum(double elastic, double viscous, const std::string &what,
+                                  double contact, double u) const
 {
-  const double square = 1.0 - elastic - viscous;
+  const double square = contact * contact - elastic - viscous;
   if (!(square >= map_min_ * map_min_))
     throw TableError(what + ": the losses to vibrations (" + number(elastic) +
-                     ") and viscosity (" + number(viscous) + ") leave epsilon below " +
-                     number(map_min_) + " (the plugin's least)");
-  return Parts{std::sqrt(square), elastic, viscous};
+                     ") and viscosity (" + number(viscous) + ")" +
+                     (contact == 1.0 ? std::string()
+                                     : " with the plastic flow's (epsilon " + number(contact) +
+                                      ")") +
+                     " leave epsilon below " + number(map_min_) + " (the plugin's least)");
+  return Parts{std::sqrt(square), elastic, viscous, contact, u};
 }
 
 ContactLaw::Parts ContactLaw::pair(double w, double estar, double r1, double m1, int i1,
@@ -221,8 +326,14 @@ ContactLaw::Parts ContactLaw::pair(double w, double estar, double r1, double m1,
                        "mode is too slow against the contact: the low-speed route's reach); no "
                        "epsilon is extrapolated");
   }
-  const double elastic = mstar / m1 * a.G(x1) + mstar / m2 * b.G(x2);
-  return sum(elastic, viscous_loss(estar, rstar, mstar, w, what), what);
+  const double u = speed_over_yield(w, estar, rstar, mstar);
+  double part1 = mstar / m1 * a.G(x1), part2 = mstar / m2 * b.G(x2);
+  if (u > 1.0) {
+    part1 *= ratio(x1, u, r1, what);
+    part2 *= ratio(x2, u, r2, what);
+  }
+  const double elastic = part1 + part2;
+  return sum(elastic, viscous_loss(estar, rstar, mstar, w, what), what, thornton(u), u);
 }
 
 ContactLaw::Parts ContactLaw::wall(double w, double estar, double r, double m) const
@@ -238,8 +349,15 @@ ContactLaw::Parts ContactLaw::wall(double w, double estar, double r, double m) c
                      " m/s of the elastic wall law; no epsilon is extrapolated");
   if (status == RestitutionTable::Status::BadSpeed)
     throw TableError("impact speed " + number(w) + " m/s is not a finite number");
-  const double elastic = 1.0 - eps_el * eps_el;
-  return sum(elastic, viscous_loss(estar, r, m, w, what), what);
+  double elastic = 1.0 - eps_el * eps_el;
+  const double u = speed_over_yield(w, estar, r, m);
+  if (u > 1.0) {
+    const double k = 4.0 / 3.0 * estar * std::sqrt(r);
+    const double dmax = std::pow(1.25 * m * w * w / k, 0.4);
+    const double x = KAPPA * dmax / w * c_grain_ / r;
+    elastic *= ratio(x, u, r, what);
+  }
+  return sum(elastic, viscous_loss(estar, r, m, w, what), what, thornton(u), u);
 }
 
 double ContactLaw::beta(double eps) const

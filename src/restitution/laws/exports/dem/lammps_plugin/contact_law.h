@@ -14,15 +14,22 @@
 // * L_v = 1 - epsilon_v(q)^2, q = (3/2) tau (K / m*)^(2/5) w^(1/5) (cubic Hermite in ln q; the
 //   series 1 - C1 q + C2 q^2 + H q^(5/2) below the first knot; no value above the last); 0 for
 //   tau = 0.
+// * Plastic flow (format version 2): with the contact's yield speed v_y = sqrt((pi^5 / 30) p_y^5
+//   R*^3 / (E*^4 m*)) and u = w / v_y, epsilon^2 = epsilon_T(u)^2 - L_el r, Thornton's closed
+//   form epsilon_T (1 for u <= 1) and each sphere's wave loss times r(x_i, u) (1 for u <= 1):
+//   cubic Hermite in x at the four nearest knots in eta = arccosh(u), Lagrange's cubic through
+//   them in eta (restitution.laws.exports.plastic_waves). One material, no damping.
 //
 // Grammar (one item a line, '#' starts a comment line):
 //
-//   restitution-contact 1
+//   restitution-contact 1 | restitution-contact 2   (2: with plastic flow)
 //   units si
 //   contact pair | contact wall
 //   relaxation-time TAU_S
 //   viscous-map N C1 C2 H
 //   ln_q epsilon_v depsilon_v_dlnq                 (N rows, ln q strictly increasing)
+//   version 2:  plastic-flow P_Y_PA
+//               material E_PA NU RHO_KG_M3         (a wall only: the grain's)
 //   pair:  materials K                             (1: both grains; 2: type i's, then type j's)
 //          material E_PA NU RHO_KG_M3              (K times: these four items)
 //          reach X_LO WIDTH_MAX
@@ -30,6 +37,8 @@
 //          x G dG_dx                               (N rows, x strictly increasing from X_LO)
 //          beyond power P
 //   wall:  knots N / w_m_s epsilon slope_s_m rows / below ...   (as restitution_table.h)
+//   version 2:  wave-ratio K ETA_STEP               (K knots in eta = arccosh(u) from 0)
+//               eta-knot ETA / ratio-knots N / x r dr_dx rows   (K times)
 //   beta-map M
 //   epsilon beta dbeta_dlnepsilon                  (M rows, the last 1 0 ...)
 //   end
@@ -61,6 +70,8 @@ class ContactLaw {
   // epsilon and its parts; throws TableError (what to do in it) where the law has no value.
   struct Parts {
     double epsilon, elastic, viscous;
+    double contact = 1.0;    // Thornton's epsilon (1 without plastic flow)
+    double u = 0.0;          // w / v_y (0 without plastic flow)
   };
   // Two grains: radius (m), mass (kg) and material index (0, or 1 for the second of two).
   Parts pair(double w, double estar, double r1, double m1, int i1, double r2, double m2,
@@ -71,6 +82,7 @@ class ContactLaw {
   double beta(double eps) const;
 
   bool is_pair() const { return pair_; }
+  bool is_plastic() const { return plastic_; }
   int materials() const { return static_cast<int>(materials_.size()); }
   const std::string &name() const { return name_; }
 
@@ -93,10 +105,20 @@ class ContactLaw {
   RestitutionTable wall_;                    // the wall's elastic law (no map)
   HermiteCurve map_;                         // beta(ln epsilon)
   double map_min_ = 0.0;
+  bool plastic_ = false;
+  double p_y_ = 0.0;                         // Thornton's limiting pressure, Pa
+  double c_grain_ = 0.0;                     // the wall's grain: sqrt(E / rho), m/s
+  double eta_step_ = 0.0;
+  std::vector<double> eta_;                  // knots in arccosh(u)
+  std::vector<HermiteCurve> ratio_;          // r(x) at each eta knot
 
   double viscous_loss(double estar, double rstar, double mstar, double w,
                       const std::string &what) const;
-  Parts sum(double elastic, double viscous, const std::string &what) const;
+  Parts sum(double elastic, double viscous, const std::string &what, double contact = 1.0,
+            double u = 0.0) const;
+  double speed_over_yield(double w, double estar, double rstar, double mstar) const;
+  double ratio(double x, double u, double radius, const std::string &what) const;
+  void read_ratio(detail::Reader &r);
 };
 
 }    // namespace Restitution
