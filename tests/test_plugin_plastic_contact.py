@@ -11,7 +11,8 @@ against direct answers of the package's plastic law (:mod:`restitution.laws.plas
 * Below the yield speed the law is the elastic law per contact; the file's version 2, version 1
   kept for laws without plastic flow; the refusals.
 
-The plastic table is built once per machine (about three minutes, then the disk cache).
+The plastic table is built once per machine (three to six minutes, then the disk cache): on a
+fresh machine (CI) that would be most of the default run's budget, so the module is ``slow``.
 """
 
 from __future__ import annotations
@@ -37,6 +38,8 @@ from restitution.laws.request import request
 from restitution.laws.routes.pair import PairRoute
 from restitution.laws.units import Grain
 from restitution.quasistatic.plastic import thornton_epsilon
+
+pytestmark = pytest.mark.slow  # the table's first build: minutes (module docs)
 
 STEEL = Grain(210e9, 0.3, 7850.0, "sphere")
 GLASS = Grain(63e9, 0.2481, 2500.0, "sphere")
