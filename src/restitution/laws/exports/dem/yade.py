@@ -21,6 +21,7 @@ from restitution.laws.exports.dem._common import (
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
+from restitution.laws.exports.plastic_native import is_plastic, luding_lines
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
 from restitution.laws.mechanisms.bounds import wall_of
@@ -149,6 +150,14 @@ def yade_time_step(steps, viscoelastic: bool = False) -> list[str]:
     return time_step_lines(steps, "#", lambda dt: f"O.dt = {dt:.3g}  # s")
 
 
+def yade_plastic(s) -> list[str]:
+    """Comment lines on YADE's own elastic-plastic contact (Luding's) for a plastic law
+    (:mod:`restitution.laws.exports.plastic_native`); ``[]`` without plastic flow."""
+    if not is_plastic(s):
+        return []
+    return luding_lines(s, "Law2_ScGeom_LudingPhys_Basic", "#")
+
+
 TARGET = register_dem_target(
     DemTarget(
         name="yade",
@@ -156,6 +165,7 @@ TARGET = register_dem_target(
         snippet=yade_snippet,
         viscoelastic=yade_viscoelastic,
         time_step=yade_time_step,
+        plastic=yade_plastic,
     )
 )
 """This module's entry in :data:`~restitution.laws.exports.dem.DEM_TARGETS`."""
