@@ -208,14 +208,16 @@ def _law_command(capsys, *extra) -> tuple[str, str]:
 
 
 def test_the_law_command_shows_the_sd_and_what_it_means(capsys):
-    out, err = _law_command(capsys)
+    out, _ = _law_command(capsys)
     lines = out.splitlines()
     head = next(line for line in lines if "speed [m/s]" in line)
     assert head.split()[-3:] == ["error", "sd", "status"]
     slow, fast = (line.split() for line in lines[lines.index(head) + 1 :][:2])
     assert slow[4].endswith("*") and not fast[4].endswith("*")  # the bound; calibrated
-    assert "sd: one standard deviation" in err and "sd* is the bound" in err
+    meaning = lines[lines.index(head) - 1]
+    assert "'sd' one standard deviation" in meaning and "sd* is the bound" in meaning
     doc = json.loads(_law_command(capsys, "--json")[0])
     assert "epsilon_sd" in doc["error_meaning"] and "upper estimate" in doc["error_meaning"]
+    assert "one standard deviation" in doc["epsilon_sd_meaning"]
     kinds = [p["epsilon_sd_kind"] for p in doc["points"]]
     assert kinds == ["bound", "standard deviation"]

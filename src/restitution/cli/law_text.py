@@ -99,13 +99,13 @@ def _sd(p) -> str:
     return f"{sd:.2g}" + ("" if getattr(p, "sd_calibrated", False) else "*")
 
 
-SD_NOTE = (
-    "note: error: the bound (an upper estimate); sd: one standard deviation, the bound's parts "
-    "scaled per route by factors fitted on independent points (78-80 % of the held-out "
-    "ones within one sd, docs/errors.md); sd* is the bound (a route without enough "
+SD_LINE = (
+    "errors: 'error' is the bound (an upper estimate); 'sd' one standard deviation, the "
+    "bound's parts scaled per route by factors fitted on independent points (78-80 % of the "
+    "held-out ones within one sd, docs/errors.md); sd* is the bound (a route without enough "
     "independent points)"
 )
-"""What the ``error`` and ``sd`` columns of the elastic law's rows mean (stderr)."""
+"""What the ``error`` and ``sd`` columns of the elastic law's rows mean (the line above them)."""
 
 
 def _rows(a) -> list[str]:
@@ -113,7 +113,7 @@ def _rows(a) -> list[str]:
     split = any(getattr(p, "loss_shares", None) for p in a.points)
     head = "  speed [m/s]        v/c       epsilon      error         sd   status"
     split_head = partner_of(a.law.law).split_head  # ball / wall, grain 1 / 2
-    lines = [head + (split_head if split else "")]
+    lines = [SD_LINE, head + (split_head if split else "")]
     for p in a.points:
         eps, err = _eps(p)
         line = (
@@ -195,8 +195,6 @@ def status_notes(a) -> list[str]:
         elif p.status not in (Status.COMPUTED, Status.INTERPOLATED):
             notes[p.status] = statuses.get(p.status) or note
     out = list(own)
-    if a.plastic is None and a.damped is None:
-        out.append(SD_NOTE)
     for status, text in notes.items():
         if status == Status.OUTSIDE and getattr(s.law, "at_points_only", False):
             text = next(p.note for p in a.points if p.status == Status.OUTSIDE)

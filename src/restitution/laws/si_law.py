@@ -24,6 +24,7 @@ import numpy as np
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError, describe, is_real, real_array
+from restitution.laws.calibration import SD_MEANING
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.mechanisms.base import mechanism_fields
@@ -550,6 +551,7 @@ class SILaw:
                 ),
             },
             "statuses": {**STATUSES, Status.QUASISTATIC: quasistatic_note(self.law)},
+            "epsilon_sd_meaning": SD_MEANING,
             **mechanism_fields(law_mechanisms(self.law)),
             "plastic_flow_expected_from_m_s": bound,
             "points": [p.to_dict() for p in points],
