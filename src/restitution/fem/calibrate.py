@@ -31,8 +31,8 @@ the maximum-likelihood scale of a Gaussian miss ``|served - reference| ~ N(0, s^
 the sum of the served standard deviation's terms and the reference's own, fitted in the order
 ``a``, ``b`` (given ``a``), ``c`` (given ``a``); shipped rounded to two digits.
 
-``python -m restitution.fem.calibrate [--between-dir tests/data]`` prints the factors
-and the coverage table (docs/errors.md).
+``python -m restitution.fem.calibrate [--between-dir tests/data]`` prints the factors,
+the coverage table (docs/errors.md) and a leave-one-out estimate of the same coverage.
 
 Units: speeds in ``c`` of the law; epsilon and its errors dimensionless.
 """
@@ -63,6 +63,7 @@ __all__ = [
     "fit",
     "fit_factor",
     "halves",
+    "leave_one_out",
     "main",
     "rows_between",
     "rows_fem",
@@ -321,6 +322,32 @@ def fit(between_dir: Path) -> dict:
     }
 
 
+def leave_one_out(between_dir: Path) -> dict:
+    """A second estimate of the held-out coverage: each point's ``z`` with its comparison's
+    factor fitted on every other point (``a`` of the between and ``nu`` rows: fitted on all
+    finite-element points), per comparison and for the modal route as a whole."""
+    fem = [r for r in rows_fem() if r.route == MODAL]
+    between = [r for r in rows_between(between_dir) if r.route == MODAL]
+    nu_rows = rows_nu()
+    a_all = fit_factor(fem, _fem_var(0.0))
+
+    def z_without_each(rows, variance, kind):
+        z = []
+        for k in range(len(rows)):
+            f = fit_factor(rows[:k] + rows[k + 1 :], variance)
+            args = {"fem": (f, 0.0, 0.0), "between": (a_all, f, 0.0), "nu": (a_all, 0.0, f)}
+            z.append(z_scores([rows[k]], kind, *args[kind])[0])
+        return np.array(z)
+
+    z = {
+        "fem": z_without_each(fem, _fem_var(0.0), "fem"),
+        "between": z_without_each(between, _between_var(a_all), "between"),
+        "nu": z_without_each(nu_rows, _nu_var(a_all), "nu"),
+    }
+    z["modal"] = np.concatenate([z["fem"], z["between"]])
+    return {kind: coverage(values) for kind, values in z.items()}
+
+
 def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
@@ -330,7 +357,9 @@ def main(argv: list[str] | None = None) -> None:
         help="folder of the stored direct points between_*.json",
     )
     args = parser.parse_args(argv)
-    print(json.dumps(fit(args.between_dir), indent=1))
+    out = fit(args.between_dir)
+    out["leave_one_out"] = leave_one_out(args.between_dir)
+    print(json.dumps(out, indent=1))
 
 
 if __name__ == "__main__":
