@@ -28,14 +28,21 @@ from restitution.status import Status
 __all__ = ["ERROR_MEANING", "Estimate", "EstimateView", "estimate_of", "nan_for_none"]
 
 ERROR_MEANING = (
-    "one standard deviation of the estimate as its route states it: for a modal extrapolation "
+    "epsilon_err: the error of the estimate as its route states it (each route meant one "
+    "standard deviation; on independent points it is an upper estimate, several times the "
+    "actual miss, docs/errors.md): for a modal extrapolation "
     "the fits' error plus the spread between the two orders of the limits and between checks "
     "and the shift of a quadratic in 1/alpha (the wall's curvature, a bias estimate); "
     "for the FEM the Richardson and fit errors; for the low-speed theories their model band "
     "plus what PCHIP between neighbouring low-speed points strays; between a law's points the "
     "neighbouring errors (interpolated) joined in quadrature with the interpolation's "
     "estimate, the larger leave-one-out error of the interval's ends times 2 sqrt(s (1 - s)): "
-    "an upper estimate (PCHIP at twice the spacing), not a standard deviation"
+    "an upper estimate (PCHIP at twice the spacing), not a standard deviation. epsilon_sd, "
+    "where an answer gives it (restitution law; a law's epsilon_sd(v)): one standard "
+    "deviation, the same parts scaled per route by factors fitted on independent points "
+    "(78-80 % of the held-out finite-element, between-speed and between-nu points within "
+    "one sd, docs/errors.md); where a route has too few such points it is the bound, and "
+    "epsilon_sd_kind says 'bound'"
 )
 """What an :class:`Estimate`'s error covers (the routes' own documents say how it is made)."""
 

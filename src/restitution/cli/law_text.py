@@ -91,18 +91,38 @@ def _eps(p) -> tuple[str, str]:
     return eps, err
 
 
+def _sd(p) -> str:
+    """The row's standard deviation, ``*`` where it is the bound (a route not calibrated)."""
+    sd = getattr(p, "sd", None)
+    if sd is None:
+        return "-"
+    return f"{sd:.2g}" + ("" if getattr(p, "sd_calibrated", False) else "*")
+
+
+SD_LINE = (
+    "errors: 'error' is the bound (an upper estimate); 'sd' one standard deviation, the "
+    "bound's parts scaled per route by factors fitted on independent points (78-80 % of the "
+    "held-out ones within one sd, docs/errors.md); sd* is the bound (a route without enough "
+    "independent points)"
+)
+"""What the ``error`` and ``sd`` columns of the elastic law's rows mean (the line above them)."""
+
+
 def _rows(a) -> list[str]:
     """The elastic law's rows."""
     split = any(getattr(p, "loss_shares", None) for p in a.points)
-    head = "  speed [m/s]        v/c       epsilon      error   status"
+    head = "  speed [m/s]        v/c       epsilon      error         sd   status"
     split_head = partner_of(a.law.law).split_head  # ball / wall, grain 1 / 2
-    lines = [head + (split_head if split else "")]
+    lines = [SD_LINE, head + (split_head if split else "")]
     for p in a.points:
         eps, err = _eps(p)
-        line = f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}   {p.status}"
+        line = (
+            f"  {p.speed_m_s:11.4g}  {p.v_over_c:9.3g}  {eps:>12}  {err:>9}  {_sd(p):>9}   "
+            f"{p.status}"
+        )
         if split and p.loss_shares is not None:
             first, second = (f"{100 * x:.3g} %" for x in p.loss_shares)
-            line = f"{line:<70}{first:>8} / {second}"
+            line = f"{line:<81}{first:>8} / {second}"
         lines.append(line.rstrip())
     return lines
 

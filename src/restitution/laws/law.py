@@ -372,6 +372,45 @@ class EpsilonLaw:
         return float(out) if np.ndim(v) == 0 else out
 
     @cached_property
+    def _sd_factors(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        from restitution.laws.calibration import point_factors
+
+        return point_factors(self)
+
+    def _sd_at(self, v, outside: str):
+        """``(a, b, calibrated)`` at speeds ``v``: a computed point's own route's factors, else
+        the larger of the interval's two ends (the bound's where either end is uncalibrated)."""
+        arr = _speeds(v)
+        bad = self._check(arr, outside)
+        a, b, ok = self._sd_factors
+        x = np.where(bad, self.v[0], arr)
+        j = np.clip(np.searchsorted(self.v, x, side="right") - 1, 0, max(self.v.size - 2, 0))
+        k = np.minimum(j + 1, self.v.size - 1)
+        at = np.abs(self.v[j] - x) <= 1e-9 * self.v[j]
+        fa = np.where(at, a[j], np.maximum(a[j], a[k]))
+        fb = np.where(at, b[j], np.maximum(b[j], b[k]))
+        cal = np.where(at, ok[j], ok[j] & ok[k]) & ~bad
+        return fa, fb, cal
+
+    def epsilon_sd(self, v, *, outside: str = "raise"):
+        """One standard deviation of :meth:`epsilon` at ``v``: the two components of
+        :meth:`epsilon_err` (the points' errors, interpolated, and :meth:`interpolation_err`)
+        scaled by the factors of the route that made the points
+        (:mod:`restitution.laws.calibration`, fitted on independent points: docs/errors.md);
+        where the route is not calibrated (:meth:`sd_calibrated` false) it equals
+        :meth:`epsilon_err`, the bound."""
+        point = np.abs(self._evaluate(self.epsilon_err_points, v, outside))
+        fa, fb, _ = self._sd_at(v, "nan")
+        out = np.hypot(fa * point, fb * self.interpolation_err(v, outside="nan"))
+        return float(out) if np.ndim(v) == 0 else out
+
+    def sd_calibrated(self, v, *, outside: str = "raise"):
+        """Whether :meth:`epsilon_sd` at ``v`` is a calibrated standard deviation (``False``:
+        it is the bound of a route without enough independent points)."""
+        cal = self._sd_at(v, outside)[2]
+        return bool(cal) if np.ndim(v) == 0 else cal
+
+    @cached_property
     def _leave_one_out(self) -> np.ndarray:
         return leave_one_out(self._knots, self.epsilon_points)
 

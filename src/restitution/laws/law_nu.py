@@ -370,6 +370,36 @@ class NuInterpolatedLaw:
 
         return self._serve(v, outside, err)
 
+    def epsilon_sd(self, v, *, outside: str = "raise"):
+        """One standard deviation of :meth:`epsilon`: the grid laws' standard deviations
+        (:meth:`EpsilonLaw.epsilon_sd`) interpolated in ``nu``, joined in quadrature with the
+        ``nu``-interpolation term scaled by its calibrated factor
+        (:mod:`restitution.laws.calibration`, route ``nu``); where a grid law's is the bound
+        (:meth:`sd_calibrated` false) the term keeps its full size."""
+        from restitution.laws.calibration import CALIBRATIONS, NU
+
+        c = CALIBRATIONS[NU].nu_factor
+
+        def sd(w: np.ndarray) -> np.ndarray:
+            get = self._node_values(w)
+            point = np.abs(self._pchip_in_nu(get, "epsilon_sd", self.nu))
+            factor = np.where(self._calibrated_at(w), c, 1.0)
+            return np.hypot(point, factor * self._interpolation_err_at(get))
+
+        return self._serve(v, outside, sd)
+
+    def _calibrated_at(self, w: np.ndarray) -> np.ndarray:
+        """Whether every grid law's standard deviation at the speeds ``w`` is calibrated."""
+        ok = np.ones(np.shape(w), bool)
+        for n in self.nodes:
+            ok &= np.asarray(n.sd_calibrated(w, outside="nan"), bool)
+        return ok
+
+    def sd_calibrated(self, v, *, outside: str = "raise"):
+        """Whether :meth:`epsilon_sd` at ``v`` is a calibrated standard deviation."""
+        out = self._serve(v, outside, lambda w: self._calibrated_at(w).astype(float))
+        return np.asarray(out) == 1.0 if np.ndim(v) else bool(out == 1.0)
+
     __call__ = epsilon
 
     # -- the points behind the law, as EpsilonLaw has them (computed once) ----------------

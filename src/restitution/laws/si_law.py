@@ -24,6 +24,7 @@ import numpy as np
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY
 from restitution.errors import InputError, describe, is_real, real_array
+from restitution.laws.calibration import SD_MEANING
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_nu import NU_MATCH, NuInterpolatedLaw, law_for, shipped_match
 from restitution.laws.mechanisms.base import mechanism_fields
@@ -184,12 +185,20 @@ class SILaw:
         """Error of :meth:`epsilon` at ``w`` (m/s); ``outside`` as there."""
         return self._evaluate(speed_m_s, outside, 1)
 
+    def epsilon_sd(self, speed_m_s, *, outside: str = "raise"):
+        """One standard deviation of :meth:`epsilon` at ``w`` (m/s; :meth:`EpsilonLaw.
+        epsilon_sd`, docs/errors.md); below the law, where its low-speed route answers, the
+        route's bound. ``outside`` as :meth:`epsilon`'s."""
+        return self._evaluate(speed_m_s, outside, 2)
+
     def _evaluate(self, speed_m_s, outside: str, which: int):
-        """:meth:`epsilon` (``which`` 0) or its error (1)."""
+        """:meth:`epsilon` (``which`` 0), its error (1) or its standard deviation (2; below the
+        law the route's error, the bound)."""
         v = self._served_v(self._reduced(speed_m_s))
         flat = np.atleast_1d(np.asarray(v, dtype=float)).ravel()
         below = self._route_answers(flat)
-        f = self.law.epsilon if which == 0 else self.law.epsilon_err
+        f = (self.law.epsilon, self.law.epsilon_err, self.law.epsilon_sd)[which]
+        which = min(which, 1)
         if not below.any():
             return f(self._inside(speed_m_s, outside), outside=outside)
         try:
@@ -358,7 +367,8 @@ class SILaw:
         checked = values_checked(self.law)
         out = []
         for w, v, (status, text), share in zip(ws, vs, statuses, shares, strict=True):
-            eps = err = None
+            eps = err = sd = None
+            calibrated = False
             if v in below:
                 eps, err, split = below[v]
                 status = Status.QUASISTATIC
@@ -369,7 +379,16 @@ class SILaw:
                     else f"computed at this speed by {self.below.words} (below its table)"
                 )
                 out.append(
-                    SIPoint(float(w), v, eps, err, status, cut_at_one(text, eps, err), split)
+                    SIPoint(
+                        float(w),
+                        v,
+                        eps,
+                        err,
+                        status,
+                        cut_at_one(text, eps, err),
+                        split,
+                        epsilon_sd=err,  # the route's bound: not calibrated
+                    )
                 )
                 continue
             if status != Status.OUTSIDE:
@@ -377,10 +396,10 @@ class SILaw:
                 if isinstance(found, InputError):  # a nu-interpolated law's narrower range
                     status, text = Status.OUTSIDE, str(found)
                 else:
-                    eps, err = found
+                    eps, err, sd, calibrated = found
                     why = not_informative(self.law, v, eps, err) if checked else None
                     if why is not None:  # an elastic wall's value that says nothing
-                        status, text, eps, err = Status.OUTSIDE, why, None, None
+                        status, text, eps, err, sd = Status.OUTSIDE, why, None, None, None
             if status == Status.OUTSIDE:
                 lo, hi = self.speed_range_m_s
                 if getattr(self.law, "at_points_only", False):
@@ -391,7 +410,19 @@ class SILaw:
             else:
                 text = cut_at_one(text, eps, err)
             share = None if status == Status.OUTSIDE else share
-            out.append(SIPoint(float(w), v, eps, err, status, text, share))
+            out.append(
+                SIPoint(
+                    float(w),
+                    v,
+                    eps,
+                    err,
+                    status,
+                    text,
+                    share,
+                    epsilon_sd=sd,
+                    sd_calibrated=calibrated,
+                )
+            )
         return tuple(out)
 
     def _served_all(self, vs, statuses, below) -> dict:
@@ -407,16 +438,37 @@ class SILaw:
         try:
             eps = np.atleast_1d(self.law.epsilon(at))
             err = np.atleast_1d(self.law.epsilon_err(at))
-            return {v: (float(e), float(d)) for v, e, d in zip(inside, eps, err, strict=True)}
+            sd, cal = self._sd(at)
+            return {
+                v: (float(e), float(d), float(s), bool(c))
+                for v, e, d, s, c in zip(inside, eps, err, sd, cal, strict=True)
+            }
         except InputError:
             out = {}
             for v in inside:
                 try:
                     sv = self._served_v(v)
-                    out[v] = (float(self.law.epsilon(sv)), float(self.law.epsilon_err(sv)))
+                    (s,), (c,) = self._sd(np.array([sv]))
+                    out[v] = (
+                        float(self.law.epsilon(sv)),
+                        float(self.law.epsilon_err(sv)),
+                        float(s),
+                        bool(c),
+                    )
                 except InputError as exc:
                     out[v] = exc
             return out
+
+    def _sd(self, at: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The law's standard deviation at the reduced speeds ``at`` and whether it is
+        calibrated; a law without one (any object with ``epsilon_err`` only) gives its
+        error, uncalibrated."""
+        if not hasattr(self.law, "epsilon_sd"):
+            return np.atleast_1d(self.law.epsilon_err(at)), np.zeros(np.size(at), bool)
+        return (
+            np.atleast_1d(self.law.epsilon_sd(at)),
+            np.atleast_1d(self.law.sd_calibrated(at)),
+        )
 
     # -- views for a notebook (restitution.laws.views) ------------------------------------
 
@@ -499,6 +551,7 @@ class SILaw:
                 ),
             },
             "statuses": {**STATUSES, Status.QUASISTATIC: quasistatic_note(self.law)},
+            "epsilon_sd_meaning": SD_MEANING,
             **mechanism_fields(law_mechanisms(self.law)),
             "plastic_flow_expected_from_m_s": bound,
             "points": [p.to_dict() for p in points],

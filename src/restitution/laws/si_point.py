@@ -19,6 +19,7 @@ import numpy as np
 
 from restitution.bodies.kinds import body_kind
 from restitution.estimate import Estimate
+from restitution.laws.calibration import sd_words
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.partners.base import partner_of
 from restitution.status import Status
@@ -132,6 +133,11 @@ class SIPoint:
         ``loss_viscous``, ...), flags (``yielded``, ``stuck``, ``informative``); each reads as an
         attribute and is a key of :meth:`to_dict`. One point type for every answer: the elastic
         law's has none.
+    epsilon_sd : float or None
+        One standard deviation of epsilon (:mod:`restitution.laws.calibration`); ``None``: the
+        route that answered states none, and :meth:`to_dict` gives the bound ``epsilon_err``.
+    sd_calibrated : bool
+        Whether ``epsilon_sd`` is calibrated on independent points (``False``: it is the bound).
     """
 
     speed_m_s: float
@@ -142,6 +148,8 @@ class SIPoint:
     note: str = ""
     loss_shares: tuple[float, float] | None = None
     parts: tuple[tuple[str, object], ...] = ()
+    epsilon_sd: float | None = None
+    sd_calibrated: bool = False
 
     def __getattr__(self, name: str):
         # A mechanism's part (``epsilon_elastic``, ``loss_plastic``, ...) reads as an attribute.
@@ -169,6 +177,8 @@ class SIPoint:
             "v_over_c": self.v_over_c,
             "epsilon": self.epsilon,
             "epsilon_err": self.epsilon_err,
+            "epsilon_sd": self.sd,
+            "epsilon_sd_kind": None if self.sd is None else sd_words(self.sd_calibrated),
             "epsilon_min": None if rng is None else rng[0],
             "epsilon_max": None if rng is None else rng[1],
             "status": self.status,
@@ -176,6 +186,12 @@ class SIPoint:
             "loss_shares": None if self.loss_shares is None else list(self.loss_shares),
             **dict(self.parts),
         }
+
+    @property
+    def sd(self) -> float | None:
+        """One standard deviation: :attr:`epsilon_sd`, or the bound ``epsilon_err`` where the
+        answering route states none (then :attr:`sd_calibrated` is false)."""
+        return self.epsilon_err if self.epsilon_sd is None else self.epsilon_sd
 
     @property
     def estimate(self) -> Estimate:

@@ -47,6 +47,8 @@ COLUMNS = (
     "v_over_c",
     "epsilon",
     "epsilon_err",
+    "epsilon_sd",
+    "epsilon_sd_kind",
     "epsilon_min",
     "epsilon_max",
     "status",
@@ -64,6 +66,9 @@ UNITS = {
     "for two identical grains)",
     "epsilon": "dimensionless: rebound speed / impact speed (relative speeds for two grains)",
     "epsilon_min, epsilon_max": "epsilon - epsilon_err and epsilon + epsilon_err, cut to [0, 1]",
+    "epsilon_err, epsilon_sd": "the bound (an upper estimate) and one standard deviation "
+    "(epsilon_sd_kind: 'standard deviation', calibrated per route on independent points, or "
+    "'bound' where the route has too few; docs/errors.md)",
 }
 """What the columns' numbers are, in the words of :func:`about`."""
 
@@ -166,7 +171,7 @@ def to_frame(si, speeds_m_s=None):
         ) from None
     table, notes = _keyed(rows(si, speeds_m_s))
     frame = pd.DataFrame(table, columns=list(FRAME_COLUMNS))
-    numeric = [c for c in FRAME_COLUMNS if c not in ("status", "note_id")]
+    numeric = [c for c in FRAME_COLUMNS if c not in ("status", "note_id", "epsilon_sd_kind")]
     frame[numeric] = frame[numeric].astype(float)
     frame.attrs.update(about(si, notes))
     return frame

@@ -1,0 +1,223 @@
+"""The served standard deviation (issue 65, item 1): calibrated per route on independent points.
+
+The factors of :mod:`restitution.laws.calibration` come from the rule of
+:mod:`restitution.fem.calibrate` (maximum likelihood on one half of the independent points,
+rows sorted by source, Poisson number and speed, the even ones fitted); the held-out half is
+checked here against the issue's targets: within one standard deviation at 60-80 % of the
+points, within two at 95 % or more. Where the measured coverage misses a target the test says
+so (``xfail(strict=True)``, the numbers in its reason and in docs/errors.md): it is a finding,
+not a tolerance. All from stored data: the finite-element references
+(``laws/data/fem_reference*.json``), the direct points between computed speeds
+(``tests/data/between_*.json``) and the shipped laws; a few seconds.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from restitution.fem.calibrate import coverage, fit, halves, rows_between, rows_fem, z_scores
+from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, QUASISTATIC
+from restitution.laws.law_load import law
+from restitution.laws.law_nu import law_for
+from restitution.laws.si_law import si_law
+
+DATA = Path(__file__).parent / "data"
+
+
+@pytest.fixture(scope="module")
+def fitted():
+    return fit(DATA)
+
+
+def test_the_shipped_factors_are_the_rule_s_fit_rounded_to_two_digits(fitted):
+    """The factors in calibration.py are what the stated rule gives on the stored data (a
+    check of their provenance: a changed law or data file changes them)."""
+    got = fitted["fitted_factors"]
+    assert round(got["a"], 2) == CALIBRATIONS[MODAL].point_factor
+    assert round(got["b"], 2) == CALIBRATIONS[MODAL].interpolation_factor
+    assert round(got["c"], 2) == CALIBRATIONS[NU].nu_factor
+    assert CALIBRATIONS[MODAL].calibrated and CALIBRATIONS[NU].calibrated
+    assert not CALIBRATIONS[QUASISTATIC].calibrated
+
+
+def _held(fitted, kind):
+    return fitted["coverage"][kind]["held_out"]
+
+
+def test_the_nu_route_covers_its_held_out_points(fitted):
+    """51 held-out speeds of the direct laws at nu_2d = 0.25, 3/7, 0.6, 0.8 (measured: 78 %
+    within one, 96 % within two)."""
+    c = _held(fitted, "nu")
+    assert c["points"] == 51
+    assert 0.60 <= c["within_1"] <= 0.80 and c["within_2"] >= 0.95, c
+
+
+def test_the_interpolation_term_covers_two_thirds_of_the_held_out_between_points(fitted):
+    """46 held-out direct points between computed speeds (measured: 76 % within one)."""
+    c = _held(fitted, "between")
+    assert c["points"] == 46
+    assert 0.60 <= c["within_1"] <= 0.80, c
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="measured 43 of 46 (93.5 %) within two: the misses at "
+    "speeds where the interpolation term is small (docs/errors.md)",
+)
+def test_the_interpolation_term_covers_95_percent_within_two(fitted):
+    assert _held(fitted, "between")["within_2"] >= 0.95
+
+
+def test_the_modal_point_error_covers_the_held_out_fem_points_within_two(fitted):
+    """13 held-out finite-element points at computed speeds: all within two."""
+    c = _held(fitted, "fem")
+    assert c["points"] == 13
+    assert c["within_2"] >= 0.95, c
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="measured 12 of 13 (92 %) within one: the finite "
+    "elements' own stated errors alone cover 21 of the 26 points (81 %), so with "
+    "any point factor at least 81 % of them lie within one (docs/errors.md)",
+)
+def test_the_modal_point_error_covers_at_most_80_percent_of_the_fem_points(fitted):
+    assert _held(fitted, "fem")["within_1"] <= 0.80
+
+
+def test_the_fem_errors_alone_cover_most_of_their_points():
+    """Why the test above fails: with no modal error at all, 21 of the 26 finite-element points
+    at modal speeds are within one of their own errors."""
+    rows = [r for r in rows_fem() if r.route == MODAL]
+    z = z_scores(rows, "fem", 0.0, 0.0, 0.0)
+    assert len(rows) == 26 and int(np.sum(z <= 1.0)) == 21
+
+
+def test_the_modal_route_as_a_whole_covers_two_thirds_of_its_held_out_points(fitted):
+    """Finite-element and between-speed points together, 59 held out (measured: 79.7 % within
+    one)."""
+    c = _held(fitted, "modal")
+    assert c["points"] == 59
+    assert 0.60 <= c["within_1"] <= 0.80, c
+
+
+@pytest.mark.xfail(strict=True, reason="measured 56 of 59 (94.9 %) within two (docs/errors.md)")
+def test_the_modal_route_as_a_whole_covers_95_percent_within_two(fitted):
+    assert _held(fitted, "modal")["within_2"] >= 0.95
+
+
+def test_the_halves_split_every_comparison_evenly():
+    rows = rows_between(DATA)
+    fit_rows, held = halves(rows)
+    assert len(fit_rows) - len(held) in (0, 1)
+    assert not {id(r) for r in fit_rows} & {id(r) for r in held}
+    assert coverage(np.array([0.5, 1.5, 2.5]))["within_1"] == pytest.approx(1 / 3)
+
+
+# -- the steel cylinder of the issue ----------------------------------------------------------
+
+
+def _fem_steel():
+    """The finite-element point of the steel cylinder (E = 210 GPa, nu = 0.3, plane strain:
+    nu_2d = 3/7) at 1 m/s on the wall (v = 1.844e-4 c), computed for this issue by
+    ``python -m restitution.fem.reference OUT 0.42857142857142855:0.00018443607745413223``
+    (levels 0-2, three walls; its provenance in the file). It is flagged: curved in 1/alpha
+    (55 % against the 50 % tolerance)."""
+    doc = json.loads((DATA / "fem_steel_cylinder_1ms.json").read_text())
+    (p,) = doc["points"]
+    return p
+
+
+def test_the_steel_cylinder_at_1_m_s_is_served_within_one_sd_of_the_finite_elements():
+    fem = _fem_steel()
+    assert fem["nu"] == pytest.approx(3 / 7) and fem["v"] == pytest.approx(1.8443607745e-4)
+    s = si_law(E=210e9, nu=0.3, rho=7850, shape="cylinder", against="wall")
+    (p,) = s.points([1.0])
+    assert p.v_over_c == pytest.approx(fem["v"], rel=1e-9)
+    # The bound stays: 9.4e-4 as docs/lammps-plugin.md's table of the plugin states it.
+    assert p.epsilon_err == pytest.approx(9.44e-4, rel=1e-2)
+    assert p.sd_calibrated and p.epsilon_sd <= 6e-4  # the issue's limit
+    assert abs(p.epsilon - fem["epsilon"]) <= p.epsilon_sd
+    assert s.epsilon_sd(1.0) == p.epsilon_sd
+    d = p.to_dict()
+    assert d["epsilon_sd"] == p.epsilon_sd and d["epsilon_sd_kind"] == "standard deviation"
+
+
+# -- serving ---------------------------------------------------------------------------------
+
+
+def test_a_route_without_calibration_serves_its_bound_and_says_so():
+    # 0.1 m/s for the steel cylinder is v = 1.8e-5 c: between the disk law's low-speed points.
+    s = si_law(E=210e9, nu=0.3, rho=7850, shape="cylinder", against="wall")
+    (p,) = s.points([0.1])
+    assert p.status == "quasistatic"
+    assert not p.sd_calibrated and p.epsilon_sd == p.epsilon_err
+    assert p.to_dict()["epsilon_sd_kind"] == "bound"
+
+
+def test_a_law_of_given_points_serves_their_error_as_its_sd():
+    """The factors belong to this package's modal route; another program's points keep their
+    own error."""
+    from restitution.laws.law import EpsilonLaw
+
+    given = EpsilonLaw.from_points(0.33, [0.01, 0.02, 0.03], [0.99, 0.98, 0.97], [1e-3] * 3)
+    v = np.array([0.01, 0.015, 0.03])
+    assert not given.sd_calibrated(v).any()
+    assert np.array_equal(given.epsilon_sd(v), given.epsilon_err(v))
+
+
+def test_the_calibrated_sd_is_below_the_bound_and_zero_nowhere():
+    for served in (law(0.33), law(0.3, geometry="sphere"), law_for(0.3)):
+        lo, hi = served.valid_range
+        v = np.geomspace(lo, hi, 400)
+        sd, err = served.epsilon_sd(v), served.epsilon_err(v)
+        cal = served.sd_calibrated(v)
+        assert np.all(sd <= err + 1e-18) and np.all(sd > 0)
+        assert np.all(sd[~cal] == err[~cal]) and cal.any()
+
+
+def _law_command(capsys, *extra) -> tuple[str, str]:
+    from restitution.cli import main
+
+    args = [
+        "law",
+        "--E",
+        "210e9",
+        "--nu",
+        "0.3",
+        "--rho",
+        "7850",
+        "--shape",
+        "cylinder",
+        "--against",
+        "wall",
+        "--speed",
+        "0.1",
+        "1",
+        *extra,
+    ]
+    try:
+        main(args)
+    except SystemExit as exc:
+        assert exc.code == 0
+    return capsys.readouterr()
+
+
+def test_the_law_command_shows_the_sd_and_what_it_means(capsys):
+    out, _ = _law_command(capsys)
+    lines = out.splitlines()
+    head = next(line for line in lines if "speed [m/s]" in line)
+    assert head.split()[-3:] == ["error", "sd", "status"]
+    slow, fast = (line.split() for line in lines[lines.index(head) + 1 :][:2])
+    assert slow[4].endswith("*") and not fast[4].endswith("*")  # the bound; calibrated
+    meaning = lines[lines.index(head) - 1]
+    assert "'sd' one standard deviation" in meaning and "sd* is the bound" in meaning
+    doc = json.loads(_law_command(capsys, "--json")[0])
+    assert "epsilon_sd" in doc["error_meaning"] and "upper estimate" in doc["error_meaning"]
+    assert "one standard deviation" in doc["epsilon_sd_meaning"]
+    kinds = [p["epsilon_sd_kind"] for p in doc["points"]]
+    assert kinds == ["bound", "standard deviation"]
