@@ -455,8 +455,10 @@ def test_cli_law_exports_a_sphere_law_file(tmp_path, capsys):
     manifest = out_dir / ".restitution-export.json"
     files = sorted(p for p in out_dir.iterdir() if p != manifest)
     # 5 tables and codes, 4 snippets, the plugin's tables (the grains', the grain on the wall)
-    # and its input lines; the manifest (restitution.file_set) names exactly them.
+    # and its input lines; the manifest (restitution.file_set) names exactly them. No law per
+    # contact: it would be the package's own, not the given file's (the input lines say so).
     assert len(files) == 12
+    assert "--law-file" in (out_dir / "epsilon_lammps_plugin.in").read_text()
     assert sorted(json.loads(manifest.read_text())["files"]) == [p.name for p in files]
     for p in files:
         if p.suffix != ".json":

@@ -117,8 +117,13 @@ def write_exports(r, s: SILaw, constant, model, note, walls=None) -> tuple:
     if r.export_dir is None:
         return ()
     with writing(r.export_dir, "--export"):  # a full disk names the option and the folder
+        # The law per contact is the package's own route: not a law given as a file.
+        no_contact = None if r.law_file is None else (
+            "the law is the file given with --law-file, and the law per contact is the "
+            "package's own (its shipped curves), not that file's"
+        )  # fmt: skip
         folder = exports.write_folder(s, constant, r.export_dir, model, r.friction, walls,
-                                      r.radius)  # fmt: skip
+                                      r.radius, no_contact)  # fmt: skip
     if folder.no_closed_form is not None:
         note(f"note: no closed form written: {folder.no_closed_form}")
     if folder.no_plugin is not None:

@@ -48,12 +48,16 @@ class AnySize:
     why: str = ""
 
 
-def any_size_files(s, system, relaxation_time_s: float | None) -> AnySize:
+def any_size_files(
+    s, system, relaxation_time_s: float | None, why_not: str | None = None
+) -> AnySize:
     """The laws per contact of the export of ``s`` (an :class:`~restitution.laws.si_law.SILaw`)
     for the contacts of ``system`` (:class:`~restitution.laws.exports.plugin_files.
     SystemContacts`): every pair of its grain types (1-1, and with two materials 1-2 and 2-2)
     and each type on the wall. ``relaxation_time_s``: the Kelvin-Voigt time of a damped law
-    (s; ``None`` for an elastic one)."""
+    (s; ``None`` for an elastic one); ``why_not``: the caller's reason for none."""
+    if why_not is not None:
+        return AnySize(why=why_not)
     extra = sorted(set(law_mechanisms(s.law)) - _CARRIED)
     if extra:
         left = ", ".join(extra)

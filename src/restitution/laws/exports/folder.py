@@ -82,6 +82,7 @@ def write_folder(
     friction: float | None = None,
     walls=None,
     radius_m: float | None = None,
+    no_contact: str | None = None,
 ) -> ExportFolder:
     """Write the tables and closed form of ``s`` and, with ``constant`` (a ``Constant`` or the
     ``TypePairs`` of ``s``) or ``viscoelastic`` (a damped sphere law's
@@ -94,7 +95,9 @@ def write_folder(
     the folder holds one law's files only; a file the package did not write (or one changed
     since) is never replaced or removed: the export is refused, naming it. ``radius_m``: the
     (type-1) grains' radius, m, for the time steps in seconds (default: the viscoelastic
-    model's; without one the times are per millimetre of radius and no step is set)."""
+    model's; without one the times are per millimetre of radius and no step is set).
+    ``no_contact``: why the folder holds no law per contact of the plugin although the law's
+    kind has one (a law given as a file), :mod:`~restitution.laws.exports.any_size`."""
     out = Path(out)
     # The three-parameter form exists only where it follows the points within their errors;
     # the C and Fortran evaluate the law's table either way.
@@ -109,7 +112,7 @@ def write_folder(
     steps = time_steps(s, constant, radius_m, walls)
     try:
         tau = None if viscoelastic is None else viscoelastic.relaxation_time_s
-        plugin, no_plugin = plugin_files(s, constant, walls, steps, tau), None
+        plugin, no_plugin = plugin_files(s, constant, walls, steps, tau, no_contact), None
     except InputError as exc:
         plugin, no_plugin = {}, str(exc)
     stem = "epsilon"

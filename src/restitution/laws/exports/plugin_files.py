@@ -122,7 +122,9 @@ def system_contacts(s, c=None, walls=None) -> SystemContacts:
     return SystemContacts(laws, grains, missing, two)
 
 
-def plugin_files(s, c=None, walls=None, steps=None, relaxation_time_s=None) -> dict[str, str]:
+def plugin_files(
+    s, c=None, walls=None, steps=None, relaxation_time_s=None, no_contact=None
+) -> dict[str, str]:
     """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
     :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
     :class:`TypePairs` ``c`` (their 1-1 and 2-2 laws); a ``Constant`` or ``None`` adds nothing.
@@ -133,7 +135,8 @@ def plugin_files(s, c=None, walls=None, steps=None, relaxation_time_s=None) -> d
     (:class:`~restitution.laws.exports.time_step.TimeSteps`), written after the lines.
     ``relaxation_time_s``: a damped law's Kelvin-Voigt time (s), for the laws per contact of
     spheres (:mod:`~restitution.laws.exports.any_size`), which the folder holds beside the
-    tables where the package has them.
+    tables where the package has them; ``no_contact``: why not, where the caller knows (a law
+    given as a file).
 
     Raises
     ------
@@ -148,7 +151,7 @@ def plugin_files(s, c=None, walls=None, steps=None, relaxation_time_s=None) -> d
         files[_table_name(i, j)] = plugin_table(pchip_table(law), [*_header(law),
                                                                    f"contact: {what}"])  # fmt: skip
     lines = [f"# {line}" for line in _header(s)]
-    sizes = any_size_files(s, system, relaxation_time_s)
+    sizes = any_size_files(s, system, relaxation_time_s, no_contact)
     if sizes.files:
         lines.append(f"# grains of any sizes: {ANY_SIZE_INPUT} (the law per contact) in place "
                      "of this file's tables, which hold the exported radii only")  # fmt: skip
