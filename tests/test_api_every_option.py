@@ -8,9 +8,9 @@ What "agrees" means, per law (each measured when written, the numbers in the tes
   beads' law interpolated in nu (0.01 m/s lies below it: both answer by its low-speed route),
   the damped law (the table is the damped law at the elastic law's speeds; at other speeds both
   interpolate the same elastic law and integrate the same viscous collisions: 1e-7 apart);
-* **within the table's stated error** where the table interpolates a mechanism the command line
-  computes at the speed itself (plastic flow, an elastic wall): the miss is reported as a
-  fraction of that error.
+* **within a tenth of the table's stated error** where the table interpolates a mechanism the
+  command line computes at the speed itself (plastic flow, an elastic wall): the miss is
+  reported as a fraction of that error.
 """
 
 from __future__ import annotations
@@ -83,15 +83,16 @@ def test_damped_glass_beads_are_the_damped_law(cli):
 
 @pytest.mark.slow
 def test_plastic_steel_is_tabulated_within_its_stated_error(cli):
-    """Measured when written: the misses are 0.25, 0.11, 0.12 and 0.014 of the stated errors
-    (6.3e-7, 4.9e-3, 9.3e-5, 1.1e-3): within the error, not within a tenth of it at 0.01, 0.1
-    and 1 m/s (the table interpolates four speeds a decade; the command line computes the pulse
-    at the speed itself)."""
+    """The table (the pulse computed at four speeds a decade, Thornton's closed form and the
+    elastic law's own loss at every speed of the elastic law between them, the rest
+    interpolated: restitution.laws.shaped_table) against the command line's pulse computed at
+    the speed itself. Measured when written: the misses are 1.3e-4, 0.089, 0.073 and 0.013 of
+    the stated errors (7.7e-8, 1.2e-5, 1.1e-4, 1.1e-3); with the computed speeds alone they were
+    0.25, 0.11, 0.12 and 0.014."""
     opts = dict(yield_stress=1e9, radius=1e-3)
     law = restitution.si_law(**STEEL, against="wall", **opts)
     eps, err, want, _ = _compare(cli, law, **STEEL, against="wall", **opts)
-    print("plastic misses / stated error:", np.abs(eps - want) / err)
-    assert np.all(np.abs(eps - want) <= err), (eps - want, err)
+    assert np.all(np.abs(eps - want) <= 0.1 * err), (eps - want, err)
     assert "plastic" in law.law.metadata["mechanisms"]
 
 

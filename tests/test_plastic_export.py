@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+import restitution
 from restitution.laws.exports.pchip import LOG_KNOTS_INSIDE
 from restitution.laws.request import request
 from restitution.laws.serve import serve
@@ -38,10 +39,19 @@ def test_a_plastic_steel_export_has_every_file_and_the_walls_plastic_law(cli, tm
     head = wall.read_text()
     assert "plastic flow (Thornton" in head and "upper bound (no plastic flow)" not in head
     knots = _knots(wall)
-    # The table's computed speeds, with LOG_KNOTS_INSIDE knots of its interpolant between each
-    # two (the plastic table interpolates in ln v; the plugin's cubic is in w).
-    computed = knots[:: LOG_KNOTS_INSIDE + 1]
-    assert (knots.shape[0] - 1) % (LOG_KNOTS_INSIDE + 1) == 0 and computed.shape[0] >= 10
+    # The table's speeds, with LOG_KNOTS_INSIDE knots of its interpolant between each two (the
+    # plastic table interpolates in ln v; the plugin's cubic is in w). Its speeds are the elastic
+    # law's; the pulse was computed at some of them (restitution.laws.shaped_table): those are
+    # the package's direct answers.
+    table = restitution.si_law(**STEEL_KW, against="wall", yield_stress=1e9, radius=1e-3)
+    records = table.law.metadata["points"]
+    assert (knots.shape[0] - 1) % (LOG_KNOTS_INSIDE + 1) == 0
+    at_records = knots[:: LOG_KNOTS_INSIDE + 1]
+    assert at_records.shape[0] == len(records)
+    np.testing.assert_allclose(at_records[:, 1], [r["epsilon"] for r in records], rtol=0,
+                               atol=1e-12)  # fmt: skip
+    computed = at_records[[r["computed"] for r in records]]
+    assert computed.shape[0] >= 10
     # Three computed speeds above the yield speed: the plastic law of the grain on the wall.
     pick = computed[(computed[:, 0] > 0.1) & (computed[:, 0] < 50.0)][::3][:3]
     assert len(pick) == 3

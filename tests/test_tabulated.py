@@ -136,15 +136,19 @@ def test_fewer_than_two_rebounds_are_refused_in_one_line():
 def test_the_plastic_table_covers_the_command_lines_answers_between_its_speeds():
     """Plastic steel (yield stress 1 GPa, R 1 mm) tabulated by ``si_law`` against the
     mechanism computed at speeds between the table's (what ``restitution law`` answers there).
-    Measured when written: 19 speeds from 6 mm/s to 170 m/s, all covered, the largest miss 0.49
-    of the stated error."""
+    Measured when written: 19 speeds from 6 mm/s to 170 m/s, all covered, the largest miss 0.19
+    of the stated error, the median 0.045 (0.49 at most when the table held the computed
+    speeds alone, before the closed form, restitution.laws.shaped_table)."""
     import restitution
     from restitution.laws.request import request
     from restitution.laws.serve import serve
 
     t = restitution.si_law(**STEEL, yield_stress=1e9, radius=1e-3)
     answer = serve(request(**STEEL, yield_stress=1e9, radius=1e-3, speeds=[1.0]))
-    v = np.asarray(t.law.v, dtype=float)
+    # Between the speeds where the pulse was computed (the table's other records are the
+    # elastic law's speeds between them, the closed form there and the rest interpolated).
+    v = np.array([r["v"] for r in t.law.metadata["points"] if r["computed"]])
+    assert v.size < t.law.v.size
     between = np.exp(np.log(v[:-1]) + 0.27 * np.log(v[1:] / v[:-1])) * t.speed_scale_m_s
     c = coverage(t, answer.by.points, between)
     assert len(c.misses) >= 15

@@ -48,6 +48,7 @@ from scipy.interpolate import PchipInterpolator
 from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_point import LOG_V, QUASISTATIC_ROUTE
+from restitution.laws.shaped_table import shaped_records
 
 __all__ = ["GAP_FACTOR", "PER_DECADE", "Coverage", "coverage", "mechanism_table", "table_speeds"]
 
@@ -96,6 +97,7 @@ def mechanism_table(
     progress=False,
     per_decade: int = PER_DECADE,
     zero_below: float | None = None,
+    shape: Callable[[np.ndarray], np.ndarray] | None = None,
 ):
     """The law of a mechanism at every speed of the elastic law ``si`` (module docs).
 
@@ -124,6 +126,11 @@ def mechanism_table(
         The speed (m/s) below which the mechanism gives no rebound (``epsilon = 0``: a grain
         that sticks), answered so without computing; between it and the table's first speed
         the mechanism answers (:class:`~restitution.laws.below_route.Below`).
+    shape : callable, optional
+        A closed form ``s(w)`` of the mechanism's contact at speeds in m/s (Thornton's
+        ``epsilon_T(w / v_y)``): the table then holds every speed of the elastic law between
+        its computed ones, the closed form at each and the rest interpolated
+        (:mod:`restitution.laws.shaped_table`).
 
     Returns
     -------
@@ -168,37 +175,41 @@ def mechanism_table(
     reason = _why_stopped(at[keep]) if keep < full else None
     v, idx, at = v[start:keep], idx[start:keep], at[start:keep]
     mid, between = mid[start : keep - 1], between[start : keep - 1]
-    eps = np.array([p.epsilon for p in at], dtype=float)
-    gap = np.zeros(v.size - 1)
-    through = PchipInterpolator(np.log(v), eps)  # as the table interpolates (LOG_V)
-    for k, p in enumerate(between):
-        # A middle without a value (the rebound ends inside the interval) measures nothing:
-        # its interval takes the larger of its two neighbours' (below).
-        gap[k] = abs(float(through(math.log(mid[k]))) - p.epsilon) if _served(p) else np.nan
-    if np.isnan(gap).any():
-        fill = np.nanmax(gap) if np.isfinite(gap).any() else 0.0
-        gap = np.where(np.isnan(gap), fill, gap)
-    gap = np.maximum(gap, _elastic_gap(law, idx))
-    extra = np.zeros(v.size)
-    extra[:-1] = gap
-    extra[1:] = np.maximum(extra[1:], gap)
-    extra *= GAP_FACTOR
-    elastic = law._records() if hasattr(law, "_records") else [{} for _ in v_all]
-    records = []
-    for i, (x, p) in enumerate(zip(v, at, strict=True)):
-        source = elastic[idx[i]]
-        record = {
-            "v": float(x),
-            "epsilon": float(p.epsilon),
-            "epsilon_err": float(p.epsilon_err) + float(extra[i]),
-            "mechanism_err": float(p.epsilon_err),
-            "interpolation_err": float(extra[i]),
-            "asymptotic_ok": bool(law.asymptotic_ok[idx[i]]),
-            **_parts(p),
-        }
-        if source.get("route") == QUASISTATIC_ROUTE:
-            record["route"] = QUASISTATIC_ROUTE
-        records.append(record)
+    if shape is not None:
+        records, interval = shaped_records(law, idx, at, shape, scale, _parts)
+        served = PchipInterpolator(np.log([r["v"] for r in records]),
+                                   [r["epsilon"] for r in records])  # fmt: skip
+        gap = _middle_gaps(served, mid, between)
+        how = (f"computed at {v.size} speeds ({per_decade} a decade); at the {len(records)} "
+               "speeds of the elastic law between them, its closed form and the rest "
+               "interpolated")  # fmt: skip
+    else:
+        eps = np.array([p.epsilon for p in at], dtype=float)
+        gap = _middle_gaps(PchipInterpolator(np.log(v), eps), mid, between)  # as served: LOG_V
+        gap = np.maximum(gap, _elastic_gap(law, idx))
+        elastic = law._records() if hasattr(law, "_records") else [{} for _ in law.v]
+        records = []
+        for i, (x, p) in enumerate(zip(v, at, strict=True)):
+            record = {"v": float(x), "epsilon": float(p.epsilon),
+                      "mechanism_err": float(p.epsilon_err),
+                      "asymptotic_ok": bool(law.asymptotic_ok[idx[i]]), "computed": True,
+                      **_parts(p)}  # fmt: skip
+            if elastic[idx[i]].get("route") == QUASISTATIC_ROUTE:
+                record["route"] = QUASISTATIC_ROUTE
+            records.append(record)
+        interval = np.minimum(np.arange(v.size), v.size - 2)
+        how = f"tabulated at {v.size} speeds ({per_decade} a decade)"
+    # A record inside an interval gains its interval's measured miss, a computed speed the
+    # larger of the two intervals beside it.
+    extra = gap[interval]
+    for i, record in enumerate(records):
+        k = interval[i]
+        if record["computed"] and k > 0 and record["v"] == float(v[k]):
+            extra[i] = max(extra[i], gap[k - 1])
+    extra = GAP_FACTOR * extra
+    for record, e in zip(records, extra, strict=True):
+        record["epsilon_err"] = record["mechanism_err"] + float(e)
+        record["interpolation_err"] = float(e)
     top = float(v[-1]) * scale
     stop = "" if reason is None else f"; served up to {top:.4g} m/s: above, {reason}"
     table = EpsilonLaw.from_records(
@@ -217,11 +228,25 @@ def mechanism_table(
     table.metadata["mechanisms"] = list(mechanisms)
     table.metadata["interpolate_in"] = LOG_V
     table.metadata["source"] = (
-        f"{si.law_source}, with {words}: tabulated at {v.size} speeds ({per_decade} a decade, "
-        f"what PCHIP misses measured at every interval's middle){stop}"
+        f"{si.law_source}, with {words}: {how} (what the interpolation misses measured at "
+        f"every interval's middle){stop}"
     )
     below = Below(points_at, seconds_per_speed, words, zero_below=zero_below)
     return SILaw(si.grain, si.against, table, partner_grain=si.partner_grain, below=below)
+
+
+def _middle_gaps(served, mid: np.ndarray, between) -> np.ndarray:
+    """``|served - mechanism|`` at the middle of every interval of computed speeds, shape
+    ``(len(mid),)``; a middle without a value (the rebound ends inside the interval) measures
+    nothing, and its interval takes the largest measured one."""
+    gap = np.array(
+        [abs(float(served(math.log(m))) - p.epsilon) if _served(p) else np.nan
+         for m, p in zip(mid, between, strict=True)]
+    )  # fmt: skip
+    if np.isnan(gap).any():
+        fill = np.nanmax(gap) if np.isfinite(gap).any() else 0.0
+        gap = np.where(np.isnan(gap), fill, gap)
+    return gap
 
 
 def _elastic_gap(law, idx: np.ndarray) -> np.ndarray:

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from restitution.laws.mechanisms.base import MechanismOption, register_mechanism
 
 __all__ = ["PLASTIC_SECONDS_PER_SPEED", "PlasticFlow", "plastic_law_of"]
@@ -91,7 +93,17 @@ def _table_of(law, si, note, progress: bool):
         seconds_per_speed=PLASTIC_SECONDS_PER_SPEED,
         note=note,
         progress=progress,
+        shape=_thornton_shape(law),
     )
+
+
+def _thornton_shape(law):
+    """Thornton's closed form ``epsilon_T(w / v_y)`` of the law's contact, a function of speeds
+    in m/s: the shape its table interpolates the rest of (:mod:`restitution.laws.shaped_table`)."""
+    from restitution.quasistatic.plastic import thornton_epsilon
+
+    v_y = law.yield_speed_m_s()
+    return lambda w: thornton_epsilon(np.asarray(w, dtype=float) / v_y)
 
 
 def _walls(law, si, note, progress: bool):
