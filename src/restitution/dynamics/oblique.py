@@ -99,6 +99,7 @@ __all__ = [
     "ObliqueCollision",
     "ObliqueHistory",
     "RimBody",
+    "WallNodes",
     "impulse_ratio_beta",
     "oblique_collision",
 ]
@@ -112,16 +113,37 @@ _WORK_TOL = 1e-9  # friction work below -this E0 is a slip against its direction
 
 
 @runtime_checkable
+class WallNodes(Protocol):
+    """A body's surface nodes against the wall (the disk's
+    :class:`~restitution.bodies.disk.rim.RimNodes`, the sphere's
+    :class:`~restitution.bodies.sphere.cap_nodes.CapNodes`)."""
+
+    reach: np.ndarray
+    """Shape (N,): bounds every node's displacement along the wall's normal per unit ``|Q_k|``,
+    at any rotation, ``R``."""
+
+    def start_integral(self, alpha: float) -> float:
+        """``sum_j w_j exp(alpha (h_j - 1))`` of the undeformed, unturned body (``h_j`` the
+        node's height along the impact axis)."""
+        ...
+
+    def place(self, x0: float, rotation: float, Q: np.ndarray, reach: float, cutoff: float):
+        """``None`` if no node can reach ``x = cutoff``, else ``(weight, X, Y - y0, dX/dQ,
+        dY/dQ)`` of the nodes that may, for the centre at ``x0``, the body turned by
+        ``rotation`` about the axis normal to the plane of incidence (counter-clockwise) and
+        modal coordinates ``Q``: shapes () or (M,), (M,), (M,), (M, N), (M, N)."""
+        ...
+
+
+@runtime_checkable
 class RimBody(Protocol):
-    """What an oblique collision needs of a planar body (the disk's
-    :class:`~restitution.bodies.disk.rim.Rim`)."""
+    """What an oblique collision needs of a body: its modes in the plane of incidence's
+    symmetry, with rigid translation and rotation left to the collision (the disk's
+    :class:`~restitution.bodies.disk.rim.Rim`, the sphere's
+    :class:`~restitution.bodies.sphere.cap.SphereCap`)."""
 
     omega: np.ndarray
     """Frequencies, shape (N,), ``c / R``."""
-    C: np.ndarray
-    """Radial rim amplitude per unit ``Q``, shape (N,), ``R``."""
-    S: np.ndarray
-    """Tangential rim amplitude per unit ``Q``, shape (N,), ``R``."""
 
     def __len__(self) -> int: ...
 
@@ -130,15 +152,12 @@ class RimBody(Protocol):
 
     @property
     def inertia(self) -> float:
-        """Moment of inertia about the centre."""
+        """Moment of inertia about the axis normal to the plane of incidence."""
         ...
 
-    def displacement(self, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(u_r, u_phi)`` per unit ``Q`` at material angles ``phi``, shapes (M, N)."""
-        ...
-
-    def node_spacing(self, alpha: float) -> float:
-        """Rim node spacing (radians) that resolves the wall of hardness ``alpha``."""
+    def wall_nodes(self, alpha: float, n_nodes: int | None = None) -> WallNodes:
+        """The surface nodes that resolve the wall of hardness ``alpha`` (``n_nodes`` of the
+        body's own kind: rim nodes, rings)."""
         ...
 
     def contact_time_estimate(self, v):
@@ -243,25 +262,20 @@ def impulse_ratio_beta(mu, tan_theta, epsilon_normal, inertia_factor: float = 3.
 
 
 class _Grain:
-    """The body on its rim nodes and the forces of one state (internal)."""
+    """The body on its wall nodes and the forces of one state (internal)."""
 
     def __init__(self, body: RimBody, alpha: float, n_nodes: int | None):
         self.m, self.inertia, self.alpha = float(body.mass), float(body.inertia), float(alpha)
         self.N = len(body)
-        h = float(body.node_spacing(alpha))
-        M = int(round(2.0 * math.pi / h)) if n_nodes is None else int(n_nodes)
-        self.phi = 2.0 * math.pi * np.arange(M) / M - math.pi  # phi = 0 is a node
-        self.weight = 2.0 * math.pi / M
-        Ur, Up = body.displacement(self.phi)
-        self.Ur, self.Up = np.ascontiguousarray(Ur), np.ascontiguousarray(Up)
+        self.nodes = body.wall_nodes(alpha, n_nodes)
         self.w2 = np.asarray(body.omega, float) ** 2
-        self.reach_k = np.abs(np.asarray(body.C, float)) + np.abs(np.asarray(body.S, float))
+        self.reach_k = np.asarray(self.nodes.reach, float)
 
     def start_position(self, e0: float) -> float:
         """``x0`` where the undeformed grain's wall energy is ``CONTACT_TOL e0`` (as the head-on
         :meth:`~restitution.dynamics.contact.exponential.ExponentialWall.start_position`)."""
         a = self.alpha
-        integral = self.weight * np.sum(np.exp(a * (np.cos(self.phi) - 1.0)))
+        integral = self.nodes.start_integral(a)
         return -1.0 + math.log(CONTACT_TOL * e0 * a / integral) / a
 
     def terms(self, y):
@@ -270,19 +284,11 @@ class _Grain:
         x0, th = y[0], y[1]
         Q, vx, vy, om, Qd = y[2 : 2 + N], y[2 + N], y[3 + N], y[4 + N], y[5 + N : 5 + 2 * N]
         reach = float(np.abs(Q) @ self.reach_k)
-        ang = self.phi + th
-        c = np.cos(ang)
-        act = np.nonzero(x0 + c + reach > -NEGLIGIBLE / a)[0]
-        if act.size == 0:
+        placed = self.nodes.place(x0, th, Q, reach, -NEGLIGIBLE / a)
+        if placed is None:
             return None
-        c, s = c[act], np.sin(ang[act])
-        Ur, Up = self.Ur[act], self.Up[act]
-        ur, up = Ur @ Q, Up @ Q
-        X = x0 + (1.0 + ur) * c - up * s
-        Yr = (1.0 + ur) * s + up * c  # Y - y0
-        dXdQ = Ur * c[:, None] - Up * s[:, None]
-        dYdQ = Ur * s[:, None] + Up * c[:, None]
-        e = self.weight * np.exp(a * X)
+        weight, X, Yr, dXdQ, dYdQ = placed
+        e = weight * np.exp(a * X)
         Fn = float(e.sum())
         if Fn == 0.0:  # every active node far out (a ringing grain leaving): no contact
             return None
@@ -355,8 +361,9 @@ class _Grain:
 def _check(body, v_normal, v_tangential, mu, alpha, spin, friction, regularisation, rtol):
     if not isinstance(body, RimBody):
         raise InputError(
-            f"body must be a rim in both mode families (RimBody), got {type(body).__name__}; "
-            "for the disk pass restitution.bodies.disk.rim.rim_modes(modes)"
+            f"body must hold its modes of both symmetries with wall nodes (RimBody), got "
+            f"{type(body).__name__}; for the disk pass restitution.bodies.disk.rim.rim_modes("
+            "modes), for the sphere restitution.bodies.sphere.cap.cap_modes(modes)"
         )
     v_n = real(v_normal, "v_normal", "in (0, 1) (c)")
     v_t = real(v_tangential, "v_tangential", "(c)")
@@ -421,7 +428,8 @@ def oblique_collision(
     rtol : float
         DOP853's relative tolerance (absolute tolerances scale with the state's sizes).
     n_nodes : int, optional
-        Rim nodes on the whole circle (default: the head-on quadrature's spacing).
+        Wall nodes in the body's own count (:meth:`RimBody.wall_nodes`: the disk's rim nodes
+        on the whole circle, the sphere's rings; default: the head-on quadrature's spacing).
     history : bool
         Keep :class:`ObliqueHistory`.
 
