@@ -127,11 +127,14 @@ class WallNodes(Protocol):
         node's height along the impact axis)."""
         ...
 
-    def place(self, x0: float, rotation: float, Q: np.ndarray, reach: float, cutoff: float):
-        """``None`` if no node can reach ``x = cutoff``, else ``(weight, X, Y - y0, dX/dQ,
-        dY/dQ)`` of the nodes that may, for the centre at ``x0``, the body turned by
+    def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
+        """The nodes that may reach ``x = cutoff`` for the centre at ``x0``, the body turned by
         ``rotation`` about the axis normal to the plane of incidence (counter-clockwise) and
-        modal coordinates ``Q``: shapes () or (M,), (M,), (M,), (M, N), (M, N)."""
+        modal coordinates and velocities ``Q``, ``Qd`` (shape (N,)): ``None`` if none may, else
+        ``(weight, X, Y - y0, xi, eta, project)``: weights (shape () or (M,)), positions
+        (M,), the modal velocities ``xi = sum_k Qd_k dX/dQ_k``, ``eta = sum_k Qd_k dY/dQ_k``
+        (M,), and ``project(e, p) -> (e @ dX/dQ, p @ dY/dQ)`` (shapes (N,)) for nodal forces
+        ``e`` and their fractions ``p = e / sum(e)``."""
         ...
 
 
@@ -284,18 +287,17 @@ class _Grain:
         x0, th = y[0], y[1]
         Q, vx, vy, om, Qd = y[2 : 2 + N], y[2 + N], y[3 + N], y[4 + N], y[5 + N : 5 + 2 * N]
         reach = float(np.abs(Q) @ self.reach_k)
-        placed = self.nodes.place(x0, th, Q, reach, -NEGLIGIBLE / a)
+        placed = self.nodes.place(x0, th, Q, Qd, reach, -NEGLIGIBLE / a)
         if placed is None:
             return None
-        weight, X, Yr, dXdQ, dYdQ = placed
+        weight, X, Yr, xi, eta, project = placed
         e = weight * np.exp(a * X)
         Fn = float(e.sum())
         if Fn == 0.0:  # every active node far out (a ringing grain leaving): no contact
             return None
         p = e / Fn
         lever = float(p @ (X - x0))
-        g = p @ dYdQ
-        xi, eta = dXdQ @ Qd, dYdQ @ Qd
+        fQ, g = project(e, p)
         Xd = vx - om * Yr + xi
         Yd = vy + om * (X - x0) + eta
         vs = float(p @ Yd)
@@ -303,7 +305,7 @@ class _Grain:
             "Fn": Fn,
             "V": Fn / a,
             "tau": float(e @ Yr),
-            "fQ": e @ dXdQ,
+            "fQ": fQ,
             "lever": lever,
             "g": g,
             "vs": vs,
@@ -400,6 +402,7 @@ def oblique_collision(
     alpha: float,
     *,
     spin: float = 0.0,
+    rotation: float = 0.0,
     friction: str = FRICTION_MODELS[0],
     regularisation: float | None = None,
     rtol: float = 1e-10,
@@ -422,6 +425,11 @@ def oblique_collision(
         Friction coefficient ``>= 0``.
     alpha : float
         Hardness of the exponential wall, ``1 / R``.
+    rotation : float
+        The body's angle before (radians, counter-clockwise): the material point that meets
+        the wall is turned by ``-rotation`` from the modes' pole. A body whose modes span a
+        space closed under rotations (every order of both families) gives the same impact at
+        any angle, up to its wall nodes.
     friction : {"stick-slip", "regularised"}
         The exact switch, or ``F_t = -mu F_n v_s / sqrt(v_s^2 + eta^2)`` with ``eta =
         regularisation`` (``c``), module docs.
@@ -445,12 +453,15 @@ def oblique_collision(
     v_n, v_t, w0, mu, alpha = _check(
         body, v_normal, v_tangential, mu, alpha, spin, friction, regularisation, rtol
     )
+    rot = real(rotation, "rotation", "(radians)")
+    if not math.isfinite(rot):
+        raise InputError(f"pass a finite rotation (radians), got {rot}")
     G = _Grain(body, alpha, n_nodes)
     N, m, I = G.N, G.m, G.inertia
     e0 = 0.5 * m * (v_n**2 + v_t**2) + 0.5 * I * w0**2
     x_start = G.start_position(0.5 * m * v_n**2)
     y = np.zeros(8 + 2 * N)
-    y[0], y[2 + N], y[3 + N], y[4 + N] = x_start, v_n, v_t, -w0
+    y[0], y[1], y[2 + N], y[3 + N], y[4 + N] = x_start, rot, v_n, v_t, -w0
     vc0 = v_t - w0
     t_max = 4.0 * (-1.0 - x_start) / v_n + 20.0 * float(body.contact_time_estimate(v_n))
 

@@ -139,6 +139,13 @@ class Rim:
             reach=np.abs(np.asarray(self.C, float)) + np.abs(np.asarray(self.S, float)),
         )
 
+    def mode_labels(self) -> list[dict]:
+        """One dict per mode: ``family`` (a name of :data:`FAMILIES`), ``n``, ``l``."""
+        return [
+            {"family": FAMILIES[int(f)], "n": int(n), "l": int(l)}
+            for f, n, l in zip(self.family, self.n, self.l, strict=True)
+        ]
+
     def take(self, index) -> Rim:
         """The modes at ``index`` (integer or boolean array), in the order given."""
         idx = np.arange(len(self))[index]
@@ -165,14 +172,17 @@ class RimNodes:
     Up: np.ndarray
     reach: np.ndarray
 
+    def __len__(self) -> int:
+        return int(self.phi.size)
+
     def start_integral(self, alpha: float) -> float:
         """``sum_j w exp(alpha (cos phi_j - 1))``: the undeformed rim's wall integral, ``R``."""
         return self.weight * np.sum(np.exp(alpha * (np.cos(self.phi) - 1.0)))
 
-    def place(self, x0: float, rotation: float, Q: np.ndarray, reach: float, cutoff: float):
+    def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
         """The nodes that may touch (``x0 + cos(phi + Theta) + reach > cutoff``), placed:
-        ``None`` or ``(weight, X, Y - y0, dX/dQ, dY/dQ)``, shapes (), (M,), (M,), (M, N),
-        (M, N)."""
+        ``None`` or ``(weight, X, Y - y0, xi, eta, project)``
+        (:class:`restitution.dynamics.oblique.WallNodes`)."""
         ang = self.phi + rotation
         c = np.cos(ang)
         act = np.nonzero(x0 + c + reach > cutoff)[0]
@@ -185,7 +195,11 @@ class RimNodes:
         Yr = (1.0 + ur) * s + up * c  # Y - y0
         dXdQ = Ur * c[:, None] - Up * s[:, None]
         dYdQ = Ur * s[:, None] + Up * c[:, None]
-        return self.weight, X, Yr, dXdQ, dYdQ
+
+        def project(e, p):
+            return e @ dXdQ, p @ dYdQ
+
+        return self.weight, X, Yr, dXdQ @ Qd, dYdQ @ Qd, project
 
 
 def torsional_frequencies(nu: float, omega_max: float) -> np.ndarray:

@@ -158,6 +158,13 @@ class SphereCap:
 
         return cap_nodes(self, float(alpha), n_nodes)
 
+    def mode_labels(self) -> list[dict]:
+        """One dict per mode: ``family`` (a name of :data:`FAMILIES`), ``n``, ``l``, ``m``."""
+        return [
+            {"family": FAMILIES[int(f)], "n": int(n), "l": int(l), "m": int(m)}
+            for f, n, l, m in zip(self.family, self.n, self.l, self.m, strict=True)
+        ]
+
     def take(self, index) -> SphereCap:
         """The modes at ``index`` (integer or boolean array), in the order given."""
         idx = np.arange(len(self))[index]

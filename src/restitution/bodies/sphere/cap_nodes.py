@@ -75,24 +75,32 @@ class CapNodes:
         """``sum_j w_j exp(alpha (c_j - 1))``: the undeformed sphere's wall integral, ``R^2``."""
         return float(self.weight @ np.exp(alpha * (self.c - 1.0)))
 
-    def place(self, x0: float, rotation: float, Q: np.ndarray, reach: float, cutoff: float):
-        """The nodes that may touch, placed (module docs).
-
-        Returns ``None`` if no ring can reach ``x = cutoff``, else ``(weight, X, Y - y0,
-        dX/dQ, dY/dQ)`` of the active nodes, shapes (M,), (M,), (M,), (M, N), (M, N).
-        """
+    def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
+        """The nodes that may touch, placed (module docs): ``None`` if no ring can reach
+        ``x = cutoff``, else ``(weight, X, Y - y0, xi, eta, project)`` of the active nodes
+        (:class:`restitution.dynamics.oblique.WallNodes`). Each matrix is read twice: once
+        for positions and velocities, once for the projection of the forces."""
         near = np.cos(np.maximum(self.theta - abs(rotation), 0.0))
         rings = int(np.count_nonzero(x0 + near + reach > cutoff))
         if rings == 0:
             return None
         j = rings * self.azimuths
         D1, D2 = self.D1[:j], self.D2[:j]
-        P1 = self.c[:j] + D1 @ Q
-        P2 = self.s[:j] + D2 @ Q
+        QQ = np.stack([Q, Qd], axis=1)
+        A1, A2 = D1 @ QQ, D2 @ QQ
+        P1 = self.c[:j] + A1[:, 0]
+        P2 = self.s[:j] + A2[:, 0]
         ct, st = math.cos(rotation), math.sin(rotation)
         X = x0 + P1 * ct - P2 * st
         Yr = P1 * st + P2 * ct
-        return self.weight[:j], X, Yr, D1 * ct - D2 * st, D1 * st + D2 * ct
+        xi = A1[:, 1] * ct - A2[:, 1] * st
+        eta = A1[:, 1] * st + A2[:, 1] * ct
+
+        def project(e, p):
+            f1, f2 = e @ D1, e @ D2
+            return f1 * ct - f2 * st, (f1 * st + f2 * ct) / float(e.sum())
+
+        return self.weight[:j], X, Yr, xi, eta, project
 
 
 def cap_nodes(cap, alpha: float, n_nodes: int | None = None) -> CapNodes:
