@@ -2,15 +2,16 @@
 friction.
 
 A thin layer over :func:`restitution.dynamics.oblique.oblique_collision` (docs/oblique.md, "The
-modal oblique collision"): the options become one :class:`ObliqueRequest`, where every refusal is
-made before a mode is computed; then the rim in both mode families is built, the work estimated,
-told on stderr and refused beyond the bound of one run, the collision run, and one
-:class:`~restitution.cli.report.Report` printed as text, JSON or CSV (one row per mode of the
-rim).
+modal oblique collision" and "The sphere"): the options become one :class:`ObliqueRequest`, where
+every refusal is made before a mode is computed; then the body's modes of both symmetries are
+built (the disk's rim, the sphere's cap), the work estimated, told on stderr and refused beyond
+the bound of one run, the collision run, and one :class:`~restitution.cli.report.Report` printed
+as text, JSON or CSV (one row per mode).
 
-Units: ``E = rho = R = 1`` of the disk (two-dimensional constants); ``--v`` is the normal speed
-towards the wall in ``c``, the tangential speed is ``v tan(angle)``; spins in ``c / R``; energies
-are fractions of the initial kinetic energy ``E0 = (m/2) v^2 / cos(angle)^2``.
+Units: ``E = rho = R = 1`` of the body (the disk's two-dimensional constants, the sphere's
+three-dimensional ones); ``--v`` is the normal speed towards the wall in ``c``, the tangential
+speed is ``v tan(angle)``; spins in ``c / R``; energies are fractions of the initial kinetic
+energy ``E0 = (m/2) v^2 / cos(angle)^2``.
 """
 
 from __future__ import annotations
@@ -23,8 +24,10 @@ from dataclasses import dataclass
 from restitution import budget
 from restitution.bodies.cache import check_mode_request, get_modes
 from restitution.bodies.disk.modes import ModeSet
-from restitution.bodies.disk.rim import FAMILIES, rim_modes
+from restitution.bodies.disk.rim import rim_modes
 from restitution.bodies.kinds import body_kind, kinds
+from restitution.bodies.sphere.cap import cap_modes
+from restitution.bodies.sphere.modes import SphereModes
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
     LINEAR_SPEED,
@@ -42,7 +45,13 @@ from restitution.dynamics.oblique_cost import check_reach
 from restitution.errors import InputError
 from restitution.status import Status
 
-__all__ = ["DEFAULT_MODES", "ObliqueRequest", "collide_oblique", "oblique_request"]
+__all__ = [
+    "DEFAULT_MODES",
+    "DEFAULT_SPHERE_MODES",
+    "ObliqueRequest",
+    "collide_oblique",
+    "oblique_request",
+]
 
 DEFAULT_MODES = 160
 """Symmetric modes of the oblique route when ``--modes`` is left out (about 330 on the rim).
@@ -57,10 +66,16 @@ depends on the modes as the head-on epsilon does (one run is no limit ``N -> inf
 ``beta`` in partial slip at low speed moves much more (docs/oblique.md: -0.82 at 40 modes to
 -0.32 at 640): give more modes to see it move."""
 
-_RIMS = {ModeSet: rim_modes}
-"""The rim in both mode families of each mode class that has one (a body kind's mode class ->
-its builder): the kinds the oblique route takes. A kind gains the route by adding its builder
-here (or, better, as an attribute of its :class:`~restitution.bodies.kinds.BodyKind`)."""
+DEFAULT_SPHERE_MODES = 20
+"""Axisymmetric modes of the sphere's oblique route when ``--modes`` is left out: 146 modes in
+the cap (every azimuthal order, both families). They took 10-25 s at ``alpha = 100-500``, ``v =
+0.005-0.05`` (docs/oblique.md, "The sphere"); 40 (375 in the cap) took 1-4 min."""
+
+_RIMS = {ModeSet: (rim_modes, DEFAULT_MODES), SphereModes: (cap_modes, DEFAULT_SPHERE_MODES)}
+"""The modes of both symmetries of each mode class that has them (a body kind's mode class ->
+its builder and its default count): the kinds the oblique route takes. A kind gains the route by
+adding its builder here (or, better, as an attribute of its
+:class:`~restitution.bodies.kinds.BodyKind`)."""
 
 _NOT_OBLIQUE = {
     **PARTNER_OPTIONS,
@@ -108,7 +123,8 @@ class ObliqueRequest:
     alpha : float
         Wall hardness, ``1 / R``.
     modes : int
-        Symmetric modes (the head-on count); the rim holds about twice as many.
+        Symmetric (axisymmetric) modes, the head-on count; the disk's rim holds about twice as
+        many, the sphere's cap about seven (20) to nine (40) times as many.
     force : bool
         Run beyond the time bound of one run.
     """
@@ -168,7 +184,7 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
         raise InputError(f"--v must lie in (0, 1) (the normal speed, units of c), got {v}")
     alpha = positive_finite("--alpha", p["alpha"])
     check_reach(v, alpha, ("--v", "--alpha"))
-    modes = p["n_modes"] if given(ctx, "n_modes") else DEFAULT_MODES
+    modes = p["n_modes"] if given(ctx, "n_modes") else _RIMS[body_kind(geometry).mode_class][1]
     if modes < 1:
         raise InputError(f"--modes must be at least 1, got {modes}")
     nu_body = body_nu(p["nu"], p["plane"], geometry)
@@ -180,32 +196,32 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
 def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     """``collide --angle DEG --friction MU``: the request, the work, the run, the report."""
     from restitution.dynamics.oblique import oblique_collision
-    from restitution.dynamics.oblique_cost import SPREAD, SUSPECT, oblique_work, suspect_advice
+    from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
     from restitution.dynamics.run import CollisionError
 
     req = oblique_request(ctx, angle, mu)
     modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
-    rim = _RIMS[type(modes)](modes)
+    rim = _RIMS[type(modes)][0](modes)
     work = oblique_work(rim, req.v, req.alpha)
     budget.check_memory_total(
         "--modes",
         req.modes,
         work.memory_bytes,
-        f"the rim's {len(rim)} modes on {work.nodes} nodes",
+        f"the {len(rim)} modes of both symmetries on {work.nodes} nodes",
         lambda _limit: "fewer modes or a softer wall (--alpha)",
     )
     budget.check_time_total(
         "--modes",
         req.modes,
         work.seconds,
-        f"DOP853 phase by phase, {len(rim)} rim modes on {work.nodes} nodes; measured runs "
-        f"took up to {SPREAD:g} times the estimate",
+        f"DOP853 phase by phase, {len(rim)} modes of both symmetries on {work.nodes} nodes; "
+        f"measured runs took up to {work.spread:g} times the estimate",
         lambda limit: f"about {work.modes_within(limit, req.modes)} modes fit",
         force=req.force,
         override="--force",
     )
     note(
-        f"note: oblique impact with {req.modes} modes ({len(rim)} on the rim): about "
+        f"note: oblique impact with {req.modes} modes ({len(rim)} of both symmetries): about "
         f"{budget.format_duration(work.seconds)} expected"
     )
     start = time.perf_counter()
@@ -277,18 +293,16 @@ def _units(geometry: str) -> dict:
 
 
 def _mode_rows(rim, result) -> list[dict]:
-    """One row per mode of the rim, in its order: family, labels, frequency, energy after
-    (fraction of E0)."""
+    """One row per mode of the body, in its order: family, labels (the body's
+    ``mode_labels``), frequency, energy after (fraction of E0)."""
     return [
         {
             "index": i,
-            "family": FAMILIES[int(rim.family[i])],
-            "n": int(rim.n[i]),
-            "l": int(rim.l[i]),
+            **labels,
             "omega": float(rim.omega[i]),
             "energy_after": float(result.mode_energy[i]),
         }
-        for i in range(len(rim))
+        for i, labels in enumerate(rim.mode_labels())
     ]
 
 
@@ -303,7 +317,7 @@ def _text(req, result, n_rim, wall, status, advice) -> str:
             f"oblique impact of the {req.geometry}, nu = {req.nu_body:g}: v = {req.v:g} c "
             f"normal, {req.v_tangential:.6g} c tangential ({req.angle:g} degrees from the "
             f"normal), friction mu = {req.mu:g}, alpha = {req.alpha:g}, {req.modes} modes "
-            f"({n_rim} on the rim, both families)\n"
+            f"({n_rim} of both symmetries)\n"
             f"after (fractions of E0): translation {result.translation_energy:.6g}, rotation "
             f"{result.rotation_energy:.6g}, left in the modes {result.vibration_energy:.6g}, "
             f"friction work {result.friction_work:.6g}; energy balance "
