@@ -1,9 +1,14 @@
 """Oblique impact of a vibrating grain on a rigid wall with Coulomb friction, in normal modes.
 
 Units: ``E = rho = R = 1`` of the grain (the disk: two-dimensional constants, energies per unit
-thickness ``E R^2``); speeds in ``c``, spins in ``c / R``, times in ``R / c``; energies reported
-as fractions of the initial kinetic energy ``E0`` (translation and rotation).
-docs/oblique.md ("The modal oblique collision") gives the equations and the measured checks.
+thickness ``E R^2``; the sphere: three-dimensional ones, ``E R^3``); speeds in ``c``, spins in
+``c / R``, times in ``R / c``; energies reported as fractions of the initial kinetic energy
+``E0`` (translation and rotation). docs/oblique.md ("The modal oblique collision", "The
+sphere's modal oblique collision") gives the equations and the measured checks. The equations
+are written below for the disk's rim; the sphere's nodes obey the same two coordinates ``X``,
+``Y`` with their rest position and displacement in the plane of incidence
+(:mod:`restitution.bodies.sphere.cap_nodes`), so everything after the node positions holds for
+both.
 
 **Coordinates.** The grain's centre ``(x0, y0)``, its rotation angle ``Theta`` (counter-clockwise)
 and the modal coordinates ``Q_k`` of its rim in the body frame
@@ -75,9 +80,11 @@ and ``beta = -1 + K mu (1 + e) / tan(theta)``. The modes change it in three plac
 antisymmetric modes (:attr:`ObliqueCollision.lever_correction` and
 :attr:`ObliqueCollision.normal_torque_correction` give both exactly).
 
-A body enters through :class:`RimBody` (the disk's :func:`~restitution.bodies.disk.rim.
-rim_modes`); with zero friction the symmetric family alone moves and the run is the head-on
-collision of :mod:`restitution.dynamics.collision` with the same modes, wall and nodes.
+A body enters through :class:`RimBody`, which places its own nodes (:class:`WallNodes`): the
+disk's :func:`~restitution.bodies.disk.rim.rim_modes`, the sphere's
+:func:`~restitution.bodies.sphere.cap.cap_modes`; with zero friction the symmetric
+(axisymmetric) family alone moves and the run is the head-on collision of
+:mod:`restitution.dynamics.collision` with the same modes, wall and node rings.
 """
 
 from __future__ import annotations
