@@ -118,7 +118,7 @@ def test_toroidal_static_limit():
 # -- the fields: normalisation, orthogonality, rigid motions -------------------------------
 
 
-def _fields(cap, modes, r, theta, phi):
+def _fields(cap, modes, r, theta, phi, drop_phi=False):
     """Every mode's displacement at the points ``(r, theta, phi)`` (shape (P,)), Cartesian in
     the body frame, from the radial shapes written out here (not the module's surface code)."""
     c_L = math.sqrt(NU / ((1 + NU) * (1 - 2 * NU)) + 1.0 / (1 + NU))
@@ -140,7 +140,7 @@ def _fields(cap, modes, r, theta, phi):
                 spherical_jn(l, kk * r) / r + kk * spherical_jn(l, kk * r, True)
             )
             cos, sin = np.cos(m * phi), np.sin(m * phi)
-            ur, ut, up = U * Y * cos, V * dY * cos, -V * m * Ys * sin
+            ur, ut, up = U * Y * cos, V * dY * cos, -V * m * Ys * sin * (not drop_phi)
         else:
             A, _ = toroidal_amplitude(np.array([l]), np.array([w]), NU)
             W = A[0] * spherical_jn(l, w / c_T * r)
@@ -173,6 +173,56 @@ def test_normalisation_orthogonality_and_rigid_motions(modes20, cap20):
     momentum = np.einsum("p,pk->k", w, u[:, 1, :])
     spin = np.einsum("p,pk->k", w, pos[:, 0, None] * u[:, 1, :] - pos[:, 1, None] * u[:, 0, :])
     assert np.all(np.abs(momentum) < 1e-12) and np.all(np.abs(spin) < 1e-12)
+
+
+def _strain_energy_quotient(cap, modes, drop_phi=False):
+    """``omega^2`` of every mode of ``cap`` by its Rayleigh quotient in Cartesian coordinates:
+    the strain energy ``int (lambda/2 (tr eps)^2 + mu eps:eps) dV`` with the displacement
+    gradient by central differences of the fields over the ball (no spherical formula), over
+    ``(1/2) int rho |u|^2 dV``. It equals the mode's omega^2 only for a free vibration of the
+    sphere with that frequency."""
+    lam, mu = NU / ((1 + NU) * (1 - 2 * NU)), 0.5 / (1 + NU)
+    r, theta, phi, w = _ball_rule(40, 32, 24)
+    x = r[:, None] * np.stack(
+        [np.cos(theta), np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi)], 1
+    )
+
+    def field(points):
+        rr = np.linalg.norm(points, axis=1)
+        th = np.arccos(np.clip(points[:, 0] / rr, -1.0, 1.0))
+        return _fields(cap, modes, rr, th, np.arctan2(points[:, 2], points[:, 1]), drop_phi)
+
+    h = 1e-5
+    grad = np.zeros((r.size, 3, 3, len(cap)))  # d u_i / d x_j
+    for j in range(3):
+        step = np.zeros(3)
+        step[j] = h
+        grad[:, :, j, :] = (field(x + step) - field(x - step)) / (2 * h)
+    eps = 0.5 * (grad + grad.transpose(0, 2, 1, 3))
+    trace = np.einsum("piik->pk", eps)
+    density = 0.5 * lam * trace**2 + mu * np.einsum("pijk,pijk->pk", eps, eps)
+    kinetic = 0.5 * np.einsum("p,pik,pik->k", w, field(x), field(x))
+    return (w @ density) / kinetic
+
+
+def test_every_azimuthal_order_vibrates_at_its_roots_frequency(modes20):
+    """The m = 1 and m = 2 spheroidal fields built on the axisymmetric shapes and the toroidal
+    fields have, as their strain-energy Rayleigh quotient in Cartesian coordinates, the
+    frequency they are given (to 1e-6; the check of "same frequency for every m"). A field of
+    order l = 2, m = 1 with the radial shape of the next root fails it."""
+    cap = cap_modes(modes20, azimuthal=2)
+    pick = np.flatnonzero((cap.m >= 1) & (cap.l <= 3))
+    assert {(int(f), int(m)) for f, m in zip(cap.family[pick], cap.m[pick], strict=True)} == {
+        (0, 1),
+        (0, 2),
+        (1, 1),
+        (1, 2),
+    }
+    sub = cap.take(pick)
+    assert_allclose(_strain_energy_quotient(sub, modes20), sub.omega**2, rtol=1e-6)
+    one = sub.take(np.flatnonzero((sub.family == 0) & (sub.m == 1) & (sub.l == 2))[:1])
+    bad = _strain_energy_quotient(one, modes20, drop_phi=True)[0]
+    assert abs(bad / one.omega[0] ** 2 - 1.0) > 1e-2
 
 
 def test_cap_layout(modes20, cap20):
