@@ -35,8 +35,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.bodies.sphere import surface
+from restitution.errors import InputError
 
-__all__ = ["CapNodes", "cap_nodes"]
+__all__ = ["MAX_ROTATION", "CapNodes", "cap_nodes"]
+
+MAX_ROTATION = 0.25 * math.pi
+"""Largest rotation (radians) at which the nodes are placed: they cover the near hemisphere,
+and a contact turned further than this from the pole would reach its edge (an impact turns
+the sphere by about 0.2 rad at ``v = 0.05``, ``alpha = 100``, docs/oblique.md)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -80,6 +86,11 @@ class CapNodes:
         ``x = cutoff``, else ``(weight, X, Y - y0, xi, eta, project)`` of the active nodes
         (:class:`restitution.dynamics.oblique.WallNodes`). Each matrix is read twice: once
         for positions and velocities, once for the projection of the forces."""
+        if not abs(rotation) <= MAX_ROTATION:
+            raise InputError(
+                f"the sphere has turned by {rotation:.3g} rad, beyond its wall nodes' reach "
+                f"({MAX_ROTATION:.3g} rad from the pole); start it with a smaller rotation"
+            )
         near = np.cos(np.maximum(self.theta - abs(rotation), 0.0))
         rings = int(np.count_nonzero(x0 + near + reach > cutoff))
         if rings == 0:
