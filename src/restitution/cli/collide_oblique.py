@@ -68,8 +68,9 @@ depends on the modes as the head-on epsilon does (one run is no limit ``N -> inf
 
 DEFAULT_SPHERE_MODES = 20
 """Axisymmetric modes of the sphere's oblique route when ``--modes`` is left out: 146 modes in
-the cap (every azimuthal order, both families). They took 10-25 s at ``alpha = 100-500``, ``v =
-0.005-0.05`` (docs/oblique.md, "The sphere"); 40 (375 in the cap) took 1-4 min."""
+the cap (every azimuthal order, both families). They took 14-27 s at ``alpha = 100-500`` and
+31-49 s at 1000, ``v = 0.005-0.05``; 40 (375 in the cap) took 0.5-1.6 min (docs/oblique.md,
+"The sphere's modal oblique collision"; this shared machine, ``OPENBLAS_NUM_THREADS=1``)."""
 
 _RIMS = {ModeSet: (rim_modes, DEFAULT_MODES), SphereModes: (cap_modes, DEFAULT_SPHERE_MODES)}
 """The modes of both symmetries of each mode class that has them (a body kind's mode class ->
