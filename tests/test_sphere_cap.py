@@ -274,8 +274,10 @@ def test_refusals(modes20):
     with pytest.raises(InputError):
         cap_modes(modes20).with_azimuths(7)
     nodes = cap_modes(modes20, azimuthal=1).wall_nodes(100.0)
-    with pytest.raises(InputError, match="smaller rotation"):
-        nodes.place(-1.0, 1.0, np.zeros(53), np.zeros(53), 0.0, -1.0)
+    zero = np.zeros(53)
+    assert nodes.place(-1.0, 1.0, zero, zero, 0.0, -0.01) is not None  # turned, within reach
+    with pytest.raises(InputError, match="edge of the sphere's wall nodes"):
+        nodes.place(-1.0, 1.0, zero, zero, 0.0, -1.0)  # every ring, the last one above
     with pytest.raises(InputError):
         toroidal_modes(0.6, 5.0)
     with pytest.raises(InputError):

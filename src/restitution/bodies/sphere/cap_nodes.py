@@ -37,12 +37,7 @@ import numpy as np
 from restitution.bodies.sphere import surface
 from restitution.errors import InputError
 
-__all__ = ["MAX_ROTATION", "CapNodes", "cap_nodes"]
-
-MAX_ROTATION = 0.25 * math.pi
-"""Largest rotation (radians) at which the nodes are placed: they cover the near hemisphere,
-and a contact turned further than this from the pole would reach its edge (an impact turns
-the sphere by about 0.2 rad at ``v = 0.05``, ``alpha = 100``, docs/oblique.md)."""
+__all__ = ["CapNodes", "cap_nodes"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -86,11 +81,8 @@ class CapNodes:
         ``x = cutoff``, else ``(weight, X, Y - y0, xi, eta, project)`` of the active nodes
         (:class:`restitution.dynamics.oblique.WallNodes`). Each matrix is read twice: once
         for positions and velocities, once for the projection of the forces."""
-        if not abs(rotation) <= MAX_ROTATION:
-            raise InputError(
-                f"the sphere has turned by {rotation:.3g} rad, beyond its wall nodes' reach "
-                f"({MAX_ROTATION:.3g} rad from the pole); start it with a smaller rotation"
-            )
+        if x0 + 1.0 + reach <= cutoff:  # no point of the sphere can reach the cutoff
+            return None
         near = np.cos(np.maximum(self.theta - abs(rotation), 0.0))
         rings = int(np.count_nonzero(x0 + near + reach > cutoff))
         if rings == 0:
@@ -104,6 +96,13 @@ class CapNodes:
         ct, st = math.cos(rotation), math.sin(rotation)
         X = x0 + P1 * ct - P2 * st
         Yr = P1 * st + P2 * ct
+        if rings == self.theta.size and X[-self.azimuths :].max() > cutoff:
+            raise InputError(
+                f"the contact reaches the edge of the sphere's wall nodes (the near hemisphere "
+                f"about the modes' pole; the sphere has turned by {rotation:.3g} rad): the "
+                "impact rolls the contact too far for this quadrature; lower the speed or the "
+                "tangential speed, or start with a smaller rotation"
+            )
         xi = A1[:, 1] * ct - A2[:, 1] * st
         eta = A1[:, 1] * st + A2[:, 1] * ct
 
