@@ -1,11 +1,13 @@
-"""``restitution collide --angle DEG --friction MU`` (issue 63, item 1): the oblique impact of the
-disk on the command line, a thin layer over restitution.dynamics.oblique.
+"""``restitution collide --angle DEG --friction MU`` (issue 63): the oblique impact of the disk
+and of the sphere (``--geometry sphere``) on the command line, a thin layer over
+restitution.dynamics.oblique.
 
 Checked against routes of their own: the head-on ``collide`` of the same modes and wall (mu = 0
 at any angle is the head-on collision), the rigid grain's impulse ratio in gross slip
-(``beta = -1 + 3 mu (1 + e) / tan(theta)``), the energy balance of the JSON's own numbers, and
-the one-line refusals. Units: E = rho = R = 1 of the disk, speeds in c, energies fractions of the
-initial kinetic energy. Measured values are in docs/oblique.md ("On the command line").
+(``beta = -1 + K mu (1 + e) / tan(theta)``, K = 3 disk, 7/2 sphere), the energy balance of the
+JSON's own numbers, and the one-line refusals. Units: E = rho = R = 1 of the body, speeds in c,
+energies fractions of the initial kinetic energy. Measured values are in docs/oblique.md ("On
+the command line", "The sphere's modal oblique collision").
 """
 
 from __future__ import annotations
@@ -99,8 +101,6 @@ def test_gross_sliding_is_the_impulse_ratio(cli):
 @pytest.mark.parametrize(
     "args, words",
     [
-        (("--geometry", "sphere", "--nu", "0.3", "--angle", "30", "--friction", "0.5"),
-         ["oblique impacts are computed for the disk so far"]),
         (("--angle", "90", "--friction", "0.5"), ["--angle", "[0, 90)", "90.0"]),
         (("--angle", "-5", "--friction", "0.5"), ["--angle", "[0, 90)"]),
         (("--angle", "nan", "--friction", "0.5"), ["--angle", "[0, 90)"]),
@@ -129,6 +129,69 @@ def test_refusals_are_one_line(cli, monkeypatch, args, words):
 
 def _never(*args, **kwargs):
     raise AssertionError("the collision was started instead of refused up front")
+
+
+def test_a_kind_without_the_route_is_refused_in_one_line(cli, monkeypatch):
+    """A body kind whose modes have no builder of both symmetries is refused before anything is
+    computed, naming the kinds that have one (here the sphere's builder is taken away)."""
+    from restitution.bodies.disk.modes import ModeSet
+    from restitution.cli import collide_oblique
+
+    monkeypatch.setattr(collide_oblique, "_RIMS", {ModeSet: collide_oblique._RIMS[ModeSet]})
+    monkeypatch.setattr(oblique, "oblique_collision", _never)
+    code, _, err = cli("collide", "--geometry", "sphere", "--nu", "0.3", "--v", "0.05",
+                       "--angle", "30", "--friction", "0.5")  # fmt: skip
+    one_line_error(code, err, "oblique impacts are computed for the disk so far")
+
+
+SPHERE = ("--geometry", "sphere", "--nu", "0.3", "--alpha", "100", "--modes", "20")
+"""The sphere: 20 axisymmetric modes (146 in the cap, every azimuthal order), a soft wall."""
+
+
+def test_sphere_frictionless_impact_is_the_head_on_collide(cli):
+    """The sphere at 45 degrees without friction: epsilon_normal equals the head-on ``collide``
+    of the same --v --alpha --modes within 1e-6 (docs/oblique.md, "The sphere"), beta = -1,
+    no spin; the rows name the family, l and m of each of the cap's 146 modes."""
+    head_on = _json(cli, *SPHERE, "--v", "0.05")["epsilon"]
+    d = _json(cli, *SPHERE, "--v", "0.05", "--angle", "45", "--friction", "0")
+    assert d["inputs"]["geometry"] == "sphere" and d["inputs"]["modes"] == 20
+    assert abs(d["epsilon_normal"] - head_on) < 1e-6
+    assert abs(d["beta"] + 1.0) < 1e-14 and abs(d["spin_after"]) < 1e-15
+    rows = d["mode_energies_after"]
+    assert len(rows) == d["rim_modes"] == 146
+    assert {r["family"] for r in rows} == {"spheroidal", "toroidal"}
+    assert max(r["m"] for r in rows) == max(r["l"] for r in rows)  # every azimuthal order
+
+
+def test_sphere_gross_sliding_is_the_impulse_ratio(cli):
+    """mu = 0.1 at 80 degrees, v = 0.002, alpha = 500: one slip, beta = -1 + K mu (1 + e) /
+    tan(theta) with K = 7/2 within 1e-3 (the issue's tolerance), the difference the lever and
+    the normal torque of the compressed contact; the CSV has a column m."""
+    args = ("--geometry", "sphere", "--nu", "0.3", "--angle", "80", "--friction", "0.1",
+            "--v", "0.002", "--alpha", "500", "--modes", "20")  # fmt: skip
+    d = _json(cli, *args)
+    assert [p["phase"] for p in d["phases"]] == ["slip+"]
+    rigid = -1.0 + 3.5 * 0.1 * (1.0 + d["epsilon_normal"]) / math.tan(math.radians(80.0))
+    assert abs(d["beta"] - rigid) < 1e-3
+    assert d["beta"] - rigid == pytest.approx(
+        d["lever_correction"] + d["normal_torque_correction"], abs=1e-12
+    )
+    assert abs(d["energy_balance"]) < 1e-9
+
+
+def test_sphere_default_modes_and_its_estimate():
+    """Left out, --modes is 20 for the sphere (146 in the cap); its estimate is a timed
+    placement of the wall nodes times a measured count, larger for more modes."""
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.kinds import body_kind
+    from restitution.bodies.sphere.cap import cap_modes
+
+    assert body_kind("sphere").oblique_modes == 20
+    caps = {n: cap_modes(get_modes(0.3, count=n, geometry="sphere")) for n in (10, 20)}
+    w10, w20 = (oblique_work(caps[n], 0.05, 100.0) for n in (10, 20))
+    assert len(caps[20]) == w20.rim_modes == 146 and w20.nodes == len(caps[20].wall_nodes(100.0))
+    assert 0 < w10.memory_bytes < w20.memory_bytes and w20.seconds > 0
+    assert w20.spread > 1
 
 
 def test_beyond_the_time_bound_is_refused_before_the_run(cli, monkeypatch):

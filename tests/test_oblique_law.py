@@ -83,7 +83,7 @@ def test_refusals_before_anything_is_computed():
         (dict(angle=90.0, friction=0.3), "[0, 90)"),
         (dict(angle=-1.0, friction=0.3), "[0, 90)"),
         (dict(angle=30.0, friction=-0.1), ">= 0"),
-        (dict(angle=30.0, friction=0.3, shape="sphere"), "not computed yet"),
+        (dict(angle=30.0, friction=0.3, shape="sphere"), "not served by law yet"),
         (dict(angle=30.0, friction=0.3, against="grain"), "rigid wall"),
         (dict(angle=30.0, friction=0.3, reference_speed=1.0), "--reference-speed"),
         (dict(angle=30.0, friction=0.3, relaxation_time=1e-6), "--relaxation-time"),

@@ -237,6 +237,12 @@ class BodyKind:
         :func:`restitution.bodies.disk.rim.rim_modes`, which
         :func:`restitution.dynamics.oblique.oblique_collision` consumes); ``None``: no oblique
         route for this kind yet (``law --angle`` and ``collide --angle`` refuse it).
+    oblique_modes : int
+        ``collide --angle``'s default mode count for this kind (the disk: 160 symmetric modes;
+        the sphere: 20 axisymmetric, 146 in its cap of every azimuthal order).
+    oblique_law : str or None
+        Why ``law --angle`` does not serve this kind although it has an oblique body (the
+        route's cost on the hard walls of real grains), or ``None``: it does.
     """
 
     geometry: str
@@ -273,6 +279,8 @@ class BodyKind:
     vibrating: bool = False
     ball: bool = False
     oblique_body: Callable | None = None
+    oblique_modes: int = 160
+    oblique_law: str | None = None
 
     @property
     def name(self) -> str:

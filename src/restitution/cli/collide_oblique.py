@@ -2,15 +2,16 @@
 friction.
 
 A thin layer over :func:`restitution.dynamics.oblique.oblique_collision` (docs/oblique.md, "The
-modal oblique collision"): the options become one :class:`ObliqueRequest`, where every refusal is
-made before a mode is computed; then the rim in both mode families is built, the work estimated,
-told on stderr and refused beyond the bound of one run, the collision run, and one
-:class:`~restitution.cli.report.Report` printed as text, JSON or CSV (one row per mode of the
-rim).
+modal oblique collision" and "The sphere"): the options become one :class:`ObliqueRequest`, where
+every refusal is made before a mode is computed; then the body's modes of both symmetries are
+built (the disk's rim, the sphere's cap), the work estimated, told on stderr and refused beyond
+the bound of one run, the collision run, and one :class:`~restitution.cli.report.Report` printed
+as text, JSON or CSV (one row per mode).
 
-Units: ``E = rho = R = 1`` of the disk (two-dimensional constants); ``--v`` is the normal speed
-towards the wall in ``c``, the tangential speed is ``v tan(angle)``; spins in ``c / R``; energies
-are fractions of the initial kinetic energy ``E0 = (m/2) v^2 / cos(angle)^2``.
+Units: ``E = rho = R = 1`` of the body (the disk's two-dimensional constants, the sphere's
+three-dimensional ones); ``--v`` is the normal speed towards the wall in ``c``, the tangential
+speed is ``v tan(angle)``; spins in ``c / R``; energies are fractions of the initial kinetic
+energy ``E0 = (m/2) v^2 / cos(angle)^2``.
 """
 
 from __future__ import annotations
@@ -22,7 +23,6 @@ from dataclasses import dataclass
 
 from restitution import budget
 from restitution.bodies.cache import check_mode_request, get_modes
-from restitution.bodies.disk.rim import FAMILIES
 from restitution.bodies.kinds import body_kind, kinds
 from restitution.cli._common import (
     EXIT_NOT_CONVERGED,
@@ -41,10 +41,17 @@ from restitution.dynamics.oblique_cost import check_reach
 from restitution.errors import InputError
 from restitution.status import Status
 
-__all__ = ["DEFAULT_MODES", "ObliqueRequest", "collide_oblique", "oblique_request"]
+__all__ = [
+    "DEFAULT_MODES",
+    "ObliqueRequest",
+    "collide_oblique",
+    "oblique_request",
+]
 
-DEFAULT_MODES = 160
-"""Symmetric modes of the oblique route when ``--modes`` is left out (about 330 on the rim).
+DEFAULT_MODES = body_kind("disk").oblique_modes
+"""Symmetric modes of the disk's oblique route when ``--modes`` is left out (about 330 on the
+rim; each kind's default is its :attr:`~restitution.bodies.kinds.BodyKind.oblique_modes`, the
+sphere's 20 axisymmetric, 146 in its cap).
 
 The head-on default, 1600, would take minutes on this route (SciPy's DOP853 with a Python
 right-hand side; estimated 1.5 min at ``v = 0.05``, ``alpha = 500`` and 20 min at ``v = 0.2``,
@@ -102,7 +109,8 @@ class ObliqueRequest:
     alpha : float
         Wall hardness, ``1 / R``.
     modes : int
-        Symmetric modes (the head-on count); the rim holds about twice as many.
+        Symmetric (axisymmetric) modes, the head-on count; the disk's rim holds about twice as
+        many, the sphere's cap about seven (20) to nine (40) times as many.
     force : bool
         Run beyond the time bound of one run.
     """
@@ -162,7 +170,7 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
         raise InputError(f"--v must lie in (0, 1) (the normal speed, units of c), got {v}")
     alpha = positive_finite("--alpha", p["alpha"])
     check_reach(v, alpha, ("--v", "--alpha"))
-    modes = p["n_modes"] if given(ctx, "n_modes") else DEFAULT_MODES
+    modes = p["n_modes"] if given(ctx, "n_modes") else body_kind(geometry).oblique_modes
     if modes < 1:
         raise InputError(f"--modes must be at least 1, got {modes}")
     nu_body = body_nu(p["nu"], p["plane"], geometry)
@@ -174,7 +182,7 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
 def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     """``collide --angle DEG --friction MU``: the request, the work, the run, the report."""
     from restitution.dynamics.oblique import oblique_collision
-    from restitution.dynamics.oblique_cost import SPREAD, SUSPECT, oblique_work, suspect_advice
+    from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
     from restitution.dynamics.run import CollisionError
 
     req = oblique_request(ctx, angle, mu)
@@ -185,21 +193,21 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         "--modes",
         req.modes,
         work.memory_bytes,
-        f"the rim's {len(rim)} modes on {work.nodes} nodes",
+        f"the {len(rim)} modes of both symmetries on {work.nodes} nodes",
         lambda _limit: "fewer modes or a softer wall (--alpha)",
     )
     budget.check_time_total(
         "--modes",
         req.modes,
         work.seconds,
-        f"DOP853 phase by phase, {len(rim)} rim modes on {work.nodes} nodes; measured runs "
-        f"took up to {SPREAD:g} times the estimate",
+        f"DOP853 phase by phase, {len(rim)} modes of both symmetries on {work.nodes} nodes; "
+        f"measured runs took up to {work.spread:g} times the estimate",
         lambda limit: f"about {work.modes_within(limit, req.modes)} modes fit",
         force=req.force,
         override="--force",
     )
     note(
-        f"note: oblique impact with {req.modes} modes ({len(rim)} on the rim): about "
+        f"note: oblique impact with {req.modes} modes ({len(rim)} of both symmetries): about "
         f"{budget.format_duration(work.seconds)} expected"
     )
     start = time.perf_counter()
@@ -271,18 +279,16 @@ def _units(geometry: str) -> dict:
 
 
 def _mode_rows(rim, result) -> list[dict]:
-    """One row per mode of the rim, in its order: family, labels, frequency, energy after
-    (fraction of E0)."""
+    """One row per mode of the body, in its order: family, labels (the body's
+    ``mode_labels``), frequency, energy after (fraction of E0)."""
     return [
         {
             "index": i,
-            "family": FAMILIES[int(rim.family[i])],
-            "n": int(rim.n[i]),
-            "l": int(rim.l[i]),
+            **labels,
             "omega": float(rim.omega[i]),
             "energy_after": float(result.mode_energy[i]),
         }
-        for i in range(len(rim))
+        for i, labels in enumerate(rim.mode_labels())
     ]
 
 
@@ -297,7 +303,7 @@ def _text(req, result, n_rim, wall, status, advice) -> str:
             f"oblique impact of the {req.geometry}, nu = {req.nu_body:g}: v = {req.v:g} c "
             f"normal, {req.v_tangential:.6g} c tangential ({req.angle:g} degrees from the "
             f"normal), friction mu = {req.mu:g}, alpha = {req.alpha:g}, {req.modes} modes "
-            f"({n_rim} on the rim, both families)\n"
+            f"({n_rim} of both symmetries)\n"
             f"after (fractions of E0): translation {result.translation_energy:.6g}, rotation "
             f"{result.rotation_energy:.6g}, left in the modes {result.vibration_energy:.6g}, "
             f"friction work {result.friction_work:.6g}; energy balance "

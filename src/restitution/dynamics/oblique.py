@@ -1,9 +1,14 @@
 """Oblique impact of a vibrating grain on a rigid wall with Coulomb friction, in normal modes.
 
 Units: ``E = rho = R = 1`` of the grain (the disk: two-dimensional constants, energies per unit
-thickness ``E R^2``); speeds in ``c``, spins in ``c / R``, times in ``R / c``; energies reported
-as fractions of the initial kinetic energy ``E0`` (translation and rotation).
-docs/oblique.md ("The modal oblique collision") gives the equations and the measured checks.
+thickness ``E R^2``; the sphere: three-dimensional ones, ``E R^3``); speeds in ``c``, spins in
+``c / R``, times in ``R / c``; energies reported as fractions of the initial kinetic energy
+``E0`` (translation and rotation). docs/oblique.md ("The modal oblique collision", "The
+sphere's modal oblique collision") gives the equations and the measured checks. The equations
+are written below for the disk's rim; the sphere's nodes obey the same two coordinates ``X``,
+``Y`` with their rest position and displacement in the plane of incidence
+(:mod:`restitution.bodies.sphere.cap_nodes`), so everything after the node positions holds for
+both.
 
 **Coordinates.** The grain's centre ``(x0, y0)``, its rotation angle ``Theta`` (counter-clockwise)
 and the modal coordinates ``Q_k`` of its rim in the body frame
@@ -75,9 +80,11 @@ and ``beta = -1 + K mu (1 + e) / tan(theta)``. The modes change it in three plac
 antisymmetric modes (:attr:`ObliqueCollision.lever_correction` and
 :attr:`ObliqueCollision.normal_torque_correction` give both exactly).
 
-A body enters through :class:`RimBody` (the disk's :func:`~restitution.bodies.disk.rim.
-rim_modes`); with zero friction the symmetric family alone moves and the run is the head-on
-collision of :mod:`restitution.dynamics.collision` with the same modes, wall and nodes.
+A body enters through :class:`RimBody`, which places its own nodes (:class:`WallNodes`): the
+disk's :func:`~restitution.bodies.disk.rim.rim_modes`, the sphere's
+:func:`~restitution.bodies.sphere.cap.cap_modes`; with zero friction the symmetric
+(axisymmetric) family alone moves and the run is the head-on collision of
+:mod:`restitution.dynamics.collision` with the same modes, wall and node rings.
 """
 
 from __future__ import annotations
@@ -99,6 +106,7 @@ __all__ = [
     "ObliqueCollision",
     "ObliqueHistory",
     "RimBody",
+    "WallNodes",
     "impulse_ratio_beta",
     "oblique_collision",
 ]
@@ -112,16 +120,40 @@ _WORK_TOL = 1e-9  # friction work below -this E0 is a slip against its direction
 
 
 @runtime_checkable
+class WallNodes(Protocol):
+    """A body's surface nodes against the wall (the disk's
+    :class:`~restitution.bodies.disk.rim.RimNodes`, the sphere's
+    :class:`~restitution.bodies.sphere.cap_nodes.CapNodes`)."""
+
+    reach: np.ndarray
+    """Shape (N,): bounds every node's displacement along the wall's normal per unit ``|Q_k|``,
+    at any rotation, ``R``."""
+
+    def start_integral(self, alpha: float) -> float:
+        """``sum_j w_j exp(alpha (h_j - 1))`` of the undeformed, unturned body (``h_j`` the
+        node's height along the impact axis)."""
+        ...
+
+    def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
+        """The nodes that may reach ``x = cutoff`` for the centre at ``x0``, the body turned by
+        ``rotation`` about the axis normal to the plane of incidence (counter-clockwise) and
+        modal coordinates and velocities ``Q``, ``Qd`` (shape (N,)): ``None`` if none may, else
+        ``(weight, X, Y - y0, xi, eta, project)``: weights (shape () or (M,)), positions
+        (M,), the modal velocities ``xi = sum_k Qd_k dX/dQ_k``, ``eta = sum_k Qd_k dY/dQ_k``
+        (M,), and ``project(e, p) -> (e @ dX/dQ, p @ dY/dQ)`` (shapes (N,)) for nodal forces
+        ``e`` and their fractions ``p = e / sum(e)``."""
+        ...
+
+
+@runtime_checkable
 class RimBody(Protocol):
-    """What an oblique collision needs of a planar body (the disk's
-    :class:`~restitution.bodies.disk.rim.Rim`)."""
+    """What an oblique collision needs of a body: its modes in the plane of incidence's
+    symmetry, with rigid translation and rotation left to the collision (the disk's
+    :class:`~restitution.bodies.disk.rim.Rim`, the sphere's
+    :class:`~restitution.bodies.sphere.cap.SphereCap`)."""
 
     omega: np.ndarray
     """Frequencies, shape (N,), ``c / R``."""
-    C: np.ndarray
-    """Radial rim amplitude per unit ``Q``, shape (N,), ``R``."""
-    S: np.ndarray
-    """Tangential rim amplitude per unit ``Q``, shape (N,), ``R``."""
 
     def __len__(self) -> int: ...
 
@@ -130,15 +162,12 @@ class RimBody(Protocol):
 
     @property
     def inertia(self) -> float:
-        """Moment of inertia about the centre."""
+        """Moment of inertia about the axis normal to the plane of incidence."""
         ...
 
-    def displacement(self, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(u_r, u_phi)`` per unit ``Q`` at material angles ``phi``, shapes (M, N)."""
-        ...
-
-    def node_spacing(self, alpha: float) -> float:
-        """Rim node spacing (radians) that resolves the wall of hardness ``alpha``."""
+    def wall_nodes(self, alpha: float, n_nodes: int | None = None) -> WallNodes:
+        """The surface nodes that resolve the wall of hardness ``alpha`` (``n_nodes`` of the
+        body's own kind: rim nodes, rings)."""
         ...
 
     def contact_time_estimate(self, v):
@@ -243,25 +272,20 @@ def impulse_ratio_beta(mu, tan_theta, epsilon_normal, inertia_factor: float = 3.
 
 
 class _Grain:
-    """The body on its rim nodes and the forces of one state (internal)."""
+    """The body on its wall nodes and the forces of one state (internal)."""
 
     def __init__(self, body: RimBody, alpha: float, n_nodes: int | None):
         self.m, self.inertia, self.alpha = float(body.mass), float(body.inertia), float(alpha)
         self.N = len(body)
-        h = float(body.node_spacing(alpha))
-        M = int(round(2.0 * math.pi / h)) if n_nodes is None else int(n_nodes)
-        self.phi = 2.0 * math.pi * np.arange(M) / M - math.pi  # phi = 0 is a node
-        self.weight = 2.0 * math.pi / M
-        Ur, Up = body.displacement(self.phi)
-        self.Ur, self.Up = np.ascontiguousarray(Ur), np.ascontiguousarray(Up)
+        self.nodes = body.wall_nodes(alpha, n_nodes)
         self.w2 = np.asarray(body.omega, float) ** 2
-        self.reach_k = np.abs(np.asarray(body.C, float)) + np.abs(np.asarray(body.S, float))
+        self.reach_k = np.asarray(self.nodes.reach, float)
 
     def start_position(self, e0: float) -> float:
         """``x0`` where the undeformed grain's wall energy is ``CONTACT_TOL e0`` (as the head-on
         :meth:`~restitution.dynamics.contact.exponential.ExponentialWall.start_position`)."""
         a = self.alpha
-        integral = self.weight * np.sum(np.exp(a * (np.cos(self.phi) - 1.0)))
+        integral = self.nodes.start_integral(a)
         return -1.0 + math.log(CONTACT_TOL * e0 * a / integral) / a
 
     def terms(self, y):
@@ -270,26 +294,17 @@ class _Grain:
         x0, th = y[0], y[1]
         Q, vx, vy, om, Qd = y[2 : 2 + N], y[2 + N], y[3 + N], y[4 + N], y[5 + N : 5 + 2 * N]
         reach = float(np.abs(Q) @ self.reach_k)
-        ang = self.phi + th
-        c = np.cos(ang)
-        act = np.nonzero(x0 + c + reach > -NEGLIGIBLE / a)[0]
-        if act.size == 0:
+        placed = self.nodes.place(x0, th, Q, Qd, reach, -NEGLIGIBLE / a)
+        if placed is None:
             return None
-        c, s = c[act], np.sin(ang[act])
-        Ur, Up = self.Ur[act], self.Up[act]
-        ur, up = Ur @ Q, Up @ Q
-        X = x0 + (1.0 + ur) * c - up * s
-        Yr = (1.0 + ur) * s + up * c  # Y - y0
-        dXdQ = Ur * c[:, None] - Up * s[:, None]
-        dYdQ = Ur * s[:, None] + Up * c[:, None]
-        e = self.weight * np.exp(a * X)
+        weight, X, Yr, xi, eta, project = placed
+        e = weight * np.exp(a * X)
         Fn = float(e.sum())
         if Fn == 0.0:  # every active node far out (a ringing grain leaving): no contact
             return None
         p = e / Fn
         lever = float(p @ (X - x0))
-        g = p @ dYdQ
-        xi, eta = dXdQ @ Qd, dYdQ @ Qd
+        fQ, g = project(e, p)
         Xd = vx - om * Yr + xi
         Yd = vy + om * (X - x0) + eta
         vs = float(p @ Yd)
@@ -297,7 +312,7 @@ class _Grain:
             "Fn": Fn,
             "V": Fn / a,
             "tau": float(e @ Yr),
-            "fQ": e @ dXdQ,
+            "fQ": fQ,
             "lever": lever,
             "g": g,
             "vs": vs,
@@ -355,8 +370,9 @@ class _Grain:
 def _check(body, v_normal, v_tangential, mu, alpha, spin, friction, regularisation, rtol):
     if not isinstance(body, RimBody):
         raise InputError(
-            f"body must be a rim in both mode families (RimBody), got {type(body).__name__}; "
-            "for the disk pass restitution.bodies.disk.rim.rim_modes(modes)"
+            f"body must hold its modes of both symmetries with wall nodes (RimBody), got "
+            f"{type(body).__name__}; for the disk pass restitution.bodies.disk.rim.rim_modes("
+            "modes), for the sphere restitution.bodies.sphere.cap.cap_modes(modes)"
         )
     v_n = real(v_normal, "v_normal", "in (0, 1) (c)")
     v_t = real(v_tangential, "v_tangential", "(c)")
@@ -393,6 +409,7 @@ def oblique_collision(
     alpha: float,
     *,
     spin: float = 0.0,
+    rotation: float = 0.0,
     friction: str = FRICTION_MODELS[0],
     regularisation: float | None = None,
     rtol: float = 1e-10,
@@ -415,13 +432,19 @@ def oblique_collision(
         Friction coefficient ``>= 0``.
     alpha : float
         Hardness of the exponential wall, ``1 / R``.
+    rotation : float
+        The body's angle before (radians, counter-clockwise): the material point that meets
+        the wall is turned by ``-rotation`` from the modes' pole. A body whose modes span a
+        space closed under rotations (every order of both families) gives the same impact at
+        any angle, up to its wall nodes.
     friction : {"stick-slip", "regularised"}
         The exact switch, or ``F_t = -mu F_n v_s / sqrt(v_s^2 + eta^2)`` with ``eta =
         regularisation`` (``c``), module docs.
     rtol : float
         DOP853's relative tolerance (absolute tolerances scale with the state's sizes).
     n_nodes : int, optional
-        Rim nodes on the whole circle (default: the head-on quadrature's spacing).
+        Wall nodes in the body's own count (:meth:`RimBody.wall_nodes`: the disk's rim nodes
+        on the whole circle, the sphere's rings; default: the head-on quadrature's spacing).
     history : bool
         Keep :class:`ObliqueHistory`.
 
@@ -437,12 +460,15 @@ def oblique_collision(
     v_n, v_t, w0, mu, alpha = _check(
         body, v_normal, v_tangential, mu, alpha, spin, friction, regularisation, rtol
     )
+    rot = real(rotation, "rotation", "(radians)")
+    if not math.isfinite(rot):
+        raise InputError(f"pass a finite rotation (radians), got {rot}")
     G = _Grain(body, alpha, n_nodes)
     N, m, I = G.N, G.m, G.inertia
     e0 = 0.5 * m * (v_n**2 + v_t**2) + 0.5 * I * w0**2
     x_start = G.start_position(0.5 * m * v_n**2)
     y = np.zeros(8 + 2 * N)
-    y[0], y[2 + N], y[3 + N], y[4 + N] = x_start, v_n, v_t, -w0
+    y[0], y[1], y[2 + N], y[3 + N], y[4 + N] = x_start, rot, v_n, v_t, -w0
     vc0 = v_t - w0
     t_max = 4.0 * (-1.0 - x_start) / v_n + 20.0 * float(body.contact_time_estimate(v_n))
 

@@ -24,6 +24,7 @@ __all__ = [
     "check_reach",
     "oblique_work",
     "suspect_advice",
+    "timed_work",
 ]
 
 # Wall time of one oblique impact (DOP853 phase by phase, rtol = 1e-10, a Python right-hand
@@ -41,6 +42,17 @@ _WIDTH_EXP = 0.761  # compression plus the wall's reach NEGLIGIBLE / alpha: the 
 _STIFF_EXP = 0.146  # alpha v
 SPREAD = 3.6
 """Measured times lie within this factor of the estimate (either way)."""
+
+# A body without the rim's node spacing (the sphere's cap, bodies/sphere/cap.py): its work is
+# one placement of its wall nodes (and the projection of their forces) at the compression
+# v t_c / pi, timed before the run, times a count of such evaluations: the median of wall time
+# over that timing in seven runs of 20 and 40 axisymmetric modes (146 and 375 in the cap) at
+# alpha = 100, 500, 1000, v = 0.005 and 0.05, (mu, angle) = (0.5, 45 deg) and (0.1, 80 deg)
+# (17-95 s on this shared 2-core machine, OPENBLAS_NUM_THREADS=1): 4.5 x 6000. Measured over
+# estimated 0.24 to 1.49: the per-step overhead of the integrator and the events is not in the
+# timing, and weighs more with fewer modes.
+_CAP_EVALUATIONS = 27000.0
+_CAP_SPREAD = 4.2
 
 _STORED_STEPS = 5000  # steps whose states solve_ivp keeps (measured up to 3950)
 _NODE_ARRAYS = 10  # arrays of (nodes, rim modes) alive at once: the shapes and their products
@@ -100,12 +112,15 @@ class ObliqueWork:
         Estimated wall time on one core, s (within :data:`SPREAD` of the measured runs).
     memory_bytes : float
         Working memory, bytes.
+    spread : float
+        Measured times lay within this factor of the estimate (either way).
     """
 
     rim_modes: int
     nodes: int
     seconds: float
     memory_bytes: float
+    spread: float = SPREAD
 
     def modes_within(self, seconds: float, modes: int) -> int:
         """The count of modes that would take ``seconds``, scaled from ``modes`` (this work's
@@ -119,10 +134,13 @@ def oblique_work(body, v_normal: float, alpha: float) -> ObliqueWork:
     Parameters
     ----------
     body : RimBody
-        The grain's rim (:class:`restitution.dynamics.oblique.RimBody`).
+        The grain's modes (:class:`restitution.dynamics.oblique.RimBody`); a body with the
+        rim's ``node_spacing`` (the disk) by the fit above, another by :func:`timed_work`.
     v_normal, alpha : float
         Normal speed (``c``) and wall hardness (``1 / R``).
     """
+    if not hasattr(body, "node_spacing"):
+        return timed_work(body, v_normal, alpha)
     n = len(body)
     nodes = int(round(2.0 * math.pi / float(body.node_spacing(alpha))))
     compression = v_normal * float(body.contact_time_estimate(v_normal)) / math.pi
@@ -135,6 +153,32 @@ def oblique_work(body, v_normal: float, alpha: float) -> ObliqueWork:
     )
     memory = 8.0 * (_NODE_ARRAYS * nodes * n + _STORED_STEPS * (8 + 2 * n))
     return ObliqueWork(n, nodes, math.exp(log_s), memory)
+
+
+def timed_work(body, v_normal: float, alpha: float, repeats: int = 5) -> ObliqueWork:
+    """The work of an oblique impact of ``body`` from one placement of its wall nodes at a
+    compression ``v t_c / pi`` (``t_c`` the body's contact time estimate), timed here (best of
+    ``repeats``), times :data:`_CAP_EVALUATIONS` (measured; spread :data:`_CAP_SPREAD`)."""
+    import time
+
+    import numpy as np
+
+    nodes = body.wall_nodes(alpha)
+    n = len(body)
+    x0 = -1.0 + v_normal * float(body.contact_time_estimate(v_normal)) / math.pi
+    zero = np.zeros(n)
+    best = math.inf
+    for _ in range(repeats):
+        start = time.perf_counter()
+        placed = nodes.place(x0, 0.0, zero, zero, 0.0, -NEGLIGIBLE / alpha)
+        if placed is not None:
+            weight, X = placed[0], placed[1]
+            e = weight * np.exp(alpha * X)
+            placed[5](e, e / max(float(np.sum(e)), 1e-300))
+        best = min(best, time.perf_counter() - start)
+    count = len(nodes)
+    memory = 8.0 * (4 * count * max(n, 1) + _STORED_STEPS * (8 + 2 * n))
+    return ObliqueWork(n, count, _CAP_EVALUATIONS * best, memory, _CAP_SPREAD)
 
 
 def suspect_advice(n_modes: int, alpha: float, mu: float) -> str | None:

@@ -126,12 +126,16 @@ def _check_oblique(r) -> None:
             f"oblique impacts are computed against the rigid wall so far; use --against {wall}"
         )
     kind = body_kind(BODIES[r.shape])
-    if kind.oblique_body is None:
-        shapes = [s for s, name in BODIES.items() if body_kind(name).oblique_body is not None]
+    if kind.oblique_body is None or kind.oblique_law is not None:
+        shapes = [s for s, name in BODIES.items()
+                  if body_kind(name).oblique_body is not None
+                  and body_kind(name).oblique_law is None]  # fmt: skip
+        why = (f"the {kind.geometry}'s oblique route is not built" if kind.oblique_body is None
+               else kind.oblique_law)  # fmt: skip
         raise InputError(
-            f"oblique impacts (--angle) of the {r.shape} are not computed yet (the {kind.geometry}"
-            f"'s oblique route is not built); --shape {' or '.join(shapes)} have one, or leave "
-            f"out --angle and --friction for the {r.shape}'s head-on law"
+            f"oblique impacts (--angle) of the {r.shape} are not served by law yet ({why}); "
+            f"--shape {' or '.join(shapes)} have one, or leave out --angle and --friction for "
+            f"the {r.shape}'s head-on law"
         )
 
 

@@ -42,7 +42,7 @@ from restitution.bodies.disk.modes import ModeSet
 from restitution.bodies.disk.surface import default_n_phi
 from restitution.errors import InputError
 
-__all__ = ["FAMILIES", "Rim", "rim_modes", "torsional_frequencies"]
+__all__ = ["FAMILIES", "Rim", "RimNodes", "rim_modes", "torsional_frequencies"]
 
 FAMILIES = ("symmetric", "antisymmetric", "torsional")
 """The families of :attr:`Rim.family`, by index."""
@@ -124,6 +124,28 @@ class Rim:
         """Quasistatic contact time ``pi sqrt(ln(4/v))`` of eq. (61), ``R / c``."""
         return contact.contact_time_estimate(v)
 
+    def wall_nodes(self, alpha: float, n_nodes: int | None = None) -> RimNodes:
+        """The wall quadrature: ``n_nodes`` uniform rim nodes on the whole circle (default the
+        spacing of :meth:`node_spacing`), ``phi = 0`` among them."""
+        h = float(self.node_spacing(alpha))
+        M = int(round(2.0 * math.pi / h)) if n_nodes is None else int(n_nodes)
+        phi = 2.0 * math.pi * np.arange(M) / M - math.pi  # phi = 0 is a node
+        Ur, Up = self.displacement(phi)
+        return RimNodes(
+            phi=phi,
+            weight=2.0 * math.pi / M,
+            Ur=np.ascontiguousarray(Ur),
+            Up=np.ascontiguousarray(Up),
+            reach=np.abs(np.asarray(self.C, float)) + np.abs(np.asarray(self.S, float)),
+        )
+
+    def mode_labels(self) -> list[dict]:
+        """One dict per mode: ``family`` (a name of :data:`FAMILIES`), ``n``, ``l``."""
+        return [
+            {"family": FAMILIES[int(f)], "n": int(n), "l": int(l)}
+            for f, n, l in zip(self.family, self.n, self.l, strict=True)
+        ]
+
     def take(self, index) -> Rim:
         """The modes at ``index`` (integer or boolean array), in the order given."""
         idx = np.arange(len(self))[index]
@@ -131,6 +153,53 @@ class Rim:
 
 
 _FIELDS = ("family", "n", "l", "omega", "C", "S")
+
+
+@dataclass(frozen=True, eq=False)
+class RimNodes:
+    """The rim's wall nodes for :mod:`restitution.dynamics.oblique`: material angles ``phi``
+    (shape (M,)), the weight ``2 pi / M`` of each, the displacements ``Ur``, ``Up`` (shape (M,
+    N)) per unit ``Q`` there and ``reach = |C| + |S|`` (shape (N,)), which bounds them.
+
+    A node at angle ``phi`` of a disk turned by ``Theta`` sits at ``X = x0 + (1 + u_r)
+    cos(phi + Theta) - u_phi sin(phi + Theta)``, ``Y = y0 + (1 + u_r) sin(phi + Theta) + u_phi
+    cos(phi + Theta)``.
+    """
+
+    phi: np.ndarray
+    weight: float
+    Ur: np.ndarray
+    Up: np.ndarray
+    reach: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.phi.size)
+
+    def start_integral(self, alpha: float) -> float:
+        """``sum_j w exp(alpha (cos phi_j - 1))``: the undeformed rim's wall integral, ``R``."""
+        return self.weight * np.sum(np.exp(alpha * (np.cos(self.phi) - 1.0)))
+
+    def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
+        """The nodes that may touch (``x0 + cos(phi + Theta) + reach > cutoff``), placed:
+        ``None`` or ``(weight, X, Y - y0, xi, eta, project)``
+        (:class:`restitution.dynamics.oblique.WallNodes`)."""
+        ang = self.phi + rotation
+        c = np.cos(ang)
+        act = np.nonzero(x0 + c + reach > cutoff)[0]
+        if act.size == 0:
+            return None
+        c, s = c[act], np.sin(ang[act])
+        Ur, Up = self.Ur[act], self.Up[act]
+        ur, up = Ur @ Q, Up @ Q
+        X = x0 + (1.0 + ur) * c - up * s
+        Yr = (1.0 + ur) * s + up * c  # Y - y0
+        dXdQ = Ur * c[:, None] - Up * s[:, None]
+        dYdQ = Ur * s[:, None] + Up * c[:, None]
+
+        def project(e, p):
+            return e @ dXdQ, p @ dYdQ
+
+        return self.weight, X, Yr, dXdQ @ Qd, dYdQ @ Qd, project
 
 
 def torsional_frequencies(nu: float, omega_max: float) -> np.ndarray:

@@ -1,0 +1,139 @@
+"""The sphere's wall quadrature for an oblique impact: rings of material nodes around the pole
+that cover the contact wherever rolling takes it.
+
+Units: ``E = rho = R = 1``; areas in ``R^2``.
+
+**Nodes.** The head-on sphere's Gauss-Legendre rings in ``cos(theta)`` on the near hemisphere
+(:func:`restitution.bodies.sphere.surface._nodes`: ``theta_i``, ring weights ``w_i``), each
+with ``A`` (even) nodes at ``phi_k = 2 pi k / A``, weight ``w_i / A``. The grid is material: it
+turns with the sphere. When the sphere has turned by ``Theta`` about ``e3`` the wall faces the
+material point ``(theta, phi) = (|Theta|, pi or 0)``, and the wall's integrand on ring ``i`` is,
+to leading order, ``exp(alpha theta_i |Theta| cos phi)`` times a function of ``theta_i``: its
+Fourier coefficients are ``I_j(alpha theta_i |Theta|)``, so the trapezoidal rule in ``phi``
+(exact for harmonics below ``A``) errs by about ``I_A(z) / I_0(z)``, ``z = alpha theta |Theta|``
+over the rings in contact; docs/oblique.md measures it. Without rotation (and without friction)
+every ring's sum is the head-on ring weight times the axisymmetric integrand, so the
+frictionless run sums the wall as the head-on collision does.
+
+**Placing them.** With the body's rotation ``Theta`` about ``e3`` and modal coordinates ``Q``,
+node ``j`` (rest position ``(c_j, s_j)`` along ``(e1, e2)``, displacements ``D1, D2`` per unit
+``Q``) sits at
+
+    X = x0 + (c_j + D1 Q) cos Theta - (s_j + D2 Q) sin Theta,
+    Y = y0 + (c_j + D1 Q) sin Theta + (s_j + D2 Q) cos Theta
+
+(the disk's formulas with ``phi + Theta`` expanded). A ring can reach the wall only if
+``x0 + cos(max(theta_i - |Theta|, 0)) + reach`` clears the cutoff (its nearest point); the rings
+are in increasing ``theta``, so the active ones are a prefix and their nodes a slice.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from restitution.bodies.sphere import surface
+from restitution.errors import InputError
+
+__all__ = ["CapNodes", "cap_nodes"]
+
+
+@dataclass(frozen=True, eq=False)
+class CapNodes:
+    """The wall nodes of a :class:`~restitution.bodies.sphere.cap.SphereCap` (module docs).
+
+    Attributes
+    ----------
+    theta : numpy.ndarray, shape (K,)
+        Ring angles, increasing from the pole.
+    azimuths : int
+        Nodes per ring (``phi_k = 2 pi k / azimuths``).
+    weight : numpy.ndarray, shape (K * azimuths,)
+        Node weights, ``R^2``, ring by ring.
+    c, s : numpy.ndarray, shape (K * azimuths,)
+        Rest position along ``e1`` and ``e2``.
+    D1, D2 : numpy.ndarray, shape (K * azimuths, N)
+        Displacement along ``e1`` and ``e2`` per unit ``Q``.
+    reach : numpy.ndarray, shape (N,)
+        ``max_j |D1| + |D2|``: bounds the displacement along the wall's normal at any rotation.
+    """
+
+    theta: np.ndarray
+    azimuths: int
+    weight: np.ndarray
+    c: np.ndarray
+    s: np.ndarray
+    D1: np.ndarray
+    D2: np.ndarray
+    reach: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.weight.size)
+
+    def start_integral(self, alpha: float) -> float:
+        """``sum_j w_j exp(alpha (c_j - 1))``: the undeformed sphere's wall integral, ``R^2``."""
+        return float(self.weight @ np.exp(alpha * (self.c - 1.0)))
+
+    def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
+        """The nodes that may touch, placed (module docs): ``None`` if no ring can reach
+        ``x = cutoff``, else ``(weight, X, Y - y0, xi, eta, project)`` of the active nodes
+        (:class:`restitution.dynamics.oblique.WallNodes`). Each matrix is read twice: once
+        for positions and velocities, once for the projection of the forces."""
+        if x0 + 1.0 + reach <= cutoff:  # no point of the sphere can reach the cutoff
+            return None
+        near = np.cos(np.maximum(self.theta - abs(rotation), 0.0))
+        rings = int(np.count_nonzero(x0 + near + reach > cutoff))
+        if rings == 0:
+            return None
+        j = rings * self.azimuths
+        D1, D2 = self.D1[:j], self.D2[:j]
+        QQ = np.stack([Q, Qd], axis=1)
+        A1, A2 = D1 @ QQ, D2 @ QQ
+        P1 = self.c[:j] + A1[:, 0]
+        P2 = self.s[:j] + A2[:, 0]
+        ct, st = math.cos(rotation), math.sin(rotation)
+        X = x0 + P1 * ct - P2 * st
+        Yr = P1 * st + P2 * ct
+        if rings == self.theta.size and X[-self.azimuths :].max() > cutoff:
+            raise InputError(
+                f"the contact reaches the edge of the sphere's wall nodes (the near hemisphere "
+                f"about the modes' pole; the sphere has turned by {rotation:.3g} rad): the "
+                "impact rolls the contact too far for this quadrature; lower the speed or the "
+                "tangential speed, or start with a smaller rotation"
+            )
+        xi = A1[:, 1] * ct - A2[:, 1] * st
+        eta = A1[:, 1] * st + A2[:, 1] * ct
+
+        def project(e, p):
+            f1, f2 = e @ D1, e @ D2
+            return f1 * ct - f2 * st, (f1 * st + f2 * ct) / float(e.sum())
+
+        return self.weight[:j], X, Yr, xi, eta, project
+
+
+def cap_nodes(cap, alpha: float, n_nodes: int | None = None) -> CapNodes:
+    """The nodes of ``cap`` for a wall of hardness ``alpha``: ``n_nodes`` rings (default
+    :func:`restitution.bodies.sphere.surface.default_n_nodes` with the cap's highest order
+    among its axisymmetric modes, as the head-on sphere) of ``cap.azimuths`` nodes each."""
+    axial = cap.l[cap.m == 0]
+    l_max = int(axial.max()) if axial.size else (int(cap.l.max()) if len(cap) else 0)
+    rings = int(n_nodes) if n_nodes is not None else surface.default_n_nodes(alpha, l_max)
+    theta, ring_weight = surface._nodes(rings)
+    A = int(cap.azimuths)
+    phi = 2.0 * math.pi * np.arange(A) / A
+    th = np.repeat(theta, A)
+    ph = np.tile(phi, theta.size)
+    d1, d2, _ = cap.displacement(th, ph)
+    reach = np.max(np.abs(d1) + np.abs(d2), axis=0) if th.size and len(cap) else np.zeros(len(cap))
+    return CapNodes(
+        theta=theta,
+        azimuths=A,
+        weight=np.repeat(ring_weight / A, A),
+        c=np.cos(th),
+        s=np.sin(th) * np.cos(ph),
+        D1=np.ascontiguousarray(d1),
+        D2=np.ascontiguousarray(d2),
+        reach=reach,
+    )
