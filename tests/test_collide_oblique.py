@@ -134,10 +134,12 @@ def _never(*args, **kwargs):
 def test_a_kind_without_the_route_is_refused_in_one_line(cli, monkeypatch):
     """A body kind whose modes have no builder of both symmetries is refused before anything is
     computed, naming the kinds that have one (here the sphere's builder is taken away)."""
-    from restitution.bodies.disk.modes import ModeSet
-    from restitution.cli import collide_oblique
+    import dataclasses
 
-    monkeypatch.setattr(collide_oblique, "_RIMS", {ModeSet: collide_oblique._RIMS[ModeSet]})
+    from restitution.bodies import kinds
+
+    sphere = kinds.body_kind("sphere")
+    monkeypatch.setitem(kinds.kinds(), "sphere", dataclasses.replace(sphere, oblique_body=None))
     monkeypatch.setattr(oblique, "oblique_collision", _never)
     code, _, err = cli("collide", "--geometry", "sphere", "--nu", "0.3", "--v", "0.05",
                        "--angle", "30", "--friction", "0.5")  # fmt: skip
@@ -209,9 +211,9 @@ def test_default_modes_and_the_estimate():
     and its inverse (what fits) is consistent with it."""
     from restitution.bodies.cache import get_modes
     from restitution.bodies.disk.rim import rim_modes
-    from restitution.cli.collide_oblique import DEFAULT_MODES
+    from restitution.bodies.kinds import body_kind
 
-    assert DEFAULT_MODES == 160
+    assert body_kind("disk").oblique_modes == 160
     rims = {n: rim_modes(get_modes(0.33, count=n)) for n in (20, 80)}
     w20, w80 = (oblique_work(rims[n], 0.05, 500.0) for n in (20, 80))
     assert 0 < w20.seconds < w80.seconds < oblique_work(rims[80], 0.05, 2000.0).seconds

@@ -42,26 +42,11 @@ from restitution.errors import InputError
 from restitution.status import Status
 
 __all__ = [
-    "DEFAULT_MODES",
     "ObliqueRequest",
     "collide_oblique",
     "oblique_request",
 ]
 
-DEFAULT_MODES = body_kind("disk").oblique_modes
-"""Symmetric modes of the disk's oblique route when ``--modes`` is left out (about 330 on the
-rim; each kind's default is its :attr:`~restitution.bodies.kinds.BodyKind.oblique_modes`, the
-sphere's 20 axisymmetric, 146 in its cap).
-
-The head-on default, 1600, would take minutes on this route (SciPy's DOP853 with a Python
-right-hand side; estimated 1.5 min at ``v = 0.05``, ``alpha = 500`` and 20 min at ``v = 0.2``,
-``alpha = 2000``, :func:`restitution.dynamics.oblique_cost.oblique_work`); 160 took 2-11 s at
-``alpha = 500`` and ``v = 0.005-0.05`` (21-51 s at ``v = 0.2``; 3-196 s over ``alpha =
-100-2000``, ``v = 0.005-0.2``) and stays below the regime where results are suspect (more
-than :data:`~restitution.dynamics.oblique_cost.SUSPECT_MODES` modes). ``epsilon_normal``
-depends on the modes as the head-on epsilon does (one run is no limit ``N -> infinity``);
-``beta`` in partial slip at low speed moves much more (docs/oblique.md: -0.82 at 40 modes to
--0.32 at 640): give more modes to see it move."""
 
 _NOT_OBLIQUE = {
     **PARTNER_OPTIONS,
