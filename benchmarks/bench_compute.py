@@ -86,7 +86,8 @@ def main(argv: list[str] | None = None) -> None:
     print(f"cold / five-minute target: min {min(ratios):.2f}  median "
           f"{statistics.median(ratios):.2f}  max {max(ratios):.2f}  "
           f"({'meets' if statistics.median(ratios) <= 1.0 else 'misses'} the target)")  # fmt: skip
-    print(f"cold / warm: median {statistics.median(c / w for c, w in zip(cold, warm)):.0f}")
+    ratio = statistics.median(c / w for c, w in zip(cold, warm, strict=True))
+    print(f"cold / warm: median {ratio:.0f}")
     print(f"load average at the end: {os.getloadavg()}")
 
 
