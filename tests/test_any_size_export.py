@@ -52,6 +52,7 @@ def _answer(cli, args, speeds) -> dict:
     return json.loads(out)
 
 
+@pytest.mark.slow  # 12-37 s (stop 70: the default run's budget)
 def test_the_folder_holds_a_law_per_contact_of_the_exported_material(damped_export, cli):
     out, args, speeds = damped_export
     answer = _answer(cli, args, speeds)
@@ -76,6 +77,7 @@ def test_the_folder_holds_a_law_per_contact_of_the_exported_material(damped_expo
     assert wall.split()[5] == "epsilon_lammps_plugin_wall1.law"
 
 
+@pytest.mark.slow  # 12-37 s (stop 70: the default run's budget)
 def test_at_the_exported_radius_the_law_per_contact_is_the_exported_law(damped_export, cli):
     """The exported law and the law per contact at the exported 1 mm and the relaxation time
     the command reports, at 0.1, 1 and 10 m/s: within the exported law's stated error. At

@@ -165,6 +165,7 @@ def test_a_damped_law_continues_with_the_viscous_form():
         assert (t.below.form, t.below.exponent) == form
 
 
+@pytest.mark.slow  # 12-37 s (stop 70: the default run's budget)
 def test_a_plate_continues_with_zener_s_first_order_and_it_bounds_the_route():
     """A law on a thin plate (its grid, restitution.laws.wall_grid) continues below its slowest
     point with the loss ~ v^(1/5) (Zener's lambda); Zener's coupled equation solved directly at

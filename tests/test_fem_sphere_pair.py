@@ -114,7 +114,18 @@ def test_swapping_spheres_of_two_materials_checks_every_unit():
     The potential's amplitude is the first sphere's modulus, so the swapped pair's is twice as
     large: the same dynamics shifted in the gap by ``ln 2 / alpha``. Measured: the same number of
     steps (1856), ``|d epsilon|`` = 2.9e-15 and 8.9e-16 (two processes), the shift to 7.4e-13
-    relative, the forces (``E1 R1^2`` against ``E2 R2^2``) to 3.2e-14."""
+    relative, the forces (``E1 R1^2`` against ``E2 R2^2``) to 3.2e-14 on the development machine;
+    on the CI machine the shift came out 1.6e-9 relative (stop 69).
+
+    Margin across machines: the shift is a difference of two compressions of 0.393 (``R1``),
+    130 times smaller than either, and the stiff wall amplifies round-off: on one machine a
+    relative change of 1e-15 in ``w`` moved the shift by 3.0e-11 of itself, 1e-12 by 5.0e-10
+    (measured). Another machine's ``exp`` and summation order (SIMD width) differ by about an
+    ulp in each of the 1856 steps, so the two runs differ by such a perturbation, a few 1e-13
+    in all: 1e-9 to 1e-8 of the shift. The force, ``exp(alpha x)`` at ``alpha = 165``, moves by
+    ``alpha`` times the compression's round-off (7e-12 on CI: 1.2e-9). Both are held to 1e-7,
+    ten times CI's miss; a wrong power of one scale changes the shift by order one (a factor
+    1.4 on one compression alone moves it by 0.16 / 0.0042 = 37 times itself)."""
     partner = Partner(1.4, 2.0, 0.5, nu=0.2)
     swapped = Partner(1 / 1.4, 1 / 2.0, 1 / 0.5, nu=NU)
     speed = math.sqrt(2.0 / 0.5)
@@ -125,9 +136,9 @@ def test_swapping_spheres_of_two_materials_checks_every_unit():
     assert two.n_dofs == one.n_dofs[::-1] and two.result.n_steps == one.result.n_steps
     assert abs(two.epsilon - one.epsilon) < 1e-13
     shift = one.result.max_compression - 1.4 * two.result.max_compression
-    assert shift == pytest.approx(math.log(2.0) / alpha, rel=1e-9)
+    assert shift == pytest.approx(math.log(2.0) / alpha, rel=1e-7)
     # Forces: E1 R1^2 against E2 R2^2 = 2 * 1.4^2 E1 R1^2.
-    assert one.result.max_force == pytest.approx(2 * 1.4**2 * two.result.max_force, rel=1e-9)
+    assert one.result.max_force == pytest.approx(2 * 1.4**2 * two.result.max_force, rel=1e-7)
 
 
 @pytest.mark.slow

@@ -104,6 +104,7 @@ def test_energy_balance(cap20_m1, mu, degrees):
 # -- the rolling contact: every azimuthal order ------------------------------------------------
 
 
+@pytest.mark.slow  # 12-37 s (stop 70: the default run's budget)
 def test_the_complete_set_does_not_care_where_the_contact_is(cap20, cap20_m1):
     """With every azimuthal order the modes of each root span a space closed under the
     rotation, so an impact with the sphere turned by 0.2 rad before is the same impact
@@ -169,6 +170,7 @@ def test_mirror_image(cap20_m1):
     assert len(a.phases) > 2  # stick and slip, not only sliding
 
 
+@pytest.mark.slow  # 12-37 s (stop 70: the default run's budget)
 def test_converges_in_the_wall_nodes(cap20):
     """Twice the nodes per ring and 1.5 times the rings change beta through stick and slip,
     with the contact off the pole (turned 0.2 rad), by 9e-16 and 4e-14 (measured)."""

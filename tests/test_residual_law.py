@@ -34,6 +34,7 @@ def test_the_route_takes_the_production_speeds_and_refuses_what_it_cannot():
     assert "26 speeds" in p.words() and "residual route" in p.words()
 
 
+@pytest.mark.slow  # 12-37 s (stop 70: the default run's budget)
 def test_a_residual_law_says_its_route_and_resumes(tmp_path, monkeypatch):
     """Three speeds of the disk (``nu = 0.33``) through the route, no low-speed points: every
     point is ``route = "residual"`` with its three mode counts and walls, the model sentence
