@@ -254,10 +254,18 @@ def test_csv_rows_carry_speed_v_and_status(tmp_path):
     s = si_law(E=5e6, nu=0.47368, rho=1100, geometry="cylinder", against="wall")
     path = exports.write_csv(s, tmp_path / "t.csv")
     rows = list(csv.reader(ln for ln in path.read_text().splitlines() if not ln.startswith("#")))
-    assert rows[0] == ["speed_m_s", "v_over_c", "epsilon", "epsilon_err", "status"]
-    for r in rows[1:]:
+    assert rows[0] == ["speed_m_s", "v_over_c", "epsilon", "epsilon_err", "status",
+                       "epsilon_sd", "epsilon_sd_kind"]  # fmt: skip
+    points = s.points([float(r[0]) for r in rows[1:]])
+    for r, p in zip(rows[1:], points, strict=True):
         assert r[4] in STATUSES
         assert_allclose(float(r[1]), float(r[0]) / s.grain.c_m_s, rtol=1e-12)
+        # The sd column is the answer's own (the same SIPoint, written with repr).
+        assert float(r[5]) == p.sd and r[6] == ("standard deviation" if p.sd_calibrated
+                                                 else "bound")  # fmt: skip
+        assert 0 < float(r[5]) <= float(r[3])  # one sd never exceeds the bound
+    kinds = {r[6] for r in rows[1:]}
+    assert "standard deviation" in kinds  # this shipped law's modal points are calibrated
 
 
 def test_constant_at_a_reference_speed():

@@ -6,7 +6,10 @@ carries rows of the slow-impact continuation (:mod:`~restitution.laws.exports.be
 ``w = 0``, so that a code interpolating it has a value at every speed up to the law's largest;
 their error column is the continuation's bound. Speeds in m/s, epsilon and its error
 dimensionless; the CSV (the law's own points, from its lowest served speed) adds ``v_over_c``
-(reduced speed) and the status of every row.
+(reduced speed), the status of every row and, after it, ``epsilon_sd`` (one standard deviation
+where the route's errors are calibrated, docs/errors.md) with ``epsilon_sd_kind``
+(``standard deviation`` or ``bound``: where the route has no calibration, the sd is the bound).
+The sd columns come last so that a reader of the first five columns is unchanged.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ import numpy as np
 
 from restitution import atomic
 from restitution.errors import InputError
+from restitution.laws.calibration import SD_MEANING, sd_words
 from restitution.laws.exports._heading import _header
 from restitution.laws.exports.below import slow_continuation
 from restitution.laws.si_law import SILaw
@@ -89,17 +93,22 @@ def write_table(s: SILaw, path: str | os.PathLike, *, points: int = 61, columns:
 
 
 def write_csv(s: SILaw, path: str | os.PathLike, *, points: int = 61) -> Path:
-    """CSV ``speed_m_s,v_over_c,epsilon,epsilon_err,status`` with ``#`` comments."""
+    """CSV ``speed_m_s,v_over_c,epsilon,epsilon_err,status,epsilon_sd,epsilon_sd_kind`` with
+    ``#`` comments (module docstring); ``epsilon_sd`` is the calibrated standard deviation or,
+    where the route has none, the bound (``epsilon_sd_kind`` says which)."""
     w = _grid(s, points)
     path = Path(path)
     with atomic.replacing(path) as tmp, open(tmp, "w", newline="") as fh:
         for line in _header(s):
             fh.write(f"# {line}\n")
+        fh.write(f"# {SD_MEANING}\n")
         writer = csv.writer(fh)
-        writer.writerow(["speed_m_s", "v_over_c", "epsilon", "epsilon_err", "status"])
+        writer.writerow(["speed_m_s", "v_over_c", "epsilon", "epsilon_err", "status",
+                         "epsilon_sd", "epsilon_sd_kind"])  # fmt: skip
         for p in s.points(w):
             writer.writerow(
                 [repr(p.speed_m_s), repr(p.v_over_c), repr(p.epsilon), repr(p.epsilon_err),
-                 p.status]
+                 p.status, "" if p.sd is None else repr(p.sd),
+                 "" if p.sd is None else sd_words(p.sd_calibrated)]
             )  # fmt: skip
     return path
