@@ -230,8 +230,8 @@ def oblique_answer(
     seconds = sum(oblique_work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
     note(
         f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes: about "
-        f"{seconds:.0f} s expected (measured on walls up to alpha = 4000; on the harder walls "
-        "of slow impacts it overestimates: steel at 1 m/s took a fifth to a half of it, "
+        f"{seconds:.0f} s expected (measured on softer walls, alpha <= 1000-4000; on the harder "
+        "walls of slow impacts it overestimates: steel at 1 m/s took a fifth to a half of it, "
         "docs/oblique.md)"
     )
     head_on = [None] * len(r.speeds) if head_on is None else list(head_on)
