@@ -6,8 +6,8 @@ rho))`` of the cylinder, ``v = w / c``, ``alpha = 40 / delta_max(v)`` with ``del
 sqrt(ln(4 / v))``, eq. 61) against the reduced-unit route called directly; frictionless
 impacts (``beta = -1``, no spin, no friction work, at any angle); Coulomb's bound on ``beta``
 (``beta <= -1 + K mu (1 + e) / tan(theta)`` within the lever's first-order correction); the
-one-line refusals (the sphere until its route exists). Measured values: docs/oblique.md ("In SI
-units").
+one-line refusals (the sphere is served since: tests/test_law_oblique_sphere.py). Measured
+values: docs/oblique.md ("In SI units").
 """
 
 from __future__ import annotations
@@ -83,7 +83,6 @@ def test_refusals_before_anything_is_computed():
         (dict(angle=90.0, friction=0.3), "[0, 90)"),
         (dict(angle=-1.0, friction=0.3), "[0, 90)"),
         (dict(angle=30.0, friction=-0.1), ">= 0"),
-        (dict(angle=30.0, friction=0.3, shape="sphere"), "not served by law yet"),
         (dict(angle=30.0, friction=0.3, against="grain"), "rigid wall"),
         (dict(angle=30.0, friction=0.3, reference_speed=1.0), "--reference-speed"),
         (dict(angle=30.0, friction=0.3, relaxation_time=1e-6), "--relaxation-time"),
@@ -94,13 +93,6 @@ def test_refusals_before_anything_is_computed():
             _fast(**kw)
         assert words in str(info.value), (kw, str(info.value))
         assert "\n" not in str(info.value)
-
-
-def test_sphere_is_refused_in_one_line_by_the_command(cli):
-    code, _out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
-                          "sphere", "--against", "wall", "--speed", "1", "--angle", "30",
-                          "--friction", "0.3")  # fmt: skip
-    one_line_error(code, err, "sphere", "--shape cylinder or thin-disk")
 
 
 def test_plot_is_refused_with_angle(cli, tmp_path):

@@ -243,6 +243,10 @@ class BodyKind:
     oblique_law : str or None
         Why ``law --angle`` does not serve this kind although it has an oblique body (the
         route's cost on the hard walls of real grains), or ``None``: it does.
+    oblique_law_modes : int or None
+        The modes of ``law --angle``'s answer (:func:`restitution.laws.oblique.oblique_answer`),
+        its error the change from half as many; ``None``: :attr:`oblique_modes` (the disk: 160
+        and 80; the sphere: 40 and 20, which the hard walls of real grains afford).
     """
 
     geometry: str
@@ -281,6 +285,7 @@ class BodyKind:
     oblique_body: Callable | None = None
     oblique_modes: int = 160
     oblique_law: str | None = None
+    oblique_law_modes: int | None = None
 
     @property
     def name(self) -> str:

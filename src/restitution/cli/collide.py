@@ -278,7 +278,7 @@ def _vibrating() -> str:
     default=None,
     help="An oblique impact: angle of incidence from the wall's normal, degrees in [0, 90); "
     "--v stays the normal speed, the tangential one is v tan(angle). Needs --friction; the "
-    "disk only (docs/oblique.md).",
+    "disk and the sphere (docs/oblique.md).",
 )
 @click.option(
     "--friction",

@@ -7,19 +7,22 @@ Units: SI at this edge (m/s, rad/s, Pa, kg/m^3, m, degrees); inside, the grain's
 is answered here: each asked speed ``w`` is the grain's normal speed towards the wall, ``v = w /
 c`` (:meth:`~restitution.laws.units.Grain.v_over_c`), the tangential speed ``v tan(angle)``, no
 spin before. The body kind's oblique body (:attr:`restitution.bodies.kinds.BodyKind.
-oblique_body`: the disk's rim in both mode families) hits the exponential wall of hardness
-``alpha = p / delta_max(v)``, ``p`` the softest of the kind's walls
-(:attr:`~restitution.bodies.kinds.BodyKind.alpha_products`, 40 for the disk: the wall the head-on
-law's sweeps start from), in :func:`restitution.dynamics.oblique.oblique_collision`, at
-:data:`MODES` modes and at half as many. The numbers are those of :data:`MODES` modes; the
-error of each is its change from half the modes: a measure of how far one mode count is from
-converged, **not** an extrapolation to ``N, alpha -> infinity`` (the head-on laws' route, which
-the oblique route cannot yet afford; docs/oblique.md). Hence every point's status is at best
+oblique_body`: the disk's rim in both mode families, the sphere's cap of every azimuthal
+order) hits the exponential wall of hardness ``alpha = p / delta_max(v)``, ``p`` the softest of
+the kind's walls (:attr:`~restitution.bodies.kinds.BodyKind.alpha_products`, 40 for the disk, 80
+for the sphere: the wall the head-on law's sweeps start from), in
+:func:`restitution.dynamics.oblique.oblique_collision`, at the kind's mode count
+(:func:`law_modes`: 160 for the disk, 40 for the sphere) and at half as many. The numbers are
+those of the full count; the error of each is its change from half the modes: a measure of how
+far one mode count is from converged, **not** an extrapolation to ``N, alpha -> infinity`` (the
+head-on laws' route, which the oblique route cannot yet afford; docs/oblique.md). Hence every
+point's status is at best
 :attr:`~restitution.status.Status.COMPUTED_NOT_ASYMPTOTIC`. ``epsilon_normal``'s error also
 holds its distance from the head-on law at the speed (:func:`_normal_error`): one mode count on
 one wall is ten times further from the head-on limit than from half its modes.
 
-A kind without an oblique route (the sphere, so far) is refused where the request is built
+A kind without an oblique route, or one whose kind says why ``law`` does not serve it
+(:attr:`~restitution.bodies.kinds.BodyKind.oblique_law`), is refused where the request is built
 (:mod:`restitution.laws.request_checks`); nothing here names a kind.
 """
 
@@ -30,8 +33,6 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
 
-import numpy as np
-
 from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import body_kind
 from restitution.dynamics.oblique import oblique_collision
@@ -39,11 +40,12 @@ from restitution.dynamics.oblique_cost import check_reach, oblique_work, suspect
 from restitution.laws.units import BODIES
 from restitution.status import Status
 
-__all__ = ["LARGE_SPEED", "MODES", "ObliqueAnswer", "ObliquePoint", "oblique_answer"]
+__all__ = ["LARGE_SPEED", "MODES", "ObliqueAnswer", "ObliquePoint", "law_modes", "oblique_answer"]
 
 MODES = 160
-"""Symmetric modes of each oblique point (the rim holds about twice as many), as ``collide
---angle``'s default; the error is the change from ``MODES // 2``."""
+"""The disk's symmetric modes of each oblique point (the rim holds about twice as many), as
+``collide --angle``'s default; the error is the change from ``MODES // 2``. Another kind's count
+is its :attr:`~restitution.bodies.kinds.BodyKind.oblique_law_modes` (:func:`law_modes`)."""
 
 LARGE_SPEED = 0.3
 """Above this normal speed (``c``) linear elasticity is stretched: status ``large-deformation``
@@ -186,8 +188,14 @@ def _silent(text: str) -> None:
     """The default ``note``: say nothing."""
 
 
+def law_modes(kind) -> int:
+    """The modes of ``law --angle``'s answer for body kind ``kind`` (the error from half as
+    many): its ``oblique_law_modes``, else its ``oblique_modes`` (``collide --angle``'s)."""
+    return kind.oblique_law_modes or kind.oblique_modes
+
+
 def oblique_answer(
-    request, note: Callable[[str], None] = _silent, *, modes: int = MODES, head_on=None
+    request, note: Callable[[str], None] = _silent, *, modes: int | None = None, head_on=None
 ) -> ObliqueAnswer:
     """The oblique impact of ``request`` (a :class:`~restitution.laws.request.LawRequest` with
     ``angle`` and ``friction``) at each of its speeds (module docs).
@@ -198,8 +206,9 @@ def oblique_answer(
         Checked where it was built (the kind has an oblique route, the partner is the wall).
     note : callable
         Told the estimated time before the runs.
-    modes : int
-        Symmetric modes (default :data:`MODES`); the error from ``modes // 2``.
+    modes : int or None
+        Symmetric (for the sphere axisymmetric) modes; the error from ``modes // 2``. ``None``:
+        the kind's own count (:func:`law_modes`: 160 for the disk, 40 for the sphere).
     head_on : sequence of SIPoint or None, optional
         The head-on law's points at the request's speeds (:func:`restitution.laws.serve.serve`
         passes them), reported beside ``epsilon_normal``; ``None``: none.
@@ -207,6 +216,7 @@ def oblique_answer(
     r = request
     grain = r.grain
     kind = body_kind(BODIES[r.shape])
+    modes = law_modes(kind) if modes is None else modes
     nu = grain.law_nu
     tan = math.tan(math.radians(r.angle))
     plans = []
@@ -220,20 +230,17 @@ def oblique_answer(
     seconds = sum(oblique_work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
     note(
         f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes: about "
-        f"{seconds:.0f} s expected (a time fit to walls up to alpha = 4000; on the harder walls "
-        "of slow impacts it overestimates: 96 s estimated, 18-28 s measured for steel at 1 m/s)"
+        f"{seconds:.0f} s expected (measured on softer walls, alpha <= 1000-4000; on the harder "
+        "walls of slow impacts it overestimates: steel at 1 m/s took a fifth to a half of it, "
+        "docs/oblique.md)"
     )
     head_on = [None] * len(r.speeds) if head_on is None else list(head_on)
     points = []
     for (w, v, alpha), law_point in zip(plans, head_on, strict=True):
         start = time.perf_counter()
-        # On these hard walls (alpha ~ 1e4-1e5) DOP853's rejected trial steps overshoot into the
-        # wall and overflow exp(alpha X); the step is rejected and retried, and the accepted
-        # run balances its energy to ~1e-12 (the point's energy_balance), so the warnings of
-        # those trials are not shown.
-        with np.errstate(over="ignore", invalid="ignore"):
-            runs = {n: oblique_collision(b, v, v * tan, r.friction, alpha)
-                    for n, b in bodies.items()}  # fmt: skip
+        # The overflowing trial steps of these hard walls are handled (and silenced) by
+        # oblique_collision; the accepted run balances its energy to ~1e-11 (energy_balance).
+        runs = {n: oblique_collision(b, v, v * tan, r.friction, alpha) for n, b in bodies.items()}
         wall = time.perf_counter() - start
         points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point))
     return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))

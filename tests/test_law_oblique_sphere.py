@@ -1,0 +1,148 @@
+"""``restitution law --shape sphere --angle DEG --friction MU`` (issue 63, its last item): the
+oblique impact of a real ball on the rigid wall in SI units (restitution.laws.oblique with the
+sphere's cap of every azimuthal order, restitution.bodies.sphere.cap).
+
+Checked against routes of their own: frictionless impacts keep their tangential motion (``beta =
+-1``, no spin, no friction work) and their normal coefficient is the same route's head-on one
+(angle 0); in gross sliding ``beta`` is the impulse ratio ``-1 + K mu (1 + e) / tan(theta)``
+with the sphere's ``K = 1 + m R^2 / I = 7/2``, within the point's own error. The issue's case
+(steel ball, 1 m/s, 30 degrees, ``mu = 0.3``, 40 and 20 axisymmetric modes) runs through the
+command (slow: 62-75 s measured). Measured values: docs/oblique.md ("In SI units", "The issue's
+case for the sphere").
+
+Units: SI at the command (m/s, rad/s, degrees); ``v = w / c`` with the sphere's ``c =
+sqrt(E / rho)`` of its three-dimensional constants (5172 m/s for steel).
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import io
+import json
+import math
+
+import pytest
+from _cli_checks import one_line_error
+
+from restitution.bodies import kinds
+from restitution.errors import InputError
+from restitution.laws import oblique
+from restitution.laws.oblique import law_modes, oblique_answer
+from restitution.laws.request import request
+from restitution.status import Status
+
+STEEL_BALL = dict(E=210e9, nu=0.3, rho=7850.0, shape="sphere", against="wall")
+BALL_ARGS = ("--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape", "sphere",
+             "--against", "wall")  # fmt: skip
+K_SPHERE = 3.5
+"""``1 + m R^2 / I`` of the solid sphere (``I = (2/5) m R^2``)."""
+
+
+def _ball(angle, friction, modes):
+    """The steel ball at 1 m/s (``v = 1.93e-4``, ``alpha = 80 / delta_max = 4.50e4``) at
+    ``modes`` axisymmetric modes (and half as many)."""
+    r = request(**STEEL_BALL, speeds=(1.0,), angle=angle, friction=friction, radius=0.005)
+    return oblique_answer(r, modes=modes).points[0]
+
+
+def test_the_sphere_kind_sets_its_own_mode_counts():
+    """The sphere's law runs 40 modes and 20 (its collide default stays 20); the disk's 160 and
+    80 are unchanged. No laws/ code names a kind: the counts are the kinds' attributes."""
+    assert law_modes(kinds.body_kind("sphere")) == 40
+    assert kinds.body_kind("sphere").oblique_modes == 20
+    assert law_modes(kinds.body_kind("disk")) == oblique.MODES == 160
+
+
+def test_the_sphere_request_is_served_and_its_kind_can_still_refuse(monkeypatch):
+    """The sphere's refusal is gone; a kind that says why ``law`` does not serve it
+    (``BodyKind.oblique_law``) is still refused in one line, naming the shapes that are."""
+    r = request(**STEEL_BALL, speeds=(1.0,), angle=30.0, friction=0.3)
+    assert r.oblique and r.shape == "sphere"
+    sphere = kinds.body_kind("sphere")
+    monkeypatch.setitem(kinds.kinds(), "sphere", dataclasses.replace(sphere, oblique_law="slow"))
+    with pytest.raises(InputError) as info:
+        request(**STEEL_BALL, speeds=(1.0,), angle=30.0, friction=0.3)
+    words = str(info.value)
+    assert "not served by law yet (slow)" in words and "--shape cylinder or thin-disk" in words
+    assert "\n" not in words
+
+
+def test_frictionless_ball_keeps_its_tangential_motion_and_its_head_on_epsilon():
+    """``mu = 0`` at 30 degrees: ``beta = -1``, no spin, no friction work, and ``epsilon_normal``
+    the route's own head-on value (angle 0, same modes and wall). 4 and 2 modes: 0.98840287
+    both, apart by 4.1e-12, about 3 s each; at 8 modes 0.97700259 (2.8e-12), at 40 modes
+    0.99736007 (5.0e-13, 62 s each; 2 Dec 2026)."""
+    oblique_point = _ball(30.0, 0.0, modes=4)
+    head_on = _ball(0.0, 0.0, modes=4)
+    assert oblique_point.beta == pytest.approx(-1.0, abs=1e-12)
+    assert abs(oblique_point.spin_rad_s) < 1e-9 and oblique_point.friction_work == 0.0
+    assert head_on.beta is None and head_on.alpha == oblique_point.alpha
+    assert oblique_point.epsilon_normal == pytest.approx(head_on.epsilon_normal, abs=1e-6)
+    assert abs(oblique_point.energy_balance) < 1e-9 and abs(head_on.energy_balance) < 1e-9
+
+
+def test_gross_sliding_ball_beta_is_the_impulse_ratio():
+    """80 degrees, ``mu = 0.1``: the ball slides throughout (one phase) and ``beta`` is the
+    impulse ratio ``-1 + (7/2) mu (1 + e) / tan(theta)`` with its own ``e``, within the point's
+    error (the change from 4 modes). 8 modes: -0.8780148 against -0.8779904 (2.4e-5; the
+    contact's lever and the pressure's torque, first order in the compression 1.8e-3), error
+    7.2e-4; about 4 s. (At 40 modes, the law's count: -0.8768296 against -0.8767340, 9.6e-5,
+    beyond that point's error 6.3e-5, the change from 20 modes, which does not hold the lever;
+    hence also the lever's bound 1e-3 of the cylinder's test; 59 s, 2 Dec 2026.)"""
+    p = _ball(80.0, 0.1, modes=8)
+    ratio = -1.0 + K_SPHERE * 0.1 * (1.0 + p.epsilon_normal) / math.tan(math.radians(80.0))
+    assert p.phases == 1 and p.beta_error > 0.0
+    assert abs(p.beta - ratio) <= p.beta_error and abs(p.beta - ratio) < 1e-3
+    assert p.spin_rad_s > 0.0 and p.friction_work > 0.0
+
+
+@pytest.mark.slow
+def test_steel_ball_at_1_m_s_30_degrees_mu_0_3_in_one_command(cli):
+    """The issue's case: one command, beta, epsilon_normal, spin, with errors and statuses, and
+    no warnings of the hard wall's trial steps (40 and 20 modes; 62-75 s measured, 2 Dec 2026:
+    epsilon_normal 0.99738 +- 0.0031, beta 0.179 +- 0.054, spin 97.2 +- 4.4 rad/s, energy
+    balance 3.6e-12, 17 phases)."""
+    code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
+                         "0.3", "--radius", "0.005", "--format", "json")  # fmt: skip
+    assert code == 0, err
+    assert "warning" not in err.lower() and err.startswith("note: 1 oblique impacts at 40 and 20")
+    d = json.loads(out)
+    assert d["status"] == str(Status.COMPUTED_NOT_ASYMPTOTIC) and d["shape"] == "sphere"
+    (p,) = d["points"]
+    assert p["modes"] == 40 and p["status"] == "computed-not-asymptotic"
+    for key in ("epsilon_normal", "beta", "spin_rad_s", "friction_work", "energy_balance"):
+        assert math.isfinite(p[key]), key
+    for key in ("epsilon_normal_error", "beta_error", "spin_rad_s_error", "friction_work_error"):
+        assert p[key] > 0.0 and math.isfinite(p[key]), key
+    assert abs(p["energy_balance"]) < 1e-6
+    tan = math.tan(math.radians(30.0))
+    # Coulomb's bound with the sphere's K = 7/2 (+1e-3 for the lever at first order in v).
+    assert p["beta"] <= -1.0 + K_SPHERE * 0.3 * (1.0 + p["epsilon_normal"]) / tan + 1e-3
+    assert 0.0 < p["epsilon_normal"] < 1.0 and p["friction_work"] > 0.0 and p["spin_rad_s"] > 0.0
+    # The head-on sphere law (quasistatic at 1 m/s: 0.999975) is served beside it and counted
+    # in epsilon_normal's error.
+    assert p["head_on_law_status"] and 0.999 < p["epsilon_head_on_law"] < 1.0
+    assert p["epsilon_normal_error"] >= abs(p["epsilon_normal"] - p["epsilon_head_on_law"])
+
+
+def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
+    """Text and CSV of the ball's answer, as for the cylinder (the kind's count lowered to 4
+    and 2 modes for speed: about 3 s each)."""
+    monkeypatch.setattr(oblique, "law_modes", lambda kind: 4)
+    code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
+                         "0.3", "--radius", "0.005")  # fmt: skip
+    assert code == 0 and "beta" in out and "+-" in out and "rad/s" in out, err
+    assert "warning" not in err.lower()
+    code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
+                         "0.3", "--format", "csv")  # fmt: skip
+    assert code == 0, err
+    (row,) = csv.DictReader(io.StringIO(out))
+    assert row["modes"] == "4" and float(row["beta_error"]) > 0.0
+    assert row["status"] == "computed-not-asymptotic" and math.isfinite(float(row["beta"]))
+
+
+def test_the_ball_without_friction_is_refused_in_one_line(cli):
+    """Other refusals still hold for the sphere: ``--angle`` without ``--friction``."""
+    code, _out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30")
+    one_line_error(code, err, "--friction")
