@@ -59,3 +59,19 @@ def test_only_collision_points_are_rerouted():
         rerouted(old, [_record(slow)], parameters={})
     with pytest.raises(InputError, match="names no route"):
         rerouted(old, [{**_record(float(old.v[-1])), "route": None}], parameters={})
+
+
+def test_a_point_of_the_residual_route_is_not_the_modal_route_s_to_calibrate():
+    """The calibration's rows (restitution.fem.calibrate) served by a rerouted point, or by an
+    interval with one at either end, say ``residual``; the others stay ``modal``."""
+    from restitution.fem.calibrate import _modal_row
+
+    old = EpsilonLaw.from_json(DATA / "law_nu0.25.json")
+    modal = old.v[~old.quasistatic]
+    new = rerouted(old, [_record(float(modal[3]))], parameters={})
+    routes = [
+        _modal_row("test", new, float(v), 0.99, 1e-5).route
+        for v in (modal[3], np.sqrt(modal[2] * modal[3]), np.sqrt(modal[3] * modal[4]), modal[5])
+    ]
+    assert routes == ["residual", "residual", "residual", "modal"]
+    assert _modal_row("test", old, float(modal[3]), 0.99, 1e-5).route == "modal"

@@ -124,8 +124,10 @@ def apply(doc: dict, source: str) -> list[str]:
         parameters = {
             "reason": (
                 "issue 65, item 2: these collision points failed their checks by the modal "
-                "route (its N-extrapolation curved); the residual route passes them and agrees "
-                "with the finite elements where they were computed (docs/numerics.md)"
+                "route (its N-extrapolation curved or its drop-one test failed; at three speeds "
+                "its wall limit 50-53 % curved against the 50 % tolerance); the residual route "
+                "passes them and lies within one combined error of the finite elements where "
+                "they were computed (docs/numerics.md)"
             ),
             "source": source,
             "function": doc["function"],
@@ -181,7 +183,8 @@ def main(argv=None) -> int:
             "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"),
         },
         "code_version": version,
-        "git_commit": _git_commit(),
+        # The commit the points were computed at: a rerun that computes none keeps it.
+        "git_commit": kept.get("git_commit") if len(done) >= len(todo) else _git_commit(),
         "environment": {
             "python": platform.python_version(),
             "numpy": np.__version__,
