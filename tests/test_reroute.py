@@ -75,3 +75,20 @@ def test_a_point_of_the_residual_route_is_not_the_modal_route_s_to_calibrate():
     ]
     assert routes == ["residual", "residual", "residual", "modal"]
     assert _modal_row("test", old, float(modal[3]), 0.99, 1e-5).route == "modal"
+
+
+def test_a_nu_law_over_grid_laws_of_mixed_routes_serves_the_bound_where_one_is_uncalibrated():
+    """The residual route is not calibrated (its sd is its bound); PCHIP in nu through grid laws
+    of which one has a residual point there must then serve the bound, not a mixture."""
+    from restitution.laws.law_load import law
+    from restitution.laws.law_nu import law_for
+
+    nodes = [law(x) for x in (0.2, 0.33, 0.5, 0.7, 0.9)]
+    modal = nodes[1].v[~nodes[1].quasistatic]
+    nodes[1] = rerouted(nodes[1], [_record(float(modal[0]))], parameters={})
+    served = law_for(0.3, laws=nodes)
+    v = np.geomspace(modal[0] / 2, modal[3], 200)
+    sd, err, cal = served.epsilon_sd(v), served.epsilon_err(v), served.sd_calibrated(v)
+    assert (~cal).any() and cal.any()
+    assert np.array_equal(sd[~cal], err[~cal])
+    assert np.all(sd[cal] < err[cal])
