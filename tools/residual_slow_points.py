@@ -145,6 +145,10 @@ def apply(doc: dict, source: str) -> list[str]:
     return lines
 
 
+def _command() -> str:
+    return "tools/residual_slow_points.py " + " ".join(a for a in sys.argv[1:] if a != "--apply")
+
+
 def _git_commit() -> str:
     try:
         out = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True)
@@ -174,7 +178,7 @@ def main(argv=None) -> int:
         "geometry": "disk",
         "units": "E = rho = R = 1 of the disk's constants; v in c (speed towards the wall)",
         "function": "restitution.limits.residual_point.residual_point(geometry, nu, v)",
-        "command": "tools/residual_slow_points.py " + " ".join(sys.argv[1:]),
+        "command": kept.get("command") if len(done) >= len(todo) else _command(),
         "settings": {
             "modes": list(RESIDUAL_MODES),
             "nodes_per_contact": NODES_PER_CONTACT,
