@@ -54,7 +54,12 @@ from restitution.laws.law_file import law_filename
 from restitution.laws.law_load import law
 from restitution.laws.law_nu import shipped_nus
 from restitution.laws.making.production import route_pair_laws
-from restitution.limits.extrapolation import combined_limit
+from restitution.limits.extrapolation import (
+    alpha_curvature_shift,
+    combined_limit,
+    epsilon_from_loss,
+    extrapolate_alpha,
+)
 from restitution.provenance import code_version
 
 V = 0.1
@@ -286,9 +291,26 @@ def _meta(name: str) -> dict:
 
 
 def _modal(points: list[dict]) -> list[dict]:
-    """The points from collisions (the low-speed points: tests/test_slow_disk.py and
-    tests/test_sphere_laws.py)."""
-    return [p for p in points if p.get("route") != "quasistatic"]
+    """The points from collisions extrapolated in ``N`` (the low-speed points:
+    tests/test_slow_disk.py and tests/test_sphere_laws.py; the residual route's: below)."""
+    return [p for p in points if p.get("route") in (None, "modal")]
+
+
+def _residual(points: list[dict]) -> list[dict]:
+    """The points from collisions with a static residual (issue 65, item 2)."""
+    return [p for p in points if p.get("route") == "residual"]
+
+
+def _redo_residual(p: dict) -> tuple[float, float, bool]:
+    """A residual-route point's hard-wall limit redone from its stored grid, as
+    :func:`restitution.limits.residual_point.residual_point` makes it: ``(epsilon, error, ok)``."""
+    r = p["residual"]
+    point_err = np.hypot(r["mode_err"], r["step_err"])
+    losses = np.array(r["energy_loss_grid"], dtype=float)[:, -1]
+    fit = extrapolate_alpha(np.array(r["alpha"]), losses, loss_err=point_err)
+    loss_err = math.hypot(fit.limit_err, alpha_curvature_shift(fit))
+    eps, err = epsilon_from_loss(float(fit.limit), loss_err)
+    return eps, err, bool(fit.asymptotic_ok)
 
 
 def test_there_are_shipped_laws():
@@ -308,9 +330,16 @@ def test_shipped_law_points_are_physical_and_their_flags_truthful(name):
     assert served.geometry == meta["geometry"] in GEOMETRIES
     partner = meta.get("partner")
     assert served.partner == (None if partner is None else Partner.from_key(partner))
-    modal = _modal(meta["points"])
+    modal, residual = _modal(meta["points"]), _residual(meta["points"])
     assert bool(modal) == (name not in ROUTE_LAW_FILES)
-    assert served.v[~served.quasistatic].size == len(modal)
+    assert served.v[~served.quasistatic].size == len(modal) + len(residual)
+    rerouted = {c["v"] for c in (meta.get("rerouted") or {}).get("points", [])}
+    assert rerouted == {p["v"] for p in residual}
+    for p in residual:
+        eps, err, ok = _redo_residual(p)
+        assert eps == pytest.approx(p["epsilon"], rel=0, abs=1e-12), p["v"]
+        assert err == pytest.approx(p["epsilon_err"], rel=1e-9), p["v"]
+        assert ok == bool(p["asymptotic_ok"]) == (p["status"] == "ok"), p["v"]
     for p in meta["points"]:
         assert p["epsilon"] <= 1.0, (p["v"], p["epsilon"])
         assert np.isfinite(p["epsilon_err"]) and p["epsilon_err"] > 0

@@ -117,11 +117,14 @@ def test_shipped_laws_record_their_refinement(geometry, nu):
     assert set(speeds) <= set(served.v.tolist())
     records = {r["v"]: r for r in served.metadata["points"]}
     modal = served.v[~served.quasistatic]
-    for v in speeds:
+    # A refined point computed again by another route later (issue 65) is listed there.
+    rerouted = {c["v"] for c in (served.metadata.get("rerouted") or {}).get("points", [])}
+    assert all(records[v].get("route") in (None, "modal") for v in set(speeds) - rerouted)
+    for v in sorted(set(speeds) - rerouted):
         j = int(np.searchsorted(modal, v))
         neighbours = [records[float(modal[j - 1])], records[float(modal[j + 1])]]
         settings = {k: x for k, x in records[v]["settings"].items() if k != "velocities"}
         assert any(
-            settings == {k: x for k, x in n["settings"].items() if k != "velocities"}
+            settings == {k: x for k, x in n.get("settings", {}).items() if k != "velocities"}
             for n in neighbours
         ), v

@@ -14,7 +14,11 @@ from restitution.reproduction.figures import slow_convergence, slow_routes
 def test_slow_convergence_shows_the_served_numbers(tmp_path):
     served = law(0.33)
     points = slow_convergence.compute(served, v_max=1e-3)
-    assert [p.v for p in points] == pytest.approx([1e-4, 2e-4, 5e-4, 1e-3])
+    # The modal points only: one computed again by the residual route (issue 65) has no fit
+    # in 1/sqrt(N) to show.
+    rerouted = {c["v"] for c in (served.metadata.get("rerouted") or {}).get("points", [])}
+    speeds = [v for v in (1e-4, 2e-4, 5e-4, 1e-3) if v not in rerouted]
+    assert len(speeds) >= 2 and [p.v for p in points] == pytest.approx(speeds)
     for p in points:
         # The diamond is what the law serves: 1 - epsilon^2 at that speed.
         assert p.limit == pytest.approx(1.0 - served.epsilon(p.v) ** 2, rel=1e-9)

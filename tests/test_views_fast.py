@@ -278,6 +278,7 @@ def _notebook_blocks() -> list[str]:
     return re.findall(r"```python\n(.*?)```", section, re.S)
 
 
+@pytest.mark.slow  # 11-15 s (pandas, a 10^6-point evaluation and a figure)
 def test_the_notebook_example_runs_as_it_stands(tmp_path, monkeypatch):
     pytest.importorskip("pandas")
     blocks = _notebook_blocks()

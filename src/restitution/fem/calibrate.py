@@ -50,7 +50,7 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from restitution.errors import InputError
-from restitution.laws.calibration import CALIBRATIONS, MODAL, NU
+from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, RESIDUAL
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_load import law
 from restitution.laws.law_nu import NuInterpolatedLaw
@@ -89,7 +89,8 @@ class Row:
         colon.
     route : str
         Who serves the value: ``"modal"`` (a modal law's points, at or between them),
-        ``"quasistatic"`` (a low-speed route's points) or ``"nu"`` (PCHIP in ``nu``).
+        ``"quasistatic"`` (a low-speed route's points), ``"residual"`` (a point of the residual
+        route, or an interval with one at either end) or ``"nu"`` (PCHIP in ``nu``).
     nu, v : float
         Poisson number of the law, speed (``c``).
     served, reference, reference_err : float
@@ -118,12 +119,15 @@ def _modal_row(source: str, law_: EpsilonLaw, v: float, ref: float, ref_err: flo
     """The served components of ``law_`` at ``v`` against a reference."""
     point = float(abs(law_._evaluate(law_.epsilon_err_points, v, "raise")))
     j = int(np.clip(np.searchsorted(law_.v, v), 0, law_.v.size - 1))
-    quasi = bool(law_.quasistatic[j]) and (
-        abs(law_.v[j] - v) <= 1e-9 * v or bool(law_.quasistatic[max(j - 1, 0)])
-    )
+    at = abs(law_.v[j] - v) <= 1e-9 * v
+    quasi = bool(law_.quasistatic[j]) and (at or bool(law_.quasistatic[max(j - 1, 0)]))
+    # A point of the residual route, or an interval with one at either end, is not the modal
+    # route's to calibrate.
+    routes = [r.get("route") or MODAL for r in law_._records()]
+    residual = any(routes[k] == RESIDUAL for k in ([j] if at else [max(j - 1, 0), j]))
     return Row(
         source,
-        "quasistatic" if quasi else MODAL,
+        "quasistatic" if quasi else RESIDUAL if residual else MODAL,
         float(law_.nu),
         float(v),
         float(law_.epsilon(v)),

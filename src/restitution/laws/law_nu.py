@@ -374,17 +374,23 @@ class NuInterpolatedLaw:
         """One standard deviation of :meth:`epsilon`: the grid laws' standard deviations
         (:meth:`EpsilonLaw.epsilon_sd`) interpolated in ``nu``, joined in quadrature with the
         ``nu``-interpolation term scaled by its calibrated factor
-        (:mod:`restitution.laws.calibration`, route ``nu``); where a grid law's is the bound
-        (:meth:`sd_calibrated` false) the term keeps its full size."""
+        (:mod:`restitution.laws.calibration`, route ``nu``); where any grid law's is the bound
+        (:meth:`sd_calibrated` false) it is the bound, :meth:`epsilon_err` (grid laws whose
+        points come from routes calibrated and not, e.g. modal and residual, would otherwise
+        give a value that is neither)."""
         from restitution.laws.calibration import CALIBRATIONS, NU
 
         c = CALIBRATIONS[NU].nu_factor
 
         def sd(w: np.ndarray) -> np.ndarray:
             get = self._node_values(w)
-            point = np.abs(self._pchip_in_nu(get, "epsilon_sd", self.nu))
-            factor = np.where(self._calibrated_at(w), c, 1.0)
-            return np.hypot(point, factor * self._interpolation_err_at(get))
+            cal = self._calibrated_at(w)
+            point = np.where(
+                cal,
+                np.abs(self._pchip_in_nu(get, "epsilon_sd", self.nu)),
+                np.abs(self._pchip_in_nu(get, "epsilon_err", self.nu)),
+            )
+            return np.hypot(point, np.where(cal, c, 1.0) * self._interpolation_err_at(get))
 
         return self._serve(v, outside, sd)
 

@@ -58,12 +58,11 @@ class SlowPoint:
 
 def compute(law, v_max: float = 2e-3) -> tuple[SlowPoint, ...]:
     """The slow modal points of ``law`` (an :class:`restitution.laws.law.EpsilonLaw`),
-    ``v <= v_max`` (its low-speed points have no extrapolation to show)."""
-    from restitution.laws.law_point import QUASISTATIC_ROUTE
-
+    ``v <= v_max`` (its low-speed points and the points of the residual route, which converge
+    in ``N`` without an extrapolation in ``1/sqrt(N)``, have none to show)."""
     out = []
     for p in law.metadata.get("points", []):
-        if p["v"] > v_max * (1 + 1e-9) or p.get("route") == QUASISTATIC_ROUTE:
+        if p["v"] > v_max * (1 + 1e-9) or p.get("route", "modal") != "modal":
             continue
         ex = p["extrapolation"]
         fits = ex["fits"]

@@ -1,0 +1,94 @@
+"""Points of a computed law replaced by another route's (issue 65, item 2): the law says which
+points changed, from what, and every collision point names its route."""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from restitution.errors import InputError
+from restitution.laws.law import EpsilonLaw
+from restitution.laws.making.reroute import rerouted, write_shipped
+
+DATA = Path(str(resources.files("restitution.laws").joinpath("data")))
+
+
+def _record(v: float) -> dict:
+    return {
+        "v": v,
+        "epsilon": 0.99,
+        "epsilon_err": 1e-5,
+        "asymptotic_ok": True,
+        "status": "ok",
+        "route": "residual",
+        "message": "",
+    }
+
+
+def test_a_shipped_law_written_again_is_unchanged_byte_for_byte(tmp_path):
+    path = DATA / "law_nu0.25.json"
+    out = write_shipped(EpsilonLaw.from_json(path), tmp_path / path.name)
+    assert out.read_bytes() == path.read_bytes()
+
+
+def test_a_rerouted_point_replaces_the_old_one_and_the_law_says_so(tmp_path):
+    old = EpsilonLaw.from_json(DATA / "law_nu0.25.json")
+    v = float(old.v[~old.quasistatic][3])
+    new = rerouted(old, [_record(v)], parameters={"reason": "a test"})
+    assert new.v.size == old.v.size and new.epsilon(v) == pytest.approx(0.99, rel=1e-12)
+    change = new.metadata["rerouted"]
+    assert change["reason"] == "a test" and change["routes"] == ["residual"]
+    (point,) = change["points"]
+    assert point["v"] == v and point["to"]["route"] == "residual"
+    assert point["from"]["epsilon"] == pytest.approx(float(old.epsilon(v)), rel=1e-12)
+    routes = {r.get("route") for r in new._records()}
+    assert routes == {"modal", "residual", "quasistatic"}
+    assert new.routes == ("modal", "quasistatic", "residual")
+    again = EpsilonLaw.from_json(write_shipped(new, tmp_path / "law.json"))
+    assert np.array_equal(again.epsilon_points, new.epsilon_points)
+    assert again.metadata["rerouted"] == change
+
+
+def test_only_collision_points_are_rerouted():
+    old = EpsilonLaw.from_json(DATA / "law_nu0.25.json")
+    slow = float(old.v[old.quasistatic][0])
+    with pytest.raises(InputError, match="not a collision point"):
+        rerouted(old, [_record(slow)], parameters={})
+    with pytest.raises(InputError, match="names no route"):
+        rerouted(old, [{**_record(float(old.v[-1])), "route": None}], parameters={})
+
+
+def test_a_point_of_the_residual_route_is_not_the_modal_route_s_to_calibrate():
+    """The calibration's rows (restitution.fem.calibrate) served by a rerouted point, or by an
+    interval with one at either end, say ``residual``; the others stay ``modal``."""
+    from restitution.fem.calibrate import _modal_row
+
+    old = EpsilonLaw.from_json(DATA / "law_nu0.25.json")
+    modal = old.v[~old.quasistatic]
+    new = rerouted(old, [_record(float(modal[3]))], parameters={})
+    routes = [
+        _modal_row("test", new, float(v), 0.99, 1e-5).route
+        for v in (modal[3], np.sqrt(modal[2] * modal[3]), np.sqrt(modal[3] * modal[4]), modal[5])
+    ]
+    assert routes == ["residual", "residual", "residual", "modal"]
+    assert _modal_row("test", old, float(modal[3]), 0.99, 1e-5).route == "modal"
+
+
+def test_a_nu_law_over_grid_laws_of_mixed_routes_serves_the_bound_where_one_is_uncalibrated():
+    """The residual route is not calibrated (its sd is its bound); PCHIP in nu through grid laws
+    of which one has a residual point there must then serve the bound, not a mixture."""
+    from restitution.laws.law_load import law
+    from restitution.laws.law_nu import law_for
+
+    nodes = [law(x) for x in (0.2, 0.33, 0.5, 0.7, 0.9)]
+    modal = nodes[1].v[~nodes[1].quasistatic]
+    nodes[1] = rerouted(nodes[1], [_record(float(modal[0]))], parameters={})
+    served = law_for(0.3, laws=nodes)
+    v = np.geomspace(modal[0] / 2, modal[-1], 400)
+    sd, err, cal = served.epsilon_sd(v), served.epsilon_err(v), served.sd_calibrated(v)
+    assert (~cal).any() and cal.any()
+    assert np.array_equal(sd[~cal], err[~cal])
+    assert np.all(sd[cal] < err[cal])

@@ -1,0 +1,59 @@
+"""The residual route at the disk laws' failing collision points (issue 65, item 2): the stored
+points (``tests/data/residual_slow_points.json``, written by ``tools/residual_slow_points.py``;
+provenance in the file) against the shipped laws and the finite elements, and one of them
+computed again."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from restitution.laws.law_load import law
+from restitution.limits.residual_point import residual_point
+
+DOC = json.loads((Path(__file__).parent / "data" / "residual_slow_points.json").read_text())
+
+
+def _shipped_record(nu: float, v: float) -> dict:
+    """The shipped law's point at ``v``, or the one a rerouting replaced there."""
+    meta = law(nu).metadata
+    for change in (meta.get("rerouted") or {}).get("points", []):
+        if change["v"] == v:
+            return change["from"]
+    (p,) = [p for p in meta["points"] if p["v"] == v and p.get("route") != "quasistatic"]
+    return p
+
+
+def test_the_stored_points_are_the_failing_points_of_the_shipped_laws():
+    assert len(DOC["points"]) == 37
+    for p in DOC["points"]:
+        shipped = _shipped_record(p["nu"], p["v"])
+        assert shipped["status"] == p["shipped"]["status"] == "not-asymptotic"
+        assert shipped["epsilon"] == p["shipped"]["epsilon"]
+    assert sum(p["status"] == "ok" for p in DOC["points"]) == 26
+
+
+def test_where_they_pass_they_lie_within_half_a_combined_error_of_the_finite_elements():
+    """Five of the six finite-element points (docs/numerics.md; the sixth, nu = 0.33 at 2e-4, is
+    flagged by both methods): within 0.36 combined errors, where the shipped points lie up to
+    1.55 from them."""
+    fem = [p for p in DOC["points"] if p["fem"] is not None]
+    assert len(fem) == 6
+    for p in fem:
+        f = p["fem"]
+        sigma = (p["epsilon"] - f["epsilon"]) / math.hypot(p["epsilon_err"], f["epsilon_err"])
+        assert sigma == pytest.approx(f["sigma_residual"], rel=1e-12)
+        assert abs(sigma) <= 0.5 or p["status"] != "ok", (p["nu"], p["v"])
+    assert max(abs(p["fem"]["sigma_shipped"]) for p in fem) > 1.5
+
+
+def test_the_cheapest_stored_point_is_what_the_route_computes_today():
+    """``nu = 0.33``, ``v = 0.0137`` (about 5 s): the same value and error."""
+    (stored,) = [p for p in DOC["points"] if p["nu"] == 0.33 and p["v"] == 0.0137]
+    again = residual_point("disk", 0.33, 0.0137)
+    assert again.epsilon == pytest.approx(stored["epsilon"], rel=0, abs=1e-10)
+    assert again.epsilon_err == pytest.approx(stored["epsilon_err"], rel=1e-6)
+    assert again.asymptotic_ok == stored["asymptotic_ok"]
