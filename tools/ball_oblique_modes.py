@@ -81,8 +81,17 @@ def main() -> None:
         rows.append(row)
     data = {
         "what": __doc__.splitlines()[0],
-        "settings": {"nu": NU, "speed_m_s": SPEED_M_S, "c_m_s": C_M_S, "v": v, "alpha": alpha,
-                     "mu": MU, "chi": chi, "modes": list(MODES), "rtol": 1e-10},  # fmt: skip
+        "settings": {
+            "nu": NU,
+            "speed_m_s": SPEED_M_S,
+            "c_m_s": C_M_S,
+            "v": v,
+            "alpha": alpha,
+            "mu": MU,
+            "chi": chi,
+            "modes": list(MODES),
+            "rtol": 1e-10,
+        },  # fmt: skip
         "rows": rows,
         "code_version": code_version("sphere"),
         "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
