@@ -103,7 +103,8 @@ def test_steel_ball_at_1_m_s_30_degrees_mu_0_3_in_one_command(cli):
     """The issue's case: one command, beta, epsilon_normal, spin, with errors and statuses, and
     no warnings of the hard wall's trial steps (40 and 20 modes; 62-75 s measured, 2 Dec 2026:
     epsilon_normal 0.99738 +- 0.0031, beta 0.179 +- 0.054, spin 97.2 +- 4.4 rad/s, energy
-    balance 3.6e-12, 17 phases)."""
+    balance 3.6e-12, 17 phases; with the quasistatic limit's distance in beta's error, 0.17855 +-
+    0.088 against Hertz-Mindlin's 0.10838, 58 s, the same day)."""
     code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
                          "0.3", "--radius", "0.005", "--format", "json")  # fmt: skip
     assert code == 0, err
@@ -125,6 +126,10 @@ def test_steel_ball_at_1_m_s_30_degrees_mu_0_3_in_one_command(cli):
     # in epsilon_normal's error.
     assert p["head_on_law_status"] and 0.999 < p["epsilon_head_on_law"] < 1.0
     assert p["epsilon_normal_error"] >= abs(p["epsilon_normal"] - p["epsilon_head_on_law"])
+    # Hertz-Mindlin's quasistatic beta (law (a), this route's low-speed limit) beside it and in
+    # beta's error; law (b), with microslip, beside it.
+    assert p["beta_error"] >= abs(p["beta"] - p["beta_quasistatic"])
+    assert p["beta_microslip"] > p["beta_quasistatic"]
 
 
 def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
@@ -134,6 +139,7 @@ def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
     code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
                          "0.3", "--radius", "0.005")  # fmt: skip
     assert code == 0 and "beta" in out and "+-" in out and "rad/s" in out, err
+    assert "quasistatic Hertz-Mindlin at this impact: beta = 0.10838" in out
     assert "warning" not in err.lower()
     code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
                          "0.3", "--format", "csv")  # fmt: skip
@@ -141,6 +147,40 @@ def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
     (row,) = csv.DictReader(io.StringIO(out))
     assert row["modes"] == "4" and float(row["beta_error"]) > 0.0
     assert row["status"] == "computed-not-asymptotic" and math.isfinite(float(row["beta"]))
+    assert float(row["beta_quasistatic"]) == pytest.approx(0.1083827, abs=1e-7)
+
+
+def test_the_ball_carries_its_quasistatic_limit_and_beta_s_error_holds_it():
+    """The sphere's kind names Hertz-Mindlin (``BodyKind.oblique_quasistatic``): each point
+    carries its ``beta`` without microslip (the modal route's low-speed limit, law (a)) and with
+    it (law (b)), and ``beta_error`` is the change from half the modes and the distance from
+    law (a) in quadrature. Checked against closed forms: frictionless, both are the smooth
+    ``-1``; in gross sliding (80 degrees, ``mu = 0.1``) both are the rigid impulse ratio with
+    ``e = 1``, ``-1 + (7/2) mu 2 / tan(theta)`` = -0.8765711 (law (a) to 8e-15, law (b) 5.5e-9:
+    its spring discretisation). At 30 degrees, ``mu = 0.3`` (``psi = 1.585``): law (a) 0.10838,
+    law (b) 0.31605 (this package's quasistatic route, regression values); 4 and 2 modes about
+    3 s each. The disk has no such theory: its points carry ``None`` and its error is the
+    change alone."""
+    smooth = _ball(30.0, 0.0, modes=4)
+    assert smooth.beta_quasistatic == -1.0 and smooth.beta_microslip == -1.0
+    tan80 = math.tan(math.radians(80.0))
+    ratio = -1.0 + K_SPHERE * 0.1 * 2.0 / tan80
+    sliding = _ball(80.0, 0.1, modes=4)
+    assert sliding.beta_quasistatic == pytest.approx(ratio, abs=1e-12)
+    assert sliding.beta_microslip == pytest.approx(ratio, abs=1e-7)
+    p = _ball(30.0, 0.3, modes=4)
+    assert p.beta_microslip - p.beta_quasistatic > 0.1  # microslip reverses more (docs table)
+    coarse = _ball(30.0, 0.3, modes=2)
+    change = abs(p.beta - coarse.beta)
+    assert p.beta_error == pytest.approx(math.hypot(change, p.beta - p.beta_quasistatic))
+    assert p.beta_error >= abs(p.beta - p.beta_quasistatic) and p.beta_error >= change
+    disk = dict(STEEL_BALL, shape="cylinder")
+    r = request(**disk, speeds=(1.0,), angle=30.0, friction=0.3, radius=0.005)
+    (q,) = oblique_answer(r, modes=8).points
+    assert q.beta_quasistatic is None and q.beta_microslip is None
+    assert q.beta_error == pytest.approx(
+        abs(q.beta - oblique_answer(r, modes=4).points[0].beta), abs=1e-15
+    )
 
 
 def test_the_ball_without_friction_is_refused_in_one_line(cli):

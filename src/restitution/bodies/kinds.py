@@ -247,6 +247,12 @@ class BodyKind:
         The modes of ``law --angle``'s answer (:func:`restitution.laws.oblique.oblique_answer`),
         its error the change from half as many; ``None``: :attr:`oblique_modes` (the disk: 160
         and 80; the sphere: 40 and 20, which the hard walls of real grains afford).
+    oblique_quasistatic : str or None
+        Name of the quasistatic oblique theory that is this kind's modal oblique route's limit
+        at low speed (one stick/slip state for the contact; the names are
+        :data:`restitution.laws.oblique.QUASISTATIC`'s keys: the sphere's ``"hertz-mindlin"``),
+        served beside ``law --angle``'s ``beta``; ``None``: none is clean (the disk, whose
+        tangential compliance has no Mindlin constant, docs/oblique.md).
     """
 
     geometry: str
@@ -286,6 +292,7 @@ class BodyKind:
     oblique_modes: int = 160
     oblique_law: str | None = None
     oblique_law_modes: int | None = None
+    oblique_quasistatic: str | None = None
 
     @property
     def name(self) -> str:

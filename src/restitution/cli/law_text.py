@@ -226,7 +226,8 @@ def oblique_lines(a) -> list[str]:
         r.grain.describe(),
         f"oblique impact on the rigid wall: {r.angle:g} degrees from the normal, friction mu = "
         f"{r.friction:g}; each speed is the normal one (tangential: w tan(angle)), no spin "
-        "before; modal oblique route (docs/oblique.md), +- the change from half the modes",
+        "before; modal oblique route (docs/oblique.md), +- the change from half the modes (with "
+        "the distance from the limits shown below each row, where shown)",
     ]
     spin_unit = "rad/s" if r.radius is not None else "m/s (omega R; --radius gives rad/s)"
     lines.append(
@@ -249,6 +250,12 @@ def oblique_lines(a) -> list[str]:
                 f"{'':>9} head-on law at this speed (N, alpha -> infinity): epsilon = "
                 f"{p.epsilon_head_on_law:.6f} +- {p.epsilon_head_on_law_error:.2g} "
                 f"({p.head_on_law_status}): read epsilon_normal against it"
+            )
+        if p.beta_quasistatic is not None:
+            lines.append(
+                f"{'':>9} quasistatic Hertz-Mindlin at this impact: beta = "
+                f"{p.beta_quasistatic:.5f} with one stick/slip state (this route's low-speed "
+                f"limit, in beta's error), {p.beta_microslip:.5f} with microslip"
             )
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)

@@ -21,6 +21,17 @@ point's status is at best
 holds its distance from the head-on law at the speed (:func:`_normal_error`): one mode count on
 one wall is ten times further from the head-on limit than from half its modes.
 
+Where the kind names its quasistatic oblique theory (:attr:`~restitution.bodies.kinds.BodyKind.
+oblique_quasistatic`, the sphere's Hertz-Mindlin, :data:`QUASISTATIC`), each point also carries
+that theory's ``beta`` at its speeds: ``beta_quasistatic`` without microslip (one stick/slip state
+for the contact, Maw, Barber and Fawcett's law (a): the modal model's own limit at low speed) and
+``beta_microslip`` with Mindlin's microslip (law (b), what a continuum's local friction gives);
+``beta``'s error then also holds, in quadrature, the distance from ``beta_quasistatic``, as
+``epsilon_normal``'s holds the head-on law's: one doubling of the modes understates how far 40
+modes are from that limit (the ball at 1 m/s: within one such change at 1 of 5 angles,
+docs/oblique.md). Above the quasistatic regime the distance also holds the impact's dynamics: an
+upper estimate there.
+
 A kind without an oblique route, or one whose kind says why ``law`` does not serve it
 (:attr:`~restitution.bodies.kinds.BodyKind.oblique_law`), is refused where the request is built
 (:mod:`restitution.laws.request_checks`); nothing here names a kind.
@@ -38,9 +49,19 @@ from restitution.bodies.kinds import body_kind
 from restitution.dynamics.oblique import oblique_collision
 from restitution.dynamics.oblique_cost import check_reach, oblique_work, suspect_advice
 from restitution.laws.units import BODIES
+from restitution.quasistatic.oblique import MODELS as QUASISTATIC_MODELS
+from restitution.quasistatic.oblique import oblique_impact as quasistatic_impact
 from restitution.status import Status
 
-__all__ = ["LARGE_SPEED", "MODES", "ObliqueAnswer", "ObliquePoint", "law_modes", "oblique_answer"]
+__all__ = [
+    "LARGE_SPEED",
+    "MODES",
+    "QUASISTATIC",
+    "ObliqueAnswer",
+    "ObliquePoint",
+    "law_modes",
+    "oblique_answer",
+]
 
 MODES = 160
 """The disk's symmetric modes of each oblique point (the rim holds about twice as many), as
@@ -89,6 +110,10 @@ class ObliquePoint:
     status, advice : Status, str
     wall_time_s : float
         Both runs, s.
+    beta_quasistatic, beta_microslip : float or None
+        The kind's quasistatic oblique theory at this impact (module docs): without microslip
+        (the modal model's low-speed limit, in ``beta_error``) and with it; ``None`` where the
+        kind has none, or at angle 0.
     """
 
     speed_m_s: float
@@ -114,6 +139,8 @@ class ObliquePoint:
     status: Status
     advice: str
     wall_time_s: float
+    beta_quasistatic: float | None = None
+    beta_microslip: float | None = None
 
     @property
     def epsilon(self) -> float:
@@ -242,8 +269,44 @@ def oblique_answer(
         # oblique_collision; the accepted run balances its energy to ~1e-11 (energy_balance).
         runs = {n: oblique_collision(b, v, v * tan, r.friction, alpha) for n, b in bodies.items()}
         wall = time.perf_counter() - start
-        points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point))
+        limits = _quasistatic_betas(kind, v, v * tan, r.friction, nu)
+        points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits))
     return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))
+
+
+def _hertz_mindlin(v: float, v_tangential: float, mu: float, nu: float) -> tuple[float, float]:
+    """``beta`` of Hertz-Mindlin's quasistatic oblique impact of the solid sphere on the rigid
+    wall (:func:`restitution.quasistatic.oblique.oblique_impact`, ``K = 7/2``), without and with
+    microslip: about 0.01 s and 0.13 s."""
+    return tuple(
+        float(quasistatic_impact(v, v_tangential, mu, nu, model=model).beta)
+        for model in QUASISTATIC_MODELS
+    )
+
+
+QUASISTATIC: dict[str, Callable[[float, float, float, float], tuple[float, float]]] = {
+    "hertz-mindlin": _hertz_mindlin,
+}
+"""A kind's quasistatic oblique theory by its name (:attr:`~restitution.bodies.kinds.BodyKind.
+oblique_quasistatic`): ``(v, v_tangential, mu, nu) -> (beta without, beta with microslip)``,
+speeds in the kind's ``c``."""
+
+
+def _quasistatic_betas(kind, v: float, v_tangential: float, mu: float, nu: float):
+    """The kind's quasistatic ``beta`` pair at this impact, or ``(None, None)``: no theory, or
+    no tangential motion (angle 0)."""
+    if kind.oblique_quasistatic is None or v_tangential == 0.0:
+        return None, None
+    return QUASISTATIC[kind.oblique_quasistatic](v, v_tangential, mu, nu)
+
+
+def _beta_error(fine, coarse, quasistatic: float | None) -> float | None:
+    """The change of ``beta`` from half the modes and, where the kind has a quasistatic limit,
+    the distance from it, in quadrature (module docs)."""
+    if math.isnan(fine.beta):
+        return None
+    change = abs(fine.beta - coarse.beta)
+    return change if quasistatic is None else math.hypot(change, fine.beta - quasistatic)
 
 
 def _normal_error(fine, coarse, law_point) -> float:
@@ -263,7 +326,7 @@ def _normal_error(fine, coarse, law_point) -> float:
     return math.sqrt(change**2 + gap**2 + float(law_point.epsilon_err or 0.0) ** 2)
 
 
-def _point(r, grain, w, v, alpha, runs, modes, wall, law_point) -> ObliquePoint:
+def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits) -> ObliquePoint:
     fine, coarse = runs[modes], runs[modes // 2]
     c = grain.c_m_s
     spin, spin_err = fine.spin * c, abs(fine.spin - coarse.spin) * c
@@ -284,7 +347,7 @@ def _point(r, grain, w, v, alpha, runs, modes, wall, law_point) -> ObliquePoint:
         epsilon_normal=fine.epsilon_normal,
         epsilon_normal_error=_normal_error(fine, coarse, law_point),
         beta=beta,
-        beta_error=None if beta is None else abs(fine.beta - coarse.beta),
+        beta_error=_beta_error(fine, coarse, limits[0]),
         spin_R_m_s=spin,
         spin_R_m_s_error=spin_err,
         spin_rad_s=None if rad is None else spin * rad,
@@ -299,4 +362,6 @@ def _point(r, grain, w, v, alpha, runs, modes, wall, law_point) -> ObliquePoint:
         status=status,
         advice=advice,
         wall_time_s=wall,
+        beta_quasistatic=limits[0],
+        beta_microslip=limits[1],
     )

@@ -160,6 +160,9 @@ KIND = register(
         # from 10 to 20 modes and by 0.054 from 20 to 40, so 20 with the error from 10 would
         # understate it: 40 modes, the error from 20, about 50 s a speed (docs/oblique.md).
         oblique_law_modes=40,
+        # Its low-speed limit: Hertz-Mindlin without microslip (Maw, Barber and Fawcett's law
+        # (a), quasistatic/oblique.py), which 10-40 modes approach (docs/oblique.md).
+        oblique_quasistatic="hertz-mindlin",
     )
 )
 """The elastic sphere (docs/spheres.md)."""
