@@ -1,0 +1,128 @@
+"""Stored finite-element oblique impacts of the disk, beside the modal route's (issue 63).
+
+Units: ``E = rho = R = 1`` (the disk's two-dimensional constants); speeds in ``c``.
+
+Command line (writes the JSON with its provenance: settings, the FEM code version, the modal
+solver's code version, the date and the wall times):
+
+    python -m restitution.fem.oblique_reference OUT.json
+
+The study: one speed and wall (``v = 0.05``, ``alpha = 40 / delta_max(v)``, the softest wall of
+the head-on judge), ``nu = 0.33``, ``mu = 0.5`` at ``tan(theta) / mu = 0.5, 1, 2, 3, 6`` (the
+last in gross slip) and ``mu = 0.1`` at 80 degrees; the finite elements on mesh levels 0, 1, 2
+at ``kappa = 16, 64`` (and the convergence in ``kappa`` and in the step at level 0, 45
+degrees, ``mu = 0.5``), the modal
+route (:func:`restitution.dynamics.oblique.oblique_collision`, the exact switch) at 40, 80 and
+160 modes.
+"""
+
+from __future__ import annotations
+
+import datetime
+import json
+import math
+import sys
+import time
+
+from restitution.bodies.disk.contact import max_compression_estimate
+from restitution.fem.oblique_impact import fem_oblique_collide
+from restitution.provenance import FEM_MODULES, code_version, source_digest
+
+__all__ = ["CASES", "compute", "fem_oblique_code_version"]
+
+NU = 0.33
+V = 0.05
+ALPHA_PRODUCT = 40.0
+CASES: tuple[tuple[float, float], ...] = (
+    (0.5, 0.5),
+    (0.5, 1.0),
+    (0.5, 2.0),
+    (0.5, 3.0),
+    (0.5, 6.0),
+    (0.1, math.tan(math.radians(80.0)) / 0.1),
+)
+"""``(mu, tan(theta) / mu)`` of the study."""
+LEVELS = (0, 1, 2)
+KAPPAS = (16.0, 64.0)
+KAPPA_STUDY = (1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0)
+MODES = (40, 80, 160)
+
+
+def fem_oblique_code_version() -> str:
+    """The FEM code version of the oblique judge: the head-on FEM modules and the two oblique
+    ones."""
+    modules = FEM_MODULES + ("restitution.fem.whole_disk", "restitution.fem.oblique_impact")
+    return source_digest(modules, "fem-oblique.")
+
+
+def _modal(mu: float, tan: float, alpha: float, modes: int) -> dict:
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.kinds import body_kind
+    from restitution.dynamics.oblique import oblique_collision
+
+    body = body_kind("disk").oblique_body(get_modes(NU, count=modes, use_cache=False))
+    start = time.perf_counter()
+    out = oblique_collision(body, V, V * tan, mu, alpha)
+    return {
+        "modes": modes,
+        "epsilon_normal": out.epsilon_normal,
+        "beta": out.beta,
+        "spin": out.spin,
+        "friction_work": out.friction_work,
+        "vibration_energy": out.vibration_energy,
+        "energy_balance": out.energy_balance,
+        "phases": len(out.phases),
+        "wall_time_s": time.perf_counter() - start,
+    }
+
+
+def _fem(mu: float, tan: float, alpha: float, **settings) -> dict:
+    out = fem_oblique_collide(NU, V, V * tan, mu, alpha, **settings).to_dict()
+    out["step_safety"] = settings.get("step_safety", 0.9)
+    return out
+
+
+def compute(path: str) -> dict:
+    """Run the study and write it to ``path`` (JSON); returns the dictionary."""
+    start = time.perf_counter()
+    alpha = ALPHA_PRODUCT / max_compression_estimate(V)
+    data = {
+        "what": "oblique impact of the disk on the exponential wall with Coulomb friction: "
+        "finite elements (whole disk, point-wise friction) against the modal route",
+        "units": "E = rho = R = 1 (2D constants); speeds c; energies in E0",
+        "nu": NU,
+        "v_normal": V,
+        "alpha": alpha,
+        "alpha_product": ALPHA_PRODUCT,
+        "fem_code_version": fem_oblique_code_version(),
+        "modal_code_version": code_version("disk"),
+        "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+        "command": "python -m restitution.fem.oblique_reference " + path,
+        "frictionless_45": _fem(0.0, 1.0, alpha),
+        "kappa_study": [_fem(0.5, 1.0, alpha, kappa=k) for k in KAPPA_STUDY],
+        "step_study": [_fem(0.5, 1.0, alpha, kappa=4.0, step_safety=s) for s in (0.9, 0.45, 0.225)],
+        "cases": [],
+    }
+    _write(path, data)
+    for mu, tan in CASES:
+        case = {"mu": mu, "tan_over_mu": tan, "angle_deg": math.degrees(math.atan(mu * tan))}
+        case["fem"] = [
+            _fem(mu, mu * tan, alpha, level=lv, kappa=k) for lv in LEVELS for k in KAPPAS
+        ]
+        case["modal"] = [_modal(mu, mu * tan, alpha, n) for n in MODES]
+        data["cases"].append(case)
+        data["wall_time_s"] = time.perf_counter() - start
+        _write(path, data)
+    return data
+
+
+def _write(path: str, data: dict) -> None:
+    with open(path, "w") as fh:
+        json.dump(data, fh, indent=1)
+        fh.write("\n")
+
+
+if __name__ == "__main__":  # pragma: no cover
+    if len(sys.argv) != 2:
+        raise SystemExit("usage: python -m restitution.fem.oblique_reference OUT.json")
+    compute(sys.argv[1])
