@@ -73,7 +73,7 @@ from restitution.fem.elasticity import as_material
 from restitution.fem.graded import graded_settings
 from restitution.fem.impact import CONTACT_TOL, FemCollisionError, pressure_estimate
 from restitution.fem.section import contact_time
-from restitution.fem.whole_disk import WholeDisk, whole_disk_model
+from restitution.fem.whole_disk import PLANAR_GEOMETRY, WholeDisk, whole_disk_model
 
 __all__ = ["FemObliqueSettings", "FemOblique", "fem_oblique_collide", "oblique_model_for"]
 
@@ -332,7 +332,7 @@ def _run(model: WholeDisk, v: float, v_t: float, mu: float, alpha: float, dt: fl
                 e_rot=e_rot,
                 e_vib=e_vib,
                 work=-work,
-                wall=V,
+                wall_energy=V,
                 balance=1.0 - (e_trans + e_rot + e_vib - work + V) / e0,
                 dt=dt,
             )
@@ -381,7 +381,7 @@ def fem_oblique_collide(
     s = settings or FemObliqueSettings()
     if overrides:
         s = replace(s, **overrides)
-    material = as_material(material_or_nu, "disk")
+    material = as_material(material_or_nu, PLANAR_GEOMETRY)
     v, v_t, mu, alpha = float(v_normal), float(v_tangential), float(mu), float(alpha)
     if not 0.0 < v < 1.0:
         raise InputError(f"the normal speed must lie in (0, 1) in units of c, got {v}")
@@ -429,7 +429,7 @@ def fem_oblique_collide(
         rotation_energy=run["e_rot"] / e0,
         vibration_energy=run["e_vib"] / e0,
         friction_work=run["work"] / e0,
-        wall_energy=run["wall"] / e0,
+        wall_energy=run["wall_energy"] / e0,
         energy_balance=run["balance"],
         energy_error=run["drift"],
         max_rotation=run["max_rotation"],

@@ -11,9 +11,11 @@ The study: one speed and wall (``v = 0.05``, ``alpha = 40 / delta_max(v)``, the 
 the head-on judge), ``nu = 0.33``, ``mu = 0.5`` at ``tan(theta) / mu = 0.5, 1, 2, 3, 6`` (the
 last in gross slip) and ``mu = 0.1`` at 80 degrees; the finite elements on mesh levels 0, 1, 2
 at ``kappa = 16, 64`` (and the convergence in ``kappa`` and in the step at level 0, 45
-degrees, ``mu = 0.5``), the modal
-route (:func:`restitution.dynamics.oblique.oblique_collision`, the exact switch) at 40, 80 and
-160 modes.
+degrees, ``mu = 0.5``), the modal route (:func:`restitution.dynamics.oblique.oblique_collision`,
+the exact switch) at 40, 80 and 160 modes. The same at low speed, ``v = 0.005``: gross sliding
+(``mu = 0.1``, 80 degrees) on ``alpha = 500``, and ``mu = 0.5`` at ``tan(theta) / mu = 0.3, 0.6,
+2, 3, 6`` on ``alpha = 2000`` (the wall of docs/oblique.md's table against Maw, Barber and
+Fawcett).
 """
 
 from __future__ import annotations
@@ -26,9 +28,10 @@ import time
 
 from restitution.bodies.disk.contact import max_compression_estimate
 from restitution.fem.oblique_impact import fem_oblique_collide
+from restitution.fem.whole_disk import PLANAR_GEOMETRY
 from restitution.provenance import FEM_MODULES, code_version, source_digest
 
-__all__ = ["CASES", "compute", "fem_oblique_code_version"]
+__all__ = ["CASES", "LOW_SPEED", "LOW_SPEED_CASES", "compute", "fem_oblique_code_version"]
 
 NU = 0.33
 V = 0.05
@@ -41,7 +44,19 @@ CASES: tuple[tuple[float, float], ...] = (
     (0.5, 6.0),
     (0.1, math.tan(math.radians(80.0)) / 0.1),
 )
-"""``(mu, tan(theta) / mu)`` of the study."""
+"""``(mu, tan(theta) / mu)`` of the study at ``V``."""
+LOW_SPEED = (0.005, 2000.0)
+"""``(v, alpha)`` of the low-speed study: the wall of docs/oblique.md's table against Maw,
+Barber and Fawcett (its rows ``tan(theta) / mu = 0.3, 0.6, 2, 3, 6`` at ``mu = 0.5``)."""
+LOW_SPEED_CASES: tuple[tuple[float, float], ...] = (
+    (0.5, 0.3),
+    (0.5, 0.6),
+    (0.5, 2.0),
+    (0.5, 3.0),
+    (0.5, 6.0),
+)
+GROSS_SLIDING_LOW = (0.005, 500.0, 0.1, math.tan(math.radians(80.0)) / 0.1)
+"""``(v, alpha, mu, tan(theta) / mu)``: the modal route's gross-sliding check."""
 LEVELS = (0, 1, 2)
 KAPPAS = (16.0, 64.0)
 KAPPA_STUDY = (1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0)
@@ -55,14 +70,14 @@ def fem_oblique_code_version() -> str:
     return source_digest(modules, "fem-oblique.")
 
 
-def _modal(mu: float, tan: float, alpha: float, modes: int) -> dict:
+def _modal(v: float, mu: float, tan: float, alpha: float, modes: int) -> dict:
     from restitution.bodies.cache import get_modes
     from restitution.bodies.kinds import body_kind
     from restitution.dynamics.oblique import oblique_collision
 
-    body = body_kind("disk").oblique_body(get_modes(NU, count=modes, use_cache=False))
+    body = body_kind(PLANAR_GEOMETRY).oblique_body(get_modes(NU, count=modes, use_cache=False))
     start = time.perf_counter()
-    out = oblique_collision(body, V, V * tan, mu, alpha)
+    out = oblique_collision(body, v, v * tan, mu, alpha)
     return {
         "modes": modes,
         "epsilon_normal": out.epsilon_normal,
@@ -76,14 +91,34 @@ def _modal(mu: float, tan: float, alpha: float, modes: int) -> dict:
     }
 
 
-def _fem(mu: float, tan: float, alpha: float, **settings) -> dict:
-    out = fem_oblique_collide(NU, V, V * tan, mu, alpha, **settings).to_dict()
+def _fem(v: float, mu: float, tan: float, alpha: float, **settings) -> dict:
+    out = fem_oblique_collide(NU, v, v * tan, mu, alpha, **settings).to_dict()
     out["step_safety"] = settings.get("step_safety", 0.9)
     return out
 
 
+def _study(v: float, alpha: float, cases, on_case) -> list[dict]:
+    """FEM (every level and ``kappa``) and modal runs (every mode count) of ``cases``."""
+    rows = []
+    for mu, tan in cases:
+        case = {
+            "v_normal": v,
+            "alpha": alpha,
+            "mu": mu,
+            "tan_over_mu": tan,
+            "angle_deg": math.degrees(math.atan(mu * tan)),
+        }
+        case["fem"] = [
+            _fem(v, mu, mu * tan, alpha, level=lv, kappa=k) for lv in LEVELS for k in KAPPAS
+        ]
+        case["modal"] = [_modal(v, mu, mu * tan, alpha, n) for n in MODES]
+        rows.append(case)
+        on_case(rows)
+    return rows
+
+
 def compute(path: str) -> dict:
-    """Run the study and write it to ``path`` (JSON); returns the dictionary."""
+    """Run the studies and write them to ``path`` (JSON, after every case); returns them."""
     start = time.perf_counter()
     alpha = ALPHA_PRODUCT / max_compression_estimate(V)
     data = {
@@ -95,24 +130,30 @@ def compute(path: str) -> dict:
         "alpha": alpha,
         "alpha_product": ALPHA_PRODUCT,
         "fem_code_version": fem_oblique_code_version(),
-        "modal_code_version": code_version("disk"),
+        "modal_code_version": code_version(PLANAR_GEOMETRY),
+        "modal_settings": "oblique_collision, exact stick/slip switch, rtol 1e-10, the N "
+        "lowest symmetric modes and their rim partners (rim_modes)",
         "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
         "command": "python -m restitution.fem.oblique_reference " + path,
-        "frictionless_45": _fem(0.0, 1.0, alpha),
-        "kappa_study": [_fem(0.5, 1.0, alpha, kappa=k) for k in KAPPA_STUDY],
-        "step_study": [_fem(0.5, 1.0, alpha, kappa=4.0, step_safety=s) for s in (0.9, 0.45, 0.225)],
-        "cases": [],
+        "frictionless_45": _fem(V, 0.0, 1.0, alpha),
+        "kappa_study": [_fem(V, 0.5, 1.0, alpha, kappa=k) for k in KAPPA_STUDY],
+        "step_study": [
+            _fem(V, 0.5, 1.0, alpha, kappa=4.0, step_safety=s) for s in (0.9, 0.45, 0.225)
+        ],
     }
-    _write(path, data)
-    for mu, tan in CASES:
-        case = {"mu": mu, "tan_over_mu": tan, "angle_deg": math.degrees(math.atan(mu * tan))}
-        case["fem"] = [
-            _fem(mu, mu * tan, alpha, level=lv, kappa=k) for lv in LEVELS for k in KAPPAS
-        ]
-        case["modal"] = [_modal(mu, mu * tan, alpha, n) for n in MODES]
-        data["cases"].append(case)
-        data["wall_time_s"] = time.perf_counter() - start
-        _write(path, data)
+
+    def save(key):
+        def on_case(rows):
+            data[key] = rows
+            data["wall_time_s"] = time.perf_counter() - start
+            _write(path, data)
+
+        return on_case
+
+    _study(V, alpha, CASES, save("cases"))
+    v, alpha_low, mu, tan = GROSS_SLIDING_LOW
+    _study(v, alpha_low, ((mu, tan),), save("gross_sliding_low_speed"))
+    _study(*LOW_SPEED, LOW_SPEED_CASES, save("low_speed_cases"))
     return data
 
 

@@ -36,8 +36,19 @@ from restitution.errors import InputError
 from restitution.fem.elasticity import HalfDisk, assemble_half_disk
 from restitution.fem.mesh import ARC, DIAMETER, graded_half_disk
 from restitution.fem.model import _largest_eigenvalue
+from restitution.fem.section import fem_geometries, section
 
-__all__ = ["RimQuadrature", "WholeDisk", "mirrored_disk", "rim_quadrature", "whole_disk_model"]
+__all__ = [
+    "PLANAR_GEOMETRY",
+    "RimQuadrature",
+    "WholeDisk",
+    "mirrored_disk",
+    "rim_quadrature",
+    "whole_disk_model",
+]
+
+PLANAR_GEOMETRY: str = next(g for g in fem_geometries() if not section(g).axisymmetric)
+"""The body kind the whole-disk mesh stands for: the FEM route's planar ball (the disk)."""
 
 _ON_DIAMETER = 1e-12
 
@@ -278,7 +289,7 @@ def whole_disk_model(
         refine, contact_angle, h_contact=h_contact, h_far=h_far, grading=grading
     )
     mesh = mirrored_disk(half)
-    disk = assemble_half_disk(mesh, material, "P2+lumped", "disk")
+    disk = assemble_half_disk(mesh, material, "P2+lumped", PLANAR_GEOMETRY)
     if disk.free.size != disk.basis.N:
         raise InputError("the whole disk lost degrees of freedom to a roller; check the mesh")
     quad = rim_quadrature(disk, n_gauss, phi_max)
