@@ -3,9 +3,11 @@
 Units: ``E = rho = R = 1`` (the disk's two-dimensional constants); speeds in ``c``.
 
 Command line (writes the JSON with its provenance: settings, the FEM code version, the modal
-solver's code version, the date and the wall times):
+solver's code version, the date and the wall times; ``--add-kappa`` adds the low-speed
+convergence in ``kappa`` to an existing file):
 
     python -m restitution.fem.oblique_reference OUT.json
+    python -m restitution.fem.oblique_reference OUT.json --add-kappa
 
 The study: one speed and wall (``v = 0.05``, ``alpha = 40 / delta_max(v)``, the softest wall of
 the head-on judge), ``nu = 0.33``, ``mu = 0.5`` at ``tan(theta) / mu = 0.5, 1, 2, 3, 6`` (the
@@ -31,7 +33,14 @@ from restitution.fem.oblique_impact import fem_oblique_collide
 from restitution.fem.whole_disk import PLANAR_GEOMETRY
 from restitution.provenance import FEM_MODULES, code_version, source_digest
 
-__all__ = ["CASES", "LOW_SPEED", "LOW_SPEED_CASES", "compute", "fem_oblique_code_version"]
+__all__ = [
+    "CASES",
+    "LOW_SPEED",
+    "LOW_SPEED_CASES",
+    "add_low_speed_kappa_study",
+    "compute",
+    "fem_oblique_code_version",
+]
 
 NU = 0.33
 V = 0.05
@@ -157,6 +166,30 @@ def compute(path: str) -> dict:
     return data
 
 
+LOW_SPEED_KAPPAS = (16.0, 64.0, 256.0, 1024.0)
+"""``kappa`` of the low-speed convergence study (level 0, ``tan(theta) / mu = 0.3`` and 2)."""
+
+
+def add_low_speed_kappa_study(path: str) -> dict:
+    """Add ``low_speed_kappa_study`` (level 0, :data:`LOW_SPEED_KAPPAS`, ``mu = 0.5``,
+    ``tan(theta) / mu = 0.3`` and 2 at :data:`LOW_SPEED`) to the study in ``path``, with its own
+    date, code version and wall time."""
+    with open(path) as fh:
+        data = json.load(fh)
+    start = time.perf_counter()
+    v, alpha = LOW_SPEED
+    rows = [_fem(v, 0.5, 0.5 * tan, alpha, kappa=k) for tan in (0.3, 2.0) for k in LOW_SPEED_KAPPAS]
+    data["low_speed_kappa_study"] = {
+        "runs": rows,
+        "fem_code_version": fem_oblique_code_version(),
+        "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+        "command": f"python -m restitution.fem.oblique_reference {path} --add-kappa",
+        "wall_time_s": time.perf_counter() - start,
+    }
+    _write(path, data)
+    return data
+
+
 def _write(path: str, data: dict) -> None:
     with open(path, "w") as fh:
         json.dump(data, fh, indent=1)
@@ -164,6 +197,11 @@ def _write(path: str, data: dict) -> None:
 
 
 if __name__ == "__main__":  # pragma: no cover
-    if len(sys.argv) != 2:
-        raise SystemExit("usage: python -m restitution.fem.oblique_reference OUT.json")
-    compute(sys.argv[1])
+    if len(sys.argv) == 3 and sys.argv[2] == "--add-kappa":
+        add_low_speed_kappa_study(sys.argv[1])
+    elif len(sys.argv) == 2:
+        compute(sys.argv[1])
+    else:
+        raise SystemExit(
+            "usage: python -m restitution.fem.oblique_reference OUT.json [--add-kappa]"
+        )
