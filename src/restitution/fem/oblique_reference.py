@@ -140,6 +140,7 @@ def compute(path: str) -> dict:
         "alpha_product": ALPHA_PRODUCT,
         "fem_code_version": fem_oblique_code_version(),
         "modal_code_version": code_version(PLANAR_GEOMETRY),
+        "fem_settings": FEM_SETTINGS,
         "modal_settings": "oblique_collision, exact stick/slip switch, rtol 1e-10, the N "
         "lowest symmetric modes and their rim partners (rim_modes)",
         "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
@@ -166,6 +167,13 @@ def compute(path: str) -> dict:
     return data
 
 
+FEM_SETTINGS = (
+    "FemObliqueSettings defaults but level and kappa: the head-on judge's graded_settings(v, "
+    "alpha, level) (ContactGrading defaults: contact_fraction 0.4, grading 0.5, h_far 0.4) "
+    "mirrored, the fine arc widened by min(v_t, 4 mu v) times the contact time (at most 0.5 "
+    "rad), 8 Gauss points per rim facet, rim |phi| <= pi/2, step_safety 0.9 (unless stated), "
+    "energy_tol 1e-5, nu = 0.33 (2D constants)"
+)
 LOW_SPEED_KAPPAS = (16.0, 64.0, 256.0, 1024.0)
 """``kappa`` of the low-speed convergence study (level 0, ``tan(theta) / mu = 0.3`` and 2)."""
 
