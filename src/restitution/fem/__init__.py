@@ -17,6 +17,10 @@ or two free spheres meeting head-on (the judge of the modal pair; ``geometry=`` 
 both): :mod:`~restitution.fem.pair_model` (both meshes as one body),
 :mod:`~restitution.fem.pair_impact` (one collision), :mod:`~restitution.fem.pair_limits` (both
 limits) and :mod:`~restitution.fem.pair_reference` (stored reference values of pairs).
+The oblique impact of the disk with Coulomb friction (issue 63, the judge of the modal route):
+:mod:`~restitution.fem.whole_disk` (the whole disk: mesh, matrices, rim quadrature),
+:mod:`~restitution.fem.oblique_impact` (one collision, friction point by point) and
+:mod:`~restitution.fem.oblique_reference` (the stored study against the modal route).
 """
 
 from restitution.fem.compare import Comparison, compare_fem_modal
@@ -25,6 +29,7 @@ from restitution.fem.graded import ContactGrading, contact_half_width
 from restitution.fem.impact import FemCollisionError, FemSettings, fem_collide
 from restitution.fem.judge import LawJudgement, judge_law
 from restitution.fem.limits import FemEpsilon, FemGrid, fem_epsilon
+from restitution.fem.oblique_impact import FemOblique, FemObliqueSettings, fem_oblique_collide
 from restitution.fem.pair_impact import PairCollision, fem_collide_pair
 from restitution.fem.pair_limits import FemPairEpsilon, fem_pair_epsilon
 from restitution.fem.reference import load_reference
@@ -35,6 +40,8 @@ __all__ = [
     "FemCollisionError",
     "FemEpsilon",
     "FemGrid",
+    "FemOblique",
+    "FemObliqueSettings",
     "FemPairEpsilon",
     "FemSettings",
     "LawJudgement",
@@ -45,6 +52,7 @@ __all__ = [
     "fem_collide_pair",
     "fem_count_below",
     "fem_epsilon",
+    "fem_oblique_collide",
     "fem_pair_epsilon",
     "fem_symmetric_frequencies",
     "judge_law",
