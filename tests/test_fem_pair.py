@@ -57,8 +57,9 @@ def test_identical_disks_are_the_disk_on_the_wall_at_half_speed(level):
     the wall's), the partner's points of equal height are the reference's own Gauss points and
     the composite is the wall problem with every term doubled: same steps, twice the approach.
     Measured ``|d epsilon|`` = 5.6e-16 (level 0) and 1.0e-15 (level 1), up to 7.8e-15 between
-    processes: ARPACK's random start moves each route's stability bound, hence its step, by
-    ~1e-10 relative (the wall alone moves by 2.3e-15 from one process to the next)."""
+    processes: ARPACK's random start (fixed since stop 70, ``fem.model.start_vector``) moved
+    each route's stability bound, hence its step, by ~1e-10 relative (the wall alone moved by
+    2.3e-15 from one process to the next)."""
     alpha = _walls(Partner(), W)
     wall_settings = graded_settings(W / 2, 2 * alpha, level)
     first, second = pair_mesh_settings(Partner(), W, alpha, level)
@@ -396,7 +397,8 @@ def test_fem_pair_agrees_with_the_modal_pair_as_modes_are_added():
 @pytest.mark.slow
 def test_shipped_pair_point_is_reproduced():
     """The stored radius-ratio-1.4 point at ``w = 0.6`` recomputed by the current code (about
-    a minute): every run's epsilon to 1e-9 (ARPACK's random start moves the step by ~1e-10)."""
+    a minute): every run's epsilon to 1e-9 (it was stored with ARPACK's random start, which
+    moved the step by ~1e-10; the start is fixed since stop 70)."""
     stored = next(p for p in _shipped()["points"] if p["w"] == 0.6)
     partner = Partner.from_key(stored["partner"])
     again = fem_pair_epsilon(

@@ -61,8 +61,8 @@ def test_identical_spheres_are_the_sphere_on_the_wall_at_half_speed(level):
     problem with every term doubled. Measured ``|d epsilon|`` over three processes: 4.4e-16,
     5.4e-15, 2.6e-15 (level 0, 3137 dofs each, 1456 steps on both routes) and 6.2e-15, 1.9e-15
     (level 1, 12417 dofs each, 2704 steps); the steps agree to 1.1e-15 relative and the forces
-    to 4.3e-14. ARPACK's random start moves each route's stability bound (docs/fem.md, the
-    disks' identity), hence the tolerance of 5e-14, the disks'."""
+    to 4.3e-14. ARPACK's random start (fixed since stop 70) moved each route's stability bound
+    (docs/fem.md, the disks' identity), hence the tolerance of 5e-14, the disks'."""
     alpha = _wall(Partner(), W)
     wall_settings = graded_settings(W / 2, 2 * alpha, level, geometry=SPHERE, nu=NU)
     first, second = pair_mesh_settings(Partner(), W, alpha, level, geometry=SPHERE, nu=NU)
@@ -308,7 +308,8 @@ def test_steel_glass_is_the_partner_of_the_shipped_law():
 def test_shipped_sphere_pair_point_is_reproduced():
     """The stored radius-ratio-2 point at ``w = 0.024``: its level-0 and level-1 runs at all
     three walls recomputed by the current code (about 45 s; level 2 alone takes 2-3 min per
-    wall): every run's epsilon to 1e-9 (ARPACK's random start moves the step by ~1e-10)."""
+    wall): every run's epsilon to 1e-9 (it was stored with ARPACK's random start, which moved
+    the step by ~1e-10; the start is fixed since stop 70)."""
     stored = next(
         p
         for p in _shipped()["points"]

@@ -144,7 +144,8 @@ def test_the_ball_does_not_feel_a_block_twice_as_large():
     before the ball leaves, so the ball's epsilon is the same: measured 5.0e-14 (epsilon
     0.951276, 10960 and 11024 steps of the same dt). A reflection that came back would change
     it by far more than the bound, the runs' energy drift (3.7e-8): a step that differs
-    (ARPACK's random start moves each model's stability bound) changes epsilon by about as
+    (ARPACK's random start, fixed since stop 70, moved each model's stability bound) changes
+    epsilon by about as
     much. The relative speed of the centres holds the block's recoil, ``(1 + eps) m / M``:
     0.95273 and 0.95146."""
     v = 0.01
@@ -216,8 +217,9 @@ def test_a_stored_wall_round_trips_through_its_dictionary():
 def test_a_stored_run_of_the_judge_is_reproduced():
     """Regression (this package's own earlier output): the block at ``v = 1e-3``, the softest
     wall of its grid, level 0, recomputed by today's code against the value the stored file
-    holds (computed at commit feb2c88). The runs' step depends on ARPACK's stability bound
-    (random start), which moves epsilon by about the run's energy drift, hence 1e-8."""
+    holds (computed at commit feb2c88). The runs' step depends on ARPACK's stability bound,
+    stored with a random start (fixed since stop 70), which moves epsilon by about the run's
+    energy drift, hence 1e-8."""
     data = Path(restitution.__file__).parent / "laws" / "data" / "fem_reference_wall.json"
     points = json.loads(data.read_text())["points"]
     point = next(p for p in points if p["wall"]["kind"] == "half-space" and p["v"] == 1e-3)

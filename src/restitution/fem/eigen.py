@@ -38,6 +38,7 @@ from restitution.fem.elasticity import (
     assemble_half_disk,
 )
 from restitution.fem.mesh import uniform_half_disk
+from restitution.fem.model import start_vector
 
 __all__ = [
     "fem_count_below",
@@ -87,8 +88,9 @@ def symmetric_frequencies(disk: HalfDisk, count: int) -> np.ndarray:
             "refine the mesh for more frequencies"
         )
     w2 = sla.eigsh(
-        disk.K, k=count + 1, M=disk.M, sigma=_SHIFT, which="LM", return_eigenvectors=False
-    )
+        disk.K, k=count + 1, M=disk.M, sigma=_SHIFT, which="LM", return_eigenvectors=False,
+        v0=start_vector(disk.K.shape[0]),
+    )  # fmt: skip
     w2 = np.sort(w2)
     # The rigid translation: zero up to round-off relative to the first elastic eigenvalue.
     if abs(w2[0]) > 1e-8 * w2[1]:
