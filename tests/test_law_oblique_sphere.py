@@ -183,6 +183,18 @@ def test_the_ball_carries_its_quasistatic_limit_and_beta_s_error_holds_it():
     )
 
 
+def test_beyond_hertz_s_reach_the_ball_has_no_quasistatic_limit():
+    """``law`` accepts normal speeds up to the route's reach (steel: 3000 m/s is ``v = 0.58``,
+    status ``large-deformation``), but Hertz's quasistatic theory refuses ``v > 0.529``: there
+    the point carries no quasistatic ``beta`` (and its error is the mode change alone) instead of
+    failing after the modal runs. Below it, the pair is served (``v = 0.5``: 0.1079 without
+    microslip)."""
+    sphere = kinds.body_kind("sphere")
+    assert oblique._quasistatic_betas(sphere, 0.58, 0.58 * 0.577, 0.3, 0.3) == (None, None)
+    below = oblique._quasistatic_betas(sphere, 0.5, 0.5 * 0.577, 0.3, 0.3)
+    assert None not in below and below[1] > below[0]
+
+
 def test_the_ball_without_friction_is_refused_in_one_line(cli):
     """Other refusals still hold for the sphere: ``--angle`` without ``--friction``."""
     code, _out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30")

@@ -48,6 +48,7 @@ from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import body_kind
 from restitution.dynamics.oblique import oblique_collision
 from restitution.dynamics.oblique_cost import check_reach, oblique_work, suspect_advice
+from restitution.errors import InputError
 from restitution.laws.units import BODIES
 from restitution.quasistatic.oblique import MODELS as QUASISTATIC_MODELS
 from restitution.quasistatic.oblique import oblique_impact as quasistatic_impact
@@ -293,11 +294,16 @@ speeds in the kind's ``c``."""
 
 
 def _quasistatic_betas(kind, v: float, v_tangential: float, mu: float, nu: float):
-    """The kind's quasistatic ``beta`` pair at this impact, or ``(None, None)``: no theory, or
-    no tangential motion (angle 0)."""
+    """The kind's quasistatic ``beta`` pair at this impact, or ``(None, None)``: no theory, no
+    tangential motion (angle 0), or a speed beyond the theory's reach (Hertz's ``delta << R``:
+    the sphere's refuses ``v > 0.529 c``, far inside ``large-deformation``); ``beta``'s error
+    is then the change from half the modes alone."""
     if kind.oblique_quasistatic is None or v_tangential == 0.0:
         return None, None
-    return QUASISTATIC[kind.oblique_quasistatic](v, v_tangential, mu, nu)
+    try:
+        return QUASISTATIC[kind.oblique_quasistatic](v, v_tangential, mu, nu)
+    except InputError:
+        return None, None
 
 
 def _beta_error(fine, coarse, quasistatic: float | None) -> float | None:
