@@ -20,7 +20,7 @@ import pytest
 from _cli_checks import one_line_error
 
 import restitution.budget as budget
-from restitution.dynamics import oblique, oblique_cost
+from restitution.dynamics import oblique, oblique_cost, oblique_microslip
 from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
 
 FAST = ("--v", "0.05", "--alpha", "100", "--modes", "20")
@@ -38,7 +38,8 @@ def test_json_has_the_inputs_the_answer_and_where_the_energy_went(cli):
     assert d["command"] == "collide" and d["status"] == "ok" and d["advice"] is None
     assert d["inputs"] == {"geometry": "disk", "nu": 0.33, "plane": None, "nu_2d": 0.33,
                            "v": 0.05, "angle": 45.0, "friction": 0.5, "alpha": 100.0,
-                           "modes": 20}  # fmt: skip
+                           "modes": 20, "friction_model": "stick-slip",
+                           "kappa": None}  # fmt: skip
     for key in ("spin", "angle", "energy", "speed"):
         assert key in d["units"]
     assert d["v_tangential"] == pytest.approx(0.05, rel=1e-12)
@@ -98,6 +99,28 @@ def test_gross_sliding_is_the_impulse_ratio(cli):
     )
 
 
+def test_microslip_is_the_python_route_with_its_settings(cli):
+    """``--friction-model microslip``: the JSON is microslip_collision's result for the same
+    modes (the same code path: equal to rounding), one phase, Verlet steps, kappa in the inputs;
+    with --kappa 16 a different regularisation (beta 0.014 higher at 20 modes, 45 degrees: the
+    Python test's kappa study)."""
+    from restitution.bodies.disk.modes import compute_modes
+    from restitution.bodies.disk.rim import rim_modes
+
+    d = _json(cli, "--angle", "45", "--friction", "0.5", *FAST, "--friction-model", "microslip")
+    assert d["inputs"]["friction_model"] == "microslip" and d["inputs"]["kappa"] == 64.0
+    assert d["step_kind"] == "Verlet" and d["phases"] == [{"phase": "microslip", "t": 0.0}]
+    direct = oblique_microslip.microslip_collision(
+        rim_modes(compute_modes(0.33, count=20)), 0.05, 0.05, 0.5, 100.0
+    )
+    assert d["beta"] == pytest.approx(direct.beta, abs=1e-12)
+    assert d["epsilon_normal"] == pytest.approx(direct.epsilon_normal, abs=1e-12)
+    assert abs(d["energy_balance"]) < 1e-5 and d["friction_work"] > 0
+    soft = _json(cli, "--angle", "45", "--friction", "0.5", *FAST, "--friction-model",
+                 "microslip", "--kappa", "16")  # fmt: skip
+    assert soft["inputs"]["kappa"] == 16.0 and 0.005 < soft["beta"] - d["beta"] < 0.03
+
+
 @pytest.mark.parametrize(
     "args, words",
     [
@@ -118,10 +141,17 @@ def test_gross_sliding_is_the_impulse_ratio(cli):
          ["--alpha * --v", "below 0.05", "raise --v to at least 0.0001"]),
         (("--angle", "30", "--friction", "0.5", "--v", "1e-5", "--alpha", "100"),
          ["raise --v to at least 0.0005 or --alpha to at least 5e+03"]),
+        (("--angle", "30", "--friction", "0.5", "--kappa", "16"),
+         ["--kappa", "no effect", "--friction-model microslip"]),
+        (("--angle", "30", "--friction", "0.5", "--friction-model", "microslip", "--kappa",
+          "-1"), ["--kappa"]),
+        (("--friction-model", "microslip",), ["--friction-model", "no effect", "--angle"]),
+        (("--kappa", "16",), ["--kappa", "no effect", "--angle"]),
     ],
 )  # fmt: skip
 def test_refusals_are_one_line(cli, monkeypatch, args, words):
     monkeypatch.setattr(oblique, "oblique_collision", _never)
+    monkeypatch.setattr(oblique_microslip, "microslip_collision", _never)
     base = () if "--v" in args else ("--v", "0.05")
     code, _, err = cli("collide", *base, *args)
     one_line_error(code, err, *words)

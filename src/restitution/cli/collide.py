@@ -288,6 +288,22 @@ def _vibrating() -> str:
     help="With --angle: Coulomb's friction coefficient mu >= 0 of the wall (0: frictionless, "
     "the head-on epsilon).",
 )
+@click.option(
+    "--friction-model",
+    "friction_model",
+    type=click.Choice(["stick-slip", "microslip"]),
+    default=None,
+    help="With --angle: stick-slip (default): one stick/slip state for the whole contact, "
+    "DOP853 phase by phase; microslip: Coulomb's law at every wall node (Mindlin's annulus of "
+    "microslip), regularised by a tangential spring --kappa, Verlet steps (docs/oblique.md).",
+)
+@click.option(
+    "--kappa",
+    type=float,
+    default=None,
+    help="With --friction-model microslip: the tangential spring over the wall's normal "
+    "stiffness at each node; Coulomb's law is kappa -> infinity. Default 64.",
+)
 @partner_options
 @format_options
 @strict_option
@@ -323,6 +339,8 @@ def collide(
     relaxation_time,
     angle,
     friction,
+    friction_model,
+    kappa,
     fmt,
     as_json,
     strict,
@@ -345,6 +363,11 @@ def collide(
         from restitution.cli.collide_oblique import collide_oblique
 
         return collide_oblique(ctx, angle, friction, fmt, strict)
+    refuse_ignored(
+        ctx,
+        {"friction_model": "--friction-model", "kappa": "--kappa"},
+        "without --angle and --friction (an oblique impact)",
+    )
     body = body_nu(nu, plane, geometry)
     if method != "fem" and excite != "thermal":  # one collision bounds its steps itself
         refuse_ignored(

@@ -1,12 +1,15 @@
 """``restitution collide --angle DEG --friction MU``: one oblique impact on the wall with Coulomb
 friction.
 
-A thin layer over :func:`restitution.dynamics.oblique.oblique_collision` (docs/oblique.md, "The
-modal oblique collision" and "The sphere"): the options become one :class:`ObliqueRequest`, where
-every refusal is made before a mode is computed; then the body's modes of both symmetries are
-built (the disk's rim, the sphere's cap), the work estimated, told on stderr and refused beyond
-the bound of one run, the collision run, and one :class:`~restitution.cli.report.Report` printed
-as text, JSON or CSV (one row per mode).
+A thin layer over :func:`restitution.dynamics.oblique.oblique_collision` (one stick/slip state,
+the default ``--friction-model stick-slip``) and
+:func:`restitution.dynamics.oblique_microslip.microslip_collision` (``--friction-model
+microslip``: friction at every wall node, ``--kappa``) (docs/oblique.md, "The modal oblique
+collision", "Microslip in the modal route" and "The sphere"): the options become one
+:class:`ObliqueRequest`, where every refusal is made before a mode is computed; then the
+body's modes of both symmetries are built (the disk's rim, the sphere's cap), the work
+estimated, told on stderr and refused beyond the bound of one run, the collision run, and one
+:class:`~restitution.cli.report.Report` printed as text, JSON or CSV (one row per mode).
 
 Units: ``E = rho = R = 1`` of the body (the disk's two-dimensional constants, the sphere's
 three-dimensional ones); ``--v`` is the normal speed towards the wall in ``c``, the tangential
@@ -38,10 +41,18 @@ from restitution.cli._common import (
 )
 from restitution.cli.report import Report, emit, rich_text
 from restitution.dynamics.oblique_cost import check_reach
+from restitution.dynamics.oblique_microslip import MICROSLIP, MicroslipSettings
 from restitution.errors import InputError
 from restitution.status import Status
 
+STICK_SLIP = "stick-slip"
+"""``--friction-model``'s default: one stick/slip state for the contact."""
+DEFAULT_KAPPA = MicroslipSettings().kappa
+"""``--kappa``'s default (the finite-element judge's)."""
+
 __all__ = [
+    "DEFAULT_KAPPA",
+    "STICK_SLIP",
     "ObliqueRequest",
     "collide_oblique",
     "oblique_request",
@@ -98,6 +109,11 @@ class ObliqueRequest:
         many, the sphere's cap about seven (20) to nine (40) times as many.
     force : bool
         Run beyond the time bound of one run.
+    friction_model : str
+        ``"stick-slip"`` (one state for the contact) or ``"microslip"`` (every wall node).
+    kappa : float or None
+        The microslip route's tangential spring over the normal stiffness; ``None`` with
+        stick-slip.
     """
 
     geometry: str
@@ -110,6 +126,8 @@ class ObliqueRequest:
     alpha: float
     modes: int
     force: bool = False
+    friction_model: str = STICK_SLIP
+    kappa: float | None = None
 
     @property
     def v_tangential(self) -> float:
@@ -126,6 +144,8 @@ class ObliqueRequest:
             "friction": self.mu,
             "alpha": self.alpha,
             "modes": self.modes,
+            "friction_model": self.friction_model,
+            "kappa": self.kappa,
         }
 
 
@@ -160,20 +180,37 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
         raise InputError(f"--modes must be at least 1, got {modes}")
     nu_body = body_nu(p["nu"], p["plane"], geometry)
     check_mode_request(nu_body, modes, None, geometry)
+    model = p.get("friction_model") or STICK_SLIP
+    kappa = p.get("kappa")
+    if model == MICROSLIP:
+        kappa = positive_finite("--kappa", DEFAULT_KAPPA if kappa is None else kappa)
+    elif kappa is not None:
+        raise InputError(
+            "--kappa has no effect with --friction-model stick-slip (one exact stick/slip "
+            "switch); add --friction-model microslip for friction at every wall node"
+        )
     return ObliqueRequest(geometry, p["nu"], p["plane"], nu_body, v, float(angle), float(mu),
-                          alpha, int(modes), bool(p["force"]))  # fmt: skip
+                          alpha, int(modes), bool(p["force"]), model, kappa)  # fmt: skip
 
 
 def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     """``collide --angle DEG --friction MU``: the request, the work, the run, the report."""
     from restitution.dynamics.oblique import oblique_collision
     from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
+    from restitution.dynamics.oblique_microslip import microslip_collision, microslip_work
     from restitution.dynamics.run import CollisionError
 
     req = oblique_request(ctx, angle, mu)
     modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
     rim = body_kind(req.geometry).oblique_body(modes)
-    work = oblique_work(rim, req.v, req.alpha)
+    microslip = req.friction_model == MICROSLIP
+    if microslip:
+        settings = MicroslipSettings(kappa=req.kappa)
+        work = microslip_work(rim, req.v, req.v_tangential, req.alpha, settings=settings)
+        route = f"Verlet steps with friction at each of {work.nodes} wall nodes"
+    else:
+        work = oblique_work(rim, req.v, req.alpha)
+        route = f"DOP853 phase by phase on {work.nodes} nodes"
     budget.check_memory_total(
         "--modes",
         req.modes,
@@ -185,23 +222,29 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         "--modes",
         req.modes,
         work.seconds,
-        f"DOP853 phase by phase, {len(rim)} modes of both symmetries on {work.nodes} nodes; "
-        f"measured runs took up to {work.spread:g} times the estimate",
+        f"{route}, {len(rim)} modes of both symmetries; measured runs took up to "
+        f"{work.spread:g} times the estimate",
         lambda limit: f"about {work.modes_within(limit, req.modes)} modes fit",
         force=req.force,
         override="--force",
     )
     note(
-        f"note: oblique impact with {req.modes} modes ({len(rim)} of both symmetries): about "
-        f"{budget.format_duration(work.seconds)} expected"
+        f"note: oblique impact with {req.modes} modes ({len(rim)} of both symmetries), "
+        f"{req.friction_model} friction: about {budget.format_duration(work.seconds)} expected"
     )
     start = time.perf_counter()
     try:
-        result = oblique_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
+        if microslip:
+            result = microslip_collision(
+                rim, req.v, req.v_tangential, req.mu, req.alpha, settings=settings
+            )
+        else:
+            result = oblique_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
     except CollisionError as exc:
         raise CollisionError(
-            f"{exc} (rtol and friction are arguments of restitution.dynamics.oblique."
-            "oblique_collision, not options of the command)"
+            f"{exc} (rtol and the step are arguments of restitution.dynamics.oblique."
+            "oblique_collision and oblique_microslip.microslip_collision, not options of the "
+            "command)"
         ) from exc
     wall = time.perf_counter() - start
     status, advice = stretched(Status.OK, None, req.v, LINEAR_SPEED, result)
@@ -232,6 +275,7 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         "phases": [{"phase": name, "t": t} for name, t in result.phases],
         "t_end": result.t_end,
         "steps": result.steps,
+        "step_kind": "Verlet" if microslip else "DOP853",
         "rim_modes": len(rim),
         "estimated_time_s": work.seconds,
         "wall_time_s": wall,
@@ -277,7 +321,15 @@ def _mode_rows(rim, result) -> list[dict]:
     ]
 
 
+def _model_text(req) -> str:
+    if req.friction_model == MICROSLIP:
+        return f"microslip at every wall node, kappa = {req.kappa:g}"
+    return "one stick/slip state"
+
+
 def _text(req, result, n_rim, wall, status, advice) -> str:
+    steps = "Verlet" if req.friction_model == MICROSLIP else "DOP853"
+
     def draw(console):
         beta = "undefined at angle 0" if math.isnan(result.beta) else f"{result.beta:.6f}"
         phases = ", ".join(f"{name} at {t:.4g}" for name, t in result.phases[:6])
@@ -287,14 +339,15 @@ def _text(req, result, n_rim, wall, status, advice) -> str:
             f"spin after = {result.spin:.6g} c/R[/bold]\n"
             f"oblique impact of the {req.geometry}, nu = {req.nu_body:g}: v = {req.v:g} c "
             f"normal, {req.v_tangential:.6g} c tangential ({req.angle:g} degrees from the "
-            f"normal), friction mu = {req.mu:g}, alpha = {req.alpha:g}, {req.modes} modes "
+            f"normal), friction mu = {req.mu:g} ({_model_text(req)}), alpha = {req.alpha:g}, "
+            f"{req.modes} modes "
             f"({n_rim} of both symmetries)\n"
             f"after (fractions of E0): translation {result.translation_energy:.6g}, rotation "
             f"{result.rotation_energy:.6g}, left in the modes {result.vibration_energy:.6g}, "
             f"friction work {result.friction_work:.6g}; energy balance "
             f"{result.energy_balance:.2e}\n"
             f"contact: {len(result.phases)} phases ({phases}{more}; R/c), stop at "
-            f"{result.t_end:.4g} R/c, {result.steps} DOP853 steps, {wall:.2f} s"
+            f"{result.t_end:.4g} R/c, {result.steps} {steps} steps, {wall:.2f} s"
         )
         if status != Status.OK:
             console.print(f"[yellow]status {status}: {advice}[/yellow]")

@@ -183,6 +183,21 @@ class RimNodes:
         """The nodes that may touch (``x0 + cos(phi + Theta) + reach > cutoff``), placed:
         ``None`` or ``(weight, X, Y - y0, xi, eta, project)``
         (:class:`restitution.dynamics.oblique.WallNodes`)."""
+        placed = self.jacobians(x0, rotation, Q, reach, cutoff)
+        if placed is None:
+            return None
+        _, _, X, Yr, dXdQ, dYdQ = placed
+
+        def project(e, p):
+            return e @ dXdQ, p @ dYdQ
+
+        return self.weight, X, Yr, dXdQ @ Qd, dYdQ @ Qd, project
+
+    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+        """The nodes that may touch with their identity and their position's derivatives in
+        the modal coordinates: ``None`` or ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)``
+        (index shape (M,) into the whole grid, the matrices (M, N)), for friction point by
+        point (:mod:`restitution.dynamics.oblique_microslip`)."""
         ang = self.phi + rotation
         c = np.cos(ang)
         act = np.nonzero(x0 + c + reach > cutoff)[0]
@@ -192,14 +207,9 @@ class RimNodes:
         Ur, Up = self.Ur[act], self.Up[act]
         ur, up = Ur @ Q, Up @ Q
         X = x0 + (1.0 + ur) * c - up * s
-        Yr = (1.0 + ur) * s + up * c  # Y - y0
+        Yr = (1.0 + ur) * s + up * c
         dXdQ = Ur * c[:, None] - Up * s[:, None]
-        dYdQ = Ur * s[:, None] + Up * c[:, None]
-
-        def project(e, p):
-            return e @ dXdQ, p @ dYdQ
-
-        return self.weight, X, Yr, dXdQ @ Qd, dYdQ @ Qd, project
+        return act, self.weight, X, Yr, dXdQ, Ur * s[:, None] + Up * c[:, None]
 
 
 def torsional_frequencies(nu: float, omega_max: float) -> np.ndarray:

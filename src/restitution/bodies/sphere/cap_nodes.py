@@ -76,18 +76,31 @@ class CapNodes:
         """``sum_j w_j exp(alpha (c_j - 1))``: the undeformed sphere's wall integral, ``R^2``."""
         return float(self.weight @ np.exp(alpha * (self.c - 1.0)))
 
+    def _active(self, x0, rotation, reach: float, cutoff: float) -> int:
+        """How many nodes (whole rings from the pole) may reach ``x = cutoff``; 0 if none."""
+        if x0 + 1.0 + reach <= cutoff:  # no point of the sphere can reach the cutoff
+            return 0
+        near = np.cos(np.maximum(self.theta - abs(rotation), 0.0))
+        return int(np.count_nonzero(x0 + near + reach > cutoff)) * self.azimuths
+
+    def _check_edge(self, j: int, X, rotation, cutoff: float) -> None:
+        """Refuse a contact that reaches the last ring of the wall nodes."""
+        if j == self.theta.size * self.azimuths and X[-self.azimuths :].max() > cutoff:
+            raise InputError(
+                f"the contact reaches the edge of the sphere's wall nodes (the near hemisphere "
+                f"about the modes' pole; the sphere has turned by {rotation:.3g} rad): the "
+                "impact rolls the contact too far for this quadrature; lower the speed or the "
+                "tangential speed, or start with a smaller rotation"
+            )
+
     def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
         """The nodes that may touch, placed (module docs): ``None`` if no ring can reach
         ``x = cutoff``, else ``(weight, X, Y - y0, xi, eta, project)`` of the active nodes
         (:class:`restitution.dynamics.oblique.WallNodes`). Each matrix is read twice: once
         for positions and velocities, once for the projection of the forces."""
-        if x0 + 1.0 + reach <= cutoff:  # no point of the sphere can reach the cutoff
+        j = self._active(x0, rotation, reach, cutoff)
+        if j == 0:
             return None
-        near = np.cos(np.maximum(self.theta - abs(rotation), 0.0))
-        rings = int(np.count_nonzero(x0 + near + reach > cutoff))
-        if rings == 0:
-            return None
-        j = rings * self.azimuths
         D1, D2 = self.D1[:j], self.D2[:j]
         QQ = np.stack([Q, Qd], axis=1)
         A1, A2 = D1 @ QQ, D2 @ QQ
@@ -96,13 +109,7 @@ class CapNodes:
         ct, st = math.cos(rotation), math.sin(rotation)
         X = x0 + P1 * ct - P2 * st
         Yr = P1 * st + P2 * ct
-        if rings == self.theta.size and X[-self.azimuths :].max() > cutoff:
-            raise InputError(
-                f"the contact reaches the edge of the sphere's wall nodes (the near hemisphere "
-                f"about the modes' pole; the sphere has turned by {rotation:.3g} rad): the "
-                "impact rolls the contact too far for this quadrature; lower the speed or the "
-                "tangential speed, or start with a smaller rotation"
-            )
+        self._check_edge(j, X, rotation, cutoff)
         xi = A1[:, 1] * ct - A2[:, 1] * st
         eta = A1[:, 1] * st + A2[:, 1] * ct
 
@@ -111,6 +118,23 @@ class CapNodes:
             return f1 * ct - f2 * st, (f1 * st + f2 * ct) / float(e.sum())
 
         return self.weight[:j], X, Yr, xi, eta, project
+
+    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+        """The nodes that may touch with their identity and their position's derivatives in
+        the modal coordinates: ``None`` or ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)``, as
+        :meth:`restitution.bodies.disk.rim.RimNodes.jacobians` (friction point by point along
+        the plane of incidence)."""
+        j = self._active(x0, rotation, reach, cutoff)
+        if j == 0:
+            return None
+        D1, D2 = self.D1[:j], self.D2[:j]
+        P1 = self.c[:j] + D1 @ Q
+        P2 = self.s[:j] + D2 @ Q
+        ct, st = math.cos(rotation), math.sin(rotation)
+        X = x0 + P1 * ct - P2 * st
+        self._check_edge(j, X, rotation, cutoff)
+        dXdQ, dYdQ = D1 * ct - D2 * st, D1 * st + D2 * ct
+        return np.arange(j), self.weight[:j], X, P1 * st + P2 * ct, dXdQ, dYdQ
 
 
 def cap_nodes(cap, alpha: float, n_nodes: int | None = None) -> CapNodes:
