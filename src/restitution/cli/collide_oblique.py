@@ -334,6 +334,10 @@ def _text(req, result, n_rim, wall, status, advice) -> str:
         beta = "undefined at angle 0" if math.isnan(result.beta) else f"{result.beta:.6f}"
         phases = ", ".join(f"{name} at {t:.4g}" for name, t in result.phases[:6])
         more = f" and {len(result.phases) - 6} more" if len(result.phases) > 6 else ""
+        if req.friction_model == MICROSLIP:
+            contact = "each wall node sticks or slips on its own"
+        else:
+            contact = f"{len(result.phases)} phases ({phases}{more}; R/c)"
         console.print(
             f"[bold]epsilon_normal = {result.epsilon_normal:.8f}  beta = {beta}  "
             f"spin after = {result.spin:.6g} c/R[/bold]\n"
@@ -346,8 +350,8 @@ def _text(req, result, n_rim, wall, status, advice) -> str:
             f"{result.rotation_energy:.6g}, left in the modes {result.vibration_energy:.6g}, "
             f"friction work {result.friction_work:.6g}; energy balance "
             f"{result.energy_balance:.2e}\n"
-            f"contact: {len(result.phases)} phases ({phases}{more}; R/c), stop at "
-            f"{result.t_end:.4g} R/c, {result.steps} {steps} steps, {wall:.2f} s"
+            f"contact: {contact}, stop at {result.t_end:.4g} R/c, {result.steps} {steps} "
+            f"steps, {wall:.2f} s"
         )
         if status != Status.OK:
             console.print(f"[yellow]status {status}: {advice}[/yellow]")
