@@ -103,10 +103,12 @@ from restitution.errors import InputError, is_real, real
 
 __all__ = [
     "FRICTION_MODELS",
+    "Grain",
     "ObliqueCollision",
     "ObliqueHistory",
     "RimBody",
     "WallNodes",
+    "collision_result",
     "impulse_ratio_beta",
     "oblique_collision",
 ]
@@ -629,19 +631,31 @@ def oblique_collision(
 
 
 def _result(G, y, t_end, steps, phases, pieces, e0, vc0, inputs) -> ObliqueCollision:
-    N, m, I = G.N, G.m, G.inertia
-    v_n, v_t, w0, mu, alpha, friction, eta = inputs
-    Q, vx, vy, om, Qd = y[2 : 2 + N], y[2 + N], y[3 + N], y[4 + N], y[5 + N : 5 + 2 * N]
-    W, lever_int, tau_int = y[5 + 2 * N], y[6 + 2 * N], y[7 + 2 * N]
+    N = G.N
     k = G.terms(y)
-    V = 0.0 if k is None else k["V"]
+    hist = _history(G, pieces, inputs[3], inputs[6]) if pieces else None
+    state = (y[2 : 2 + N], y[2 + N], y[3 + N], y[4 + N], y[5 + N : 5 + 2 * N])
+    integrals = (y[5 + 2 * N], y[6 + 2 * N], y[7 + 2 * N])
+    return collision_result(G, state, 0.0 if k is None else k["V"], integrals, e0, vc0, inputs,
+                            phases, t_end, steps, hist)  # fmt: skip
+
+
+def collision_result(
+    G: Grain, state, V, integrals, e0, vc0, inputs, phases, t_end, steps, history
+) -> ObliqueCollision:
+    """The :class:`ObliqueCollision` of a final state, for both friction routes (this module's
+    and :mod:`restitution.dynamics.oblique_microslip`): ``state = (Q, vx, vy, om, Qd)``, ``V``
+    the wall's energy, ``integrals = (friction's dissipated work, int F_t (R - l) dt, int
+    tau_n dt)``, ``e0`` the initial energy, ``vc0`` the contact point's tangential velocity
+    before, ``inputs = (v_n, v_t, w0, mu, alpha, friction, regularisation)``."""
+    m, I = G.m, G.inertia
+    v_n, v_t, w0, mu, alpha, friction, eta = inputs
+    Q, vx, vy, om, Qd = state
+    W, lever_int, tau_int = integrals
     modes = 0.5 * m * (Qd**2 + G.w2 * Q**2) / e0
     trans = 0.5 * m * (vx**2 + vy**2) / e0
     rot = 0.5 * I * om**2 / e0
     vc = vy + om
-    hist = None
-    if pieces:
-        hist = _history(G, pieces, mu, eta)
     return ObliqueCollision(
         v_normal=v_n,
         v_tangential_before=v_t,
@@ -670,7 +684,7 @@ def _result(G, y, t_end, steps, phases, pieces, e0, vc0, inputs) -> ObliqueColli
         phases=tuple(phases),
         t_end=float(t_end),
         steps=int(steps),
-        history=hist,
+        history=history,
     )
 
 

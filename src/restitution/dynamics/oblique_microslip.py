@@ -59,7 +59,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.dynamics.contact.exponential import NEGLIGIBLE, STOP_LOG
-from restitution.dynamics.oblique import Grain, ObliqueCollision, RimBody, _check
+from restitution.dynamics.oblique import (
+    Grain,
+    ObliqueCollision,
+    RimBody,
+    _check,
+    collision_result,
+)
 from restitution.dynamics.oblique_cost import ObliqueWork
 from restitution.dynamics.run import CollisionError
 from restitution.errors import InputError, real
@@ -341,38 +347,6 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
         y = np.concatenate(([x0, th], Q, [vx, vy, om], Qd))
         if -(x0 + 1.0 + G.free_reach(y)) > STOP_LOG / alpha:
             break
-    modes = 0.5 * m * (Qd**2 + w2 * Q**2) / e0
-    trans = 0.5 * m * (vx**2 + vy**2) / e0
-    rotation = 0.5 * I * om**2 / e0
-    vc = vy + om
-    W = -work / e0
-    return ObliqueCollision(
-        v_normal=v_n,
-        v_tangential_before=v_t,
-        spin_before=w0,
-        mu=mu,
-        alpha=alpha,
-        friction=MICROSLIP,
-        regularisation=kappa,
-        epsilon_normal=float(-vx / v_n),
-        beta=float(-vc / (v_t - w0)) if v_t != w0 else math.nan,
-        v_tangential=float(vy),
-        spin=float(-om),
-        contact_velocity=float(vc),
-        e0=float(e0),
-        translation_energy=float(trans),
-        rotation_energy=float(rotation),
-        vibration_energy=float(modes.sum()),
-        mode_energy=modes,
-        friction_work=float(W),
-        wall_energy=float(V / e0),
-        energy_balance=float(1.0 - (trans + rotation + modes.sum() + W + V / e0)),
-        normal_impulse=float(m * (v_n - vx)),
-        tangential_impulse=float(m * (vy - v_t)),
-        lever_correction=float(lever_int / I / (v_t - w0)) if v_t != w0 else math.nan,
-        normal_torque_correction=float(-tau_int / I / (v_t - w0)) if v_t != w0 else math.nan,
-        phases=((MICROSLIP, 0.0),),
-        t_end=float(t),
-        steps=int(steps),
-        history=None,
-    )
+    inputs = (v_n, v_t, w0, mu, alpha, MICROSLIP, kappa)
+    return collision_result(G, (Q, vx, vy, om, Qd), V, (-work, lever_int, tau_int), e0,
+                            v_t - w0, inputs, ((MICROSLIP, 0.0),), t, steps, None)  # fmt: skip
