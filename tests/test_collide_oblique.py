@@ -236,6 +236,31 @@ def test_beyond_the_time_bound_is_refused_before_the_run(cli, monkeypatch):
     assert "1 s" in line
 
 
+def test_microslip_beyond_the_time_bound_is_refused_before_the_run(cli, monkeypatch):
+    """The microslip route's estimate (microslip_work: planned Verlet steps times one timed
+    step) is refused the same way, naming its route; the work carries the route's own spread
+    and the wall nodes of the kappa it was asked for (the time itself is a timing: not
+    asserted)."""
+    from restitution.bodies.disk.modes import compute_modes
+    from restitution.bodies.disk.rim import rim_modes
+    from restitution.dynamics.oblique_microslip import MicroslipSettings, microslip_work
+
+    monkeypatch.setattr(oblique_microslip, "microslip_collision", _never)
+    monkeypatch.setattr(budget, "TIME_BOUND_S", 0.001)
+    code, _, err = cli("collide", "--angle", "30", "--friction", "0.5", "--v", "0.05",
+                       "--friction-model", "microslip")  # fmt: skip
+    line = one_line_error(code, err, "--modes 160", "Verlet steps", "modes fit", "--force")
+    assert "wall nodes" in line
+    rim = rim_modes(compute_modes(0.33, count=20))
+    soft, stiff = (
+        microslip_work(rim, 0.05, 0.05, 100.0, settings=MicroslipSettings(kappa=k))
+        for k in (64.0, 256.0)
+    )
+    assert soft.memory_bytes > 0 and soft.nodes == stiff.nodes == len(rim.wall_nodes(100.0))
+    assert soft.spread == stiff.spread == oblique_microslip._WORK_SPREAD
+    assert soft.seconds > 0 and stiff.seconds > 0
+
+
 def test_default_modes_and_the_estimate():
     """Left out, --modes is 160 on this route; the estimate grows with the modes and the wall
     and its inverse (what fits) is consistent with it."""
