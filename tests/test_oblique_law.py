@@ -77,6 +77,28 @@ def test_frictionless_oblique_impact_keeps_its_tangential_motion():
     assert p.epsilon_normal < 1.0 and abs(p.energy_balance) < 1e-9
 
 
+def test_microslip_point_is_the_microslip_route_at_the_same_speed_and_wall():
+    """--friction-model microslip: each number is microslip_collision's at the same reduced
+    speed and wall (the same code path: equal), beta's error the change from half the modes
+    (the cylinder has no quasistatic theory), one phase, the model and kappa in the inputs;
+    the head-on law is still read beside epsilon_normal."""
+    from restitution.dynamics.oblique_microslip import MicroslipSettings, microslip_collision
+
+    r = _fast(angle=30.0, friction=0.3, friction_model="microslip", kappa=32.0)
+    p = oblique_answer(r, modes=8).points[0]
+    tan = math.tan(math.radians(30.0))
+    runs = {n: microslip_collision(rim_modes(get_modes(0.3 / 0.7, count=n)), p.v, p.v * tan,
+                                   0.3, p.alpha, settings=MicroslipSettings(kappa=32.0))
+            for n in (4, 8)}  # fmt: skip
+    assert p.beta == runs[8].beta and p.epsilon_normal == runs[8].epsilon_normal
+    assert p.beta_error == abs(runs[8].beta - runs[4].beta) and p.phases == 1
+    assert abs(p.energy_balance) < 1e-5
+    inputs = r.inputs()
+    assert inputs["friction_model"] == "microslip" and inputs["kappa"] == 32.0
+    plain = _fast(angle=30.0, friction=0.3)
+    assert plain.inputs()["friction_model"] == "stick-slip" and plain.inputs()["kappa"] is None
+
+
 def test_refusals_before_anything_is_computed():
     cases = [
         (dict(angle=30.0), "needs --friction"),
@@ -87,6 +109,9 @@ def test_refusals_before_anything_is_computed():
         (dict(angle=30.0, friction=0.3, reference_speed=1.0), "--reference-speed"),
         (dict(angle=30.0, friction=0.3, relaxation_time=1e-6), "--relaxation-time"),
         (dict(friction=0.3), "--angle"),
+        (dict(angle=30.0, friction=0.3, kappa=16.0), "--friction-model microslip"),
+        (dict(friction_model="microslip"), "goes with --angle"),
+        (dict(kappa=16.0), "goes with --angle"),
     ]
     for kw, words in cases:
         with pytest.raises(InputError, match=None) as info:

@@ -40,12 +40,13 @@ from restitution.cli._common import (
     stretched,
 )
 from restitution.cli.report import Report, emit, rich_text
+from restitution.dynamics.oblique import FRICTION_MODELS
 from restitution.dynamics.oblique_cost import check_reach
 from restitution.dynamics.oblique_microslip import MICROSLIP, MicroslipSettings
 from restitution.errors import InputError
 from restitution.status import Status
 
-STICK_SLIP = "stick-slip"
+STICK_SLIP = FRICTION_MODELS[0]
 """``--friction-model``'s default: one stick/slip state for the contact."""
 DEFAULT_KAPPA = MicroslipSettings().kappa
 """``--kappa``'s default (the finite-element judge's)."""

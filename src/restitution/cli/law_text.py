@@ -218,6 +218,12 @@ def _uninformative_part(note: str) -> str:
     return note
 
 
+def _friction_text(r) -> str:
+    if r.oblique_kappa is not None:
+        return f"microslip at every wall node, kappa = {r.oblique_kappa:g}"
+    return "one stick/slip state for the contact"
+
+
 def oblique_lines(a) -> list[str]:
     """The oblique answer (:class:`restitution.laws.oblique.ObliqueAnswer`) for people: the
     grain and the impact, a row per speed with each number's change from half the modes."""
@@ -225,9 +231,10 @@ def oblique_lines(a) -> list[str]:
     lines = [
         r.grain.describe(),
         f"oblique impact on the rigid wall: {r.angle:g} degrees from the normal, friction mu = "
-        f"{r.friction:g}; each speed is the normal one (tangential: w tan(angle)), no spin "
-        "before; modal oblique route (docs/oblique.md), +- the change from half the modes (with "
-        "the distance from the limits shown below each row, where shown)",
+        f"{r.friction:g} ({_friction_text(r)}); each speed is the normal one (tangential: w "
+        "tan(angle)), no spin before; modal oblique route (docs/oblique.md), +- the change "
+        "from half the modes (with the distance from the limits shown below each row, where "
+        "shown)",
     ]
     spin_unit = "rad/s" if r.radius is not None else "m/s (omega R; --radius gives rad/s)"
     lines.append(

@@ -26,7 +26,9 @@ oblique_quasistatic`, the sphere's Hertz-Mindlin, :data:`QUASISTATIC`), each poi
 that theory's ``beta`` at its speeds: ``beta_quasistatic`` without microslip (one stick/slip state
 for the contact, Maw, Barber and Fawcett's law (a): the modal model's own limit at low speed) and
 ``beta_microslip`` with Mindlin's microslip (law (b), what a continuum's local friction gives);
-``beta``'s error then also holds, in quadrature, the distance from ``beta_quasistatic``, as
+``beta``'s error then also holds, in quadrature, the distance from ``beta_quasistatic`` (for
+``--friction-model microslip``, friction at every wall node by
+:func:`restitution.dynamics.oblique_microslip.microslip_collision`: from ``beta_microslip``), as
 ``epsilon_normal``'s holds the head-on law's: one doubling of the modes understates how far 40
 modes are from that limit (the ball at 1 m/s: within one such change at 1 of 5 angles,
 docs/oblique.md). Above the quasistatic regime the distance also holds the impact's dynamics: an
@@ -48,6 +50,12 @@ from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import body_kind
 from restitution.dynamics.oblique import oblique_collision
 from restitution.dynamics.oblique_cost import check_reach, oblique_work, suspect_advice
+from restitution.dynamics.oblique_microslip import (
+    MICROSLIP,
+    MicroslipSettings,
+    microslip_collision,
+    microslip_work,
+)
 from restitution.errors import InputError
 from restitution.laws.units import BODIES
 from restitution.quasistatic.oblique import MODELS as QUASISTATIC_MODELS
@@ -102,7 +110,7 @@ class ObliquePoint:
     friction_work, energy_balance : float
         Friction work and the integration's energy balance, fractions of ``E0``.
     phases : int
-        Stick/slip phases of the contact.
+        Stick/slip phases of the contact (1 for the microslip route: every node on its own).
     epsilon_head_on_law, epsilon_head_on_law_error, head_on_law_status : float, float, str
         The head-on law of the material at this speed (``N, alpha -> infinity``, what ``law``
         without ``--angle`` answers), to read ``epsilon_normal`` against: the gap is the
@@ -113,8 +121,8 @@ class ObliquePoint:
         Both runs, s.
     beta_quasistatic, beta_microslip : float or None
         The kind's quasistatic oblique theory at this impact (module docs): without microslip
-        (the modal model's low-speed limit, in ``beta_error``) and with it; ``None`` where the
-        kind has none, or at angle 0.
+        (the one-state route's low-speed limit, in its ``beta_error``) and with it (the
+        microslip route's, in its); ``None`` where the kind has none, or at angle 0.
     """
 
     speed_m_s: float
@@ -255,12 +263,29 @@ def oblique_answer(
         plans.append((w, v, alpha))
     bodies = {n: kind.oblique_body(get_modes(nu, count=n, geometry=kind.geometry))
               for n in (modes // 2, modes)}  # fmt: skip
-    seconds = sum(oblique_work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
+    microslip = r.oblique_friction_model == MICROSLIP
+    settings = MicroslipSettings(kappa=r.oblique_kappa) if microslip else None
+
+    def work(b, v, a):
+        if microslip:
+            return microslip_work(b, v, v * tan, a, settings=settings)
+        return oblique_work(b, v, a)
+
+    def run(b, v, a):
+        if microslip:
+            return microslip_collision(b, v, v * tan, r.friction, a, settings=settings)
+        return oblique_collision(b, v, v * tan, r.friction, a)
+
+    seconds = sum(work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
+    how = (
+        "planned Verlet steps times one timed step; measured runs took 0.88-4.8 times it"
+        if microslip
+        else "measured on softer walls, alpha <= 1000-4000; on the harder walls of slow impacts "
+        "it overestimates: steel at 1 m/s took a fifth to a half of it, docs/oblique.md"
+    )
     note(
-        f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes: about "
-        f"{seconds:.0f} s expected (measured on softer walls, alpha <= 1000-4000; on the harder "
-        "walls of slow impacts it overestimates: steel at 1 m/s took a fifth to a half of it, "
-        "docs/oblique.md)"
+        f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes, "
+        f"{r.oblique_friction_model} friction: about {seconds:.0f} s expected ({how})"
     )
     head_on = [None] * len(r.speeds) if head_on is None else list(head_on)
     points = []
@@ -268,10 +293,11 @@ def oblique_answer(
         start = time.perf_counter()
         # The overflowing trial steps of these hard walls are handled (and silenced) by
         # oblique_collision; the accepted run balances its energy to ~1e-11 (energy_balance).
-        runs = {n: oblique_collision(b, v, v * tan, r.friction, alpha) for n, b in bodies.items()}
+        runs = {n: run(b, v, alpha) for n, b in bodies.items()}
         wall = time.perf_counter() - start
         limits = _quasistatic_betas(kind, v, v * tan, r.friction, nu)
-        points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits))
+        points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits,
+                             microslip))  # fmt: skip
     return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))
 
 
@@ -332,7 +358,9 @@ def _normal_error(fine, coarse, law_point) -> float:
     return math.sqrt(change**2 + gap**2 + float(law_point.epsilon_err or 0.0) ** 2)
 
 
-def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits) -> ObliquePoint:
+def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits, microslip) -> ObliquePoint:
+    """One speed's answer; ``beta``'s error holds the distance from the route's own quasistatic
+    limit: law (a) for one stick/slip state, law (b) for friction at every node."""
     fine, coarse = runs[modes], runs[modes // 2]
     c = grain.c_m_s
     spin, spin_err = fine.spin * c, abs(fine.spin - coarse.spin) * c
@@ -353,7 +381,7 @@ def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits) -> Obliq
         epsilon_normal=fine.epsilon_normal,
         epsilon_normal_error=_normal_error(fine, coarse, law_point),
         beta=beta,
-        beta_error=_beta_error(fine, coarse, limits[0]),
+        beta_error=_beta_error(fine, coarse, limits[1] if microslip else limits[0]),
         spin_R_m_s=spin,
         spin_R_m_s_error=spin_err,
         spin_rad_s=None if rad is None else spin * rad,

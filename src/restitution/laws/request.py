@@ -43,6 +43,17 @@ MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 """What one measured epsilon may fix (``--measured-fixes``)."""
 
 ROUTES = ("modal", "residual")
+
+
+def friction_models() -> tuple[str, str]:
+    """``--friction-model``'s choices, the default first: the oblique routes' names
+    (:mod:`restitution.dynamics.oblique`, :mod:`restitution.dynamics.oblique_microslip`)."""
+    from restitution.dynamics.oblique import FRICTION_MODELS
+    from restitution.dynamics.oblique_microslip import MICROSLIP
+
+    return FRICTION_MODELS[0], MICROSLIP
+
+
 """``--route`` of ``--compute``: the modal production or the static residual
 (:mod:`restitution.laws.making.residual_law`)."""
 
@@ -245,6 +256,27 @@ class LawRequest:
             "(default none: they set mu = 0 and say so).",
         ),
     )
+    friction_model: str | None = field(
+        default=None,
+        metadata=option(
+            "--friction-model",
+            "With --angle: 'stick-slip' (default; one stick/slip state for the whole contact, "
+            "DOP853 phase by phase) or 'microslip' (Coulomb's law at every wall node, "
+            "Mindlin's annulus of microslip, regularised by --kappa; Verlet steps; closer to "
+            "the finite elements in partial slip, docs/oblique.md).",
+            "choice",
+            choices=lambda: list(friction_models()),
+        ),
+    )
+    kappa: float | None = field(
+        default=None,
+        metadata=option(
+            "--kappa",
+            "With --friction-model microslip: the tangential spring over the wall's normal "
+            "stiffness at each node (Coulomb's law is kappa -> infinity); default 64.",
+            positive=True,
+        ),
+    )
     maxwell_temperature: float | None = field(
         default=None,
         metadata=option(
@@ -428,6 +460,22 @@ class LawRequest:
         return dict(self.extra).get(keyword)
 
     @property
+    def oblique_friction_model(self) -> str | None:
+        """With ``angle``: ``friction_model`` or its default (``"stick-slip"``); else ``None``."""
+        if self.angle is None:
+            return None
+        return self.friction_model or friction_models()[0]
+
+    @property
+    def oblique_kappa(self) -> float | None:
+        """With ``angle`` and the microslip model: ``kappa`` or its default; else ``None``."""
+        if self.oblique_friction_model != friction_models()[1]:
+            return None
+        from restitution.dynamics.oblique_microslip import MicroslipSettings
+
+        return MicroslipSettings().kappa if self.kappa is None else self.kappa
+
+    @property
     def grain(self) -> Grain:
         """This grain (checks ``E``, ``nu``, ``rho`` and the geometry)."""
         return Grain(E=self.E, nu=self.nu, rho=self.rho, shape=self.shape)
@@ -574,7 +622,9 @@ class LawRequest:
             "reference_speed": self.reference_speed,
             "maxwell_temperature": self.maxwell_temperature, "export": path(self.export_dir),
             "friction": self.friction,
-            **({} if self.angle is None else {"angle_deg": self.angle}),
+            **({} if self.angle is None else {"angle_deg": self.angle,
+                                                 "friction_model": self.oblique_friction_model,
+                                                 "kappa": self.oblique_kappa}),
             "measured_epsilon": self.measured_epsilon,
             "measured_speed_m_s": self.measured_speed,
             "relaxation_time_s": self.relaxation_time, "radius_m": self.radius,

@@ -57,6 +57,12 @@ def check_options(r) -> None:
                 "--friction goes into the DEM snippets: add --export DIR (or --angle DEG for "
                 "an oblique impact)"
             )
+    if r.angle is None and (r.friction_model is not None or r.kappa is not None):
+        flag = "--friction-model" if r.friction_model is not None else "--kappa"
+        raise InputError(
+            f"{flag} goes with --angle DEG and --friction MU (an oblique impact); leave it out "
+            "for a head-on law"
+        )
     if r.angle is not None:
         _check_oblique(r)
         return
@@ -88,7 +94,7 @@ def check_options(r) -> None:
 
 
 OBLIQUE_FIELDS = frozenset({"E", "nu", "rho", "shape", "against", "speeds", "angle", "friction",
-                            "radius"})  # fmt: skip
+                            "friction_model", "kappa", "radius"})  # fmt: skip
 """The request fields an oblique impact (``--angle``) reads; any other given is refused."""
 
 
@@ -105,6 +111,13 @@ def _check_oblique(r) -> None:
         raise InputError(
             "--angle needs --friction MU (Coulomb's coefficient, 0 frictionless): an oblique "
             "impact is both"
+        )
+    from restitution.dynamics.oblique_microslip import MICROSLIP
+
+    if r.kappa is not None and r.friction_model != MICROSLIP:
+        raise InputError(
+            "--kappa has no effect with --friction-model stick-slip (one exact stick/slip "
+            "switch); add --friction-model microslip for friction at every wall node"
         )
     for f in fields(r):
         if f.name in OBLIQUE_FIELDS or f.name == "extra":

@@ -48,7 +48,11 @@ def _head_on(r, note) -> list | None:
     from restitution.errors import InputError
 
     try:
-        return list(serve(replace(r, angle=None, friction=None, radius=None)).points)
+        return list(
+            serve(
+                replace(r, angle=None, friction=None, friction_model=None, kappa=None, radius=None)
+            ).points
+        )
     except InputError as exc:
         note(f"note: no head-on law to read epsilon_normal against ({exc})")
         return None
