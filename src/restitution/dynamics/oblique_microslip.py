@@ -94,8 +94,8 @@ class MicroslipSettings:
     step_safety : float
         Fraction of the stability bound ``2 / omega_max`` taken as the step.
     max_steps : int
-        Refuse a run planned beyond this many steps (its time, ``steps`` times about 0.1 ms per
-        hundred nodes and modes, is said in the message).
+        Refuse a run planned beyond this many steps (the message says the steps, the step and
+        the time span; :func:`microslip_work` estimates the wall time).
     """
 
     kappa: float = 64.0
