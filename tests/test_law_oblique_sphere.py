@@ -132,6 +132,23 @@ def test_steel_ball_at_1_m_s_30_degrees_mu_0_3_in_one_command(cli):
     assert p["beta_microslip"] > p["beta_quasistatic"]
 
 
+def test_the_ball_with_microslip_measures_beta_from_law_b(cli, monkeypatch):
+    """--friction-model microslip: beta's error holds the distance from Hertz-Mindlin with
+    microslip (law (b), 0.31605: that route's own low-speed limit), and the text says which
+    limit is in the error (4 and 2 modes for speed)."""
+    monkeypatch.setattr(oblique, "law_modes", lambda kind: 4)
+    args = (*BALL_ARGS, "--speed", "1", "--angle", "30", "--friction", "0.3",
+            "--friction-model", "microslip")  # fmt: skip
+    code, out, err = cli("law", *args, "--format", "json")
+    assert code == 0, err
+    (p,) = json.loads(out)["points"]
+    assert p["phases"] == 1 and p["beta_microslip"] == pytest.approx(0.31605, abs=1e-5)
+    assert p["beta_error"] >= abs(p["beta"] - p["beta_microslip"])
+    code, out, err = cli("law", *args)
+    assert code == 0, err
+    assert "0.31605 with microslip (this route's low-speed limit, in beta's error)" in out
+
+
 def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
     """Text and CSV of the ball's answer, as for the cylinder (the kind's count lowered to 4
     and 2 modes for speed: about 3 s each)."""

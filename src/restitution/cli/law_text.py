@@ -259,10 +259,12 @@ def oblique_lines(a) -> list[str]:
                 f"({p.head_on_law_status}): read epsilon_normal against it"
             )
         if p.beta_quasistatic is not None:
+            ours = " (this route's low-speed limit, in beta's error)"
+            one, micro = ("", ours) if r.oblique_kappa is not None else (ours, "")
             lines.append(
                 f"{'':>9} quasistatic Hertz-Mindlin at this impact: beta = "
-                f"{p.beta_quasistatic:.5f} with one stick/slip state (this route's low-speed "
-                f"limit, in beta's error), {p.beta_microslip:.5f} with microslip"
+                f"{p.beta_quasistatic:.5f} with one stick/slip state{one}, "
+                f"{p.beta_microslip:.5f} with microslip{micro}"
             )
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
