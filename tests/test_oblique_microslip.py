@@ -58,18 +58,20 @@ def test_doctests():
 @pytest.mark.parametrize("kind", ["disk", "sphere"])
 def test_jacobians_are_the_positions_derivatives(kind, rim20, sphere20):
     """The node positions are linear in Q: X(Q + e_k) - X(Q) is column k of dX/dQ (to rounding),
-    the same for Y (a step of 1e-4: rounding ~1e-12 after the division); the nodes are those of
-    ``place`` (same positions), and an index names the same material node at another rotation
-    and depth."""
+    the same for Y (a step of 1e-4: rounding ~1e-12 after the division); the sphere's nodes are
+    those of its ``place`` (computed apart), the disk's positions those of the rim's formula; an
+    index names the same material node at another rotation and depth."""
     body = rim20 if kind == "disk" else cap_modes(sphere20, azimuthal=1)
     nodes = body.wall_nodes(200.0)
     rng = np.random.default_rng(7)
     Q = 1e-3 * rng.standard_normal(len(body))
     x0, rot, cutoff = -1.0, 0.1, -0.2
     idx, weight, X, Yr, dXdQ, dYdQ = nodes.jacobians(x0, rot, Q, 0.0, cutoff)
-    placed = nodes.place(x0, rot, Q, np.zeros(len(body)), 0.0, cutoff)
-    np.testing.assert_allclose(placed[1], X, rtol=0, atol=1e-15)
-    np.testing.assert_allclose(placed[2], Yr, rtol=0, atol=1e-15)
+    if kind == "sphere":  # the cap's place computes the positions on its own (the rim's reuses
+        # jacobians: for the disk the direct formula below is the independent check)
+        placed = nodes.place(x0, rot, Q, np.zeros(len(body)), 0.0, cutoff)
+        np.testing.assert_allclose(placed[1], X, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(placed[2], Yr, rtol=0, atol=1e-15)
     h = 1e-4
     for k in rng.choice(len(body), size=5, replace=False):
         step = np.zeros(len(body))

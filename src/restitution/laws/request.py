@@ -25,6 +25,7 @@ from restitution.bodies.kinds import body_kind
 from restitution.errors import InputError
 from restitution.laws.partners.base import against_choices, owner, partner_for
 from restitution.laws.request_checks import (
+    OBLIQUE_OWN,
     check_options,
     check_partner_ratios,
     check_wall_numbers,
@@ -458,6 +459,13 @@ class LawRequest:
         if keyword in _FIELD_NAMES:
             return getattr(self, keyword)
         return dict(self.extra).get(keyword)
+
+    def head_on(self) -> LawRequest:
+        """This request without the oblique impact's own fields (:data:`~restitution.laws.
+        request_checks.OBLIQUE_OWN`): the head-on law of the same grain at the same speeds."""
+        from dataclasses import replace
+
+        return replace(self, **dict.fromkeys(OBLIQUE_OWN))
 
     @property
     def oblique_friction_model(self) -> str | None:

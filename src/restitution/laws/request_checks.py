@@ -93,8 +93,11 @@ def check_options(r) -> None:
         )
 
 
-OBLIQUE_FIELDS = frozenset({"E", "nu", "rho", "shape", "against", "speeds", "angle", "friction",
-                            "friction_model", "kappa", "radius"})  # fmt: skip
+OBLIQUE_OWN = frozenset({"angle", "friction", "friction_model", "kappa", "radius"})
+"""The request fields of the oblique impact itself: without them (all ``None``) the same request
+is the head-on law of the grain (:meth:`restitution.laws.request.LawRequest.head_on`)."""
+
+OBLIQUE_FIELDS = frozenset({"E", "nu", "rho", "shape", "against", "speeds"}) | OBLIQUE_OWN
 """The request fields an oblique impact (``--angle``) reads; any other given is refused."""
 
 

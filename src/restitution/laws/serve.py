@@ -43,16 +43,10 @@ def _silent(text: str) -> None:
 def _head_on(r, note) -> list | None:
     """The head-on law's points at the oblique request ``r``'s speeds, to read its
     ``epsilon_normal`` against (``None`` where no law serves the material)."""
-    from dataclasses import replace
-
     from restitution.errors import InputError
 
     try:
-        return list(
-            serve(
-                replace(r, angle=None, friction=None, friction_model=None, kappa=None, radius=None)
-            ).points
-        )
+        return list(serve(r.head_on()).points)
     except InputError as exc:
         note(f"note: no head-on law to read epsilon_normal against ({exc})")
         return None
