@@ -138,13 +138,16 @@ def test_the_steel_cylinder_at_1_m_s_is_served_within_one_sd_of_the_finite_eleme
     s = si_law(E=210e9, nu=0.3, rho=7850, shape="cylinder", against="wall")
     (p,) = s.points([1.0])
     assert p.v_over_c == pytest.approx(fem["v"], rel=1e-9)
-    # The bound stays: 9.4e-4 as docs/lammps-plugin.md's table of the plugin states it.
-    assert p.epsilon_err == pytest.approx(9.44e-4, rel=1e-2)
-    assert p.sd_calibrated and p.epsilon_sd <= 6e-4  # the issue's limit
+    # Both neighbours (1e-4 and 2e-4) are the residual route's points since the law's slowest
+    # points were rerouted (docs/numerics.md): not calibrated, so the sd is the bound, 3.2e-4
+    # (it was 9.4e-4, with a calibrated sd of 3.4e-4 from the modal points). Within 0.54 of it
+    # of the finite elements (measured), under the issue's limit of 6e-4.
+    assert p.epsilon_err == pytest.approx(3.22e-4, rel=1e-2)
+    assert not p.sd_calibrated and p.epsilon_sd == p.epsilon_err <= 6e-4
     assert abs(p.epsilon - fem["epsilon"]) <= p.epsilon_sd
     assert s.epsilon_sd(1.0) == p.epsilon_sd
     d = p.to_dict()
-    assert d["epsilon_sd"] == p.epsilon_sd and d["epsilon_sd_kind"] == "standard deviation"
+    assert d["epsilon_sd"] == p.epsilon_sd and d["epsilon_sd_kind"] == "bound"
 
 
 # -- serving ---------------------------------------------------------------------------------
@@ -197,7 +200,7 @@ def _law_command(capsys, *extra) -> tuple[str, str]:
         "wall",
         "--speed",
         "0.1",
-        "1",
+        "10",
         *extra,
     ]
     try:
@@ -221,3 +224,18 @@ def test_the_law_command_shows_the_sd_and_what_it_means(capsys):
     assert "one standard deviation" in doc["epsilon_sd_meaning"]
     kinds = [p["epsilon_sd_kind"] for p in doc["points"]]
     assert kinds == ["bound", "standard deviation"]
+
+
+def test_each_route_is_judged_on_its_own_values(fitted):
+    """The shipped disk laws serve the residual route at their slowest points (docs/numerics.md);
+    the modal factors are fitted on the modal values there (kept in the laws' ``rerouted``
+    entries), so the 26 modal rows are those of the laws before rerouting, and the finite-element
+    points the residual route serves (nu = 0.33 and 0.9 at v = 1e-4: the shipped reference file;
+    the other four are in tests/data/residual_slow_points.json) are judged with its bound."""
+    own = [r for r in rows_fem() if r.route == MODAL]
+    served = rows_fem(served=True)
+    assert len(own) == 26 and sum(r.route == MODAL for r in served) == 24
+    residual = [r for r in served if r.route == "residual"]
+    assert sorted((r.nu, r.v) for r in residual) == [(0.33, 1e-4), (0.9, 1e-4)]
+    c = fitted["coverage"]["residual"]["bound"]
+    assert c["points"] == 2 and c["within_1"] == 1.0

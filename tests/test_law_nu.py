@@ -52,8 +52,11 @@ def test_leave_one_out_is_the_prediction_without_the_node():
     predicted = PchipInterpolator(others, [exact(x, v) for x in others])(0.5)
     assert_allclose(loo[2], abs(predicted - exact(0.5, v)), rtol=1e-12)
     assert np.isnan(loo[0]) and np.isnan(loo[-1])
-    # Between 0.3 and 0.5 (t = 0.6): 4 t (1 - t) times the larger of the two nodes' errors.
-    assert_allclose(served.interpolation_err(v), 4 * 0.6 * 0.4 * max(loo[1], loo[2]), rtol=1e-12)
+    # Between 0.3 and 0.5 (t = 0.6): 4 t (1 - t) times the larger of the two nodes' errors at
+    # v and at the multiples SPEED_WINDOW of it inside the laws' range (here 0.1 and 0.3).
+    window = served.leave_one_out(np.array([v, 0.1, 0.3]))[1:3]
+    assert_allclose(served.interpolation_err(v), 4 * 0.6 * 0.4 * window.max(), rtol=1e-12)
+    assert window.max() > max(loo[1], loo[2])  # the envelope is wider than the value at v
 
 
 def test_interpolation_error_is_continuous_and_vanishes_at_the_grid():
@@ -69,7 +72,9 @@ def test_interpolation_error_is_continuous_and_vanishes_at_the_grid():
         gap = abs(nu - 0.5) / 0.2  # t or 1 - t of the interval
         mid = law_for(0.4, laws=laws).interpolation_err(v)  # t = 0.5
         assert np.all(served.interpolation_err(v) <= 1.1 * 4 * gap * np.maximum(mid, 1e-300))
-        assert_allclose(served.epsilon_err(v), node.epsilon_err(v), rtol=0.05)
+        # The rest of the error is the node's point error, interpolated in nu.
+        point = np.sqrt(served.epsilon_err(v) ** 2 - served.interpolation_err(v) ** 2)
+        assert_allclose(point, node.epsilon_err(v), rtol=1e-9)
         assert np.all(np.abs(served.epsilon(v) - exact(nu, v)) <= served.epsilon_err(v))
     # Growing from the node's error with the distance to it.
     errs = [law_for(nu, laws=laws).epsilon_err(v) for nu in (0.5 + 1.5e-4, 0.5 + 1e-3, 0.55)]
@@ -138,7 +143,8 @@ def test_interpolation_covers_direct_laws_between_the_first_grid(nu):
     0.25, 3/7, 0.6 and 0.8 were computed with the production settings (they now ship); served
     from the first grid alone, the interpolation must lie within one combined error (its own
     and the direct law's) at least at the 68 % of the speeds a Gaussian error would, and within
-    two at 95 % (measured: 94 % of 88 speeds within one, all within two)."""
+    two at 95 % (measured with the shipped laws, their slowest points rerouted: 101 of the 102
+    speeds within one, all within two)."""
     from restitution.laws.law_load import law
 
     direct = law(nu)
@@ -149,9 +155,13 @@ def test_interpolation_covers_direct_laws_between_the_first_grid(nu):
     sigma = diff / np.hypot(served.epsilon_err(v), direct.epsilon_err(v))
     assert np.mean(sigma <= 1.0) >= 0.68, sigma
     assert np.mean(sigma <= 2.0) >= 0.95, sigma
-    # Conservative, not vacuous: the stated error is a few times the true one (measured median
-    # ratio 3-19; with the earlier estimate, the grid's largest leave-one-out error, 4-38).
-    assert np.median(served.epsilon_err(v) / np.maximum(diff, 1e-12)) < 25
+    # Conservative, not vacuous: the stated error is a few times the true one. Measured median
+    # ratios 3.0, 8.8, 5.8 and 27.3 at nu = 0.6, 3/7, 0.8, 0.25 since the leave-one-out term is
+    # the envelope over SPEED_WINDOW (3-19 with the value at v alone, which vanished where the
+    # leave-one-out miss changes sign; 4-38 with the grid's largest leave-one-out error). The
+    # limit was 25 before the envelope; the served standard deviation is 1.9-9.9 times the
+    # miss (docs/errors.md).
+    assert np.median(served.epsilon_err(v) / np.maximum(diff, 1e-12)) < 30
 
 
 def test_first_grid_interpolation_coverage_over_all_direct_laws():

@@ -49,18 +49,27 @@ def _pchip_all(x, y, at):
 
 
 def _former(law: NuInterpolatedLaw, v):
-    """epsilon, its error and the interpolation error as the former code computed them."""
+    """epsilon, its error and the interpolation error as the former code computed them, with
+    the leave-one-out term's envelope over ``v/2, v, 2v`` (clipped to the laws' range) since
+    3 Dec 2026 (``law_nu.SPEED_WINDOW``)."""
     x = np.array([n.nu for n in law.nodes])
-    eps = np.array([n.epsilon(v, outside="nan") for n in law.nodes])
+
+    def leave_one_out(w):
+        eps = np.array([n.epsilon(w, outside="nan") for n in law.nodes])
+        loo = np.full(eps.shape, np.nan)
+        for k in range(1, len(x) - 1):
+            keep = np.arange(len(x)) != k
+            loo[k] = np.abs(_pchip_all(x[keep], eps[keep], x[k]) - eps[k])
+        return eps, loo
+
+    eps, loo = leave_one_out(v)
     err = np.array([n.epsilon_err(v, outside="nan") for n in law.nodes])
-    loo = np.full(eps.shape, np.nan)
-    for k in range(1, len(x) - 1):
-        keep = np.arange(len(x)) != k
-        loo[k] = np.abs(_pchip_all(x[keep], eps[keep], x[k]) - eps[k])
     i = int(np.clip(np.searchsorted(x, law.nu) - 1, 0, len(x) - 2))
     t = (law.nu - x[i]) / (x[i + 1] - x[i])
     around = [k for k in (i, i + 1) if 0 < k < len(x) - 1]
-    interp = np.max(loo[around], axis=0) * 4.0 * t * (1.0 - t)
+    lo, hi = law.valid_range
+    window = [loo[around]] + [leave_one_out(np.clip(v * f, lo, hi))[1][around] for f in (0.5, 2)]
+    interp = np.max(np.concatenate(window), axis=0) * 4.0 * t * (1.0 - t)
     point = np.abs(_pchip_all(x, err, law.nu))
     return _pchip_all(x, eps, law.nu), np.hypot(point, interp), interp, loo
 

@@ -58,6 +58,7 @@ from restitution.dynamics.residual_kernel import (
     NODES_EXHAUSTED,
     OK,
     OVERFLOW,
+    STALL_TOL,
     STEPS_EXHAUSTED,
     run_residual,
 )
@@ -159,6 +160,8 @@ class _Contact:
                 if np.max(np.abs(Ft)) <= (1.0 - 0.25 * lam) * norm or lam < 1e-8:
                     break
                 lam *= 0.5
+            if lam < 1e-8 and np.max(np.abs(du)) * a < STALL_TOL:
+                break  # the round-off floor (residual_kernel.STALL_TOL)
             u = trial
             if np.max(np.abs(lam * du)) * a < _NEWTON_TOL:
                 break

@@ -59,6 +59,7 @@ __all__ = [
     "NU_DIRECT",
     "NU_GRID",
     "Row",
+    "bound_z",
     "coverage",
     "fit",
     "fit_factor",
@@ -138,9 +139,21 @@ def _modal_row(source: str, law_: EpsilonLaw, v: float, ref: float, ref_err: flo
     )
 
 
-def rows_fem() -> list[Row]:
+def _law(*args, served: bool = False, **kwargs) -> EpsilonLaw:
+    """A shipped law as served (``served``) or with each route's own values: at the speeds its
+    points were rerouted, the points the modal route computed there
+    (:func:`restitution.laws.making.reroute.before_rerouting`)."""
+    from restitution.laws.making.reroute import before_rerouting
+
+    shipped = law(*args, **kwargs)
+    return shipped if served else before_rerouting(shipped)
+
+
+def rows_fem(*, served: bool = False) -> list[Row]:
     """Every shipped finite-element reference point of a body on the wall or of a pair inside
-    its modal law's range (two spheres' fastest points lie above their laws)."""
+    its modal law's range (two spheres' fastest points lie above their laws); against each
+    route's own values, or with ``served`` against the laws as served (a rerouted point's row
+    is then the replacing route's)."""
     from restitution.bodies.kinds import geometries
     from restitution.fem.pair_reference import load_pair_reference
     from restitution.fem.reference import load_reference, reference_filename
@@ -153,7 +166,11 @@ def rows_fem() -> list[Row]:
         for p in load_reference(geometry=geometry):
             out.append(
                 _modal_row(
-                    f"fem:{geometry}", law(p.nu, geometry=geometry), p.v, p.epsilon, p.epsilon_err
+                    f"fem:{geometry}",
+                    _law(p.nu, geometry=geometry, served=served),
+                    p.v,
+                    p.epsilon,
+                    p.epsilon_err,
                 )
             )
     for path in sorted(data.glob("fem_reference_*pair*.json")):
@@ -163,43 +180,43 @@ def rows_fem() -> list[Row]:
             except InputError:  # a file of another kind's pairs
                 continue
             for p in points:
-                served = law(p.nu, geometry=geometry, partner=p.partner)
-                lo, hi = served.valid_range
+                pair = _law(p.nu, geometry=geometry, partner=p.partner, served=served)
+                lo, hi = pair.valid_range
                 if lo <= p.w <= hi:
-                    out.append(
-                        _modal_row(f"fem:{path.name}", served, p.w, p.epsilon, p.epsilon_err)
-                    )
+                    out.append(_modal_row(f"fem:{path.name}", pair, p.w, p.epsilon, p.epsilon_err))
     return out
 
 
-def rows_between(folder: Path) -> list[Row]:
-    """The direct points between computed speeds stored in ``folder/between_*.json``."""
+def rows_between(folder: Path, *, served: bool = False) -> list[Row]:
+    """The direct points between computed speeds stored in ``folder/between_*.json`` (against
+    each route's own values, or the laws as served: :func:`rows_fem`)."""
     out = []
     for path in sorted(Path(folder).glob("between_*.json")):
         d = json.loads(path.read_text())
-        served = law(d["nu"], geometry=d["geometry"])
+        law_ = _law(d["nu"], geometry=d["geometry"], served=served)
         for r in d["rows"]:
             out.append(
-                _modal_row(f"between:{path.stem}", served, r["v"], r["direct"], r["direct_err"])
+                _modal_row(f"between:{path.stem}", law_, r["v"], r["direct"], r["direct_err"])
             )
     return out
 
 
-def rows_nu() -> list[Row]:
+def rows_nu(*, served: bool = False) -> list[Row]:
     """The direct laws of :data:`NU_DIRECT` against PCHIP in ``nu`` through :data:`NU_GRID`, at
-    their computed modal speeds (the direct law's own point error as the reference's)."""
-    nodes = tuple(law(n) for n in NU_GRID)
+    their computed modal speeds (the direct law's own point error as the reference's); the
+    laws with each route's own values, or as served (:func:`rows_fem`)."""
+    nodes = tuple(_law(n, served=served) for n in NU_GRID)
     out = []
     for target in NU_DIRECT:
         interpolated = NuInterpolatedLaw(nu=target, nodes=nodes)
-        direct = law(target)
+        direct = _law(target, served=served)
         lo, hi = interpolated.valid_range
         keep = (direct.v >= lo) & (direct.v <= hi) & ~direct.quasistatic
         vs = direct.v[keep]
         get = interpolated._node_values(vs)
         eps = interpolated._pchip_in_nu(get, "epsilon", target)
         point = np.abs(interpolated._pchip_in_nu(get, "epsilon_err", target))
-        term = interpolated._interpolation_err_at(get)
+        term = interpolated._interpolation_err_at(get, vs)
         for v, e, p, t, ref, ref_err in zip(
             vs,
             eps,
@@ -271,6 +288,17 @@ def z_scores(rows: list[Row], kind: str, a: float, b: float, c: float) -> np.nda
     return np.array([r.miss / math.sqrt(var(r, f)) for r in rows])
 
 
+def bound_z(rows: list[Row]) -> np.ndarray:
+    """``|served - reference|`` over the served bound (both components) joined with the
+    reference's own error: how the routes that keep their bound are judged."""
+    return np.array(
+        [
+            r.miss / math.hypot(math.hypot(r.point_err, r.interpolation_err), r.reference_err)
+            for r in rows
+        ]
+    )
+
+
 def coverage(z: np.ndarray) -> dict:
     """Points, fraction within one and within two, median ``z``."""
     z = np.asarray(z, dtype=float)
@@ -319,6 +347,9 @@ def fit(between_dir: Path) -> dict:
             )
         ),
     }
+    # The residual route keeps its bound: its finite-element points, as served.
+    residual = [r for r in rows_fem(served=True) if r.route == RESIDUAL]
+    table["residual"] = {"bound": coverage(bound_z(residual))}
     return {
         "fitted_factors": {"a": a, "b": b, "c": c},
         "shipped_factors": {"a": sa, "b": sb, "c": sc},

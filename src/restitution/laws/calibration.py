@@ -96,19 +96,21 @@ CALIBRATIONS: dict[str, RouteCalibration] = {
         calibrated=True,
         basis=(
             "a: maximum likelihood on 13 of the 26 finite-element points at modal laws' "
-            "computed speeds (disk, sphere, two disks, steel-glass); b: on 47 of the 93 direct "
+            "computed speeds (disk, sphere, two disks, steel-glass; the modal values where the "
+            "shipped laws now serve the residual route's); b: on 47 of the 93 direct "
             "points between computed speeds (disk nu 0.33, 0.5; sphere 0.3, 0.4); held out: "
             "the other halves (restitution.fem.calibrate, docs/errors.md)"
         ),
     ),
     NU: RouteCalibration(
         NU,
-        nu_factor=0.32,
+        nu_factor=0.24,
         calibrated=True,
         basis=(
             "c: maximum likelihood on 51 of the 102 modal speeds of the direct laws at nu_2d = "
-            "0.25, 3/7, 0.6, 0.8 against PCHIP in nu through 0.2, 0.33, 0.5, 0.7, 0.9; held "
-            "out: the other 51 (docs/errors.md)"
+            "0.25, 3/7, 0.6, 0.8 against PCHIP in nu through 0.2, 0.33, 0.5, 0.7, 0.9, with "
+            "each route's own values (the modal ones at rerouted speeds); held out: the other "
+            "51 (docs/errors.md)"
         ),
     ),
     QUASISTATIC: RouteCalibration(
@@ -119,7 +121,11 @@ CALIBRATIONS: dict[str, RouteCalibration] = {
         ),
     ),
     RESIDUAL: RouteCalibration(
-        RESIDUAL, basis="not calibrated: no independent points stored; the sd is the bound"
+        RESIDUAL,
+        basis=(
+            "not calibrated: 6 finite-element points at the disk laws' rerouted speeds (nu "
+            "0.2, 0.33, 0.9 at v = 1e-4, 2e-4), too few to fit and check; the sd is the bound"
+        ),
     ),
     MECHANISM: RouteCalibration(
         MECHANISM,

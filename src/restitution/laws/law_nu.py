@@ -37,7 +37,23 @@ from restitution.laws.law import EpsilonLaw, _check_partner, _speeds
 from restitution.laws.law_file import _curve_command, _file_nu, law_filename
 from restitution.laws.law_load import NU_MATCH, _refuse_other_body, law
 
-__all__ = ["NU_MATCH", "NuInterpolatedLaw", "law_for", "shipped_match", "shipped_nus"]
+__all__ = [
+    "NU_MATCH",
+    "SPEED_WINDOW",
+    "NuInterpolatedLaw",
+    "law_for",
+    "shipped_match",
+    "shipped_nus",
+]
+
+SPEED_WINDOW = (0.5, 2.0)
+"""The ``nu``-interpolation term at ``v`` is the largest leave-one-out error at ``v`` and at
+these multiples of it (inside the grid laws' range): the leave-one-out prediction's miss is a
+signed function of ``v`` that changes sign, and at a sign change its size says nothing of the
+interpolation's (at ``nu_2d = 0.7`` the miss passes through zero near ``v = 1e-3``: 1.3e-5
+there between 2.1e-3 at ``5e-4`` and 8e-4 at ``2e-3``, where PCHIP through the first grid
+missed the direct law at ``nu_2d = 0.8`` by 3.3e-4). The window is the spacing of the production
+speeds (1, 2, 5 per decade)."""
 
 
 def shipped_nus(geometry: str = DEFAULT_GEOMETRY, partner=None) -> list[float]:
@@ -310,10 +326,16 @@ class NuInterpolatedLaw:
             self._pchip_in_nu(get, "epsilon", float(self.grid[k]), skip=k) - get(k, "epsilon")
         )
 
-    def _interpolation_err_at(self, get) -> np.ndarray:
+    def _interpolation_err_at(self, get, w: np.ndarray) -> np.ndarray:
+        """:meth:`interpolation_err` at the speeds ``w`` (``get``: :meth:`_node_values` of
+        ``w``): the leave-one-out errors' envelope over :data:`SPEED_WINDOW`."""
         around, t = self._around()
-        loo = np.array([self._leave_one_out_at(get, k) for k in around])
-        return np.max(loo, axis=0) * 4.0 * t * (1.0 - t)
+        lo, hi = self.valid_range
+        loo = [self._leave_one_out_at(get, k) for k in around]
+        for factor in SPEED_WINDOW:
+            near = self._node_values(np.clip(w * factor, lo, hi))
+            loo += [self._leave_one_out_at(near, k) for k in around]
+        return np.max(np.array(loo), axis=0) * 4.0 * t * (1.0 - t)
 
     def leave_one_out(self, v, *, outside: str = "raise") -> np.ndarray:
         """``|prediction without node k - node k|`` at speed(s) ``v``: the PCHIP of the other
@@ -351,7 +373,9 @@ class NuInterpolatedLaw:
         speeds of each law). The earlier estimate, the grid's largest leave-one-out error at
         any ``nu``, was 4-38 times the true error and jumped at the grid values.
         """
-        return self._serve(v, outside, lambda w: self._interpolation_err_at(self._node_values(w)))
+        return self._serve(
+            v, outside, lambda w: self._interpolation_err_at(self._node_values(w), w)
+        )
 
     def epsilon(self, v, *, outside: str = "raise"):
         """Interpolated ``epsilon`` at speed(s) ``v`` towards the wall (units of ``c``);
@@ -366,7 +390,7 @@ class NuInterpolatedLaw:
         def err(w: np.ndarray) -> np.ndarray:
             get = self._node_values(w)
             point = np.abs(self._pchip_in_nu(get, "epsilon_err", self.nu))
-            return np.hypot(point, self._interpolation_err_at(get))
+            return np.hypot(point, self._interpolation_err_at(get, w))
 
         return self._serve(v, outside, err)
 
@@ -390,7 +414,7 @@ class NuInterpolatedLaw:
                 np.abs(self._pchip_in_nu(get, "epsilon_sd", self.nu)),
                 np.abs(self._pchip_in_nu(get, "epsilon_err", self.nu)),
             )
-            return np.hypot(point, np.where(cal, c, 1.0) * self._interpolation_err_at(get))
+            return np.hypot(point, np.where(cal, c, 1.0) * self._interpolation_err_at(get, w))
 
         return self._serve(v, outside, sd)
 

@@ -28,7 +28,7 @@ from restitution.errors import InputError
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_point import QUASISTATIC_ROUTE
 
-__all__ = ["MODAL_ROUTE", "rerouted", "write_shipped"]
+__all__ = ["MODAL_ROUTE", "before_rerouting", "rerouted", "write_shipped"]
 
 MODAL_ROUTE = "modal"
 """``route`` of a point of collisions extrapolated in ``N`` and ``alpha``."""
@@ -98,6 +98,40 @@ def rerouted(law_: EpsilonLaw, records: list[dict], *, parameters: Mapping) -> E
     )
     if note not in model:
         metadata["model"] = model + note
+    return EpsilonLaw(
+        nu=law_.nu,
+        v=np.array([float(r["v"]) for r in merged]),
+        epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
+        epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
+        asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),
+        metadata=metadata,
+    )
+
+
+def before_rerouting(law_: EpsilonLaw) -> EpsilonLaw:
+    """``law_`` with the points it had before :func:`rerouted`: at every speed its
+    ``metadata["rerouted"]`` lists, the value, error and status it replaced (the first, if a
+    speed was replaced twice), a record of the route named there; ``law_`` itself if nothing
+    was rerouted. What each route computed, for judging that route on its own values
+    (:mod:`restitution.fem.calibrate`)."""
+    changes = (law_.metadata.get("rerouted") or {}).get("points") or []
+    if not changes:
+        return law_
+    first: dict[float, dict] = {}
+    for change in changes:
+        first.setdefault(float(change["v"]), change["from"])
+    merged = [dict(r) for r in law_._records()]
+    for j, r in enumerate(merged):
+        old = next((o for v, o in first.items() if _same(float(r["v"]), v)), None)
+        if old is not None and r.get("route") != QUASISTATIC_ROUTE:
+            merged[j] = {
+                "v": float(r["v"]),
+                **{k: old.get(k) for k in _KEPT},
+                "asymptotic_ok": old.get("status") == "ok",
+                "route": old.get("route") or MODAL_ROUTE,
+            }
+    metadata = {k: v for k, v in law_.metadata.items() if k != "rerouted"}
+    metadata["points"] = merged
     return EpsilonLaw(
         nu=law_.nu,
         v=np.array([float(r["v"]) for r in merged]),
