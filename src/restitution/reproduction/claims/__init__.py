@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+from restitution.reproduction.claims.attributions import attributed
 from restitution.reproduction.claims.sec2_modes import breathing_roots, mode_rows
 from restitution.reproduction.claims.sec4_collisions import collision_rows, table1_rows
 from restitution.reproduction.claims.sec4_epsilon import epsilon_rows, fit_rows
@@ -38,7 +39,7 @@ def compare(data) -> tuple[Comparison, ...]:
     ----------
     data : restitution.reproduction.paper.PaperData
     """
-    return tuple(
+    return attributed(
         epsilon_rows(data.fig01_units)
         + fit_rows(data.fig07, data.fig08)
         + mode_rows(data)

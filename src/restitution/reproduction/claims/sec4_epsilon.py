@@ -89,13 +89,21 @@ def epsilon_rows(fig01_units: dict) -> list[Comparison]:
 def _inelastic_row(f, unit: str, tag: str) -> Comparison:
     i_lo, i_hi = int(np.argmin(f.nus)), int(np.argmax(f.nus))
     nu_lo, nu_hi = f.nus[i_lo], f.nus[i_hi]
-    n = min(f.v[i_lo].size, f.v[i_hi].size)
-    a, b = f.epsilon[i_lo][:n], f.epsilon[i_hi][:n]
-    ea, eb = f.epsilon_err[i_lo][:n], f.epsilon_err[i_hi][:n]
-    ok = f.asymptotic_ok[i_lo][:n] & f.asymptotic_ok[i_hi][:n]
+    # The speeds both curves have (a paper run's share the paper's sequence; the shipped laws
+    # add their own refined points, so they are matched by value, not by index).
+    v_lo, v_hi = np.asarray(f.v[i_lo], float), np.asarray(f.v[i_hi], float)
+    pairs = [
+        (j, int(k[0]))
+        for j, x in enumerate(v_lo)
+        if (k := np.flatnonzero(np.isclose(v_hi, x, rtol=1e-9, atol=0.0))).size
+    ]
+    lo_at = np.array([j for j, _ in pairs], int)
+    hi_at = np.array([k for _, k in pairs], int)
+    a, b = np.asarray(f.epsilon[i_lo])[lo_at], np.asarray(f.epsilon[i_hi])[hi_at]
+    ea, eb = np.asarray(f.epsilon_err[i_lo])[lo_at], np.asarray(f.epsilon_err[i_hi])[hi_at]
+    ok = np.asarray(f.asymptotic_ok[i_lo])[lo_at] & np.asarray(f.asymptotic_ok[i_hi])[hi_at]
     fin = np.isfinite(a) & np.isfinite(b)
-    # The two curves share the paper's speed sequence (index by index) in either unit.
-    v = f.v[i_hi][:n]
+    v = v_hi[hi_at]
     above = fin & (b - a > 2.0 * np.hypot(ea, eb))
     below = fin & (a - b > 2.0 * np.hypot(ea, eb))
     ours = (

@@ -55,6 +55,7 @@ def shipped_fig01(nus: Sequence[float] = (0.33, 0.9)):
 def law_summary(nus: Sequence[float] = (0.33, 0.9)) -> str:
     """Markdown statements about the shipped laws, every number read from them."""
     from restitution.laws.law_load import law
+    from restitution.reproduction.claims.attributions import attributed
     from restitution.reproduction.claims.sec4_epsilon import epsilon_rows
 
     f = shipped_fig01(nus)
@@ -113,8 +114,8 @@ def law_summary(nus: Sequence[float] = (0.33, 0.9)) -> str:
         "| claim | verdict |",
         "|---|---|",
     ]
-    for r in epsilon_rows({"c": f}):
-        lines.append(f"| {r.claim} | {r.verdict} |")
+    for r in attributed(epsilon_rows({"c": f})):
+        lines.append(f"| {r.claim} | {r.verdict}" + (f". Why: {r.why} |" if r.why else " |"))
     return "\n".join(lines) + "\n"
 
 

@@ -54,6 +54,9 @@ class Comparison:
     speed_unit : str
         ``"c"`` or ``"c_L"``: the unit the paper's speeds were read in for this row (``""``
         when the row involves no speed).
+    why : str
+        For a row that differs: the protocol that reproduces the paper's claim or the
+        attribution, with its evidence (:mod:`restitution.reproduction.claims.attributions`).
     """
 
     figure: str
@@ -64,6 +67,7 @@ class Comparison:
     agrees: bool | None
     detail: bool = False
     speed_unit: str = ""
+    why: str = ""
 
     @property
     def outcome(self) -> str:

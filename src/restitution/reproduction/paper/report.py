@@ -164,10 +164,15 @@ def _unit_table(comps) -> Table | None:
     return Table(("claim", *(f"speeds in {u}" for u in units)), rows)
 
 
+def _verdict_text(c) -> str:
+    """The verdict, and for a row that differs its protocol or attribution."""
+    return f"{c.verdict}. Why: {c.why}" if c.why else c.verdict
+
+
 def _comparison_table(rows) -> Table:
     return Table(
         ("where", "result", "paper says", "we get", "verdict"),
-        tuple((c.figure, c.claim, c.paper, c.ours, c.verdict) for c in rows),
+        tuple((c.figure, c.claim, c.paper, c.ours, _verdict_text(c)) for c in rows),
     )
 
 
