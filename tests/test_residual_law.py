@@ -54,7 +54,10 @@ def test_a_residual_law_says_its_route_and_resumes(tmp_path, monkeypatch):
     assert meta["residual"]["n_modes"] == [200, 400, 800]
     shipped = law(0.33)
     ours = EpsilonLaw.from_json(path)
-    assert ours.routes == ("residual",) and shipped.routes == ("modal", "quasistatic")
+    # The shipped law's slowest points are the residual route's too since 3 Dec 2026
+    # (docs/numerics.md); the speeds compared here are modal points of it.
+    assert ours.routes == ("residual",) and shipped.routes == ("modal", "quasistatic", "residual")
+    assert {r["route"] for r in shipped._records() if r["v"] in speeds} == {"modal"}
     for v in speeds:
         err = (float(ours.epsilon_err(v)) ** 2 + float(shipped.epsilon_err(v)) ** 2) ** 0.5
         assert abs(float(ours.epsilon(v)) - float(shipped.epsilon(v))) < 2.0 * err, v

@@ -40,6 +40,18 @@ def _same(a: float, b: float) -> bool:
     return abs(a - b) <= 1e-9 * abs(b)
 
 
+def _law_of(nu: float, merged: list[dict], metadata: dict) -> EpsilonLaw:
+    """The law of the point records ``merged`` (as ``metadata["points"]`` holds them)."""
+    return EpsilonLaw(
+        nu=nu,
+        v=np.array([float(r["v"]) for r in merged]),
+        epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
+        epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
+        asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),
+        metadata=metadata,
+    )
+
+
 def rerouted(law_: EpsilonLaw, records: list[dict], *, parameters: Mapping) -> EpsilonLaw:
     """``law_`` with its collision points at the speeds of ``records`` replaced by them.
 
@@ -98,14 +110,7 @@ def rerouted(law_: EpsilonLaw, records: list[dict], *, parameters: Mapping) -> E
     )
     if note not in model:
         metadata["model"] = model + note
-    return EpsilonLaw(
-        nu=law_.nu,
-        v=np.array([float(r["v"]) for r in merged]),
-        epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
-        epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
-        asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),
-        metadata=metadata,
-    )
+    return _law_of(law_.nu, merged, metadata)
 
 
 def before_rerouting(law_: EpsilonLaw) -> EpsilonLaw:
@@ -132,14 +137,7 @@ def before_rerouting(law_: EpsilonLaw) -> EpsilonLaw:
             }
     metadata = {k: v for k, v in law_.metadata.items() if k != "rerouted"}
     metadata["points"] = merged
-    return EpsilonLaw(
-        nu=law_.nu,
-        v=np.array([float(r["v"]) for r in merged]),
-        epsilon_points=np.array([float(r["epsilon"]) for r in merged]),
-        epsilon_err_points=np.array([float(r["epsilon_err"]) for r in merged]),
-        asymptotic_ok=np.array([bool(r["asymptotic_ok"]) for r in merged]),
-        metadata=metadata,
-    )
+    return _law_of(law_.nu, merged, metadata)
 
 
 def write_shipped(law_: EpsilonLaw, path: str | os.PathLike) -> Path:
