@@ -22,8 +22,12 @@ The independent points, each compared with its own stated error joined in quadra
 * ``nu``: the direct laws at ``nu_2d = 0.25, 3/7, 0.6, 0.8`` against PCHIP in ``nu`` through the
   grid ``0.2, 0.33, 0.5, 0.7, 0.9`` without them, at their computed modal speeds; they fix the
   factor ``c`` of the interpolation in ``nu``.
-* ``fem`` points served by a low-speed route (8): too few to calibrate; that route keeps its
-  bound.
+* ``fem`` points served by a low-speed route (8) or by the residual route (the shipped disk
+  laws' slowest points): too few to calibrate; those routes keep their bound.
+
+Each route is judged on its own values: the rows are built from the laws with the modal points
+their slowest speeds had before they were rerouted (``served=False``, the default), so the
+modal factors are fitted on what the modal route computed.
 
 The rule, fixed before any factor was looked at against the held-out half: rows sorted by
 (source, Poisson number, speed); the even rows fit, the odd rows are held out; each factor is

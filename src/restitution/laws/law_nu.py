@@ -11,8 +11,9 @@ for the body ``geometry`` and from its laws only,
   at each speed the grid laws are interpolated in ``nu`` by a monotone cubic (PCHIP), and the
   error adds, in quadrature to the interpolated point errors, an estimate of the interpolation
   error from the leave-one-out errors: at every interior grid value the law is predicted from
-  the others and compared with the computed one; ``nu`` between two grid values, at the
-  fraction ``t`` of their interval, gets ``4 t (1 - t)`` times the larger of their two
+  the others and compared with the computed one (at ``v``, ``v/2`` and ``2v``:
+  :data:`SPEED_WINDOW`); ``nu`` between two grid values, at the fraction ``t`` of their
+  interval, gets ``4 t (1 - t)`` times the larger of their two
   (:meth:`NuInterpolatedLaw.interpolation_err`): zero at a grid value, so the error is
   continuous in ``nu`` and serving a grid law within :data:`NU_MATCH` as it is changes
   nothing but round-off;
@@ -358,7 +359,8 @@ class NuInterpolatedLaw:
     def interpolation_err(self, v, *, outside: str = "raise"):
         """Estimate of the interpolation error at ``self.nu``, speed(s) ``v``:
         ``4 t (1 - t)`` times the larger leave-one-out error of the two grid laws around ``nu``
-        (of the one, next to an end law), ``t`` the position of ``nu`` between them (module
+        (of the one, next to an end law), the largest of it at ``v`` and at the multiples
+        :data:`SPEED_WINDOW` of ``v``, ``t`` the position of ``nu`` between them (module
         docstring).
 
         An interpolation error vanishes at the nodes, so the estimate is continuous in ``nu``,
