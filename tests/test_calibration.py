@@ -39,6 +39,7 @@ def test_the_shipped_factors_are_the_rule_s_fit_rounded_to_two_digits(fitted):
     got = fitted["fitted_factors"]
     assert round(got["a"], 2) == CALIBRATIONS[MODAL].point_factor
     assert round(got["b"], 2) == CALIBRATIONS[MODAL].interpolation_factor
+    assert round(got["d"], 2) == CALIBRATIONS[MODAL].gap_factor
     assert round(got["c"], 2) == CALIBRATIONS[NU].nu_factor
     assert CALIBRATIONS[MODAL].calibrated and CALIBRATIONS[NU].calibrated
     assert not CALIBRATIONS[QUASISTATIC].calibrated
@@ -56,20 +57,42 @@ def test_the_nu_route_covers_its_held_out_points(fitted):
     assert 0.60 <= c["within_1"] <= 0.80 and c["within_2"] >= 0.95, c
 
 
-def test_the_interpolation_term_covers_two_thirds_of_the_held_out_between_points(fitted):
-    """46 held-out direct points between computed speeds (measured: 76 % within one)."""
+def test_the_interpolation_terms_cover_the_held_out_between_points(fitted):
+    """46 held-out direct points between computed speeds, with the leave-one-out term and the
+    spline's gap (measured: 31 within one, 67.4 %, and all 46 within two; with the
+    leave-one-out term alone, the rule before, 76 % and 93.5 %)."""
     c = _held(fitted, "between")
     assert c["points"] == 46
-    assert 0.60 <= c["within_1"] <= 0.80, c
+    assert 0.60 <= c["within_1"] <= 0.80 and c["within_2"] >= 0.95, c
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="measured 43 of 46 (93.5 %) within two: the misses at "
-    "speeds where the interpolation term is small (docs/errors.md)",
-)
-def test_the_interpolation_term_covers_95_percent_within_two(fitted):
-    assert _held(fitted, "between")["within_2"] >= 0.95
+def test_the_two_interpolation_factors_fitted_on_the_other_half_cover_the_first(fitted):
+    """The halves swapped: ``b`` and ``d`` fitted on the held-out 46 and checked on the 47
+    the shipped factors were fitted on (measured: b = 0.024, d = 0.86; 68.1 % within one, 97.9
+    % within two). The gap's term carries the fit either way (d 0.77 and 0.86)."""
+    s = fitted["coverage"]["between"]["swapped"]
+    assert s["checked"]["points"] == 47
+    assert 0.60 <= s["checked"]["within_1"] <= 0.80 and s["checked"]["within_2"] >= 0.95, s
+    assert 0.5 <= s["factors"]["d"] <= 1.0
+
+
+def test_the_spline_gap_is_pchip_s_own_miss_where_epsilon_is_a_cubic():
+    """A not-a-knot cubic spline reproduces a cubic exactly (SciPy's CubicSpline), so on points
+    of a cubic in ``v`` the gap equals PCHIP's actual miss, computed here against the cubic
+    itself; it is zero at the points."""
+    from restitution.laws.law import EpsilonLaw
+
+    v = np.linspace(0.01, 0.1, 7)
+
+    def cubic(x):
+        return 0.99 - 0.4 * x + 3.0 * x**2 - 20.0 * x**3
+
+    given = EpsilonLaw.from_points(0.33, v, cubic(v), [1e-5] * v.size)
+    w = np.linspace(0.0101, 0.0999, 301)
+    miss = np.abs(given.epsilon(w) - cubic(w))
+    assert np.max(miss) > 1e-7  # PCHIP does miss the cubic
+    np.testing.assert_allclose(given.spline_gap(w), miss, rtol=1e-8, atol=1e-15)
+    assert np.all(given.spline_gap(v) <= 1e-15)
 
 
 def test_the_modal_point_error_covers_the_held_out_fem_points_within_two(fitted):
@@ -93,20 +116,20 @@ def test_the_fem_errors_alone_cover_most_of_their_points():
     """Why the test above fails: with no modal error at all, 21 of the 26 finite-element points
     at modal speeds are within one of their own errors."""
     rows = [r for r in rows_fem() if r.route == MODAL]
-    z = z_scores(rows, "fem", 0.0, 0.0, 0.0)
+    z = z_scores(rows, "fem", 0.0, 0.0, 0.0, 0.0)
     assert len(rows) == 26 and int(np.sum(z <= 1.0)) == 21
 
 
 def test_the_modal_route_as_a_whole_covers_two_thirds_of_its_held_out_points(fitted):
-    """Finite-element and between-speed points together, 59 held out (measured: 79.7 % within
-    one)."""
+    """Finite-element and between-speed points together, 59 held out (measured: 43, 72.9 %,
+    within one)."""
     c = _held(fitted, "modal")
     assert c["points"] == 59
     assert 0.60 <= c["within_1"] <= 0.80, c
 
 
-@pytest.mark.xfail(strict=True, reason="measured 56 of 59 (94.9 %) within two (docs/errors.md)")
 def test_the_modal_route_as_a_whole_covers_95_percent_within_two(fitted):
+    """Measured: 59 of 59 (it was 56 of 59 with the leave-one-out term alone)."""
     assert _held(fitted, "modal")["within_2"] >= 0.95
 
 

@@ -40,9 +40,9 @@ ERROR_MEANING = (
     "an upper estimate (PCHIP at twice the spacing), not a standard deviation. epsilon_sd, "
     "where an answer gives it (restitution law; a law's epsilon_sd(v)): one standard "
     "deviation, the same parts scaled per route by factors fitted on independent points "
-    "(78-80 % of the held-out finite-element, between-speed and between-nu points within "
-    "one sd, docs/errors.md); where a route has too few such points it is the bound, and "
-    "epsilon_sd_kind says 'bound'"
+    "(67-78 % of the held-out between-speed and between-nu points and of the modal route's "
+    "as a whole within one sd, docs/errors.md); where a route has too few such points it is "
+    "the bound, and epsilon_sd_kind says 'bound'"
 )
 """What an :class:`Estimate`'s error covers (the routes' own documents say how it is made)."""
 

@@ -101,7 +101,7 @@ def _sd(p) -> str:
 
 SD_LINE = (
     "errors: 'error' is the bound (an upper estimate); 'sd' one standard deviation, the "
-    "bound's parts scaled per route by factors fitted on independent points (78-80 % of the "
+    "bound's parts scaled per route by factors fitted on independent points (67-78 % of the "
     "held-out ones within one sd, docs/errors.md); sd* is the bound (a route without enough "
     "independent points)"
 )

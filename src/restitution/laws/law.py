@@ -34,7 +34,7 @@ from functools import cached_property
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
+from scipy.interpolate import CubicSpline, PchipInterpolator
 
 from restitution.bodies.kinds import DEFAULT_GEOMETRY, body_kind
 from restitution.errors import (
@@ -372,42 +372,47 @@ class EpsilonLaw:
         return float(out) if np.ndim(v) == 0 else out
 
     @cached_property
-    def _sd_factors(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _sd_factors(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         from restitution.laws.calibration import point_factors
 
         return point_factors(self)
 
     def _sd_at(self, v, outside: str):
-        """``(a, b, calibrated)`` at speeds ``v``: a computed point's own route's factors, else
-        the larger of the interval's two ends (the bound's where either end is uncalibrated)."""
+        """``(a, b, d, calibrated)`` at speeds ``v``: a computed point's own route's factors,
+        else the larger of the interval's two ends (the bound's where either end is
+        uncalibrated)."""
         arr = _speeds(v)
         bad = self._check(arr, outside)
-        a, b, ok = self._sd_factors
+        a, b, d, ok = self._sd_factors
         x = np.where(bad, self.v[0], arr)
         j = np.clip(np.searchsorted(self.v, x, side="right") - 1, 0, max(self.v.size - 2, 0))
         k = np.minimum(j + 1, self.v.size - 1)
         at = np.abs(self.v[j] - x) <= 1e-9 * self.v[j]
         fa = np.where(at, a[j], np.maximum(a[j], a[k]))
         fb = np.where(at, b[j], np.maximum(b[j], b[k]))
+        fd = np.where(at, d[j], np.maximum(d[j], d[k]))
         cal = np.where(at, ok[j], ok[j] & ok[k]) & ~bad
-        return fa, fb, cal
+        return fa, fb, fd, cal
 
     def epsilon_sd(self, v, *, outside: str = "raise"):
         """One standard deviation of :meth:`epsilon` at ``v``: the two components of
         :meth:`epsilon_err` (the points' errors, interpolated, and :meth:`interpolation_err`)
-        scaled by the factors of the route that made the points
-        (:mod:`restitution.laws.calibration`, fitted on independent points: docs/errors.md);
-        where the route is not calibrated (:meth:`sd_calibrated` false) it equals
-        :meth:`epsilon_err`, the bound."""
+        and :meth:`spline_gap`, each scaled by a factor of the route that made the points
+        (:mod:`restitution.laws.calibration`, fitted on independent points: docs/errors.md),
+        joined in quadrature and never above the bound :meth:`epsilon_err`; where the route is
+        not calibrated (:meth:`sd_calibrated` false) it equals the bound."""
         point = np.abs(self._evaluate(self.epsilon_err_points, v, outside))
-        fa, fb, _ = self._sd_at(v, "nan")
-        out = np.hypot(fa * point, fb * self.interpolation_err(v, outside="nan"))
+        fa, fb, fd, _ = self._sd_at(v, "nan")
+        loo = self.interpolation_err(v, outside="nan")
+        gap = self.spline_gap(v, outside="nan")
+        sd = np.sqrt((fa * point) ** 2 + (fb * loo) ** 2 + (fd * gap) ** 2)
+        out = np.minimum(sd, np.hypot(point, loo))
         return float(out) if np.ndim(v) == 0 else out
 
     def sd_calibrated(self, v, *, outside: str = "raise"):
         """Whether :meth:`epsilon_sd` at ``v`` is a calibrated standard deviation (``False``:
         it is the bound of a route without enough independent points)."""
-        cal = self._sd_at(v, outside)[2]
+        cal = self._sd_at(v, outside)[3]
         return bool(cal) if np.ndim(v) == 0 else cal
 
     @cached_property
@@ -446,6 +451,37 @@ class EpsilonLaw:
         shape = 2.0 * np.sqrt(s * (1.0 - s))
         out = np.where(bad, np.nan, np.where(modal_end, loo * shape, 0.0))
         return float(out) if np.ndim(v) == 0 else out
+
+    def spline_gap(self, v, *, outside: str = "raise"):
+        """``|cubic spline - PCHIP|`` through the same points at ``v`` (units of epsilon): a
+        second interpolant's disagreement, local to ``v``, beside :meth:`interpolation_err`'s
+        leave-one-out error at the interval's ends.
+
+        The spline is SciPy's :class:`~scipy.interpolate.CubicSpline` (not-a-knot) on the same
+        axis (:attr:`_knots`). It is zero at a computed point and, like
+        :meth:`interpolation_err`, between two low-speed points. Where epsilon is a cubic in
+        the knots' variable the spline is exact, so the gap is PCHIP's actual miss
+        (tests/test_calibration.py). It enters the standard deviation only
+        (:meth:`epsilon_sd`, its factor ``d`` in :mod:`restitution.laws.calibration`), not the
+        bound.
+        """
+        arr = _speeds(v)
+        bad = self._check(arr, outside)
+        if self.at_points_only or self.v.size < 2:
+            out = np.where(bad, np.nan, 0.0)
+            return float(out) if np.ndim(v) == 0 else out
+        x = np.where(bad, self.v[0], arr)
+        j = np.clip(np.searchsorted(self.v, x, side="right") - 1, 0, self.v.size - 2)
+        at = self._at_knots(x)
+        gap = np.abs(self._spline(at) - self._epsilon_interpolant(at))
+        quasi = self.quasistatic
+        modal_end = ~(quasi[j] & quasi[j + 1])
+        out = np.where(bad, np.nan, np.where(modal_end, gap, 0.0))
+        return float(out) if np.ndim(v) == 0 else out
+
+    @cached_property
+    def _spline(self) -> CubicSpline:
+        return CubicSpline(self._knots, self.epsilon_points)
 
     def checked(self, v, *, outside: str = "raise"):
         """Whether both computed points around ``v`` passed their checks (bool, or array)."""
