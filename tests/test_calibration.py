@@ -19,7 +19,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from restitution.fem.calibrate import coverage, fit, halves, rows_between, rows_fem, z_scores
+from restitution.fem.calibrate import (
+    coverage,
+    fit,
+    halves,
+    rows_between,
+    rows_fem,
+    rows_residual,
+    z_scores,
+)
 from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, QUASISTATIC
 from restitution.laws.law_load import law
 from restitution.laws.law_nu import law_for
@@ -254,11 +262,54 @@ def test_each_route_is_judged_on_its_own_values(fitted):
     the modal factors are fitted on the modal values there (kept in the laws' ``rerouted``
     entries), so the 26 modal rows are those of the laws before rerouting, and the finite-element
     points the residual route serves (nu = 0.33 and 0.9 at v = 1e-4: the shipped reference file;
-    the other four are in tests/data/residual_slow_points.json) are judged with its bound."""
+    four more in tests/data/fem_slow_points.json and 19 at its faster points in
+    tests/data/fem_residual_points.json) are judged with its bound: all 25 lie within it."""
     own = [r for r in rows_fem() if r.route == MODAL]
     served = rows_fem(served=True)
     assert len(own) == 26 and sum(r.route == MODAL for r in served) == 24
     residual = [r for r in served if r.route == "residual"]
     assert sorted((r.nu, r.v) for r in residual) == [(0.33, 1e-4), (0.9, 1e-4)]
+    every = rows_residual(DATA)
+    assert len(every) == 25 and all(r.route == "residual" for r in every)
     c = fitted["coverage"]["residual"]["bound"]
-    assert c["points"] == 2 and c["within_1"] == 1.0
+    assert c["points"] == 25 and c["within_1"] == 1.0
+
+
+def test_the_finite_elements_cannot_judge_the_residual_route_s_wall_limit(fitted):
+    """Their own stated errors alone (served value taken as exact) cover 22 of the 25 residual
+    points within one (88 %): the finite elements extrapolate from the route's walls, so the
+    miss is smaller than their error and the rule's factor falls to its floor (1e-3). The
+    route's wall limit is judged by harder walls instead (the next test)."""
+    r = fitted["coverage"]["residual"]
+    assert r["fem_errors_alone"]["points"] == 25 and r["fem_errors_alone"]["within_1"] >= 0.8
+    assert r["factor_by_the_rule"] < 0.01
+
+
+def test_the_ladder_s_served_triple_is_the_shipped_point():
+    """The wall ladder (tools/residual_wall_ladder.py) refits its served walls to the shipped
+    point: the same route, walls and modes, so the harder walls judge what is served (the same
+    code path on one machine: 1e-9)."""
+    doc = json.loads((DATA / "residual_wall_ladder.json").read_text())
+    assert len(doc["points"]) == 32
+    for p in doc["points"]:
+        own = p["triples"][p["served_triple"]]
+        assert own["walls"] == p["shipped"]["walls"]
+        assert own["epsilon"] == pytest.approx(p["shipped"]["epsilon"], rel=1e-9)
+        assert own["epsilon_err"] == pytest.approx(p["shipped"]["epsilon_err"], rel=1e-6)
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "measured 3-4 Dec 2026: the residual route's bound covers 24 of its 32 points judged on "
+        "walls 4-16 times harder within one (75 %) and 29 within two (90.6 %; largest z 3.5, "
+        "nu 0.2 at 1e-4): its wall limit on the served walls is biased beyond its stated "
+        "error where the loss's differences per doubling of the wall are not yet in the ratio "
+        "2 of a line in 1/alpha (1.66-2.33 there); the rule's factor is 1.29 (held out 81 % / "
+        "94 %). A covering error budget is not built (docs/errors.md)"
+    ),
+)
+def test_the_residual_route_s_bound_covers_harder_walls(fitted):
+    c = fitted["coverage"]["residual"]["harder_walls"]["bound"]
+    assert c["points"] == 32
+    assert c["within_1"] >= 0.95 and c["within_2"] == 1.0

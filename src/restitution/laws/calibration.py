@@ -127,8 +127,10 @@ CALIBRATIONS: dict[str, RouteCalibration] = {
     RESIDUAL: RouteCalibration(
         RESIDUAL,
         basis=(
-            "not calibrated: 6 finite-element points at the disk laws' rerouted speeds (nu "
-            "0.2, 0.33, 0.9 at v = 1e-4, 2e-4), too few to fit and check; the sd is the bound"
+            "not calibrated: its 25 finite-element points share its walls and cannot judge its "
+            "wall limit (their errors alone cover 88 % within one); on walls 4-16 times harder "
+            "(tests/data/residual_wall_ladder.json) the bound covers 24 of 32 points within one "
+            "and 29 within two, so it is not a bound there (docs/errors.md); the sd is the bound"
         ),
     ),
     MECHANISM: RouteCalibration(

@@ -1,0 +1,177 @@
+"""The residual route's points on a ladder of harder walls: is its wall limit where it says?
+
+Every point of the shipped disk laws served by the residual route (``route: "residual"``) is
+computed again by :func:`restitution.limits.residual_point.residual_point` (its defaults: 200, 400
+and 800 kept modes, 80 nodes across the contact) on the walls ``alpha delta_max = 40, 80, ...,
+2560`` (:data:`LADDER`, seven doublings), one point at a time on one process. From the one run
+the tool refits, with the route's own fit (:func:`restitution.limits.extrapolation
+.extrapolate_alpha` and its curvature term), the served triple of walls (which reproduces the
+shipped point) and every harder triple; the hardest triple (``640, 1280, 2560``: walls 4-16 times
+the served ones) is the reference the served value is judged by (issue 65, item 1: the route
+keeps its bound until such a judge exists; the finite elements extrapolate from the same walls
+as the route and cannot judge its wall limit, docs/errors.md).
+
+Each point is written to ``OUT`` as soon as it is done (the whole file, atomically); a rerun
+keeps the points already there of the same code version. Order: the points with a
+finite-element reference first, then by Poisson number and speed.
+
+Usage (from the project's root, with its venv)::
+
+    OPENBLAS_NUM_THREADS=1 PYTHONPATH=src .venv/bin/python tools/residual_wall_ladder.py \
+        tests/data/residual_wall_ladder.json [--max-points N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import scipy
+
+from restitution import atomic
+from restitution.laws.making.residual_law import _version
+from restitution.limits.extrapolation import alpha_curvature_shift, extrapolate_alpha
+from restitution.limits.residual_point import NODES_PER_CONTACT, RESIDUAL_MODES, residual_point
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "src" / "restitution" / "laws" / "data"
+LADDER = tuple(40.0 * 2.0**k for k in range(7))
+"""The walls ``alpha delta_max`` of every point: 40 to 2560."""
+FIRST = ((0.2, 1e-4), (0.2, 2e-4), (0.33, 1e-4), (0.33, 2e-4), (0.9, 1e-4), (0.9, 2e-4))
+
+
+def residual_points() -> list[tuple[float, float, dict]]:
+    """``(nu, v, shipped record)`` of every residual-route point of the shipped disk laws."""
+    out = []
+    for path in sorted(DATA.glob("law_nu*.json")):
+        meta = json.loads(path.read_text())["metadata"]
+        for p in meta["points"]:
+            if p.get("route") == "residual":
+                out.append((float(meta["nu"]), float(p["v"]), p))
+    return sorted(out, key=lambda t: ((t[0], t[1]) not in FIRST, t[0], t[1]))
+
+
+def triple_limit(alphas, losses, point_err, rows) -> dict:
+    """The route's wall limit from the walls ``rows`` of the ladder: epsilon and its error as
+    :func:`residual_point` states them (the line's error joined with the curvature term)."""
+    rows = list(rows)
+    fit = extrapolate_alpha(
+        np.asarray(alphas)[rows], np.asarray(losses)[rows], loss_err=np.asarray(point_err)[rows]
+    )
+    loss_err = math.hypot(fit.limit_err, alpha_curvature_shift(fit))
+    eps = math.sqrt(1.0 - fit.limit)
+    return {
+        "walls": [LADDER[k] for k in rows],
+        "energy_loss": float(fit.limit),
+        "energy_loss_err": loss_err,
+        "epsilon": eps,
+        "epsilon_err": loss_err / (2.0 * eps),
+        "asymptotic_ok": bool(fit.asymptotic_ok),
+    }
+
+
+def ladder_record(nu: float, v: float, shipped: dict, version: str) -> dict:
+    load = os.getloadavg()[0]
+    start = time.perf_counter()
+    p = residual_point("disk", nu, v, walls=LADDER)
+    point_err = np.hypot(p.mode_err, p.step_err)
+    finest = p.losses[:, -1]
+    triples = [
+        triple_limit(p.alphas, finest, point_err, range(k, k + 3)) for k in range(len(LADDER) - 2)
+    ]
+    served_walls = [float(w) for w in shipped["residual"]["walls"]]
+    k0 = LADDER.index(served_walls[0])
+    record = {
+        "nu": nu,
+        "v": v,
+        "walls": list(LADDER),
+        "alpha": list(p.alphas),
+        "n_modes": list(p.modes),
+        "energy_loss_grid": p.losses.tolist(),
+        "mode_err": p.mode_err.tolist(),
+        "step_err": p.step_err.tolist(),
+        "triples": triples,
+        "served_triple": k0,
+        "shipped": {k: shipped[k] for k in ("epsilon", "epsilon_err", "status")}
+        | {"walls": served_walls},
+        "wall_time_s": round(time.perf_counter() - start, 2),
+        "load_average_1min": round(load, 2),
+        "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
+        "code_version": version,
+    }
+    ref, own = triples[-1], triples[k0]
+    print(
+        f"nu={nu:<9g} v={v:<9g} served {shipped['epsilon']:.7f} +- "
+        f"{shipped['epsilon_err']:.1e} (refit {own['epsilon']:.7f}); hardest walls "
+        f"{ref['epsilon']:.7f} +- {ref['epsilon_err']:.1e}: miss "
+        f"{(shipped['epsilon'] - ref['epsilon']) / shipped['epsilon_err']:+.2f} of the served "
+        f"error; {record['wall_time_s']:.0f} s",
+        flush=True,
+    )
+    return record
+
+
+def _git_commit() -> str:
+    try:
+        out = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True)
+        return out.stdout.strip()
+    except OSError:
+        return ""
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", type=Path)
+    parser.add_argument("--max-points", type=int, default=None, help="stop after N points")
+    args = parser.parse_args(argv)
+    version = _version("disk", False)
+    kept = json.loads(args.out.read_text()) if args.out.exists() else {"points": []}
+    done = {(p["nu"], p["v"]): p for p in kept["points"] if p.get("code_version") == version}
+    todo = residual_points()[: args.max_points]
+    doc = {
+        "description": (
+            "epsilon of the disk on the rigid wall by the residual route at the shipped disk "
+            "laws' residual-route points, on walls alpha delta_max = 40 to 2560, with the "
+            "route's wall limit from every triple of consecutive walls (issue 65, item 1)"
+        ),
+        "geometry": "disk",
+        "units": "E = rho = R = 1 of the disk's constants; v in c (speed towards the wall)",
+        "function": "restitution.limits.residual_point.residual_point(geometry, nu, v, walls)",
+        "command": "tools/residual_wall_ladder.py " + " ".join(sys.argv[1:]),
+        "settings": {
+            "modes": list(RESIDUAL_MODES),
+            "nodes_per_contact": NODES_PER_CONTACT,
+            "walls": list(LADDER),
+            "processes": 1,
+            "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"),
+        },
+        "code_version": version,
+        "git_commit": _git_commit(),
+        "environment": {
+            "python": platform.python_version(),
+            "numpy": np.__version__,
+            "scipy": scipy.__version__,
+            "machine": platform.machine(),
+        },
+        "points": [],
+    }
+    points = []
+    for nu, v, shipped in todo:
+        record = done.get((nu, v)) or ladder_record(nu, v, shipped, version)
+        points.append(record)
+        doc["points"] = points
+        atomic.write_text(args.out, json.dumps(doc, indent=1) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
