@@ -29,13 +29,13 @@ import json
 import math
 import os
 import platform
-import subprocess
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
 import scipy
+from residual_slow_points import _git_commit  # this folder's (the script's own sys.path entry)
 
 from restitution import atomic
 from restitution.laws.making.residual_law import _version
@@ -118,14 +118,6 @@ def ladder_record(nu: float, v: float, shipped: dict, version: str) -> dict:
         flush=True,
     )
     return record
-
-
-def _git_commit() -> str:
-    try:
-        out = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True)
-        return out.stdout.strip()
-    except OSError:
-        return ""
 
 
 def main(argv=None) -> int:
