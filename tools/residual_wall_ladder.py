@@ -13,7 +13,9 @@ as the route and cannot judge its wall limit, docs/errors.md).
 
 Each point is written to ``OUT`` as soon as it is done (the whole file, atomically); a rerun
 keeps the points already there of the same code version. Order: the points with a
-finite-element reference first, then by Poisson number and speed.
+finite-element reference first, then by Poisson number and speed. A point the route cannot
+compute on every wall of the ladder is listed under ``failed`` with its error, and the run goes
+on.
 
 Usage (from the project's root, with its venv)::
 
@@ -38,6 +40,7 @@ import scipy
 from residual_slow_points import _git_commit  # this folder's (the script's own sys.path entry)
 
 from restitution import atomic
+from restitution.errors import RestitutionError
 from restitution.laws.making.residual_law import _version
 from restitution.limits.extrapolation import alpha_curvature_shift, extrapolate_alpha
 from restitution.limits.residual_point import NODES_PER_CONTACT, RESIDUAL_MODES, residual_point
@@ -147,7 +150,8 @@ def main(argv=None) -> int:
             "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"),
         },
         "code_version": version,
-        "git_commit": _git_commit(),
+        # The commit the points were computed at: a rerun that computes none keeps it.
+        "git_commit": kept.get("git_commit", ""),
         "environment": {
             "python": platform.python_version(),
             "numpy": np.__version__,
@@ -156,9 +160,19 @@ def main(argv=None) -> int:
         },
         "points": [],
     }
-    points = []
+    points, failed = [], []
     for nu, v, shipped in todo:
-        record = done.get((nu, v)) or ladder_record(nu, v, shipped, version)
+        record = done.get((nu, v))
+        if record is None:
+            doc["git_commit"] = _git_commit()
+            try:
+                record = ladder_record(nu, v, shipped, version)
+            except RestitutionError as exc:
+                print(f"nu={nu:<9g} v={v:<9g} failed on the ladder: {exc}", flush=True)
+                failed.append({"nu": nu, "v": v, "error": str(exc)})
+                doc["failed"] = failed
+                atomic.write_text(args.out, json.dumps(doc, indent=1) + "\n")
+                continue
         points.append(record)
         doc["points"] = points
         atomic.write_text(args.out, json.dumps(doc, indent=1) + "\n")

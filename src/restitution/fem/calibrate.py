@@ -26,7 +26,7 @@ The independent points, each compared with its own stated error joined in quadra
 * ``fem`` points served by a low-speed route (8): too few to calibrate; that route keeps its
   bound. Those served by the residual route (the shipped disk laws' slowest points,
   :func:`rows_residual`: 25) share its walls and cannot judge its wall limit; the same route on
-  walls 4-16 times harder (:func:`rows_ladder`) judges it: its bound covers 75 % within one
+  walls 4-16 times harder (:func:`rows_ladder`) judges it: its bound covers 78 % within one
   there, so it is not a bound; the route keeps it as its ``sd`` (docs/errors.md).
 
 Each route is judged on its own values: the rows are built from the laws with the modal points
