@@ -430,6 +430,19 @@ def coverage(z: np.ndarray) -> dict:
     }
 
 
+def _judged_by_the_rule(rows: list[Row]) -> dict:
+    """A route that keeps its bound, judged on ``rows``: the bound's coverage, the point factor
+    the module's rule fits on half of them, and that factor's coverage, fitted and held out."""
+    fitted, held = halves(rows)
+    f = fit_factor(fitted, _fem_var(0.0)) if fitted else math.nan
+    return {
+        "bound": coverage(bound_z(rows)),
+        "factor_by_the_rule": f,
+        "fitted": coverage(z_scores(fitted, "fem", f, 0.0, 0.0, 0.0)),
+        "held_out": coverage(z_scores(held, "fem", f, 0.0, 0.0, 0.0)),
+    }
+
+
 def fit(between_dir: Path) -> dict:
     """The factors by the module's rule and the coverage of every comparison, fitted and held
     out, with the shipped (rounded) factors."""
@@ -474,28 +487,14 @@ def fit(between_dir: Path) -> dict:
             ("held_out", fem_held, b_held),
         )
     }
-    # The residual route: its finite-element points, as served; judged with its bound, and its
-    # point factor by the same rule (not shipped: docs/errors.md).
+    # The residual route: its finite-element points, as served, and the same route on walls 4-16
+    # times harder (its wall limit); each judged with its bound, and the point factor the rule
+    # would give (not shipped: docs/errors.md).
     residual = rows_residual(between_dir)
-    r_fit, r_held = halves(residual)
-    r = fit_factor(r_fit, _fem_var(0.0)) if r_fit else math.nan
     table["residual"] = {
-        "bound": coverage(bound_z(residual)),
-        "factor_by_the_rule": r,
-        "fitted": coverage(z_scores(r_fit, "fem", r, 0.0, 0.0, 0.0)),
-        "held_out": coverage(z_scores(r_held, "fem", r, 0.0, 0.0, 0.0)),
+        **_judged_by_the_rule(residual),
         "fem_errors_alone": coverage(z_scores(residual, "fem", 0.0, 0.0, 0.0, 0.0)),
-    }
-    # The residual route's wall limit, judged by the same route on walls 4-16 times harder:
-    # its bound's coverage, and the factor the rule would give its point error.
-    ladder = rows_ladder(between_dir)
-    l_fit, l_held = halves(ladder)
-    g = fit_factor(l_fit, _fem_var(0.0)) if l_fit else math.nan
-    table["residual"]["harder_walls"] = {
-        "bound": coverage(bound_z(ladder)),
-        "factor_by_the_rule": g,
-        "fitted": coverage(z_scores(l_fit, "fem", g, 0.0, 0.0, 0.0)),
-        "held_out": coverage(z_scores(l_held, "fem", g, 0.0, 0.0, 0.0)),
+        "harder_walls": _judged_by_the_rule(rows_ladder(between_dir)),
     }
     return {
         "fitted_factors": {"a": a, "b": b, "c": c, "d": d},
