@@ -25,12 +25,15 @@ paper-quick: $(STAMP)
 # (collisions, 2-5 points a law where epsilon(v) turns, then the low-speed points of the
 # slow-impact model: about 4 minutes a law),
 # then put the residual route's points in where the modal ones fail their checks (issue 65;
-# the stored points are reused while that route's code is unchanged), then draw their
-# slow-point figures into docs/figures.
+# the stored points are reused while that route's code is unchanged), then serve those from
+# the walls alpha delta_max = 160-640 of the route's wall ladder (docs/errors.md; the ladder's
+# points likewise reused), then draw their slow-point figures into docs/figures.
 law: $(STAMP)
 	$(BIN)/python -m restitution.laws.making.production
 	OPENBLAS_NUM_THREADS=1 PYTHONPATH=src $(BIN)/python tools/residual_slow_points.py \
 		tests/data/residual_slow_points.json --apply
+	OPENBLAS_NUM_THREADS=1 PYTHONPATH=src $(BIN)/python tools/residual_wall_ladder.py \
+		tests/data/residual_wall_ladder.json --apply
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
 	$(BIN)/python -m restitution.reproduction.figures.disk_low_speed --figures docs/figures
 

@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 from restitution.fem.calibrate import (
+    LADDER_FILE,
     coverage,
     fit,
     halves,
@@ -28,7 +29,7 @@ from restitution.fem.calibrate import (
     rows_residual,
     z_scores,
 )
-from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, QUASISTATIC
+from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, QUASISTATIC, RESIDUAL_HARD
 from restitution.laws.law_load import law
 from restitution.laws.law_nu import law_for
 from restitution.laws.si_law import si_law
@@ -163,22 +164,40 @@ def _fem_steel():
     return p
 
 
-def test_the_steel_cylinder_at_1_m_s_is_served_within_one_sd_of_the_finite_elements():
+def test_the_steel_cylinder_at_1_m_s_finite_elements_are_the_soft_walls_value():
+    """The finite elements at 1 m/s extrapolate from the laws' walls (alpha delta_max = 40, 80,
+    160). The residual route at the same speed on the ladder of walls
+    (tests/data/residual_ladder_steel_cylinder_1ms.json, ``tools/residual_wall_ladder.py
+    --point``) gives their value on those walls (measured: 0.9938302 +- 2.6e-4 against the
+    FEM's 0.9938320 +- 1.5e-4) and converges on harder ones to 0.993651 +- 1.1e-5 (640-2560);
+    the issue's reference 0.99383 is the soft walls' value, 1.8e-4 above the limit."""
     fem = _fem_steel()
-    assert fem["nu"] == pytest.approx(3 / 7) and fem["v"] == pytest.approx(1.8443607745e-4)
+    (p,) = json.loads((DATA / "residual_ladder_steel_cylinder_1ms.json").read_text())["points"]
+    assert (p["nu"], p["v"]) == pytest.approx((fem["nu"], fem["v"]), rel=1e-12)
+    soft, hard = p["triples"][0], p["triples"][-1]
+    near = abs(fem["epsilon"] - soft["epsilon"]) / np.hypot(fem["epsilon_err"], soft["epsilon_err"])
+    far = (fem["epsilon"] - hard["epsilon"]) / np.hypot(fem["epsilon_err"], hard["epsilon_err"])
+    assert near <= 0.1 and far > 1.0  # measured 0.007 and 1.17
+    limits = [t["epsilon"] for t in p["triples"][2:]]
+    assert max(limits) - min(limits) <= hard["epsilon_err"]  # settled from 160-640 on
+
+
+def test_the_steel_cylinder_at_1_m_s_is_served_within_its_sd_of_the_hard_walls():
+    """Served from the residual route on walls 160-640 at 1e-4 and 2e-4 (both ends of its
+    interval): its bound 1.8e-4 (the issue's limit: 6e-4), its calibrated sd (measured 2.7e-5)
+    and the value within two sds of the route's limit on 640-2560 at that very speed
+    (measured: 1.0 sd; the miss, 2.7e-5, is PCHIP's between the points 1e-4 and 2e-4)."""
+    (p,) = json.loads((DATA / "residual_ladder_steel_cylinder_1ms.json").read_text())["points"]
+    hard = p["triples"][-1]
     s = si_law(E=210e9, nu=0.3, rho=7850, shape="cylinder", against="wall")
-    (p,) = s.points([1.0])
-    assert p.v_over_c == pytest.approx(fem["v"], rel=1e-9)
-    # Both neighbours (1e-4 and 2e-4) are the residual route's points since the law's slowest
-    # points were rerouted (docs/numerics.md): not calibrated, so the sd is the bound, 3.2e-4
-    # (it was 9.4e-4, with a calibrated sd of 3.4e-4 from the modal points). Within 0.54 of it
-    # of the finite elements (measured), under the issue's limit of 6e-4.
-    assert p.epsilon_err == pytest.approx(3.22e-4, rel=1e-2)
-    assert not p.sd_calibrated and p.epsilon_sd == p.epsilon_err <= 6e-4
-    assert abs(p.epsilon - fem["epsilon"]) <= p.epsilon_sd
-    assert s.epsilon_sd(1.0) == p.epsilon_sd
-    d = p.to_dict()
-    assert d["epsilon_sd"] == p.epsilon_sd and d["epsilon_sd_kind"] == "bound"
+    (q,) = s.points([1.0])
+    assert q.v_over_c == pytest.approx(p["v"], rel=1e-9)
+    assert q.sd_calibrated and q.epsilon_sd < q.epsilon_err <= 6e-4
+    f = CALIBRATIONS[RESIDUAL_HARD].point_factor
+    z = abs(q.epsilon - hard["epsilon"]) / np.hypot(q.epsilon_sd, f * hard["epsilon_err"])
+    assert z <= 2.0
+    d = q.to_dict()
+    assert d["epsilon_sd"] == q.epsilon_sd and d["epsilon_sd_kind"] == "standard deviation"
 
 
 # -- serving ---------------------------------------------------------------------------------
@@ -260,10 +279,10 @@ def test_the_law_command_shows_the_sd_and_what_it_means(capsys):
 def test_each_route_is_judged_on_its_own_values(fitted):
     """The shipped disk laws serve the residual route at their slowest points (docs/numerics.md);
     the modal factors are fitted on the modal values there (kept in the laws' ``rerouted``
-    entries), so the 26 modal rows are those of the laws before rerouting, and the finite-element
-    points the residual route serves (nu = 0.33 and 0.9 at v = 1e-4: the shipped reference file;
-    four more in tests/data/fem_slow_points.json and 19 at its faster points in
-    tests/data/fem_residual_points.json) are judged with its bound: all 25 lie within it."""
+    entries), so the 26 modal rows are those of the laws before rerouting, and the 25
+    finite-element points at the residual route's speeds (nu = 0.33 and 0.9 at v = 1e-4: the
+    shipped reference file; four more in tests/data/fem_slow_points.json and 19 at its faster
+    points in tests/data/fem_residual_points.json) are rows of that route."""
     own = [r for r in rows_fem() if r.route == MODAL]
     served = rows_fem(served=True)
     assert len(own) == 26 and sum(r.route == MODAL for r in served) == 24
@@ -271,45 +290,104 @@ def test_each_route_is_judged_on_its_own_values(fitted):
     assert sorted((r.nu, r.v) for r in residual) == [(0.33, 1e-4), (0.9, 1e-4)]
     every = rows_residual(DATA)
     assert len(every) == 25 and all(r.route == "residual" for r in every)
-    c = fitted["coverage"]["residual"]["bound"]
-    assert c["points"] == 25 and c["within_1"] == 1.0
+    assert fitted["coverage"]["residual"]["bound"]["points"] == 25
 
 
-def test_the_finite_elements_cannot_judge_the_residual_route_s_wall_limit(fitted):
-    """Their own stated errors alone (served value taken as exact) cover 22 of the 25 residual
-    points within one (88 %): the finite elements extrapolate from the route's walls, so the
-    miss is smaller than their error and the rule's factor falls to its floor (1e-3). The
-    route's wall limit is judged by harder walls instead (the next test)."""
-    r = fitted["coverage"]["residual"]
-    assert r["fem_errors_alone"]["points"] == 25 and r["fem_errors_alone"]["within_1"] >= 0.8
-    assert r["factor_by_the_rule"] < 0.01
+def _ladder():
+    return {(p["nu"], p["v"]): p for p in json.loads((DATA / LADDER_FILE).read_text())["points"]}
+
+
+def test_the_finite_elements_agree_with_the_residual_route_on_their_own_walls():
+    """The finite elements extrapolate from the laws' walls (alpha delta_max = 40, 80, 160), so
+    they judge the residual route on those walls, not its wall limit: against the route's
+    value there (the wall ladder's snapshot of the point it served then, on 40-160 or 80-320),
+    all 24 with a ladder record lie within one combined bound (measured: largest 0.98). The
+    values now served, from 160-640, lie further from them (11 of 24 within one, 22 within
+    two; largest 2.4, nu = 0.9 at 1e-4): the soft walls' bias, shared by both methods."""
+    ladder = _ladder()
+    near, far = [], []
+    for r in rows_residual(DATA):
+        p = ladder.get((r.nu, r.v))
+        if p is None:  # nu = 0.8 at 0.001: the ladder failed there
+            continue
+        then = p["shipped"]
+        near.append(
+            abs(r.reference - then["epsilon"]) / np.hypot(r.reference_err, then["epsilon_err"])
+        )
+        far.append(abs(r.reference - r.served) / np.hypot(r.reference_err, r.point_err))
+    assert len(near) == 24 and max(near) <= 1.0
+    assert np.median(far) > 2 * np.median(near)
+    assert coverage(np.array(far))["within_2"] >= 0.9
 
 
 def test_the_ladder_s_served_triple_is_the_shipped_point():
-    """The wall ladder (tools/residual_wall_ladder.py) refits its served walls to the shipped
-    point: the same route, walls and modes, so the harder walls judge what is served (the same
-    code path on one machine: 1e-9)."""
-    doc = json.loads((DATA / "residual_wall_ladder.json").read_text())
+    """The wall ladder (tools/residual_wall_ladder.py) refits the walls a point was served from
+    when it was computed to that point (the same route, walls and modes, so the harder walls
+    judge what was served; the same code path on one machine: 1e-9), and the shipped laws now
+    serve its triple 160-640 (``--apply``)."""
+    doc = json.loads((DATA / LADDER_FILE).read_text())
     assert len(doc["points"]) == 36
     for p in doc["points"]:
         own = p["triples"][p["served_triple"]]
         assert own["walls"] == p["shipped"]["walls"]
         assert own["epsilon"] == pytest.approx(p["shipped"]["epsilon"], rel=1e-9)
         assert own["epsilon_err"] == pytest.approx(p["shipped"]["epsilon_err"], rel=1e-6)
+        (now,) = [r for r in law(p["nu"])._records() if r["v"] == p["v"]]
+        assert now["route"] == "residual" and now["residual"]["walls"] == [160.0, 320.0, 640.0]
+        assert now["epsilon"] == p["triples"][2]["epsilon"]
+        assert now["epsilon_err"] == p["triples"][2]["epsilon_err"]
+
+
+def test_the_top_walls_repeat_the_ladder_s_hardest_two():
+    """``--top`` runs the route on 1280, 2560, 5120: its first two walls are the ladder's last two,
+    the same computation (the same code path on one machine: equal to 1e-12)."""
+    tops = [p for p in _ladder().values() if "top" in p]
+    assert len(tops) >= 20
+    for p in tops:
+        grid, top = np.array(p["energy_loss_grid"]), np.array(p["top"]["energy_loss_grid"])
+        np.testing.assert_allclose(top[:2], grid[-2:], rtol=1e-12, atol=0)
+
+
+def test_the_residual_route_s_bound_covers_harder_walls(fitted):
+    """Served from 160-640, the route's bound covers its own limit on harder walls: 1280-5120
+    where computed (no wall in common), else 640-2560, and the ladder at speeds between its
+    points (tests/data/residual_ladder_between.json, the steel cylinder at 1 m/s)."""
+    c = fitted["coverage"]["residual"]["harder_walls"]["bound"]
+    assert c["points"] == 49
+    assert c["within_1"] >= 0.95 and c["within_2"] == 1.0
+
+
+def test_the_residual_route_s_sd_covers_two_thirds_of_its_held_out_points(fitted):
+    """The factor of the hard-wall residual route by the module's rule (given the modal route's
+    ``b`` and ``d``; fitted 0.4502), checked on the held-out half: 16 of 24 within one
+    (66.7 %)."""
+    h = fitted["coverage"]["residual"]["harder_walls"]
+    assert round(h["factor_by_the_rule"], 2) == CALIBRATIONS[RESIDUAL_HARD].point_factor
+    held = h["held_out"]
+    assert held["points"] == 24 and 0.6 <= held["within_1"] <= 0.8
 
 
 @pytest.mark.xfail(
     strict=True,
     reason=(
-        "measured 3-4 Dec 2026: the residual route's bound covers 28 of its 36 points judged on "
-        "walls 4-16 times harder within one (77.8 %) and 33 within two (91.7 %; largest z 3.5, "
-        "nu 0.2 at 1e-4): its wall limit on the served walls is biased beyond its stated "
-        "error where the loss's differences per doubling of the wall are not yet in the ratio "
-        "2 of a line in 1/alpha (1.66-2.33 there); the rule's factor is 1.13 (held out 78 % / "
-        "89 %). A covering error budget is not built (docs/errors.md)"
+        "measured 4 Dec 2026: 22 of the 24 held-out rows within two sd (91.7 %), 46 of all 49 "
+        "(93.9 %); beyond two: nu = 0.8 at 2e-4 (2.45) and 1e-4 (2.16), nu = 0.7 at 2e-4 (2.05), "
+        "judged on walls 1280-5120, where the route's limit still rises by 1-2e-5 per doubling "
+        "of the walls; a term for the last shift between triples did not help "
+        "(docs/errors.md)"
     ),
 )
-def test_the_residual_route_s_bound_covers_harder_walls(fitted):
-    c = fitted["coverage"]["residual"]["harder_walls"]["bound"]
-    assert c["points"] == 36
-    assert c["within_1"] >= 0.95 and c["within_2"] == 1.0
+def test_the_residual_route_s_sd_covers_95_percent_of_its_held_out_points_within_two(fitted):
+    held = fitted["coverage"]["residual"]["harder_walls"]["held_out"]
+    assert held["within_2"] >= 0.95
+
+
+def test_residual_points_on_the_laws_walls_keep_their_bound():
+    """A residual point on the laws' own walls (a law of ``--route residual``, the one point the
+    ladder failed at) is not the hard-wall route: its sd is its bound."""
+    served = law(0.8)
+    (j,) = np.flatnonzero(np.isclose(served.v, 0.001, rtol=1e-9))
+    assert served._records()[j]["residual"]["walls"][0] == 40.0
+    assert not served.sd_calibrated(0.001) and served.epsilon_sd(0.001) == served.epsilon_err(0.001)
+    (k,) = np.flatnonzero(np.isclose(served.v, 2e-4, rtol=1e-9))
+    assert served.sd_calibrated(2e-4) and served.epsilon_sd(2e-4) < served.epsilon_err(2e-4)

@@ -62,7 +62,10 @@ def test_the_cheapest_stored_point_is_what_the_route_computes_today():
 def test_the_points_still_curved_pass_on_harder_walls_within_their_flagged_error():
     """The 11 points curved in 1/alpha on the law's walls (docs/numerics.md): each passes on the
     first harder walls tried that pass (ten on 80-320, one on 160-640), within its flagged
-    value's error (measured 0.52-0.97 of it), and the shipped law serves that point."""
+    value's error (measured 0.52-0.97 of it). The shipped law served that point until the wall
+    ladder moved every residual point to walls 160-640 (``tools/residual_wall_ladder.py --apply``,
+    docs/errors.md): its ``rerouted`` list now shows the change from it, and where the ladder
+    failed (nu = 0.8 at 0.001, if flagged here) it still serves it."""
     flagged = [p for p in DOC["points"] if p["status"] != "ok"]
     assert len(flagged) == 11
     for p in flagged:
@@ -71,15 +74,19 @@ def test_the_points_still_curved_pass_on_harder_walls_within_their_flagged_error
         assert tries[0]["residual"]["walls"] == [80.0, 160.0, 320.0]
         ok = tries[-1]
         assert abs(ok["epsilon"] - p["epsilon"]) < p["epsilon_err"], (p["nu"], p["v"])
-        (served,) = [
-            r
-            for r in law(p["nu"]).metadata["points"]
-            if r["v"] == p["v"] and r["route"] == "residual"
-        ]
-        assert (
-            served["epsilon"] == ok["epsilon"]
-            and served["residual"]["walls"] == ok["residual"]["walls"]
-        )
+        meta = law(p["nu"]).metadata
+        (served,) = [r for r in meta["points"] if r["v"] == p["v"] and r["route"] == "residual"]
+        if served["residual"]["walls"] == ok["residual"]["walls"]:
+            # The ladder's failed point, or one that passed on 160-640 already (nu = 0.25 at
+            # 2e-4): the ladder's refit of the same walls is the same route's (1e-9).
+            assert (p["nu"], p["v"]) == (0.8, 0.001) or ok["residual"]["walls"][0] == 160.0
+            assert served["epsilon"] == pytest.approx(ok["epsilon"], rel=1e-9)
+            continue
+        assert served["residual"]["walls"] == [160.0, 320.0, 640.0]
+        changes = [c for c in meta["rerouted"]["points"] if c["v"] == p["v"]]
+        assert [c["from"]["route"] for c in changes] == ["modal", "residual"]
+        assert changes[1]["from"]["epsilon"] == ok["epsilon"]
+        assert changes[1]["to"]["epsilon"] == served["epsilon"]
 
 
 def test_a_harder_wall_point_is_what_the_route_computes_today():

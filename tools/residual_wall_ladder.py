@@ -15,12 +15,21 @@ Each point is written to ``OUT`` as soon as it is done (the whole file, atomical
 keeps the points already there of the same code version. Order: the points with a
 finite-element reference first, then by Poisson number and speed. A point the route cannot
 compute on every wall of the ladder is listed under ``failed`` with its error, and the run goes
-on.
+on (it is not tried again at the same code version).
+
+``--top VMAX`` then runs every point up to the speed ``VMAX`` on :data:`TOP_WALLS` (``1280,
+2560, 5120``: its first two walls the ladder's last two), a judge of the walls the laws serve
+that shares none of them. ``--point NU:V`` runs the ladder at the points asked instead of the
+laws' (speeds between theirs, the steel cylinder at 1 m/s). ``--apply`` serves every residual
+point of the shipped disk laws the ladder holds from :data:`SERVED_WALLS` (``160, 320, 640``;
+:func:`apply`, through :func:`restitution.laws.making.reroute.rerouted`): on those walls the
+route's error covers its harder walls' limit, on the laws' own it does not (docs/errors.md).
 
 Usage (from the project's root, with its venv)::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src .venv/bin/python tools/residual_wall_ladder.py \
-        tests/data/residual_wall_ladder.json [--max-points N]
+        tests/data/residual_wall_ladder.json [--max-points N] [--top VMAX] [--apply]
+    ... tools/residual_wall_ladder.py OUT --point NU:V [--point NU:V ...]
 """
 
 from __future__ import annotations
@@ -36,7 +45,7 @@ from pathlib import Path
 
 import numpy as np
 import scipy
-from residual_slow_points import _git_commit  # this folder's (the script's own sys.path entry)
+from residual_slow_points import _git_commit, reroute_and_write  # this folder's
 
 from restitution import atomic
 from restitution.errors import RestitutionError
@@ -129,15 +138,22 @@ def served_record(p: dict, source: str) -> dict:
 
 def apply(doc: dict, source: str) -> list[str]:
     """Serve every residual point of the shipped disk laws that the ladder holds from
-    :data:`SERVED_WALLS` (:func:`restitution.laws.making.reroute.rerouted`); one line per law."""
+    :data:`SERVED_WALLS` (:func:`restitution.laws.making.reroute.rerouted`); one line per law.
+    A point the law serves so already is left as it is (a second run changes nothing)."""
     from restitution.laws.law import EpsilonLaw
-    from restitution.laws.making.reroute import rerouted, write_shipped
 
     lines = []
     for path in sorted(DATA.glob("law_nu*.json")):
         law_ = EpsilonLaw.from_json(path)
-        mine = [served_record(p, source) for p in doc["points"] if p["nu"] == law_.nu]
+        served = {float(r["v"]): r for r in law_._records()}
+        mine = [
+            r
+            for p in doc["points"]
+            if p["nu"] == law_.nu
+            and (r := served_record(p, source))["epsilon"] != served[float(p["v"])]["epsilon"]
+        ]
         if not mine:
+            lines.append(f"{path.name}: served from walls {SERVED_WALLS} already")
             continue
         parameters = {
             "reason": (
@@ -152,12 +168,8 @@ def apply(doc: dict, source: str) -> list[str]:
             "code_version": doc["code_version"],
             "date": max(p["date"] for p in doc["points"] if p["nu"] == law_.nu),
         }
-        new = rerouted(law_, mine, parameters=parameters)
-        write_shipped(new, path)
-        ok = int(np.sum(new.asymptotic_ok & ~new.quasistatic))
         lines.append(
-            f"{path.name}: {len(mine)} point(s) served from walls {SERVED_WALLS}; {ok} of "
-            f"{int(np.sum(~new.quasistatic))} collision points pass"
+            reroute_and_write(law_, mine, parameters, path, f"served from walls {SERVED_WALLS}")
         )
     return lines
 

@@ -68,7 +68,7 @@ import numpy as np
 from scipy.optimize import minimize, minimize_scalar
 
 from restitution.errors import InputError
-from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, RESIDUAL
+from restitution.laws.calibration import CALIBRATIONS, MODAL, NU, RESIDUAL, RESIDUAL_HARD
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_load import law
 from restitution.laws.law_nu import NuInterpolatedLaw
@@ -251,30 +251,44 @@ def rows_residual(folder: Path) -> list[Row]:
 
 LADDER_FILE = "residual_wall_ladder.json"
 """The shipped disk laws' residual-route points on walls ``alpha delta_max = 40 .. 2560``
-(``tools/residual_wall_ladder.py``), in the folder of the direct points (``tests/data``)."""
+(``tools/residual_wall_ladder.py``), the slow ones also on ``1280, 2560, 5120`` (its ``--top``),
+in the folder of the direct points (``tests/data``)."""
+
+LADDER_BETWEEN_FILES = ("residual_ladder_between.json", "residual_ladder_steel_cylinder_1ms.json")
+"""The same ladder at speeds between the residual route's points (``--point``), in the same
+folder: the served interpolation judged with the points' wall limit."""
+
+
+def _hardest(p: dict) -> tuple[dict, str]:
+    """The hardest walls' limit of a ladder record: ``--top``'s (``1280-5120``, no wall in
+    common with the served ``160-640``) where computed, else the ladder's ``640-2560``."""
+    if "top" in p:
+        return p["top"]["limit"], "top"
+    return p["triples"][-1], "hardest"
 
 
 def rows_ladder(folder: Path) -> list[Row]:
-    """Every residual-route point of the shipped disk laws in ``folder/`` :data:`LADDER_FILE`,
-    as served, against the route's own wall limit from its hardest three walls (``640, 1280,
-    2560``: 4 to 16 times the served ones; the reference's error is the one that fit states).
-    They judge the wall limit, which the finite elements share (they extrapolate from the
-    route's walls)."""
-    path = Path(folder) / LADDER_FILE
-    if not path.is_file():
-        return []
+    """Every residual-route point of the shipped disk laws in ``folder/`` :data:`LADDER_FILE`
+    and every point of :data:`LADDER_BETWEEN_FILES`, as served, against the route's own wall
+    limit from its hardest walls (:func:`_hardest`; the reference's error is the one that fit
+    states). They judge the wall limit, which the finite elements share (they extrapolate from
+    the laws' walls ``40-160``)."""
     out = []
-    for p in json.loads(path.read_text())["points"]:
-        ref = p["triples"][-1]
-        out.append(
-            _modal_row(
-                f"ladder:{LADDER_FILE}",
-                _law(p["nu"], served=True),
-                p["v"],
-                ref["epsilon"],
-                ref["epsilon_err"],
+    for name in (LADDER_FILE, *LADDER_BETWEEN_FILES):
+        path = Path(folder) / name
+        if not path.is_file():
+            continue
+        for p in json.loads(path.read_text())["points"]:
+            ref, which = _hardest(p)
+            out.append(
+                _modal_row(
+                    f"ladder:{name}:{which}",
+                    _law(p["nu"], served=True),
+                    p["v"],
+                    ref["epsilon"],
+                    ref["epsilon_err"],
+                )
             )
-        )
     return out
 
 
@@ -443,6 +457,42 @@ def _judged_by_the_rule(rows: list[Row]) -> dict:
     }
 
 
+def _ladder_var(b: float, d: float):
+    """The variance of a ladder row for the residual factor ``f``: the served ``sd`` (``f``
+    times the point error, the modal route's ``b`` and ``d`` times the interpolation terms) and
+    the reference's error, the same route's budget, scaled by the same ``f``."""
+    return lambda r, f: (
+        (f * r.point_err) ** 2
+        + (b * r.interpolation_err) ** 2
+        + (d * r.spline_gap) ** 2
+        + (f * r.reference_err) ** 2
+    )
+
+
+def ladder_z(rows: list[Row], f: float, b: float, d: float) -> np.ndarray:
+    """``|served - reference|`` of ladder rows over :func:`_ladder_var`'s standard deviation."""
+    var = _ladder_var(b, d)
+    return np.array([r.miss / math.sqrt(var(r, f)) for r in rows])
+
+
+def _judged_on_harder_walls(rows: list[Row], b: float, d: float, shipped: float) -> dict:
+    """The residual route judged by its own hardest walls (:func:`rows_ladder`): the bound's
+    coverage, the factor the module's rule fits on half of the rows (given the modal route's
+    ``b`` and ``d``), and the coverage of the ``shipped`` factor, fitted and held out and per
+    kind of row."""
+    fitted, held = halves(rows)
+    f = fit_factor(fitted, _ladder_var(b, d)) if fitted else math.nan
+    kinds = sorted({r.source for r in rows})
+    return {
+        "bound": coverage(bound_z(rows)),
+        "factor_by_the_rule": f,
+        "fitted": coverage(ladder_z(fitted, shipped, b, d)),
+        "held_out": coverage(ladder_z(held, shipped, b, d)),
+        "by_source": {k: coverage(ladder_z([r for r in rows if r.source == k], shipped, b, d))
+                      for k in kinds},
+    }  # fmt: skip
+
+
 def fit(between_dir: Path) -> dict:
     """The factors by the module's rule and the coverage of every comparison, fitted and held
     out, with the shipped (rounded) factors."""
@@ -494,7 +544,9 @@ def fit(between_dir: Path) -> dict:
     table["residual"] = {
         **_judged_by_the_rule(residual),
         "fem_errors_alone": coverage(z_scores(residual, "fem", 0.0, 0.0, 0.0, 0.0)),
-        "harder_walls": _judged_by_the_rule(rows_ladder(between_dir)),
+        "harder_walls": _judged_on_harder_walls(
+            rows_ladder(between_dir), sb, sd, CALIBRATIONS[RESIDUAL_HARD].point_factor
+        ),
     }
     return {
         "fitted_factors": {"a": a, "b": b, "c": c, "d": d},
