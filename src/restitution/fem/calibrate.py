@@ -24,10 +24,13 @@ The independent points, each compared with its own stated error joined in quadra
   grid ``0.2, 0.33, 0.5, 0.7, 0.9`` without them, at their computed modal speeds; they fix the
   factor ``c`` of the interpolation in ``nu``.
 * ``fem`` points served by a low-speed route (8): too few to calibrate; that route keeps its
-  bound. Those served by the residual route (the shipped disk laws' slowest points,
-  :func:`rows_residual`: 25) share its walls and cannot judge its wall limit; the same route on
-  walls 4-16 times harder (:func:`rows_ladder`) judges it: its bound covers 78 % within one
-  there, so it is not a bound; the route keeps it as its ``sd`` (docs/errors.md).
+  bound. Those at the residual route's points (the shipped disk laws' slowest,
+  :func:`rows_residual`: 25) extrapolate from the laws' walls and cannot judge its wall limit.
+* ``ladder``: the residual route on harder walls (:func:`rows_ladder`) against the same route
+  on the walls the laws serve it from (``160-640``); they fix its point factor ``f`` (route
+  :data:`~restitution.laws.calibration.RESIDUAL_HARD`, given the modal ``b`` and ``d``), the
+  reference's own error scaled by the same ``f`` (:func:`_ladder_var`). On the laws' own walls
+  the route's bound is not one (docs/errors.md); that route keeps it as its ``sd``.
 
 Each route is judged on its own values: the rows are built from the laws with the modal points
 their slowest speeds had before they were rerouted (``served=False``, the default), so the
