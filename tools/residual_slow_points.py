@@ -209,6 +209,16 @@ def _command() -> str:
     return "tools/residual_slow_points.py " + " ".join(a for a in sys.argv[1:] if a != "--apply")
 
 
+def environment() -> dict:
+    """The versions and machine a tool's points are computed with, as its files store them."""
+    return {
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "scipy": scipy.__version__,
+        "machine": platform.machine(),
+    }
+
+
 def _git_commit() -> str:
     try:
         out = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True)
@@ -250,12 +260,7 @@ def main(argv=None) -> int:
         "code_version": version,
         # The commit the points were computed at: a rerun that computes none keeps it.
         "git_commit": kept.get("git_commit") if len(done) >= len(todo) else _git_commit(),
-        "environment": {
-            "python": platform.python_version(),
-            "numpy": np.__version__,
-            "scipy": scipy.__version__,
-            "machine": platform.machine(),
-        },
+        "environment": environment(),
         "points": [],
     }
     fem = fem_points()

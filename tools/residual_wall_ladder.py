@@ -39,13 +39,11 @@ import datetime
 import json
 import math
 import os
-import platform
 import time
 from pathlib import Path
 
 import numpy as np
-import scipy
-from residual_slow_points import _git_commit, reroute_and_write  # this folder's
+from residual_slow_points import _git_commit, environment, reroute_and_write  # this folder's
 
 from restitution import atomic
 from restitution.errors import RestitutionError
@@ -302,12 +300,7 @@ def main(argv=None) -> int:
         "code_version": version,
         # The commit the points were computed at: a rerun that computes none keeps it.
         "git_commit": kept.get("git_commit", ""),
-        "environment": {
-            "python": platform.python_version(),
-            "numpy": np.__version__,
-            "scipy": scipy.__version__,
-            "machine": platform.machine(),
-        },
+        "environment": environment(),
         "points": [],
     }
     # Kept as they were: a note on the commits, the --top run's command; a point that failed
