@@ -26,14 +26,15 @@ paper-quick: $(STAMP)
 # slow-impact model: about 4 minutes a law),
 # then put the residual route's points in where the modal ones fail their checks (issue 65;
 # the stored points are reused while that route's code is unchanged), then serve those from
-# the walls alpha delta_max = 160-640 of the route's wall ladder (docs/errors.md; the ladder's
-# points likewise reused), then draw their slow-point figures into docs/figures.
+# the walls alpha delta_max = 160-640 of the route's wall ladder, with the modal points up to
+# v = 1e-3 (docs/errors.md; the ladder's points likewise reused), then draw their slow-point
+# figures into docs/figures.
 law: $(STAMP)
 	$(BIN)/python -m restitution.laws.making.production
 	OPENBLAS_NUM_THREADS=1 PYTHONPATH=src $(BIN)/python tools/residual_slow_points.py \
 		tests/data/residual_slow_points.json --apply
 	OPENBLAS_NUM_THREADS=1 PYTHONPATH=src $(BIN)/python tools/residual_wall_ladder.py \
-		tests/data/residual_wall_ladder.json --apply
+		tests/data/residual_wall_ladder.json --modal 0.001 --apply
 	$(BIN)/python -m restitution.reproduction.law_figures --figures docs/figures
 	$(BIN)/python -m restitution.reproduction.figures.disk_low_speed --figures docs/figures
 

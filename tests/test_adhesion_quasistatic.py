@@ -331,6 +331,7 @@ def rebound():
     return adhesive_collision(CONTACT, 3.0 * V_S)
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 76: the default run under 10 min)
 def test_spectrum_meets_direct_quadrature(rebound):
     T = rebound.contact_time
     for omega in (1.0 / T, 10.0 / T):

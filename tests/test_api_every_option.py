@@ -64,6 +64,7 @@ def test_glass_beads_between_the_shipped_laws_answer_below_them_by_their_route(c
     np.testing.assert_allclose(eps, want, rtol=0, atol=1e-13)
 
 
+@pytest.mark.slow  # 28 s of the default run (stop 76: the default run under 10 min)
 def test_damped_glass_beads_are_the_damped_law(cli):
     opts = dict(measured_epsilon=0.9, measured_speed=1.0, radius=1e-3)
     law = restitution.si_law(**GLASS, against="grain", **opts)

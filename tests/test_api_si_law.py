@@ -31,6 +31,7 @@ def test_without_options_it_is_the_elastic_law():
     assert a.points([1.0]) == b.points([1.0])
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 76: the default run under 10 min)
 def test_the_damped_law_at_every_speed_agrees_with_the_answer():
     law = restitution.si_law(**GLASS, relaxation_time=TAU_S, radius=RADIUS)
     speeds = (0.1, 1.0, 10.0)

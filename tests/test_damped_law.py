@@ -129,6 +129,7 @@ def test_a_strongly_damped_soft_sphere_says_where_the_model_stops_being_informat
     assert all(p.informative for p in steel.points([0.1, 1.0, 3.0]))
 
 
+@pytest.mark.slow  # 16 s of the default run (stop 76: the default run under 10 min)
 def test_losses_that_add_up_to_all_the_energy_give_no_value(tmp_path):
     """Issue 47: a strongly damped grain got epsilon 0.000000 +- 1e+298 with a normal status
     where its two losses added up past the kinetic energy. Such a speed now has no value, its

@@ -13,6 +13,8 @@ import numpy as np
 import pytest
 from scipy.interpolate import CubicHermiteSpline
 
+pytestmark = pytest.mark.slow  # the damped export's fixture: 42-61 s of the default run (stop 76)
+
 GLASS = ["--E", "63e9", "--nu", "0.24", "--rho", "2500", "--shape", "sphere"]
 DAMPING = ["--measured-epsilon", "0.9", "--measured-speed", "1", "--radius", "1e-3"]
 

@@ -107,6 +107,7 @@ def test_more_viscous_material_loses_more(small):
     assert 0.0 < loss[0] < loss[1] < loss[2]
 
 
+@pytest.mark.slow  # 8 s of the default run (stop 76: the default run under 10 min)
 def test_damped_collision_same_bits_on_one_thread_or_two():
     # At least SPLIT_MIN_MODES modes: alone it runs on two threads, in a batch on one.
     body = Viscoelastic(get_modes(0.33, count=2200), 0.05)

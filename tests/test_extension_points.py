@@ -59,6 +59,7 @@ def test_a_toy_body_collides_as_the_disk_does(toy):
     assert abs(1.0 - a.epsilon**2 - a.mode_energy_after.sum()) < 1e-6
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 76: the default run under 10 min)
 def test_a_toy_kind_runs_through_the_sweep_and_the_store(toy, tmp_path):
     """Spawned workers compute the toy's points (they register it from the environment); the
     store keys them by the toy's name and code version; the curves read back are the disk's."""

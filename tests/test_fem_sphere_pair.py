@@ -192,6 +192,7 @@ def test_sphere_pair_walls_are_the_spheres_products_over_the_pair_compression():
     assert default_products(SPHERE) == (80.0, 160.0, 320.0)
 
 
+@pytest.mark.slow  # 8 s of the default run (stop 76: the default run under 10 min)
 def test_sphere_pair_epsilon_json_names_the_kind(tmp_path):
     """h -> 0 at one wall, levels 0-1 at ``w = 0.2`` (about 3 s)."""
     alpha = _wall(Partner(2.0), W)

@@ -960,6 +960,7 @@ def test_refusals_name_the_commands_options(cli, args, option, python_only):
     assert not re.search(rf"{python_only}(?! \(a setting)", err)
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 76: the default run under 10 min)
 def test_a_bounce_estimate_covers_the_steps_it_takes(monkeypatch):
     """Issue 47: the `bounce` time estimate was 3.5-7.5 times optimistic. It counted every
     collision as the first one from rest; the later ones start vibrating and refine their steps.

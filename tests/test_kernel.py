@@ -40,6 +40,7 @@ def test_single_collision_matches_numpy_path(nu, count, v, alpha, integrator):
     )
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 76: the default run under 10 min)
 def test_batch_matches_numpy_path_member_by_member():
     modes = get_modes(0.33, count=150)
     v = [0.01, 0.05, 0.1, 0.2]

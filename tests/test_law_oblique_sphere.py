@@ -68,6 +68,7 @@ def test_the_sphere_request_is_served_and_its_kind_can_still_refuse(monkeypatch)
     assert "\n" not in words
 
 
+@pytest.mark.slow  # 15 s of the default run (stop 76: the default run under 10 min)
 def test_frictionless_ball_keeps_its_tangential_motion_and_its_head_on_epsilon():
     """``mu = 0`` at 30 degrees: ``beta = -1``, no spin, no friction work, and ``epsilon_normal``
     the route's own head-on value (angle 0, same modes and wall). 4 and 2 modes: 0.98840287
@@ -132,6 +133,7 @@ def test_steel_ball_at_1_m_s_30_degrees_mu_0_3_in_one_command(cli):
     assert p["beta_microslip"] > p["beta_quasistatic"]
 
 
+@pytest.mark.slow  # 18 s of the default run (stop 76: the default run under 10 min)
 def test_the_ball_with_microslip_measures_beta_from_law_b(cli, monkeypatch):
     """--friction-model microslip: beta's error holds the distance from Hertz-Mindlin with
     microslip (law (b), 0.31605: that route's own low-speed limit), and the text says which
@@ -149,6 +151,7 @@ def test_the_ball_with_microslip_measures_beta_from_law_b(cli, monkeypatch):
     assert "0.31605 with microslip (this route's low-speed limit, in beta's error)" in out
 
 
+@pytest.mark.slow  # 13 s of the default run (stop 76: the default run under 10 min)
 def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
     """Text and CSV of the ball's answer, as for the cylinder (the kind's count lowered to 4
     and 2 modes for speed: about 3 s each)."""
@@ -167,6 +170,7 @@ def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
     assert float(row["beta_quasistatic"]) == pytest.approx(0.1083827, abs=1e-7)
 
 
+@pytest.mark.slow  # 26 s of the default run (stop 76: the default run under 10 min)
 def test_the_ball_carries_its_quasistatic_limit_and_beta_s_error_holds_it():
     """The sphere's kind names Hertz-Mindlin (``BodyKind.oblique_quasistatic``): each point
     carries its ``beta`` without microslip (the modal route's low-speed limit, law (a)) and with

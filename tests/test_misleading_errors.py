@@ -94,6 +94,7 @@ def test_one_mode_count_gives_no_error_bar_in_text_or_json(cli, tmp_path):
     assert d["epsilon"] is not None and d["status"] == Status.NOT_ASYMPTOTIC
 
 
+@pytest.mark.slow  # 12 s of the default run (stop 76: the default run under 10 min)
 @pytest.mark.parametrize("quiet", representatives([(), ("-q",)], {()}))  # -q: with -m slow
 def test_beyond_the_model_range_is_a_status_not_only_a_warning(cli, quiet):
     """v = 0.99 once reported status ok with a compression of 0.9 R, the warning on stderr

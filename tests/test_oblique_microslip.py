@@ -115,6 +115,7 @@ def test_frictionless_is_the_head_on_collision_to_second_order(modes20, rim20):
     assert abs(err[1]) < 1e-6
 
 
+@pytest.mark.slow  # 19 s of the default run (stop 76: the default run under 10 min)
 def test_frictionless_sphere_is_the_head_on_collision(sphere20):
     """The sphere (orders 0 and 1 of 20 axisymmetric modes): 2.7e-7 and 6.8e-8 from the DOP853
     head-on reference at step_safety 0.5 and 0.25 (measured), the second order again."""
@@ -210,6 +211,7 @@ def _fem_low_speed():
     return out
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 76: the default run under 10 min)
 def test_microslip_is_the_finite_elements_partial_slip():
     """The FE's beta lies far above the modal route's one stick/slip state at small
     tan(theta)/mu (law (a) against the FE's point-wise friction); the same friction point by

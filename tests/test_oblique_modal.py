@@ -187,6 +187,7 @@ def test_mirror_image(rim20):
     assert len(a.phases) > 2  # stick and slip, not only sliding
 
 
+@pytest.mark.slow  # 8 s of the default run (stop 76: the default run under 10 min)
 def test_a_slip_out_of_a_stick_starts_on_the_right_side():
     """A stick holds v_s a hair (1e-2 rtol |v|) off zero, maybe on the wrong side of the slip
     that follows it; the slip's end is counted from there. Counted from zero the event was

@@ -48,6 +48,7 @@ def cap20_m1(modes20):
 # -- the acceptance checks of issue 63 ---------------------------------------------------------
 
 
+@pytest.mark.slow  # 20 s of the default run (stop 76: the default run under 10 min)
 def test_frictionless_impact_is_the_head_on_collision(modes20, cap20):
     """mu = 0 at 45 degrees, also with the sphere turned by 0.3 rad before (the contact off the
     modes' pole): epsilon_normal is the head-on epsilon of the package's collision (split4,
@@ -71,6 +72,7 @@ def test_frictionless_impact_is_the_head_on_collision(modes20, cap20):
     assert abs(turned.beta + 1.0) < 1e-9 and abs(turned.spin) < 1e-9
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 76: the default run under 10 min)
 def test_gross_sliding_is_the_impulse_ratio(cap20):
     """mu = 0.1 at 80 degrees slides throughout: beta = -1 + K mu (1 + e) / tan(theta),
     K = 7/2, within 1e-3 at v = 0.002 (measured 5.2e-4; the difference is exactly the lever and

@@ -167,6 +167,7 @@ def test_pair_hertz_law_is_the_sum_of_both_disks_at_one_contact_width():
     assert_allclose(same.compression(P), 2 * contact_law(nu1).compression(P), rtol=1e-12)
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 76: the default run under 10 min)
 def test_modal_pair_approaches_the_quasistatic_pair():
     """Bidisperse disks (R2/R1 = 1.4, 400 lowest modes of both, alpha = 4000): the modal contact
     time approaches the quasistatic one of the pair's law as the speed falls (measured 9.4 % off

@@ -127,6 +127,7 @@ def test_pair_settings_carry_the_wall_sweep_over():
         replace(s, select="ranked")
 
 
+@pytest.mark.slow  # 8 s of the default run (stop 76: the default run under 10 min)
 def test_identical_pair_law_point_is_the_wall_point(tmp_path):
     """Both limits through the sweep, the store and the extrapolation: the identical pair at
     ``w`` (windows ``2N``, walls on the pair's scale) against the disk on the wall at ``w/2``

@@ -382,6 +382,7 @@ def test_pair_contact_mass_is_the_pair_modes_mass():
     assert mass == pytest.approx(partner.pair(0.3, 64, "sphere").mass, rel=1e-12)
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 76: the default run under 10 min)
 def test_the_mechanisms_figure_is_drawn(tmp_path):
     """docs/figures/plastic_mechanisms_steel.png: below the yield speed only the waves and the
     viscosity lose; above it the plastic flow takes most, and epsilon falls."""

@@ -211,6 +211,7 @@ def test_the_half_space_route_has_no_value_where_the_losses_pass_the_kinetic_ene
         half_space_loss(modes, 5.0 / c, wall)
 
 
+@pytest.mark.slow  # 8 s of the default run (stop 76: the default run under 10 min)
 def test_a_too_dense_wall_gives_no_value_at_that_speed(cli):
     """`--wall-rho 1e7` was a traceback (math domain error at the route's reach); now 1 m/s has
     its value, 5 m/s none (the losses pass the kinetic energy there) and says why, and the route

@@ -70,13 +70,16 @@ def test_a_point_of_the_residual_route_is_not_the_modal_route_s_to_calibrate():
 
     old = EpsilonLaw.from_json(DATA / "law_nu0.25.json")
     modal = old.v[~old.quasistatic]
-    new = rerouted(old, [_record(float(modal[3]))], parameters={})
+    # The shipped law's points 4 to 7 (v = 0.002 to 0.0064) are modal; its slower ones are the
+    # residual route's already.
+    assert {r.get("route") for r in old._records() if 0.0019 < r["v"] < 0.007} == {"modal"}
+    new = rerouted(old, [_record(float(modal[5]))], parameters={})
     routes = [
         _modal_row("test", new, float(v), 0.99, 1e-5).route
-        for v in (modal[3], np.sqrt(modal[2] * modal[3]), np.sqrt(modal[3] * modal[4]), modal[5])
+        for v in (modal[5], np.sqrt(modal[4] * modal[5]), np.sqrt(modal[5] * modal[6]), modal[7])
     ]
     assert routes == ["residual", "residual", "residual", "modal"]
-    assert _modal_row("test", old, float(modal[3]), 0.99, 1e-5).route == "modal"
+    assert _modal_row("test", old, float(modal[5]), 0.99, 1e-5).route == "modal"
 
 
 def test_a_nu_law_over_grid_laws_of_mixed_routes_serves_the_bound_where_one_is_uncalibrated():
@@ -101,7 +104,8 @@ def test_the_shipped_disk_laws_before_rerouting_are_their_modal_points():
     calibration judges the modal route on these, docs/errors.md), and rerouting them again with
     the shipped records gives the shipped law. A speed rerouted twice (the residual route on
     the laws' walls, then on walls 160-640: tools/residual_wall_ladder.py --apply) lists the
-    second change from the first one's point."""
+    second change from the first one's point. A modal point rerouted while ``ok`` is one the
+    ladder serves from 160-640 (``--modal 0.001``, up to ``v = 1e-3``)."""
     for path in sorted(DATA.glob("law_nu*.json")):
         shipped = EpsilonLaw.from_json(path)
         changes = shipped.metadata["rerouted"]["points"]
@@ -115,7 +119,13 @@ def test_the_shipped_disk_laws_before_rerouting_are_their_modal_points():
             else:
                 assert change["from"]["route"] == "modal"
                 assert modal.epsilon_points[j] == change["from"]["epsilon"]
-                assert change["from"]["status"] != "ok" and not modal.asymptotic_ok[j]
+                if change["from"]["status"] == "ok":
+                    # A modal point served from the wall ladder's 160-640 (--modal 0.001).
+                    assert change["v"] <= 1e-3 and modal.asymptotic_ok[j]
+                    (now,) = [r for r in shipped._records() if r["v"] == change["v"]]
+                    assert now["residual"]["walls"] == [160.0, 320.0, 640.0]
+                else:
+                    assert not modal.asymptotic_ok[j]
             last[j] = change["to"]
         records = [r for r in shipped._records() if r.get("route") == "residual"]
         again = rerouted(modal, records, parameters={})

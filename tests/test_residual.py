@@ -234,6 +234,7 @@ def test_a_pair_of_two_materials_is_the_same_pair_from_the_other_side():
     assert one.loss > 0.01 and abs(one.epsilon - other.epsilon) < 1e-10
 
 
+@pytest.mark.slow  # 20 s of the default run (stop 76: the default run under 10 min)
 def test_the_compiled_loop_is_the_numpy_loop():
     """:mod:`restitution.dynamics.residual_kernel` against the NumPy reference, disk and sphere:
     the same arithmetic in another order (loops against BLAS), so round-off only (measured
@@ -250,6 +251,7 @@ def test_the_compiled_loop_is_the_numpy_loop():
         collide_residual(body, v, alpha, backend="fortran")
 
 
+@pytest.mark.slow  # 29 s of the default run (stop 76: the default run under 10 min)
 def test_sphere_static_compliance_is_the_sum_of_the_modes():
     """The sphere's closed form (Navier's equations, module docstring) against its own
     eigenmodes (Lamb's): 4800 modes reach ``omega_max ~ 107``; the sums' ``1 / omega`` tail is
@@ -328,6 +330,7 @@ def test_sphere_residual_collision_converges_in_few_modes():
     assert coarse.nodes < few.nodes and abs(coarse.epsilon - few.epsilon) < 1e-5
 
 
+@pytest.mark.slow  # 15 s of the default run (stop 76: the default run under 10 min)
 def test_a_law_point_by_the_residual_route_meets_the_shipped_law():
     """:func:`restitution.limits.residual_point.residual_point` at one computed speed of the
     shipped sphere law (``nu = 0.3``, ``v = 0.0329``, status ok): 200, 400 and 800 kept modes,
@@ -400,6 +403,7 @@ def test_the_kernel_of_fewer_nodes_is_the_leading_block():
     assert np.abs(again - fresh).max() <= 1e-14 * np.abs(fresh).max()  # other BLAS blocking
 
 
+@pytest.mark.slow  # 17 s of the default run (stop 76: the default run under 10 min)
 def test_a_soft_wall_may_reach_the_end_of_the_surface():
     """The disk at ``nu = 0.2``, ``v = 0.3`` on the softest wall (``alpha delta_max = 40``,
     ``delta_max = 0.48``): the wall's reach (``NEGLIGIBLE + 5`` decay lengths) spans the whole
@@ -418,6 +422,7 @@ def test_a_soft_wall_may_reach_the_end_of_the_surface():
     assert abs(plain.epsilon - collide(modes, v, alpha, energy_tol=1e-10).epsilon) < 1e-8
 
 
+@pytest.mark.slow  # 52 s of the default run (stop 76: the default run under 10 min)
 def test_a_hard_wall_s_contact_solve_stops_at_the_round_off_floor():
     """``alpha delta_max = 640`` (``nu = 0.25``, ``v = 1e-3``, 100 modes): the solve's step
     tolerance, ``1e-13`` in ``alpha u``, is about ``alpha`` times the round-off of ``u`` there, so

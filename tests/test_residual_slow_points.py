@@ -89,6 +89,7 @@ def test_the_points_still_curved_pass_on_harder_walls_within_their_flagged_error
         assert changes[1]["to"]["epsilon"] == served["epsilon"]
 
 
+@pytest.mark.slow  # 14 s of the default run (stop 76: the default run under 10 min)
 def test_a_harder_wall_point_is_what_the_route_computes_today():
     """``nu = 0.6``, ``v = 0.007297`` on ``alpha delta_max = 80, 160, 320`` (about 6 s)."""
     (p,) = [p for p in DOC["points"] if p["nu"] == 0.6 and p["v"] == 0.007297]

@@ -159,6 +159,7 @@ def _ball_rule(nr=48, nt=40, nphi=24):
     return R.ravel(), np.arccos(X.ravel()), F.ravel(), Wt.ravel()
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 76: the default run under 10 min)
 def test_normalisation_orthogonality_and_rigid_motions(modes20, cap20):
     """int rho u_a . u_b dV = m delta_ab for every pair of the cap's modes (m = 0, 1, 2,
     spheroidal and toroidal; measured <= 3e-13), and every mode carries no momentum along e2
@@ -205,6 +206,7 @@ def _strain_energy_quotient(cap, modes, drop_phi=False):
     return (w @ density) / kinetic
 
 
+@pytest.mark.slow  # 10 s of the default run (stop 76: the default run under 10 min)
 def test_every_azimuthal_order_vibrates_at_its_roots_frequency(modes20):
     """The m = 1 and m = 2 spheroidal fields built on the axisymmetric shapes and the toroidal
     fields have, as their strain-energy Rayleigh quotient in Cartesian coordinates, the

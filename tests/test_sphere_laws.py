@@ -470,6 +470,7 @@ def test_cli_law_exports_a_sphere_law_file(tmp_path, capsys):
 # -- production -------------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 76: the default run under 10 min)
 def test_production_builds_sphere_files(computed, tmp_path, monkeypatch, capsys):
     nus, groups = production.production("sphere")
     plan = body_kind("sphere").production

@@ -169,6 +169,7 @@ def _rows(path):
         }
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 76: the default run under 10 min)
 def test_dask_local_cluster_matches_local_processes(tmp_path):
     # Real solver, same batches: a Dask LocalCluster gives bit-identical results to the local
     # process pool (both run single-threaded BLAS in worker processes).

@@ -83,6 +83,7 @@ def test_mirror_reflects_the_edge(modes):
     np.testing.assert_allclose(u_r(Qm, phi), u_r(Q, np.pi - phi), rtol=0, atol=1e-13)
 
 
+@pytest.mark.slow  # 14 s of the default run (stop 76: the default run under 10 min)
 def test_energy_balance_of_every_excited_collision(modes):
     T = temperature_for(modes, V, 2.0)
     en = thermal_ensemble(modes, V, ALPHA, T, 12, seed=4, energy_tol=1e-7)
@@ -125,6 +126,7 @@ def test_time_reversal_of_a_thermal_collision(modes):
     np.testing.assert_allclose(again.P, P0, rtol=0, atol=1e-7 * np.abs(P0).max())
 
 
+@pytest.mark.slow  # 22 s of the default run (stop 76: the default run under 10 min)
 def test_epsilon_is_first_order_sinusoidal_in_one_mode(modes, at_rest):
     """eps(phi) = eps0 + a cos(phi - phi0) + O(A^2): a ~ A, residual and eps0 shift ~ A^2."""
     k = int(np.argmax(at_rest.mode_energy_after))  # the mode the collision excites most

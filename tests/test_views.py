@@ -101,6 +101,7 @@ def test_law_plot_refuses_before_computing(cli, tmp_path):
     # A mechanism without a law at every speed: tests/test_api_si_law.py.
 
 
+@pytest.mark.slow  # 30 s of the default run (stop 76: the default run under 10 min)
 def test_law_plot_draws_a_damped_law_with_its_answer_on_it(cli, tmp_path):
     """A damping grain's plot is its damped law at every speed (the mechanism's table), the
     asked speeds marked on it, the mechanisms named in the title."""

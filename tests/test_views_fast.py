@@ -167,16 +167,34 @@ def test_a_law_served_at_its_points_only_is_no_grid_law():
 # -- the views: the same numbers as points(), each note once -------------------------------
 
 
-@pytest.fixture(scope="module")
-def laws():
-    return {
-        "shipped": si_law(E=210e9, nu=0.3, rho=7850, shape="sphere", against="wall"),
-        "interpolated": si_law(**GLASS),
-        "damped": si_law(**GLASS, **DAMPED),
+class _Laws(dict):
+    """The three laws, each built when first asked (the damped one's viscous table takes 25-40
+    s: only the slow tests ask for it)."""
+
+    MADE = {
+        "shipped": lambda: si_law(E=210e9, nu=0.3, rho=7850, shape="sphere", against="wall"),
+        "interpolated": lambda: si_law(**GLASS),
+        "damped": lambda: si_law(**GLASS, **DAMPED),
     }
 
+    def __missing__(self, kind):
+        self[kind] = self.MADE[kind]()
+        return self[kind]
 
-@pytest.mark.parametrize("kind", ["shipped", "interpolated", "damped"])
+
+@pytest.fixture(scope="module")
+def laws():
+    return _Laws()
+
+
+@pytest.mark.parametrize(
+    "kind",
+    [
+        "shipped",
+        "interpolated",
+        pytest.param("damped", marks=pytest.mark.slow),  # its table: 25-40 s (stop 76)
+    ],
+)
 def test_frame_and_csv_hold_the_points_and_each_note_once(laws, kind, tmp_path):
     pd = pytest.importorskip("pandas")
     s = laws[kind]
@@ -232,6 +250,7 @@ def test_csv_reads_with_the_csv_module_after_its_comment_lines(laws, tmp_path):
 # -- the figure --------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # 25-40 s of the default run (stop 76: the default run under 10 min)
 def test_plot_spans_the_asked_speeds_and_names_the_mechanisms(laws, tmp_path):
     s = laws["damped"]
     path = tmp_path / "damped.png"

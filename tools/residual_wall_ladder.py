@@ -24,11 +24,15 @@ laws' (speeds between theirs, the steel cylinder at 1 m/s). ``--apply`` serves e
 point of the shipped disk laws the ladder holds from :data:`SERVED_WALLS` (``160, 320, 640``;
 :func:`apply`, through :func:`restitution.laws.making.reroute.rerouted`): on those walls the
 route's error covers its harder walls' limit, on the laws' own it does not (docs/errors.md).
+``--modal VMAX`` adds the laws' modal points up to the speed ``VMAX``: they share the laws'
+walls and their bias (tests/data/residual_ladder_modal_points.json), and ``--apply`` serves
+them from :data:`SERVED_WALLS` too. A point the file holds stays in it on every later run.
 
 Usage (from the project's root, with its venv)::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src .venv/bin/python tools/residual_wall_ladder.py \
-        tests/data/residual_wall_ladder.json [--max-points N] [--top VMAX] [--apply]
+        tests/data/residual_wall_ladder.json [--max-points N] [--modal VMAX] [--top VMAX] \
+        [--apply]
     ... tools/residual_wall_ladder.py OUT --point NU:V [--point NU:V ...]
 """
 
@@ -67,6 +71,28 @@ def residual_points() -> list[tuple[float, float, dict]]:
             if p.get("route") == "residual":
                 out.append((float(meta["nu"]), float(p["v"]), p))
     return sorted(out, key=lambda t: ((t[0], t[1]) not in FIRST, t[0], t[1]))
+
+
+def modal_points(vmax: float) -> list[tuple[float, float, dict]]:
+    """``(nu, v, shipped record)`` of every modal-route point of the shipped disk laws at speeds
+    up to ``vmax`` (``--modal``): where the modal route's walls (the laws' ``40-160``) bias it
+    beyond its error (tests/data/residual_ladder_modal_points.json, docs/errors.md)."""
+    out = []
+    for path in sorted(DATA.glob("law_nu*.json")):
+        meta = json.loads(path.read_text())["metadata"]
+        for p in meta["points"]:
+            if p.get("route") == "modal" and float(p["v"]) <= vmax * (1 + 1e-9):
+                out.append((float(meta["nu"]), float(p["v"]), p))
+    return sorted(out, key=lambda t: (t[0], t[1]))
+
+
+def law_records() -> dict[tuple[float, float], dict]:
+    """``(nu, v) -> `` the shipped record of every point of the shipped disk laws."""
+    out = {}
+    for path in sorted(DATA.glob("law_nu*.json")):
+        meta = json.loads(path.read_text())["metadata"]
+        out.update({(float(meta["nu"]), float(p["v"])): p for p in meta["points"]})
+    return out
 
 
 def triple_limit(alphas, losses, point_err, rows, walls=LADDER) -> dict:
@@ -158,7 +184,9 @@ def apply(doc: dict, source: str) -> list[str]:
                 "issue 65, item 2: on the laws' walls (alpha delta_max = 40, 80, 160) the "
                 "residual route's wall limit is biased beyond its error where the loss is not "
                 "yet linear in 1/alpha (judged on walls up to 2560: 28 of 36 within one); on "
-                "160, 320, 640 its error covers the limit of 640, 1280, 2560 (docs/errors.md)"
+                "160, 320, 640 its error covers the limit of 640, 1280, 2560 (docs/errors.md); "
+                "the modal points up to v = 1e-3 share the laws' walls and their bias (2.6-2.8e-4 "
+                "at nu = 0.33: tests/data/residual_ladder_modal_points.json) and are served so too"
             ),
             "source": source,
             "function": doc["function"],
@@ -207,7 +235,8 @@ def ladder_record(nu: float, v: float, shipped: dict, version: str) -> dict:
     triples = [
         triple_limit(p.alphas, finest, point_err, range(k, k + 3)) for k in range(len(LADDER) - 2)
     ]
-    k0 = None if shipped is None else LADDER.index(float(shipped["residual"]["walls"][0]))
+    residual = shipped is not None and shipped.get("route") == "residual"
+    k0 = LADDER.index(float(shipped["residual"]["walls"][0])) if residual else None
     record = {
         "nu": nu,
         "v": v,
@@ -221,8 +250,8 @@ def ladder_record(nu: float, v: float, shipped: dict, version: str) -> dict:
         "served_triple": k0,
         "shipped": None
         if shipped is None
-        else {k: shipped[k] for k in ("epsilon", "epsilon_err", "status")}
-        | {"walls": [LADDER[k] for k in range(k0, k0 + 3)]},
+        else {k: shipped[k] for k in ("epsilon", "epsilon_err", "status", "route")}
+        | ({"walls": [LADDER[k] for k in range(k0, k0 + 3)]} if residual else {}),
         "wall_time_s": round(time.perf_counter() - start, 2),
         "load_average_1min": round(load, 2),
         "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
@@ -265,13 +294,30 @@ def main(argv=None) -> int:
         help="only these points (Poisson number and speed in c; not necessarily the laws')",
     )
     parser.add_argument(
-        "--apply", action="store_true", help="then serve the laws' residual points from 160-640"
+        "--modal",
+        type=float,
+        default=None,
+        metavar="VMAX",
+        help="also the laws' modal points up to the speed VMAX (served from 160-640 by --apply)",
+    )
+    parser.add_argument(
+        "--apply", action="store_true", help="then serve the ladder's points from 160-640"
     )
     args = parser.parse_args(argv)
     version = _version("disk", False)
     kept = json.loads(args.out.read_text()) if args.out.exists() else {"points": []}
     done = {(p["nu"], p["v"]): p for p in kept["points"] if p.get("code_version") == version}
-    todo = residual_points()[: args.max_points]
+    todo = residual_points()
+    if args.modal is not None:
+        todo += modal_points(args.modal)
+    # A point the file holds stays in it (a modal point served from 160-640 by an earlier run
+    # is a residual point now, or a modal one again after `make law`'s first step).
+    records = law_records()
+    asked = {(nu, v) for nu, v, _ in todo}
+    todo += [
+        (nu, v, records[nu, v]) for nu, v in done if (nu, v) not in asked and (nu, v) in records
+    ]
+    todo = sorted(todo, key=lambda t: ((t[0], t[1]) not in FIRST, t[0], t[1]))[: args.max_points]
     if args.point:
         shipped = {(nu, v): r for nu, v, r in residual_points()}
         asked = [tuple(float(x) for x in text.split(":")) for text in args.point]
@@ -279,7 +325,8 @@ def main(argv=None) -> int:
     doc = {
         "description": (
             "epsilon of the disk on the rigid wall by the residual route at the shipped disk "
-            "laws' residual-route points (with --point: at the points asked), on walls "
+            "laws' residual-route points and, with --modal VMAX, their modal points up to "
+            "VMAX (with --point: at the points asked), on walls "
             "alpha delta_max = 40 to 2560, with the route's wall limit from every triple of "
             "consecutive walls (issue 65, item 1)"
         ),
@@ -305,29 +352,40 @@ def main(argv=None) -> int:
     }
     # Kept as they were: a note on the commits, the --top run's command; a point that failed
     # at this code version is not tried again.
-    doc.update({k: kept[k] for k in ("git_commit_note", "top_command") if k in kept})
+    doc.update(
+        {k: kept[k] for k in ("git_commit_note", "top_command", "modal_command") if k in kept}
+    )
+    if args.modal is not None:
+        doc["modal_command"] = (
+            f"tools/residual_wall_ladder.py {_relative(args.out)} --modal {args.modal:g}"
+        )
     failed = [f for f in kept.get("failed", []) if f.get("code_version", version) == version]
     gave_up = {(f["nu"], f["v"]) for f in failed}
     if failed:
         doc["failed"] = failed
-    points = []
+    # Every kept point is in the file at every write, in the order of ``todo`` (an interrupted
+    # run loses none of them).
+    order = [(nu, v) for nu, v, _ in todo]
+    have = {key: done[key] for key in order if key in done}
+
+    def held() -> list[dict]:
+        return [have[key] for key in order if key in have]
+
+    doc["points"] = held()
     for nu, v, shipped in todo:
-        record = done.get((nu, v))
-        if record is None and (nu, v) in gave_up:
+        if (nu, v) in have or (nu, v) in gave_up:
             continue
-        if record is None:
-            doc["git_commit"] = _git_commit()
-            try:
-                record = ladder_record(nu, v, shipped, version)
-            except RestitutionError as exc:
-                print(f"nu={nu:<9g} v={v:<9g} failed on the ladder: {exc}", flush=True)
-                failed.append({"nu": nu, "v": v, "error": str(exc), "code_version": version})
-                doc["failed"] = failed
-                atomic.write_text(args.out, json.dumps(doc, indent=1) + "\n")
-                continue
-        points.append(record)
-        doc["points"] = points
+        doc["git_commit"] = _git_commit()
+        try:
+            have[nu, v] = ladder_record(nu, v, shipped, version)
+        except RestitutionError as exc:
+            print(f"nu={nu:<9g} v={v:<9g} failed on the ladder: {exc}", flush=True)
+            failed.append({"nu": nu, "v": v, "error": str(exc), "code_version": version})
+            doc["failed"] = failed
+        doc["points"] = held()
         atomic.write_text(args.out, json.dumps(doc, indent=1) + "\n")
+    points = doc["points"] = held()
+    atomic.write_text(args.out, json.dumps(doc, indent=1) + "\n")
     if args.top is not None:
         doc["top_command"] = (
             f"tools/residual_wall_ladder.py {_relative(args.out)} --top {args.top:g}"

@@ -56,10 +56,11 @@ class SlowPoint:
     ok: bool
 
 
-def compute(law, v_max: float = 2e-3) -> tuple[SlowPoint, ...]:
+def compute(law, v_max: float = 2e-3, count: int | None = None) -> tuple[SlowPoint, ...]:
     """The slow modal points of ``law`` (an :class:`restitution.laws.law.EpsilonLaw`),
     ``v <= v_max`` (its low-speed points and the points of the residual route, which converge
-    in ``N`` without an extrapolation in ``1/sqrt(N)``, have none to show)."""
+    in ``N`` without an extrapolation in ``1/sqrt(N)``, have none to show); with ``count``, the
+    ``count`` slowest of them."""
     out = []
     for p in law.metadata.get("points", []):
         if p["v"] > v_max * (1 + 1e-9) or p.get("route", "modal") != "modal":
@@ -82,7 +83,8 @@ def compute(law, v_max: float = 2e-3) -> tuple[SlowPoint, ...]:
                 ok=bool(p["asymptotic_ok"]),
             )
         )
-    return tuple(out)
+    out.sort(key=lambda p: p.v)
+    return tuple(out if count is None else out[:count])
 
 
 def plot(points: tuple[SlowPoint, ...], nu: float, path=None, notes=()):
