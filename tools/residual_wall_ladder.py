@@ -62,30 +62,6 @@ LADDER = tuple(40.0 * 2.0**k for k in range(7))
 FIRST = ((0.2, 1e-4), (0.2, 2e-4), (0.33, 1e-4), (0.33, 2e-4), (0.9, 1e-4), (0.9, 2e-4))
 
 
-def residual_points() -> list[tuple[float, float, dict]]:
-    """``(nu, v, shipped record)`` of every residual-route point of the shipped disk laws."""
-    out = []
-    for path in sorted(DATA.glob("law_nu*.json")):
-        meta = json.loads(path.read_text())["metadata"]
-        for p in meta["points"]:
-            if p.get("route") == "residual":
-                out.append((float(meta["nu"]), float(p["v"]), p))
-    return sorted(out, key=lambda t: ((t[0], t[1]) not in FIRST, t[0], t[1]))
-
-
-def modal_points(vmax: float) -> list[tuple[float, float, dict]]:
-    """``(nu, v, shipped record)`` of every modal-route point of the shipped disk laws at speeds
-    up to ``vmax`` (``--modal``): where the modal route's walls (the laws' ``40-160``) bias it
-    beyond its error (tests/data/residual_ladder_modal_points.json, docs/errors.md)."""
-    out = []
-    for path in sorted(DATA.glob("law_nu*.json")):
-        meta = json.loads(path.read_text())["metadata"]
-        for p in meta["points"]:
-            if p.get("route") == "modal" and float(p["v"]) <= vmax * (1 + 1e-9):
-                out.append((float(meta["nu"]), float(p["v"]), p))
-    return sorted(out, key=lambda t: (t[0], t[1]))
-
-
 def law_records() -> dict[tuple[float, float], dict]:
     """``(nu, v) -> `` the shipped record of every point of the shipped disk laws."""
     out = {}
@@ -93,6 +69,24 @@ def law_records() -> dict[tuple[float, float], dict]:
         meta = json.loads(path.read_text())["metadata"]
         out.update({(float(meta["nu"]), float(p["v"])): p for p in meta["points"]})
     return out
+
+
+def residual_points() -> list[tuple[float, float, dict]]:
+    """``(nu, v, shipped record)`` of every residual-route point of the shipped disk laws."""
+    out = [(nu, v, p) for (nu, v), p in law_records().items() if p.get("route") == "residual"]
+    return sorted(out, key=lambda t: ((t[0], t[1]) not in FIRST, t[0], t[1]))
+
+
+def modal_points(vmax: float) -> list[tuple[float, float, dict]]:
+    """``(nu, v, shipped record)`` of every modal-route point of the shipped disk laws at speeds
+    up to ``vmax`` (``--modal``): where the modal route's walls (the laws' ``40-160``) bias it
+    beyond its error (tests/data/residual_ladder_modal_points.json, docs/errors.md)."""
+    out = [
+        (nu, v, p)
+        for (nu, v), p in law_records().items()
+        if p.get("route") == "modal" and v <= vmax * (1 + 1e-9)
+    ]
+    return sorted(out, key=lambda t: (t[0], t[1]))
 
 
 def triple_limit(alphas, losses, point_err, rows, walls=LADDER) -> dict:
