@@ -41,3 +41,23 @@ def test_slow_routes_put_the_law_beside_rayleigh(tmp_path):
     assert all(np.isfinite(r["ratio_paper"]) and r["ratio_paper"] > 0 for r in rows)
     slow_routes.plot(data, tmp_path / "routes.png")
     assert (tmp_path / "routes.png").stat().st_size > 10_000
+
+
+@pytest.mark.slow  # 13 s (stop 76: the default run under 10 min)
+def test_make_law_draws_both_figures_of_a_shipped_law(tmp_path):
+    """restitution.reproduction.law_figures (the step of ``make law`` that draws
+    docs/figures/slow_*_nu<nu>.png): both figures of the law at ``nu = 0.33`` are written, the
+    convergence figure with two panels for each of its four slowest modal points."""
+    import matplotlib.pyplot as plt
+
+    from restitution.laws.law_file import law_filename
+    from restitution.reproduction.law_figures import draw_figures, shipped_law_files
+
+    (path,) = [p for p in shipped_law_files() if p.name == law_filename(0.33)]
+    written = draw_figures([path], tmp_path)
+    assert [p.name for p in written] == ["slow_convergence_nu0.33.png", "slow_routes_nu0.33.png"]
+    assert all(p.stat().st_size > 10_000 for p in written)
+    plt.close("all")
+    points = slow_convergence.compute(law(0.33), v_max=0.02, count=4)
+    fig = slow_convergence.plot(points, 0.33)
+    assert len(fig.axes) == 8 and all(p.v > 1e-3 for p in points)
