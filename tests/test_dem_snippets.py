@@ -73,7 +73,7 @@ def test_friction_is_zero_only_with_a_comment_and_the_users_where_given():
         mine = snippet(s, c, friction=0.4)
         assert "friction: mu = 0.4 as given (--friction)" in mine, name
         if name == "lammps":
-            assert len(re.findall(r"tangential linear_nohistory 1\.0 0\.4 ", mine)) == 3
+            assert len(re.findall(r"tangential mindlin NULL 0\.0 0\.4 ", mine)) == 3
         elif name == "liggghts":
             assert "coefficientFriction peratomtypepair 2 0.4 0.4 0.4 0.4" in mine
         elif name == "mercurydpm":
@@ -81,6 +81,27 @@ def test_friction_is_zero_only_with_a_comment_and_the_users_where_given():
         else:
             assert mine.count(f"frictionAngle={math.atan(0.4)!r}") == 2
             compile(mine, "yade.py", "exec")
+
+
+def test_lammps_tangential_stiffness_is_mindlins_where_the_line_is_not_the_material():
+    """Friction goes in as Mindlin's spring (tests/test_lammps_friction.py runs it): NULL on
+    the lines that carry a material's own E and nu, and k_t = 8 G* (Mindlin's 1/G* = (2 -
+    nu1)/G1 + (2 - nu2)/G2, by hand here) on the 1-2 line of two materials, whose E' = 2 E*
+    and nu = 0 would make LAMMPS's NULL E*/4 (for steel on glass 2 E* = 1.04e11 Pa against
+    8 G* = 8.84e10)."""
+    s, c = cases()[4]
+    text = exports.lammps_snippet(s, c, friction=0.4)
+    pairs = [ln.split()[1:3] for ln in text.splitlines() if ln.startswith("pair_coeff")]
+    assert sorted(pairs) == [["1", "1"], ["1", "2"], ["2", "2"]]
+    for ln in text.splitlines():
+        if ln.startswith(("pair_coeff 1 1 ", "pair_coeff 2 2 ")):
+            assert " tangential mindlin NULL 0.0 0.4 damping " in ln
+    (mixed,) = [ln for ln in text.splitlines() if ln.startswith("pair_coeff 1 2 ")]
+    k_t = float(re.search(r" tangential mindlin (\S+) 0\.0 0\.4 damping ", mixed).group(1))
+    shear = [E / (2 * (1 + nu)) for E, nu in ((STEEL[0], STEEL[1]), (GLASS.E, GLASS.nu))]
+    g_star = 1 / ((2 - STEEL[1]) / shear[0] + (2 - GLASS.nu) / shear[1])
+    assert k_t == pytest.approx(8 * g_star, rel=1e-9)
+    assert k_t == pytest.approx(8.844e10, rel=1e-3)
 
 
 def test_a_wall_constant_says_where_it_would_act_on_grains_too():
@@ -98,7 +119,7 @@ def test_friction_through_the_command_line(tmp_path, cli):
                          "1", "--friction", "0.3", "--export", str(tmp_path / "x"))  # fmt: skip
     assert code == 0, err
     lmp = (tmp_path / "x" / "epsilon_lammps.in").read_text()
-    assert "tangential linear_nohistory 1.0 0.3 " in lmp
+    assert "tangential mindlin NULL 0.0 0.3 " in lmp
     code, out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
                          "sphere", "--against", "wall", "--speed", "1", "--friction",
                          "0.3")  # fmt: skip

@@ -17,6 +17,7 @@ from restitution.laws.exports.viscoelastic import viscoelastic_model
 from restitution.laws.si_law import si_law
 
 E, NU, RHO, R = 210e9, 0.3, 7850.0, 0.005  # steel, a 5 mm ball
+G_SHEAR = E / (2 * (1 + NU))
 SPEEDS = (0.1, 1.0, 10.0)
 
 
@@ -81,18 +82,24 @@ def test_the_mapping_is_the_material_constants_by_hand():
         assert_allclose([c.E_star_pa, c.R_eff_m, c.m_eff_kg], [2 * e_star, r_eff, m_eff],
                         rtol=1e-14)  # fmt: skip
         line = re.search(rf"^fix restitution_wall{i} restitution_type{i} wall/gran granular "
-                         r"hertz/material (\S+) (\S+) 0\.0 damping viscoelastic .* limit_damping "
-                         r"zplane 0\.0 NULL$", text, re.M)  # fmt: skip
+                         r"hertz/material (\S+) (\S+) 0\.0 damping viscoelastic tangential "
+                         r"mindlin (\S+) 0\.0 0\.0 limit_damping zplane 0\.0 NULL$",
+                         text, re.M)  # fmt: skip
         eta = 2 * m.relaxation_time_s * 2 * e_star / m_eff
-        assert_allclose([float(line.group(1)), float(line.group(2))], [4 * e_star, eta], rtol=1e-9)
+        k_t = 8 * G_SHEAR / (2 - NU)  # Mindlin's 8 G* on the rigid wall: 1/G* = (2 - nu)/G
+        assert_allclose([float(line.group(i)) for i in (1, 2, 3)], [4 * e_star, eta, k_t],
+                        rtol=1e-9)  # fmt: skip
     assert m.law_pair == (1, 2)
     for (i, j), (r_eff, m_eff) in expect.items():
         c = m.contacts[i, j]
         assert_allclose([c.E_star_pa, c.R_eff_m, c.m_eff_kg], [e_star, r_eff, m_eff], rtol=1e-14)
         line = re.search(rf"^pair_coeff {i} {j} hertz/material (\S+) (\S+) 0\.0 damping "
-                         "viscoelastic .* limit_damping$", text, re.M)  # fmt: skip
+                         r"viscoelastic tangential mindlin (\S+) 0\.0 0\.0 limit_damping$",
+                         text, re.M)  # fmt: skip
         eta = 2 * m.relaxation_time_s * e_star / m_eff
-        assert_allclose([float(line.group(1)), float(line.group(2))], [2 * e_star, eta], rtol=1e-9)
+        k_t = 8 * G_SHEAR / (2 * (2 - NU))  # two balls: 1/G* = 2 (2 - nu)/G
+        assert_allclose([float(line.group(i)) for i in (1, 2, 3)], [2 * e_star, eta, k_t],
+                        rtol=1e-9)  # fmt: skip
     # tau in seconds is the law's tau c / R1 times R1 / c.
     d = damped("grain", 2.0)
     assert_allclose(m.relaxation_time_s, d.tau * R / math.sqrt(E / RHO), rtol=1e-14)

@@ -222,7 +222,7 @@ def test_lammps_wall_snippet_uses_a_granular_wall_fix():
     assert not any(ln.startswith(("pair_coeff", "pair_style")) for ln in code)
     assert re.fullmatch(
         rf"fix restitution_wall all wall/gran granular hertz/material 2\.1e\+11 "
-        rf"{c.epsilon:.8f} 0\.3 tangential linear_nohistory 1\.0 0\.0 damping coeff_restitution "
+        rf"{c.epsilon:.8f} 0\.3 tangential mindlin NULL 0\.0 0\.0 damping coeff_restitution "
         r"zplane 0\.0 NULL",
         code[0],
     )

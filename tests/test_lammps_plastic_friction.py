@@ -196,14 +196,38 @@ SCALE = 1e-6
 the Coulomb limit, its coefficient of friction is MU / SCALE (docs/lammps-plugin.md, Friction)."""
 
 
-def friction_lines(E: float, nu: float) -> list[str]:
-    """``fix wall/gran`` for the tangential force on the plane z = 0: Mindlin's spring 8 G* a
-    (G* = G / (2 - nu) on a rigid wall), no tangential damping, Coulomb's limit MU times the
-    plugin's elastic (Hertz) normal force."""
+def friction_numbers(E: float, nu: float) -> list[float]:
+    """The recipe's numbers for the tangential force on the plane z = 0, by hand: the
+    granular Hertz stiffness SCALE (4/3) E*, Mindlin's spring 8 G* (G* = G / (2 - nu) on a
+    rigid wall), no tangential damping, Coulomb's coefficient MU / SCALE (its limit MU times
+    the plugin's elastic normal force)."""
     k_n = SCALE * 4.0 / 3.0 * lp.contact_modulus(E, nu)
     k_t = 8.0 * E / (2.0 * (1.0 + nu)) / (2.0 - nu)
-    return [f"fix fric all wall/gran granular hertz {k_n!r} 0 tangential mindlin {k_t!r} 0 "
-            f"{MU / SCALE!r} damping mass_velocity zplane 0 NULL"]  # fmt: skip
+    return [k_n, 0.0, k_t, 0.0, MU / SCALE]
+
+
+@pytest.fixture(scope="module")
+def plastic_friction_export(tmp_path_factory, plugin):
+    """The plastic export of ``plastic_export`` with ``--friction MU``: its plugin lines carry
+    the recipe's second wall fix (docs/lammps-plugin.md, Friction)."""
+    steel = ["--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape", "sphere"]
+    out = _export(tmp_path_factory.mktemp("friction") / "export", *steel, "--against", "wall",
+                  "--yield-stress", "1e9", "--radius", "1e-3", "--speed", "1", "--friction",
+                  repr(MU))  # fmt: skip
+    (out / lp.PLUGIN_NAME).symlink_to(plugin)
+    return out
+
+
+def test_the_friction_export_is_the_recipe(plastic_friction_export):
+    text = (plastic_friction_export / "epsilon_lammps_plugin.in").read_text()
+    (line,) = [ln for ln in text.splitlines() if ln.startswith("fix wall_friction ")]
+    words = line.split()
+    assert words[3:6] + words[7:10] + words[13:] == [
+        "wall/gran", "granular", "hertz", "0", "tangential", "mindlin", "damping",
+        "mass_velocity", "zplane", "0", "NULL",
+    ]  # fmt: skip
+    got = [float(words[i]) for i in (6, 7, 10, 11, 12)]
+    assert got == pytest.approx(friction_numbers(STEEL["E"], STEEL["nu"]), rel=1e-9)
 
 
 def elastic_impulse(epsilon: float) -> float:
@@ -228,30 +252,32 @@ def elastic_impulse(epsilon: float) -> float:
     return float(sol.y_events[0][0][2])
 
 
-def oblique_rebound(folder: Path, w: float, tangential: float, friction: bool) -> np.ndarray:
-    """``vx, vz, omega_y`` after a plastic steel bead hits the wall at ``w`` (normal) and
-    ``tangential`` (along x), m/s and rad/s."""
+def oblique_rebound(folder: Path, w: float, tangential: float) -> np.ndarray:
+    """``vx, vz, omega_y`` after a plastic steel bead hits the wall of the folder's plugin lines
+    (with friction where they have it) at ``w`` (normal) and ``tangential`` (along x), m/s and
+    rad/s."""
     estar = lp.contact_modulus(STEEL["E"], STEEL["nu"])
     tc = hertz_time(estar, RADIUS, 4.0 / 3.0 * math.pi * RADIUS**3 * STEEL["rho"], w)
     dt = tc / STEPS_PER_CONTACT
     dump = "id vx vz omegay modify format float %.17g"
     run_lammps(folder, [*_bead(STEEL["rho"], (tangential, 0.0, -w)),
                         "include epsilon_lammps_plugin.in",
-                        *(friction_lines(STEEL["E"], STEEL["nu"]) if friction else []),
                         "fix nve all nve/sphere", f"timestep {dt!r}", f"run {int(3 * tc / dt)}",
                         f"write_dump all custom after.txt {dump}"])  # fmt: skip
     return np.loadtxt(folder / "after.txt", skiprows=9)[1:]
 
 
-def test_friction_from_lammps_leaves_the_plugins_normal_rebound(plastic_export):
+def test_friction_from_lammps_leaves_the_plugins_normal_rebound(
+    plastic_export, plastic_friction_export
+):
     w = 1.0
-    frictionless = oblique_rebound(plastic_export, w, 4.0, friction=False)
+    frictionless = oblique_rebound(plastic_export, w, 4.0)
     epsilon = frictionless[1] / w
     j_el = elastic_impulse(epsilon)
     print(f"plastic steel, w = 1 m/s: epsilon {epsilon:.10f}, elastic impulse / m w {j_el:.8f}"
           f" (total 1 + epsilon = {1 + epsilon:.8f})")  # fmt: skip
     for tangential in (4.0, 1.0):  # a grazing impact (gross sliding) and 45 degrees
-        vx, vz, omega = oblique_rebound(plastic_export, w, tangential, friction=True)
+        vx, vz, omega = oblique_rebound(plastic_friction_export, w, tangential)
         dv = tangential - vx
         print(f"v_t = {tangential:g} m/s: normal ratio {vz / w:.10f} ({vz / w - epsilon:+.1e} "
               f"without friction); dv_t = {dv:.8f} m/s, mu J_el / m = {MU * j_el * w:.8f}; "

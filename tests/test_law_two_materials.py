@@ -339,7 +339,7 @@ def test_lammps_reads_the_mixed_coefficients_as_its_own_mixing(laws, tmp_path):
     w = 500.0
     t = exports.type_pair_constants(pair, steel, speed_m_s=w, identical2=glass_law)
     ours = exports.lammps_snippet(pair, t)
-    tail = "tangential linear_nohistory 1.0 0.0 damping coeff_restitution"
+    tail = "tangential mindlin NULL 0.0 0.0 damping coeff_restitution"
     e12 = t.mixed.epsilon
     mixed_by_lammps = "\n".join([
         "pair_style granular",

@@ -253,8 +253,9 @@ class LawRequest:
         metadata=option(
             "--friction",
             "Sliding friction coefficient mu: with --angle, Coulomb's coefficient of the "
-            "oblique impact computed; otherwise the one the DEM snippets of --export set "
-            "(default none: they set mu = 0 and say so).",
+            "oblique impact computed; otherwise the one the DEM snippets and the LAMMPS "
+            "plugin's lines of --export set (LAMMPS: Mindlin's tangential spring; default "
+            "none: they set mu = 0 and say so).",
         ),
     )
     friction_model: str | None = field(

@@ -112,7 +112,8 @@ def write_folder(
     steps = time_steps(s, constant, radius_m, walls)
     try:
         tau = None if viscoelastic is None else viscoelastic.relaxation_time_s
-        plugin, no_plugin = plugin_files(s, constant, walls, steps, tau, no_contact), None
+        plugin_args = (s, constant, walls, steps, tau, no_contact, friction)
+        plugin, no_plugin = plugin_files(*plugin_args), None
     except InputError as exc:
         plugin, no_plugin = {}, str(exc)
     stem = "epsilon"

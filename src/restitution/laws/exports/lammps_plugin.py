@@ -47,12 +47,15 @@ from restitution.errors import InputError, RestitutionError, real
 __all__ = [
     "BUILD_LOG",
     "PLUGIN_NAME",
+    "FRICTION_SCALE",
     "PROBE_NAME",
     "TSUJI_EPSILON_MIN",
+    "PluginFriction",
     "PluginWall",
     "TsujiMap",
     "build_plugin",
     "contact_modulus",
+    "contact_shear_modulus",
     "lammps_coeff_restitution_beta",
     "lammps_plugin_input",
     "plugin_table",
@@ -518,6 +521,64 @@ def contact_modulus(E: float, nu: float, E2: float = math.inf, nu2: float = 0.0)
     return 1.0 / ((1.0 - nu**2) / E + (1.0 - nu2**2) / E2)
 
 
+def contact_shear_modulus(E: float, nu: float, E2: float = math.inf, nu2: float = 0.0) -> float:
+    """Mindlin's ``G*`` (Pa) of a contact: ``1/G* = (2 - nu)/G + (2 - nu2)/G2``, ``G = E / (2 (1
+    + nu))``; the default partner is rigid (a rigid wall). LAMMPS's tangential ``mindlin``
+    stiffness is ``k_t = 8 G*`` (its ``NULL`` for one material on both sides).
+
+    >>> round(contact_shear_modulus(210e9, 0.3) / 1e9, 3)
+    47.511
+    """
+    inv = (2.0 - nu) * 2.0 * (1.0 + nu) / E
+    return 1.0 / (inv + (2.0 - nu2) * 2.0 * (1.0 + nu2) / E2)
+
+
+FRICTION_SCALE = 1e-6
+"""The Hertz force of the granular style that carries friction beside the plugin, over the
+plugin's elastic force (docs/lammps-plugin.md, "Friction"): LAMMPS takes a tangential model's
+Coulomb limit from its own normal force, so this style gets ``FRICTION_SCALE`` times the
+plugin's Hertz stiffness and ``mu / FRICTION_SCALE``; its limit is ``mu`` times the plugin's
+elastic force, and its extra stiffness moves epsilon by about ``FRICTION_SCALE``."""
+
+
+@dataclass(frozen=True)
+class PluginFriction:
+    """Coulomb friction beside the plugin's normal force: LAMMPS's ``granular`` style (pairs,
+    under ``pair_style hybrid/overlay``) or a second ``fix wall/gran`` (walls) with Mindlin's
+    tangential spring ``k_t = 8 G*`` and a Hertz force :data:`FRICTION_SCALE` times the
+    plugin's, no damping of its own (docs/lammps-plugin.md, "Friction").
+
+    Attributes
+    ----------
+    mu : float
+        Coulomb's coefficient, ``>= 0``.
+    pair_shear_pa : dict
+        ``{(i, j): G*}`` (Pa, :func:`contact_shear_modulus`) of every type pair of the run.
+    wall_shear_pa : dict
+        ``{fix_id: G*}`` (Pa) of every wall.
+    """
+
+    mu: float
+    pair_shear_pa: Mapping[tuple[int, int], float]
+    wall_shear_pa: Mapping[str, float]
+
+    def model(self, estar_pa: float, gstar_pa: float) -> str:
+        """The ``granular`` model of one contact of ``E*`` and ``G*`` (Pa)."""
+        kn = FRICTION_SCALE * 4.0 / 3.0 * estar_pa
+        return (
+            f"hertz {kn:.10g} 0 tangential mindlin {8.0 * gstar_pa:.10g} 0.0 "
+            f"{self.mu / FRICTION_SCALE:.10g} damping mass_velocity"
+        )
+
+
+def _friction_of(shear: Mapping, key, what: str) -> float:
+    """``G*`` of the contact ``key`` in ``shear``, refused in one line where it is missing."""
+    g = shear.get(key)
+    if g is None or not g > 0.0:
+        raise InputError(f"friction: give G* > 0 (Pa) of {what} (PluginFriction), got {g!r}")
+    return float(g)
+
+
 @dataclass(frozen=True)
 class PluginWall:
     """A static plane for ``fix wall/restitution``; the grains on its + side.
@@ -550,6 +611,7 @@ def lammps_plugin_input(
     plugin: str | os.PathLike,
     pairs: Mapping[tuple[int, int], tuple[float, str | os.PathLike]],
     wall: PluginWall | Sequence[PluginWall] | None = None,
+    friction: PluginFriction | None = None,
 ) -> str:
     """The LAMMPS input lines that load the plugin and give each type pair its table.
 
@@ -563,6 +625,10 @@ def lammps_plugin_input(
     wall : PluginWall or sequence of PluginWall, optional
         A wall, for ``fix wall/restitution`` (several: one fix each, e.g. one per type's
         group).
+    friction : PluginFriction, optional
+        Coulomb friction beside the plugin: the pairs under ``pair_style hybrid/overlay
+        restitution granular``, each wall with a second ``fix wall/gran``. Without it the
+        contacts are frictionless.
 
     Returns
     -------
@@ -571,12 +637,29 @@ def lammps_plugin_input(
         ``atom_style sphere``, ``comm_modify vel yes``, ``fix nve/sphere``, are named in their
         comments), ending with a newline.
     """
+    if friction is None:
+        tangential = [
+            "# damping fixed per contact from epsilon(w) at its impact speed w (m/s).",
+            "# FRICTIONLESS: no tangential force (add your own, or export with --friction MU).",
+        ]
+    else:
+        mu = real(friction.mu, "friction mu", ">= 0")
+        if not mu >= 0.0:
+            raise InputError(f"friction mu must be >= 0, got {mu!r}")
+        tangential = [
+            "# damping fixed per contact from epsilon(w) at its impact speed w (m/s). Friction:",
+            f"# Coulomb mu = {mu:g} through LAMMPS's granular Mindlin spring (k_t = 8 G*) beside",
+            f"# it, whose Hertz force is {FRICTION_SCALE:g} times the plugin's and its mu "
+            f"{mu:g}/{FRICTION_SCALE:g}: the limit is",
+            "# mu times the plugin's elastic force; epsilon moves by about that scale",
+            "# (docs/lammps-plugin.md, Friction).",
+        ]
     lines = [
         "# restitution LAMMPS plugin (docs/lammps-plugin.md): Hertz normal force with Tsuji's",
-        "# damping fixed per contact from epsilon(w) at its impact speed w (m/s). FRICTIONLESS:",
-        "# no tangential force (add your own). Needs units si, atom_style sphere, comm_modify",
-        "# vel yes, fix nve/sphere; run lmp with LD_LIBRARY_PATH=<venv>/lib, on any number of",
-        "# MPI ranks (<venv>/bin/mpiexec -n N lmp ...: the same numbers as on one).",
+        *tangential,
+        "# Needs units si, atom_style sphere, comm_modify vel yes, fix nve/sphere; run lmp with",
+        "# LD_LIBRARY_PATH=<venv>/lib, on any number of MPI ranks (<venv>/bin/mpiexec -n N lmp",
+        "# ...: the same numbers as on one).",
         f"plugin load {os.fspath(plugin)}",
     ]
     if not pairs and wall is None:
@@ -584,14 +667,23 @@ def lammps_plugin_input(
             "pairs must name at least one type pair: {(i, j): (E*, table)}, or give a wall"
         )
     if pairs:
-        lines.append("pair_style restitution")
+        overlay = friction is not None
+        lines.append("pair_style hybrid/overlay restitution granular" if overlay else
+                     "pair_style restitution")  # fmt: skip
     for (i, j), (estar, table) in sorted(pairs.items()):
         if not (isinstance(i, int) and isinstance(j, int) and 1 <= i <= j):
             raise InputError(f"type pair ({i!r}, {j!r}) must be integers 1 <= i <= j")
         e = real(estar, f"E* of types {i} {j}", "> 0 (Pa)")
         if e <= 0.0:
             raise InputError(f"E* of types {i} {j} must be > 0 Pa, got {e!r}")
-        lines.append(f"pair_coeff {i} {j} {e:.12g} {Path(table)}")
+        if friction is None:
+            lines.append(f"pair_coeff {i} {j} {e:.12g} {Path(table)}")
+            continue
+        g = _friction_of(friction.pair_shear_pa, (i, j), f"types {i} {j}")
+        lines += [
+            f"pair_coeff {i} {j} restitution {e:.12g} {Path(table)}",
+            f"pair_coeff {i} {j} granular {friction.model(e, g)}",
+        ]
     for one in () if wall is None else (wall,) if isinstance(wall, PluginWall) else wall:
         if one.plane not in ("xplane", "yplane", "zplane"):
             raise InputError(f"wall.plane must be xplane, yplane or zplane, got {one.plane!r}")
@@ -603,4 +695,10 @@ def lammps_plugin_input(
             f"fix {one.fix_id} {one.group} wall/restitution {e:.12g} {Path(one.table)} "
             f"{one.plane} {z0:.12g}"
         )
+        if friction is not None:
+            g = _friction_of(friction.wall_shear_pa, one.fix_id, f"wall {one.fix_id}")
+            lines.append(
+                f"fix {one.fix_id}_friction {one.group} wall/gran granular "
+                f"{friction.model(e, g)} {one.plane} {z0:.12g} NULL"
+            )
     return "\n".join(lines) + "\n"

@@ -12,6 +12,7 @@ wall, whatever its size): one folder for a system of walls and grains. SI units.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from restitution.errors import InputError
@@ -24,8 +25,10 @@ from restitution.laws.exports.any_size import (
 from restitution.laws.exports.dem.lammps import lammps_time_step
 from restitution.laws.exports.lammps_plugin import (
     PLUGIN_NAME,
+    PluginFriction,
     PluginWall,
     contact_modulus,
+    contact_shear_modulus,
     lammps_plugin_input,
     plugin_table,
 )
@@ -70,19 +73,28 @@ class SystemContacts:
     missing: list
     two_materials: bool
 
+    def _partner(self, i: int, j: int) -> tuple[float, float]:
+        """``E`` (Pa) and ``nu`` of what type ``i`` meets in the contact ``(i, j)``: grain
+        ``j``'s material, or for ``j = 0`` the wall of type ``i``'s law (an elastic wall's
+        material, else rigid: ``inf``, 0)."""
+        if j != 0:
+            return self.grains[j].E, self.grains[j].nu
+        law = self.laws.get((i, 0), self.laws.get((1, 0)))  # one wall for every type
+        elastic = wall_of(law.law) if law is not None else None
+        if elastic is None:
+            return math.inf, 0.0
+        return float(elastic["modulus_ratio"]) * self.grains[i].E, float(elastic["nu"])
+
     def contact_modulus(self, i: int, j: int) -> float:
         """``E*`` (Pa) of the contact ``(i, j)``: two grains' materials, or type ``i`` on the
         wall of its law (an elastic wall's material, else rigid)."""
         a = self.grains[i]
-        if j != 0:
-            b = self.grains[j]
-            return contact_modulus(a.E, a.nu, b.E, b.nu)
-        law = self.laws.get((i, 0), self.laws.get((1, 0)))  # one wall for every type
-        elastic = wall_of(law.law) if law is not None else None
-        if elastic is None:
-            return contact_modulus(a.E, a.nu)
-        return contact_modulus(a.E, a.nu, float(elastic["modulus_ratio"]) * a.E,
-                               float(elastic["nu"]))  # fmt: skip
+        return contact_modulus(a.E, a.nu, *self._partner(i, j))
+
+    def contact_shear_modulus(self, i: int, j: int) -> float:
+        """Mindlin's ``G*`` (Pa) of the contact ``(i, j)``, as :meth:`contact_modulus`."""
+        a = self.grains[i]
+        return contact_shear_modulus(a.E, a.nu, *self._partner(i, j))
 
 
 def system_contacts(s, c=None, walls=None) -> SystemContacts:
@@ -123,7 +135,7 @@ def system_contacts(s, c=None, walls=None) -> SystemContacts:
 
 
 def plugin_files(
-    s, c=None, walls=None, steps=None, relaxation_time_s=None, no_contact=None
+    s, c=None, walls=None, steps=None, relaxation_time_s=None, no_contact=None, friction=None
 ) -> dict[str, str]:
     """``{file name: text}`` of the plugin's tables and input lines for the law ``s`` (an
     :class:`~restitution.laws.si_law.SILaw`) and, for grains of two sizes or materials, the
@@ -136,7 +148,9 @@ def plugin_files(
     ``relaxation_time_s``: a damped law's Kelvin-Voigt time (s), for the laws per contact of
     spheres (:mod:`~restitution.laws.exports.any_size`), which the folder holds beside the
     tables where the package has them; ``no_contact``: why not, where the caller knows (a law
-    given as a file).
+    given as a file). ``friction``: Coulomb's ``mu`` of every contact, carried beside the
+    plugin by LAMMPS's granular Mindlin model (:class:`~restitution.laws.exports.lammps_plugin.
+    PluginFriction`); ``None``: frictionless, and the lines say so.
 
     Raises
     ------
@@ -158,20 +172,21 @@ def plugin_files(
     else:
         lines.append(f"# no law per contact (grains of any sizes): {sizes.why}")
     tables = {key: _table_name(*key) for key in system.laws}
-    files[INPUT_NAME] = _input(s, system, tables, steps, lines)
+    files[INPUT_NAME] = _input(s, system, tables, steps, lines, friction)
     if sizes.files:
         files.update(sizes.files)
         head = [f"# {line}" for line in any_size_header(s, relaxation_time_s or 0.0)] + [
             "# the time step below is for the exported radius: Hertz's contact time goes as the",
             "# radius at a given speed, so scale it by your smallest radius over that one",
         ]  # fmt: skip
-        files[ANY_SIZE_INPUT] = _input(s, system, sizes.names, steps, head)
+        files[ANY_SIZE_INPUT] = _input(s, system, sizes.names, steps, head, friction)
     return files
 
 
-def _input(s, system: SystemContacts, names: dict, steps, lines: list[str]) -> str:
+def _input(s, system: SystemContacts, names: dict, steps, lines: list[str], friction=None) -> str:
     """The input lines of the plugin for the contacts ``names`` (``(i, j) -> file``, ``j = 0``
-    the wall) of ``system``, after the comment ``lines``."""
+    the wall) of ``system``, after the comment ``lines``; ``friction``: Coulomb's ``mu`` of
+    every contact, or ``None``."""
     missing, two = system.missing, system.two_materials
     # A 2D run (a disk's law) has its wall along y: LAMMPS's 2D plane is x-y.
     plane = "yplane" if s.grain.kind.planar else "zplane"
@@ -203,7 +218,14 @@ def _input(s, system: SystemContacts, names: dict, steps, lines: list[str]) -> s
     # Two materials: one wall fix per type's group.
     lines += [f"group {w.group} type {i}" for i, w in walls if w.group != "all"]
     # "./": dlopen looks for a bare file name on the library path, not where LAMMPS runs.
-    body = lammps_plugin_input(f"./{PLUGIN_NAME}", pairs, [w for _, w in walls])
+    rub = None
+    if friction is not None:
+        rub = PluginFriction(
+            float(friction),
+            {key: system.contact_shear_modulus(*key) for key in pairs},
+            {w.fix_id: system.contact_shear_modulus(i, 0) for i, w in walls},
+        )
+    body = lammps_plugin_input(f"./{PLUGIN_NAME}", pairs, [w for _, w in walls], rub)
     if steps is not None:
         body += "\n".join(lammps_time_step(steps)) + "\n"
     return "\n".join(lines) + "\n" + body

@@ -19,6 +19,7 @@ from restitution.laws.exports.dem._common import (
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
+from restitution.laws.exports.lammps_plugin import contact_shear_modulus
 from restitution.laws.exports.plastic_native import is_plastic
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
@@ -37,21 +38,42 @@ INSTALL_NOTE = (
 """How to get a LAMMPS that runs these lines, for the snippets' comments (docs/materials.md)."""
 
 
-_FRICTION_WHERE = "the last number of 'tangential linear_nohistory 1.0 MU' (or your model)"
+_FRICTION_WHERE = "the last number of 'tangential mindlin ... 0.0 MU' (or your model)"
 
 
-def _tangential(friction: float | None) -> str:
-    """The tangential model: ``linear_nohistory`` (a viscous tangential force up to Coulomb's
-    limit ``mu``), ``mu`` the given friction or 0."""
-    return f"tangential linear_nohistory 1.0 {float(0.0 if friction is None else friction)!r}"
+def _tangential(friction: float | None, k_t: float | None = None) -> str:
+    """The tangential model: Mindlin's spring ``F_t = k_t a xi`` (``a`` the contact radius,
+    ``xi`` the contact point's tangential displacement) capped by Coulomb's ``mu F_n``, no
+    tangential damping, ``mu`` the given friction or 0. ``k_t`` (Pa) is ``8 G*``: ``NULL``
+    lets LAMMPS take it from the line's own ``E`` and ``nu`` (right where they are the
+    material's); a number where the line carries ``E' = 2 E*`` and ``nu = 0`` (two materials,
+    an elastic wall), whose ``NULL`` would be ``E* / 4`` instead of the materials' ``G*``.
+
+    With ``k_t = 8 G*`` this is Maw, Barber and Fawcett's oblique impact without microslip
+    (law (a), :func:`restitution.quasistatic.oblique.oblique_impact`): LAMMPS's ``beta`` of a
+    steel ball agrees with it to 1e-7 at every angle (``tests/test_lammps_friction.py``). The
+    earlier ``linear_nohistory 1.0 MU`` was a viscous force ``x_gamma,t`` times the normal
+    damping, which for an elastic grain (``1 - epsilon = 2.5e-5``) kept ``beta = -0.9998``:
+    friction given, none delivered."""
+    mu = float(0.0 if friction is None else friction)
+    return f"tangential mindlin {'NULL' if k_t is None else f'{k_t:.10g}'} 0.0 {mu!r}"
 
 
-def _lammps_model(g, eps: float, friction: float | None = None, material=None) -> str:
+def _mindlin_k_t(g1, g2) -> float:
+    """LAMMPS's ``k_t = 8 G*`` (Pa) of two materials (``E``, ``nu`` each), what ``NULL`` gives
+    for one material on both sides (:func:`~restitution.laws.exports.lammps_plugin.
+    contact_shear_modulus`)."""
+    return 8.0 * contact_shear_modulus(g1.E, g1.nu, g2.E, g2.nu)
+
+
+def _lammps_model(g, eps: float, friction: float | None = None, material=None, k_t=None) -> str:
     """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu`` (``material``, a
-    pair of strings, instead where given), epsilon as the restitution coefficient, the
-    tangential model of :func:`_tangential`."""
+    pair of strings, instead where given, with its ``k_t``), epsilon as the restitution
+    coefficient, the tangential model of :func:`_tangential`."""
     E, nu = material or (f"{g.E:.8g}", f"{g.nu:.8g}")
-    return f"hertz/material {E} {eps:.8f} {nu} {_tangential(friction)} damping coeff_restitution"
+    return (
+        f"hertz/material {E} {eps:.8f} {nu} {_tangential(friction, k_t)} damping coeff_restitution"
+    )
 
 
 def _lammps_mixed(g1, g2) -> str:
@@ -68,8 +90,8 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
 
     Hertz contact with the material's 3D ``E`` and ``nu``; ``damping coeff_restitution`` makes
     LAMMPS take the second normal coefficient as the coefficient of restitution. Tangential
-    ``linear_nohistory`` with Coulomb's ``mu = friction`` (0 when ``None``, and the comment
-    says so); replace it with your model.
+    ``mindlin`` (:func:`_tangential`) with Coulomb's ``mu = friction`` (0 when ``None``, and
+    the comment says so).
 
     * Two grains: ``pair_style granular`` with ``pair_coeff * *`` for one constant, or
       ``pair_coeff 1 1``, ``2 2`` and ``1 2`` for a :class:`TypePairs` (type 1 the small
@@ -89,14 +111,16 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
     ]
     if not partner_of(s).is_grain:
         elastic = wall_of(s.law)
-        mixed, material = None, []
+        mixed, material, k_t = None, [], None
         if elastic is not None:  # the wall's own material: E' = 2 E* and nu = 0 (as for 1-2)
             E_w, nu_w = float(elastic["modulus_ratio"]) * g.E, float(elastic["nu"])
-            mixed = _lammps_mixed(g, SimpleNamespace(E=E_w, nu=nu_w))
+            wall = SimpleNamespace(E=E_w, nu=nu_w)
+            mixed, k_t = _lammps_mixed(g, wall), _mindlin_k_t(g, wall)
             material = [
                 f"# the elastic wall: E_w = {E_w:.6g} Pa, nu_w = {nu_w:g}; LAMMPS gives the wall "
                 "the fix's material, so hertz/material takes E' = 2 E* and nu = 0, 1/E* = "
-                "(1-nu^2)/E + (1-nu_w^2)/E_w: the Hertz stiffness of ball and wall"
+                "(1-nu^2)/E + (1-nu_w^2)/E_w: the Hertz stiffness of ball and wall; Mindlin's "
+                "k_t = 8 G* of ball and wall"
             ]
         return "\n".join(
             [
@@ -106,7 +130,7 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
                 "# the wall: a plane at z = 0 below the grains (change zplane 0.0 NULL to your "
                 "wall); grain-grain contacts take the law of two grains (--against grain)",
                 "fix restitution_wall all wall/gran granular "
-                f"{_lammps_model(g, consts[1, 1].epsilon, friction, mixed)} zplane 0.0 NULL",
+                f"{_lammps_model(g, consts[1, 1].epsilon, friction, mixed, k_t)} zplane 0.0 NULL",
                 "",
             ]
         )
@@ -124,12 +148,11 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
             e12, nu12 = _lammps_mixed(c.grains[1], c.grains[2])
             lines.append(
                 "# 1-2: E = 2 E* and nu = 0, 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2: an explicit "
-                "pair_coeff is read as one material on both sides"
+                "pair_coeff is read as one material on both sides; k_t = 8 G*, 1/G* = "
+                "(2-nu1)/G1 + (2-nu2)/G2 (Mindlin)"
             )
-            model = (
-                f"hertz/material {e12} {k.epsilon:.8f} {nu12} {_tangential(friction)} "
-                "damping coeff_restitution"
-            )
+            k_t = _mindlin_k_t(c.grains[1], c.grains[2])
+            model = _lammps_model(None, k.epsilon, friction, (e12, nu12), k_t)
         lines.append(f"pair_coeff {i} {j} {model}")
     return "\n".join(
         [
@@ -153,13 +176,15 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = 
     radii the model holds for. ``hertz/material E' eta_n0 0.0`` with ``E' = 2 E*``: LAMMPS
     mixes a pair (and a wall) as ``1/E_eff = (1-nu^2)/E' + (1-nu^2)/E'``, which is ``E*`` at
     ``nu = 0``. ``limit_damping`` clips the force at zero, the law's end of contact.
-    Tangential model as in :func:`lammps_snippet`.
+    Tangential ``mindlin`` as in :func:`lammps_snippet`, ``k_t = 8 G*`` of each contact as a
+    number (the line's ``nu = 0`` would make ``NULL`` ``E* / 4``).
     """
     lines = viscoelastic_head(s, model, friction, _FRICTION_WHERE, "#")
     lines += [
         f"# {INSTALL_NOTE}",
         "# eta_n0 = 2 tau E* / m* (1/(m s)) per type pair; hertz/material takes E' = 2 E* and "
-        "nu = 0 (LAMMPS mixes E_eff = E'/2 = E*); limit_damping: no attraction at separation",
+        "nu = 0 (LAMMPS mixes E_eff = E'/2 = E*); limit_damping: no attraction at separation; "
+        "tangential mindlin k_t = 8 G* (Pa) per type pair",
     ]
 
     def model_of(pair) -> str:
@@ -167,7 +192,7 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = 
         eta = model.damping_coefficient(pair) / c.m_eff_kg
         return (
             f"hertz/material {2.0 * c.E_star_pa:.10g} {eta:.10g} 0.0 damping viscoelastic "
-            f"{_tangential(friction)} limit_damping"
+            f"{_tangential(friction, 8.0 * c.G_star_pa)} limit_damping"
         )
 
     grains, walls = model.grain_pairs, model.wall_pairs
