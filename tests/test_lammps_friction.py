@@ -6,11 +6,11 @@ holds the material's own ``E`` and ``nu``), which is Maw, Barber and Fawcett's o
 without microslip (law (a), :func:`restitution.quasistatic.oblique.oblique_impact`, scipy's
 DOP853 phase by phase): a steel ball hitting the exported wall at 1 m/s (normal), 10 to 80
 degrees from the normal with ``mu = 0.3``. Measured 4 Dec 2026: with the line's epsilon set
-to 1 (law (a) is elastic) LAMMPS's ``beta`` lies within 1.2e-7 of law (a) at 5000 steps per
-contact and within 6e-9 at 20000 (the step's error); with the exported epsilon (0.999975)
-within 1.8e-5. The snippet's earlier ``linear_nohistory 1.0 MU`` gave ``beta = -0.99983`` at
-every angle (a viscous tangential force scaled by the elastic grain's tiny normal damping):
-friction given, none delivered.
+to 1 (law (a) is elastic) LAMMPS's ``beta`` lies within 1.2e-7 of law (a) at 5200 steps per
+contact and within 6e-9 at four times as many (the step's error); with the exported epsilon
+(0.999975) within 1.8e-5. The snippet's earlier ``linear_nohistory 1.0 MU`` gave ``beta =
+-0.99983`` at every angle (a viscous tangential force scaled by the elastic grain's tiny normal
+damping): friction given, none delivered.
 
 Two materials: the 1-2 line carries ``E' = 2 E*``, ``nu = 0`` and the two materials' ``k_t``
 as a number; a steel and a glass ball meeting obliquely follow law (a) at the pair's own
