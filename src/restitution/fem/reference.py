@@ -17,7 +17,7 @@ from __future__ import annotations
 import datetime
 import json
 import platform
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -131,6 +131,7 @@ def compute_reference(
     on_run: Callable[[float, float, FemRun], None] | None = None,
     provenance: dict | None = None,
     geometry: str = DEFAULT_GEOMETRY,
+    walls: Sequence[float] | None = None,
 ) -> dict:
     """Compute FEM epsilon with errors at ``points`` and write them with provenance to ``path``.
 
@@ -151,6 +152,10 @@ def compute_reference(
         A body kind the FEM route meshes, by name (:func:`restitution.fem.section.fem_geometries`).
         The body (:mod:`restitution.fem.section`); its default grading when ``grading`` is not
         given (:func:`restitution.fem.graded.default_grading`).
+    walls : sequence of float, optional
+        The walls as products ``alpha * delta_max(v)`` (the modal sweeps' scale); default the
+        body's own (:func:`restitution.limits.defaults.default_products`: 40, 80, 160 for the
+        disk). Harder walls judge a route served from them (docs/errors.md).
 
     Returns
     -------
@@ -164,6 +169,7 @@ def compute_reference(
             f"FEM epsilon of the {geometry}-wall collision, extrapolated to h -> 0 (Richardson, "
             "three contact-graded meshes) and alpha -> infinity (linear in 1/alpha); "
             "restitution.fem.reference.compute_reference"
+            + ("" if walls is None else f", walls alpha delta_max = {list(walls)}")
         ),
         "geometry": geometry,
         "units": f"E = rho = R = 1 of the {geometry}'s constants; v in c = sqrt(E/rho) (speed "
@@ -183,8 +189,9 @@ def compute_reference(
         report = None if on_run is None else (lambda run, nu=nu, v=v: on_run(nu, v, run))
         shifted = [first + int(k) for k in levels]
         result = fem_epsilon(
-            nu, v, levels=shifted, grading=grading, on_run=report, geometry=geometry
-        )
+            nu, v, levels=shifted, grading=grading, on_run=report, geometry=geometry,
+            alphas=walls, alpha_scale=None if walls is None else "compression",
+        )  # fmt: skip
         doc["points"].append(result.to_dict())
         atomic.write_text(path, json.dumps(doc, indent=1) + "\n")
     return doc
@@ -256,6 +263,14 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("out", help="JSON file to write")
     parser.add_argument("points", nargs="*", help="nu:v[:first_level] (default: the shipped set)")
     parser.add_argument("--geometry", choices=fem_geometries(), default=DEFAULT_GEOMETRY)
+    parser.add_argument(
+        "--walls",
+        type=float,
+        nargs="+",
+        default=None,
+        help="walls as products alpha * delta_max(v) (default the body's own: 40 80 160 for "
+        "the disk)",
+    )
     args = parser.parse_intermixed_args(argv)
     points = [tuple(float(x) for x in a.split(":")) for a in args.points]
     points = points or SHIPPED_POINTS.get(args.geometry, ())
@@ -277,8 +292,9 @@ def main(argv: list[str] | None = None) -> None:
         )
 
     compute_reference(
-        args.out, points, on_run=report, provenance={"git_commit": commit}, geometry=args.geometry
-    )
+        args.out, points, on_run=report, provenance={"git_commit": commit}, geometry=args.geometry,
+        walls=args.walls,
+    )  # fmt: skip
 
 
 if __name__ == "__main__":
