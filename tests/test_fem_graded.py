@@ -406,3 +406,27 @@ def test_the_fem_grid_is_one_object_and_the_loose_keywords_its_shorthand():
         grid_of(grid, levels=(0, 1))
     with pytest.raises(InputError, match="consecutive"):
         FemGrid(levels=(0, 2))
+
+
+def test_the_reference_tool_runs_on_the_walls_asked(tmp_path, monkeypatch):
+    """``--walls`` (``compute_reference(walls=...)``): the finite elements run on the walls
+    ``alpha delta_max`` asked, the products of the modal sweeps' scale (docs/fem.md), and the
+    file says so; without it on the body's own (40, 80, 160 for the disk)."""
+    from restitution.fem.reference import compute_reference, main
+    from restitution.limits.defaults import walls_at
+
+    nu, v = 0.33, 0.3
+    doc = compute_reference(tmp_path / "r.json", [(nu, v)], levels=(0, 1), walls=(80.0, 320.0))
+    (point,) = doc["points"]
+    expected = sorted(walls_at(v, (80.0, 320.0), "compression", geometry="disk", nu=nu))
+    assert_allclose(point["grid"]["alpha"], expected, rtol=1e-12)
+    assert "walls alpha delta_max = [80.0, 320.0]" in doc["description"]
+    assert json.loads((tmp_path / "r.json").read_text()) == doc
+    # The command line passes them on (the run itself is the one above).
+    asked = {}
+    monkeypatch.setattr("restitution.fem.reference.compute_reference",
+                        lambda *a, **k: asked.update(k))  # fmt: skip
+    main([str(tmp_path / "c.json"), "0.33:0.3:0", "--walls", "80", "320"])
+    assert asked["walls"] == [80.0, 320.0]
+    main([str(tmp_path / "c.json"), "0.33:0.3:0"])
+    assert asked["walls"] is None
