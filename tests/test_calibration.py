@@ -182,6 +182,41 @@ def test_the_steel_cylinder_at_1_m_s_finite_elements_are_the_soft_walls_value():
     assert max(limits) - min(limits) <= hard["epsilon_err"]  # settled from 160-640 on
 
 
+def test_the_steel_cylinder_at_1_m_s_finite_elements_on_the_served_walls():
+    """The finite elements at 1 m/s on the walls the law is served from (alpha delta_max = 160,
+    320, 640: ``python -m restitution.fem.reference OUT
+    0.42857142857142855:0.00018443607745413223 --walls 160 320 640``, 4 Dec 2026, 11 minutes
+    on one core, tests/data/fem_steel_cylinder_1ms_walls160.json; its wall 160 repeats the soft
+    file's to 1e-12). Measured: 0.9936524 +- 4.3e-6, not flagged (curvature 5 %): 1.8e-4 below
+    their own value on 40-160 (0.9938320, the issue's reference), as the residual route falls
+    (0.9938302 -> 0.9936494 on the same walls, 3.0e-6 from the finite elements); the served
+    0.9936274 +- 1.5e-4 lies 0.16 bounds below it (the issue's target: within one error, an
+    error of at most 6e-4) and 1.0 sd (PCHIP's miss between 1e-4 and 2e-4)."""
+    doc = json.loads((DATA / "fem_steel_cylinder_1ms_walls160.json").read_text())
+    (hard,) = doc["points"]
+    soft = _fem_steel()
+    assert (hard["nu"], hard["v"]) == pytest.approx((soft["nu"], soft["v"]), rel=1e-12)
+    assert hard["asymptotic_ok"] and "[160.0, 320.0, 640.0]" in doc["description"]
+    runs = {(r["alpha"], r["level"]): r["epsilon"] for r in soft["grid"]["runs"]}
+    shared = [r for r in hard["grid"]["runs"] if (r["alpha"], r["level"]) in runs]
+    assert len(shared) == 3  # the wall 160 at levels 0-2: the same runs
+    for r in shared:
+        assert r["epsilon"] == pytest.approx(runs[r["alpha"], r["level"]], rel=1e-12)
+    # The wall bias, seen by the finite elements themselves and by the residual route.
+    (ladder,) = json.loads((DATA / "residual_ladder_steel_cylinder_1ms.json").read_text())["points"]
+    route = ladder["triples"][2]  # 160-640, the walls of this run
+    fall = soft["epsilon"] - hard["epsilon"]  # measured 1.80e-4
+    assert fall > np.hypot(soft["epsilon_err"], hard["epsilon_err"])
+    assert abs(hard["epsilon"] - route["epsilon"]) <= np.hypot(
+        hard["epsilon_err"], route["epsilon_err"]
+    )
+    s = si_law(E=210e9, nu=0.3, rho=7850, shape="cylinder", against="wall")
+    (q,) = s.points([1.0])
+    miss = abs(q.epsilon - hard["epsilon"])
+    assert miss <= q.epsilon_err <= 6e-4  # the issue's target, against the unbiased reference
+    assert miss <= 2 * np.hypot(q.epsilon_sd, hard["epsilon_err"])
+
+
 def test_the_steel_cylinder_at_1_m_s_is_served_within_its_sd_of_the_hard_walls():
     """Served from the residual route on walls 160-640 at 1e-4 and 2e-4 (both ends of its
     interval): its bound 1.8e-4 (the issue's limit: 6e-4), its calibrated sd (measured 2.7e-5)
