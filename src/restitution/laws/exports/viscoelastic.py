@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from restitution.errors import InputError
+from restitution.laws.exports.lammps_plugin import contact_modulus, contact_shear_modulus
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_point import SIPoint
 
@@ -224,8 +225,8 @@ def viscoelastic_model(damped, speeds_m_s, radius_m: float | None = None) -> Vis
         )
     tau_s = damped.tau * radius / g.c_m_s
     tau_err_s = damped.tau_err * radius / g.c_m_s
-    e_one = g.E / (1.0 - g.nu**2)  # one sphere's E / (1 - nu^2): on the rigid wall
-    g_one = g.E / (2.0 * (1.0 + g.nu)) / (2.0 - g.nu)  # G / (2 - nu): on the rigid wall
+    e_one = contact_modulus(g.E, g.nu)  # one sphere's E / (1 - nu^2): on the rigid wall
+    g_one = contact_shear_modulus(g.E, g.nu)  # G / (2 - nu): on the rigid wall
     ratio = 1.0 if pair is None else float(pair.radius_ratio)
     radii = {1: radius} if ratio == 1.0 else {1: radius, 2: ratio * radius}
     mass = {t: _sphere_mass(r, g.rho) for t, r in radii.items()}
