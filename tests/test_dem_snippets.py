@@ -119,7 +119,9 @@ def test_friction_through_the_command_line(tmp_path, cli):
                          "1", "--friction", "0.3", "--export", str(tmp_path / "x"))  # fmt: skip
     assert code == 0, err
     lmp = (tmp_path / "x" / "epsilon_lammps.in").read_text()
-    assert "tangential mindlin NULL 0.0 0.3 " in lmp
+    k_t = float(re.search(r"^fix restitution_wall .* tangential mindlin (\S+) 0\.0 0\.3 ", lmp,
+                          re.M).group(1))  # fmt: skip
+    assert k_t == pytest.approx(8 * 210e9 / (2 * 1.3) / 1.7, rel=1e-9)  # 8 G/(2 - nu): rigid wall
     code, out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
                          "sphere", "--against", "wall", "--speed", "1", "--friction",
                          "0.3")  # fmt: skip

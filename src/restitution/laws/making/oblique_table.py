@@ -5,12 +5,14 @@ Units: SI at the edge (m/s, degrees, Pa, kg/m^3); the stored ``v`` and ``alpha``
 reduced units (``c``, ``1 / R``).
 
 Each entry is one speed and one angle of :func:`restitution.laws.oblique.oblique_answer` (the
-same runs as ``law --angle``: :data:`~restitution.laws.oblique.MODES` modes and half as many,
-the wall ``alpha delta_max = 40``), so the table and the command cannot disagree. The file
-(``restitution/laws/data/oblique/<name>.json``) holds the settings, the code version of the
-modal solver (:func:`restitution.provenance.code_version`), the date and the wall time, and is
-read by :mod:`restitution.laws.oblique_fits` (Walton's parameters, the DEM codes' tangential
-models) and by the figure of docs/oblique.md. Run as ``python -m
+same runs as ``law --angle``: the kind's modes, :func:`restitution.laws.oblique.law_modes`, and
+half as many, the kind's softest wall), so the table and the command cannot disagree. The table
+holds the settings, the grain's ``inertia_factor``, the code version of the modal solver
+(:func:`restitution.provenance.code_version`), the date and the wall time, and is read by
+:func:`restitution.laws.oblique_fits.fit_table` (Walton's parameters, the DEM codes' tangential
+models) and by the figure of docs/oblique.md. Any material's table is made by ``restitution
+oblique-fit`` (:mod:`restitution.laws.oblique_fit`); the shipped steel cylinder's
+(``restitution/laws/data/oblique/<name>.json``) by ``python -m
 restitution.laws.making.oblique_table`` (about 10 min on the project's machine).
 """
 
@@ -23,19 +25,34 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from restitution.atomic import write_text
-from restitution.laws.oblique import MODES, oblique_answer
+from restitution.laws.oblique import oblique_answer, oblique_seconds
 from restitution.laws.partners.base import owner
 from restitution.laws.request import request
 from restitution.laws.units import BODIES
 from restitution.provenance import code_version
 
-__all__ = ["STEEL_TABLE", "TablePlan", "compute_table", "table_path"]
+__all__ = [
+    "STEEL_TABLE",
+    "TablePlan",
+    "compute_table",
+    "plan_requests",
+    "table_path",
+    "table_seconds",
+]
+
+_MODEL_WORDS = {
+    "stick-slip": "stick-slip (exact switch), rtol 1e-10",
+    "microslip": "microslip (Coulomb's law at every wall node, regularised by kappa)",
+}
+"""How the table's settings name its friction model."""
 
 
 @dataclass(frozen=True)
 class TablePlan:
     """What a table computes: a material (SI), a shape, a friction coefficient, the normal
-    speeds (m/s) and the angles (degrees from the normal)."""
+    speeds (m/s), the angles (degrees from the normal), the modes (``None``: the kind's,
+    :func:`~restitution.laws.oblique.law_modes`), the friction model and microslip's
+    ``kappa`` (``None``: ``law --angle``'s defaults)."""
 
     name: str
     E: float
@@ -45,7 +62,9 @@ class TablePlan:
     friction: float
     speeds: tuple[float, ...]
     angles: tuple[float, ...]
-    modes: int = MODES
+    modes: int | None = None
+    friction_model: str | None = None
+    kappa: float | None = None
 
 
 STEEL_TABLE = TablePlan(
@@ -68,14 +87,35 @@ def table_path(name: str) -> Path:
     return Path(__file__).resolve().parents[1] / "data" / "oblique" / f"{name}.json"
 
 
-def compute_table(plan: TablePlan, say=print) -> dict:
-    """Compute ``plan`` (every angle at every speed) and return the table as stored."""
-    rows, start = [], time.perf_counter()
+def plan_requests(plan: TablePlan) -> list:
+    """One :class:`~restitution.laws.request.LawRequest` per angle of ``plan`` (each checked
+    where it is built: a bad material, angle or friction is refused before any run)."""
     wall = owner("wall_E").against  # the rigid wall's partner kind
-    for angle in plan.angles:
-        asked = request(E=plan.E, nu=plan.nu, rho=plan.rho, shape=plan.shape, against=wall,
-                        speeds=plan.speeds, angle=angle, friction=plan.friction)  # fmt: skip
+    return [request(E=plan.E, nu=plan.nu, rho=plan.rho, shape=plan.shape, against=wall,
+                    speeds=plan.speeds, angle=angle, friction=plan.friction,
+                    friction_model=plan.friction_model, kappa=plan.kappa)
+            for angle in plan.angles]  # fmt: skip
+
+
+def table_seconds(plan: TablePlan) -> tuple[float, str]:
+    """The estimated seconds of :func:`compute_table` (the modes computed or read from the
+    cache, nothing run) and how they were estimated."""
+    total, how = 0.0, ""
+    for asked in plan_requests(plan):
+        seconds, how = oblique_seconds(asked, plan.modes)
+        total += seconds
+    return total, how
+
+
+def compute_table(plan: TablePlan, say=print) -> dict:
+    """Compute ``plan`` (every angle at every speed) and return the table as stored; ``say``
+    is told each point as it is done."""
+    rows, start = [], time.perf_counter()
+    modes = factor = model = None
+    for angle, asked in zip(plan.angles, plan_requests(plan), strict=True):
         answer = oblique_answer(asked, modes=plan.modes)
+        modes, factor = answer.points[0].modes, answer.inertia_factor
+        model = asked.oblique_friction_model
         for p in answer.points:
             rows.append({"angle_deg": angle, **p.to_dict()})
             beta = "-" if p.beta is None else f"{p.beta:.5f} +- {p.beta_error:.2g}"
@@ -84,17 +124,18 @@ def compute_table(plan: TablePlan, say=print) -> dict:
     return {
         "description": "beta(angle, speed) and epsilon_normal(angle, speed) of the modal "
         "oblique route (restitution.laws.oblique, the runs of `law --angle`): "
-        f"{plan.modes} modes, errors the change from {plan.modes // 2}",
+        f"{modes} modes, errors the change from {modes // 2}",
         "material": {"E_pa": plan.E, "nu": plan.nu, "rho_kg_m3": plan.rho, "shape": plan.shape},
         "friction": plan.friction,
+        "inertia_factor": factor,
         "speeds_m_s": list(plan.speeds),
         "angles_deg": list(plan.angles),
         "settings": {
-            "modes": plan.modes,
-            "error_modes": plan.modes // 2,
+            "modes": modes,
+            "error_modes": modes // 2,
             "wall_hardness": "exponential wall, alpha * delta_max(v) = the kind's softest "
             "alpha product",
-            "friction_model": "stick-slip (exact switch), rtol 1e-10",
+            "friction_model": _MODEL_WORDS.get(model, model),
         },
         "code_version": code_version(BODIES[plan.shape]),
         "computed": datetime.date.today().isoformat(),

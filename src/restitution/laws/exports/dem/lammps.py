@@ -6,6 +6,7 @@ restitution; ``units si``. Registers itself as the DEM target ``lammps`` (``lamm
 
 from __future__ import annotations
 
+import math
 from types import SimpleNamespace
 
 from restitution.laws.exports.constants import Constant
@@ -27,7 +28,13 @@ from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
-__all__ = ["TARGET", "lammps_time_step", "lammps_snippet", "lammps_viscoelastic"]
+__all__ = [
+    "TARGET",
+    "lammps_snippet",
+    "lammps_tangential",
+    "lammps_time_step",
+    "lammps_viscoelastic",
+]
 
 
 INSTALL_NOTE = (
@@ -41,7 +48,7 @@ INSTALL_NOTE = (
 _FRICTION_WHERE = "the last number of 'tangential mindlin ... 0.0 MU' (or your model)"
 
 
-def _tangential(friction: float | None, k_t: float | None = None) -> str:
+def lammps_tangential(friction: float | None, k_t: float | None = None) -> str:
     """The tangential model: Mindlin's spring ``F_t = k_t a xi`` (``a`` the contact radius,
     ``xi`` the contact point's tangential displacement) capped by Coulomb's ``mu F_n``, no
     tangential damping, ``mu`` the given friction or 0. ``k_t`` (Pa) is ``8 G*``: ``NULL``
@@ -69,11 +76,10 @@ def _mindlin_k_t(g1, g2) -> float:
 def _lammps_model(g, eps: float, friction: float | None = None, material=None, k_t=None) -> str:
     """The ``granular`` model arguments: Hertz with the 3D ``E`` and ``nu`` (``material``, a
     pair of strings, instead where given, with its ``k_t``), epsilon as the restitution
-    coefficient, the tangential model of :func:`_tangential`."""
+    coefficient, the tangential model of :func:`lammps_tangential`."""
     E, nu = material or (f"{g.E:.8g}", f"{g.nu:.8g}")
-    return (
-        f"hertz/material {E} {eps:.8f} {nu} {_tangential(friction, k_t)} damping coeff_restitution"
-    )
+    tangential = lammps_tangential(friction, k_t)
+    return f"hertz/material {E} {eps:.8f} {nu} {tangential} damping coeff_restitution"
 
 
 def _lammps_mixed(g1, g2) -> str:
@@ -90,8 +96,8 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
 
     Hertz contact with the material's 3D ``E`` and ``nu``; ``damping coeff_restitution`` makes
     LAMMPS take the second normal coefficient as the coefficient of restitution. Tangential
-    ``mindlin`` (:func:`_tangential`) with Coulomb's ``mu = friction`` (0 when ``None``, and
-    the comment says so).
+    ``mindlin`` (:func:`lammps_tangential`) with Coulomb's ``mu = friction`` (0 when ``None``,
+    and the comment says so).
 
     * Two grains: ``pair_style granular`` with ``pair_coeff * *`` for one constant, or
       ``pair_coeff 1 1``, ``2 2`` and ``1 2`` for a :class:`TypePairs` (type 1 the small
@@ -110,18 +116,23 @@ def lammps_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = N
         f"# {INSTALL_NOTE}",
     ]
     if not partner_of(s).is_grain:
+        # LAMMPS gives the wall the fix's material (E/(2(1-nu^2)): a half-space of the grain's
+        # own material, not the law's wall): the line takes E' = 2 E* and nu = 0 (as for 1-2)
         elastic = wall_of(s.law)
-        mixed, material, k_t = None, [], None
-        if elastic is not None:  # the wall's own material: E' = 2 E* and nu = 0 (as for 1-2)
+        if elastic is not None:
             E_w, nu_w = float(elastic["modulus_ratio"]) * g.E, float(elastic["nu"])
-            wall = SimpleNamespace(E=E_w, nu=nu_w)
-            mixed, k_t = _lammps_mixed(g, wall), _mindlin_k_t(g, wall)
-            material = [
-                f"# the elastic wall: E_w = {E_w:.6g} Pa, nu_w = {nu_w:g}; LAMMPS gives the wall "
-                "the fix's material, so hertz/material takes E' = 2 E* and nu = 0, 1/E* = "
-                "(1-nu^2)/E + (1-nu_w^2)/E_w: the Hertz stiffness of ball and wall; Mindlin's "
-                "k_t = 8 G* of ball and wall"
-            ]
+            what = f"the elastic wall: E_w = {E_w:.6g} Pa, nu_w = {nu_w:g}"
+            how = "1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w"
+        else:
+            E_w, nu_w = math.inf, 0.0
+            what, how = "the rigid wall", "E* = E/(1-nu^2)"
+        wall = SimpleNamespace(E=E_w, nu=nu_w)
+        mixed, k_t = _lammps_mixed(g, wall), _mindlin_k_t(g, wall)
+        material = [
+            f"# {what}; LAMMPS gives the wall the fix's material, so hertz/material takes "
+            f"E' = 2 E* and nu = 0, {how}: the Hertz stiffness of ball and wall; Mindlin's "
+            "k_t = 8 G* of ball and wall"
+        ]
         return "\n".join(
             [
                 *head,
@@ -192,7 +203,7 @@ def lammps_viscoelastic(s: SILaw, model: Viscoelastic, friction: float | None = 
         eta = model.damping_coefficient(pair) / c.m_eff_kg
         return (
             f"hertz/material {2.0 * c.E_star_pa:.10g} {eta:.10g} 0.0 damping viscoelastic "
-            f"{_tangential(friction, 8.0 * c.G_star_pa)} limit_damping"
+            f"{lammps_tangential(friction, 8.0 * c.G_star_pa)} limit_damping"
         )
 
     grains, walls = model.grain_pairs, model.wall_pairs
