@@ -36,6 +36,7 @@ from restitution.laws import making as _making  # noqa: F401  (registers the com
 from restitution.laws.api import si_law
 from restitution.laws.law import EpsilonLaw
 from restitution.laws.law_load import law
+from restitution.laws.making.oblique_fit import ObliqueFit, oblique_fit
 from restitution.laws.plastic import PlasticLaw, plastic_law
 from restitution.laws.request import LawRequest
 from restitution.laws.serve import LawAnswer, serve
@@ -61,6 +62,7 @@ __all__ = [
     "MaterialError",
     "ModeError",
     "ModeSet",
+    "ObliqueFit",
     "PlasticLaw",
     "PointEpsilon",
     "RestitutionError",
@@ -72,6 +74,7 @@ __all__ = [
     "epsilon_at",
     "get_modes",
     "law",
+    "oblique_fit",
     "plastic_law",
     "serve",
     "si_law",

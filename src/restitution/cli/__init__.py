@@ -56,6 +56,7 @@ def _register() -> None:
     from restitution.cli import lammps_plugin as _lammps_plugin
     from restitution.cli import law as _law
     from restitution.cli import modes as _modes
+    from restitution.cli import oblique_fit as _oblique_fit
     from restitution.cli import paper as _paper
     from restitution.cli import quasistatic as _quasistatic
 
@@ -68,6 +69,7 @@ def _register() -> None:
     cli.add_command(_fem_compare.compare_fem)
     cli.add_command(_paper.paper)
     cli.add_command(_law.law)
+    cli.add_command(_oblique_fit.oblique_fit)
     cli.add_command(_lammps_plugin.lammps_plugin)
 
 

@@ -71,6 +71,7 @@ __all__ = [
     "law_modes",
     "oblique_answer",
     "oblique_seconds",
+    "worst_status",
 ]
 
 MODES = 160
@@ -167,6 +168,14 @@ class ObliquePoint:
         return {k: (str(v) if isinstance(v, Status) else v) for k, v in asdict(self).items()}
 
 
+def worst_status(statuses) -> Status:
+    """The worst of oblique points' ``statuses`` (``suspect``, ``large-deformation``,
+    ``computed-not-asymptotic``, else ``ok``); strings are read as :class:`Status`."""
+    order = (Status.SUSPECT, Status.LARGE_DEFORMATION, Status.COMPUTED_NOT_ASYMPTOTIC)
+    got = {Status(s) for s in statuses}
+    return next((s for s in order if s in got), Status.OK)
+
+
 @dataclass(frozen=True)
 class ObliqueAnswer:
     """What :func:`oblique_answer` returns (the same object for a notebook and ``law``)."""
@@ -182,11 +191,8 @@ class ObliqueAnswer:
 
     @property
     def status(self) -> Status:
-        """The worst of the points' statuses (``suspect``, ``large-deformation``,
-        ``computed-not-asymptotic``)."""
-        order = (Status.SUSPECT, Status.LARGE_DEFORMATION, Status.COMPUTED_NOT_ASYMPTOTIC)
-        got = {p.status for p in self.points}
-        return next((s for s in order if s in got), Status.OK)
+        """The worst of the points' statuses (:func:`worst_status`)."""
+        return worst_status(p.status for p in self.points)
 
     @property
     def advice(self) -> str | None:

@@ -118,14 +118,21 @@ def fit_walton(X, beta, epsilon_normal, mu: float, inertia_factor: float = 3.0) 
                      float(np.sqrt(np.mean(r**2))), float(np.max(np.abs(r))), X.size)  # fmt: skip
 
 
-def _fit_chi(model_beta, beta, bounds, name, scan) -> HistoryFit:
+def _fit_chi(model_beta, beta, bounds, name, scan, grid_beta=None) -> HistoryFit:
+    """The ``chi`` in ``bounds`` whose ``model_beta(chi)`` fits ``beta`` best; ``grid_beta``
+    (optional): the model at an array of ``chi`` at once, one row each."""
+
     def cost(chi):
         return float(np.sum((model_beta(chi) - beta) ** 2))
 
     # beta(chi) oscillates (the tangential oscillation turns more during the contact as chi
     # grows), so the cost has several minima: scan a grid, then refine around its best.
     grid = np.geomspace(*bounds, scan)
-    k = int(np.argmin([cost(c) for c in grid]))
+    if grid_beta is None:
+        costs = [cost(c) for c in grid]
+    else:
+        costs = np.sum((grid_beta(grid) - beta) ** 2, axis=1)
+    k = int(np.argmin(costs))
     lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]
     sol = minimize_scalar(cost, bounds=(lo, hi), method="bounded", options={"xatol": 1e-6})
     r = model_beta(sol.x) - beta
@@ -149,7 +156,7 @@ def fit_history(X, beta, model: str = "mindlin", inertia_factor: float = 3.0,
     def model_beta(chi):
         return history_beta(X, chi, model, inertia_factor=inertia_factor, steps=steps)
 
-    return _fit_chi(model_beta, beta, (0.05, 5.0), model, scan)
+    return _fit_chi(model_beta, beta, (0.05, 5.0), model, scan, grid_beta=model_beta)
 
 
 def fit_microslip(

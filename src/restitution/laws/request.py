@@ -244,7 +244,8 @@ class LawRequest:
             "beta, the spin after and the friction work, each with the change from half the "
             "modes as its error, computed by the modal oblique route (docs/oblique.md; "
             "cylinder, thin disk and sphere: 160 and 80 modes of the disk, 40 and 20 of the "
-            "sphere, about a minute a speed). --radius adds the spin in rad/s.",
+            "sphere, about a minute a speed). --radius adds the spin in rad/s. Several angles "
+            "and the DEM codes' tangential parameters fitted to them: restitution oblique-fit.",
             unit="deg",
         ),
     )

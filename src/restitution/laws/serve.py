@@ -33,14 +33,14 @@ from restitution.laws.oblique import ObliqueAnswer
 from restitution.laws.request import LawRequest
 from restitution.laws.routes.base import route_for
 
-__all__ = ["LawAnswer", "serve"]
+__all__ = ["LawAnswer", "head_on_points", "serve"]
 
 
 def _silent(text: str) -> None:
     """The default ``note``: say nothing."""
 
 
-def _head_on(r, note) -> list | None:
+def head_on_points(r, note: Callable[[str], None] = _silent) -> list | None:
     """The head-on law's points at the oblique request ``r``'s speeds, to read its
     ``epsilon_normal`` against (``None`` where no law serves the material)."""
     from restitution.errors import InputError
@@ -84,7 +84,7 @@ def serve(
     if r.oblique:  # an oblique impact is computed at the asked speeds, not read from a law
         from restitution.laws.oblique import oblique_answer
 
-        return oblique_answer(r, note, head_on=_head_on(r, note))
+        return oblique_answer(r, note, head_on=head_on_points(r, note))
     mechanism = answering(r)  # its refusals before any law is loaded
     s = route_for(r).law(r, note, progress)
     if mechanism is None:

@@ -62,10 +62,12 @@ def walton_beta(X, e: float, mu_ratio: float, beta_0: float, inertia_factor: flo
     return np.minimum(beta_0, -1.0 + inertia_factor * mu_ratio * (1.0 + e) / X)
 
 
-def history_beta(X, chi: float, model: str = "mindlin", *, inertia_factor: float = 3.0,
+def history_beta(X, chi, model: str = "mindlin", *, inertia_factor: float = 3.0,
                  steps: int = 20000) -> np.ndarray:  # fmt: skip
     """``beta(X)`` of LAMMPS's ``linear_history`` or ``mindlin`` model (module docs), shape of
-    ``X``; ``steps`` steps over the contact (error about ``1 / steps``).
+    ``X`` (at least 1-D); ``steps`` steps over the contact (error about ``1 / steps``). ``chi``
+    may be a 1-D array of stiffnesses: then one row per ``chi`` (every row as its own call
+    gives it: the normal motion is the same for all).
 
     >>> b = history_beta([0.5, 20.0], 0.85, "mindlin")
     >>> round(float(b[1]), 3)
@@ -73,14 +75,16 @@ def history_beta(X, chi: float, model: str = "mindlin", *, inertia_factor: float
     """
     if model not in HISTORY_MODELS:
         raise InputError(f"model must be one of {HISTORY_MODELS}, got {model!r}")
-    if not (math.isfinite(chi) and chi > 0.0):
+    chis = np.asarray(chi, dtype=float)
+    if chis.ndim > 1 or not (np.all(np.isfinite(chis)) and np.all(chis > 0.0)):
         raise InputError(f"chi (k_t over the normal stiffness) must be > 0, got {chi}")
     X = np.atleast_1d(np.asarray(X, dtype=float))
+    k = chis.reshape(-1, 1)  # one row per stiffness
     K = float(inertia_factor)
     dt = _CONTACT_TIME / steps
     x, u = 0.0, 1.0
-    c = X.copy()
-    s = np.zeros_like(X)
+    c = np.broadcast_to(X, (k.shape[0], X.size)).copy()
+    s = np.zeros_like(c)
     linear = model == "linear_history"
     while True:
         # velocity Verlet for the normal motion; the tangential state as the codes update it
@@ -90,9 +94,10 @@ def history_beta(X, chi: float, model: str = "mindlin", *, inertia_factor: float
             break
         g = 1.0 if linear else math.sqrt(x_new)
         s = s + dt * c
-        cap = (2.0 / 3.0) * x_new**1.5 / (chi * g)
+        cap = (2.0 / 3.0) * x_new**1.5 / (k * g)
         s = np.clip(s, -cap, cap)
-        c = c - dt * 1.875 * K * chi * g * s
+        c = c - dt * 1.875 * K * k * g * s
         x = x_new
         u = u_half - 0.5 * dt * 1.25 * x**1.5
-    return -c / X
+    beta = -c / X
+    return beta if chis.ndim else beta[0]

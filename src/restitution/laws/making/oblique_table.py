@@ -11,7 +11,7 @@ holds the settings, the grain's ``inertia_factor``, the code version of the moda
 (:func:`restitution.provenance.code_version`), the date and the wall time, and is read by
 :func:`restitution.laws.oblique_fits.fit_table` (Walton's parameters, the DEM codes' tangential
 models) and by the figure of docs/oblique.md. Any material's table is made by ``restitution
-oblique-fit`` (:mod:`restitution.laws.oblique_fit`); the shipped steel cylinder's
+oblique-fit`` (:mod:`restitution.laws.making.oblique_fit`); the shipped steel cylinder's
 (``restitution/laws/data/oblique/<name>.json``) by ``python -m
 restitution.laws.making.oblique_table`` (about 10 min on the project's machine).
 """
@@ -28,6 +28,7 @@ from restitution.atomic import write_text
 from restitution.laws.oblique import oblique_answer, oblique_seconds
 from restitution.laws.partners.base import owner
 from restitution.laws.request import request
+from restitution.laws.serve import head_on_points
 from restitution.laws.units import BODIES
 from restitution.provenance import code_version
 
@@ -109,11 +110,15 @@ def table_seconds(plan: TablePlan) -> tuple[float, str]:
 
 def compute_table(plan: TablePlan, say=print) -> dict:
     """Compute ``plan`` (every angle at every speed) and return the table as stored; ``say``
-    is told each point as it is done."""
+    is told each point as it is done. Each row also holds the head-on law at its speed
+    (``epsilon_head_on_law``: the normal coefficient ``law`` serves, :func:`~restitution.laws.
+    serve.head_on_points`), which ``epsilon_normal``'s error then includes."""
     rows, start = [], time.perf_counter()
     modes = factor = model = None
-    for angle, asked in zip(plan.angles, plan_requests(plan), strict=True):
-        answer = oblique_answer(asked, modes=plan.modes)
+    asks = plan_requests(plan)
+    head_on = head_on_points(asks[0], say)  # the same at every angle
+    for angle, asked in zip(plan.angles, asks, strict=True):
+        answer = oblique_answer(asked, modes=plan.modes, head_on=head_on)
         modes, factor = answer.points[0].modes, answer.inertia_factor
         model = asked.oblique_friction_model
         for p in answer.points:
