@@ -188,6 +188,11 @@ def test_refusals_come_before_any_run(cli):
         oblique_fit(**STEEL, shape="cylinder", friction=MU, angles=(30.0, 30.0, 40.0))
     with pytest.raises(InputError, match="--angle"):
         oblique_fit(**STEEL, shape="cylinder", friction=MU, angles=(30.0, 95.0))
+    with pytest.raises(InputError, match="--modes must be an integer >= 2"):
+        oblique_fit(**STEEL, shape="cylinder", friction=MU, angles=(30.0, 60.0), modes=1)
+    # 1e9 m/s is 1.9e5 c: refused in one line (it was a math domain error deep in the contact)
+    with pytest.raises(InputError, match="needs a normal speed below c = 5"):
+        oblique_fit(**STEEL, shape="cylinder", friction=MU, angles=(30.0, 60.0), speeds=(1e9,))
     # The steel cylinder at 0.01 m/s: about 2 h estimated for the 9 default angles
     with pytest.raises(
         InputError, match=r"more than the 1 h .*angles of these speeds fit.*--force"

@@ -270,6 +270,12 @@ def _plan(r, modes: int | None) -> _Plan:
     plans = []
     for w in r.speeds:
         v = float(grain.v_over_c(w, r.against))
+        if not v < 1.0:  # the contact's closed forms (and linear elasticity) end well before
+            raise InputError(
+                f"--speed {w:g} m/s is {v:.3g} c: an oblique impact needs a normal speed below "
+                f"c = {grain.c_m_s:.6g} m/s (above 0.3 c its status is large-deformation); "
+                "give a slower speed"
+            )
         alpha = kind.alpha_products[0] / kind.max_compression(v, nu)
         check_reach(v, alpha, ("the normal speed (c)", "alpha"))
         plans.append((w, v, alpha))

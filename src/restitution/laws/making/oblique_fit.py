@@ -151,6 +151,9 @@ def oblique_fit(
                          "e.g. --angle 10 30 50 70")  # fmt: skip
     if len(set(angles)) != len(angles):
         raise InputError(f"each angle once, please (got {angles})")
+    if modes is not None and not (isinstance(modes, int) and modes >= 2):
+        raise InputError(f"--modes must be an integer >= 2 (the error is the change from "
+                         f"modes // 2), got {modes!r}")  # fmt: skip
     plan = TablePlan(name="oblique_fit", E=E, nu=nu, rho=rho, shape=shape, friction=friction,
                      speeds=tuple(float(w) for w in speeds), angles=angles, modes=modes,
                      friction_model=friction_model, kappa=kappa)  # fmt: skip
