@@ -20,7 +20,7 @@ from restitution.laws.exports.dem._common import (
     viscoelastic_head,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
-from restitution.laws.exports.lammps_plugin import contact_shear_modulus
+from restitution.laws.exports.lammps_plugin import contact_modulus, contact_shear_modulus
 from restitution.laws.exports.plastic_native import is_plastic
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
@@ -87,7 +87,7 @@ def _lammps_mixed(g1, g2) -> str:
     materials. LAMMPS reads an explicit ``pair_coeff i j`` as one material on both sides
     (stiffness ``4/3 E / (2 (1 - nu^2))``); ``nu = 0`` and ``E = 2 E*`` with
     ``1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2`` give the two materials' Hertz stiffness."""
-    e_star = 1.0 / ((1.0 - g1.nu**2) / g1.E + (1.0 - g2.nu**2) / g2.E)
+    e_star = contact_modulus(g1.E, g1.nu, g2.E, g2.nu)
     return f"{2.0 * e_star:.12g}", "0.0"
 
 
