@@ -311,6 +311,7 @@ def test_the_law_command_shows_the_sd_and_what_it_means(capsys):
     assert kinds == ["bound", "standard deviation"]
 
 
+@pytest.mark.slow  # 11 s of the default run (stop 79: the default run under 10 min)
 def test_each_route_is_judged_on_its_own_values(fitted):
     """The shipped disk laws serve the residual route at their slowest points (docs/numerics.md);
     the modal factors are fitted on the modal values there (kept in the laws' ``rerouted``

@@ -73,6 +73,7 @@ def test_disk_viscous_loss_differs_from_the_quasistatic_law_by_a_first_order_fac
     assert max(abs(r - 1.0) for r in ratios.values()) <= DISK_VISCOUS_SPREAD
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_sphere_beyond_hertz_by_its_finite_size(reference):
     """On Hertz's law (the published viscoelastic law) the sphere's viscous loss falls short of
     the modal body's by about the factor by which Hertz's compression exceeds the finite

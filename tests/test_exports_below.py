@@ -89,6 +89,7 @@ def compile_headers(tmp_path, headers: dict):
     return out
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 79: the default run under 10 min)
 def test_every_shipped_law_in_c_is_a_coefficient_at_every_speed_up_to_its_range(tmp_path):
     # The done-when: a finite epsilon in [0, 1] at 0, at 1e-9 m/s and at every speed
     # inside the law; above it NaN with the status ABOVE (the old functions returned -1 below

@@ -241,7 +241,7 @@ def test_resolved_slope_is_not_rescued_by_a_stable_window():
     assert "ill-posed" not in fit.notes + fit.message
 
 
-@pytest.mark.parametrize("slope", [0.0, 0.006])
+@pytest.mark.parametrize("slope", [0.0, pytest.param(0.006, marks=pytest.mark.slow)])
 def test_window_stability_errors_cover_the_truth(slope):
     """Coverage of the rule on synthetic non-convergent data: random wiggles (uniform, +-1e-4,
     independent at every grid point) on a loss whose limit is exactly 0.03, with and without a

@@ -408,6 +408,7 @@ def test_the_fem_grid_is_one_object_and_the_loose_keywords_its_shorthand():
         FemGrid(levels=(0, 2))
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_the_reference_tool_runs_on_the_walls_asked(tmp_path, monkeypatch):
     """``--walls`` (``compute_reference(walls=...)``): the finite elements run on the walls
     ``alpha delta_max`` asked, the products of the modal sweeps' scale (docs/fem.md), and the

@@ -102,6 +102,7 @@ def test_lumped_element_of_the_impact_solver_converges_to_the_same_spectrum(nu):
     assert ratio > 8.0, ratio
 
 
+@pytest.mark.slow  # 6 s of the default run (stop 79: the default run under 10 min)
 def test_count_below_20_matches_root_finder():
     nu, omega = 0.33, 20.0
     expected = len(get_modes(nu, omega_max=omega))  # 191 symmetric modes below omega = 20

@@ -107,6 +107,7 @@ def test_energy_balance_and_mirror_symmetry(mu, tan):
     assert out.beta <= -1.0 + 3.0 * mu * (1.0 + out.epsilon_normal) / tan + 1e-9
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_friction_law_converges_in_kappa_and_in_the_step():
     betas = [fem_oblique_collide(NU, V, V, 0.5, ALPHA, kappa=k).beta for k in (4, 8, 16, 32)]
     steps = np.abs(np.diff(betas))

@@ -52,7 +52,7 @@ def _wall(partner: Partner, w: float, product: float = 80.0) -> float:
 # -- the construction ---------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("level", [0, 1])
+@pytest.mark.parametrize("level", [0, pytest.param(1, marks=pytest.mark.slow)])
 def test_identical_spheres_are_the_sphere_on_the_wall_at_half_speed(level):
     """Two identical spheres at ``w = 0.2`` and ``alpha`` (``alpha delta_pair = 80``) against one
     sphere on the wall at ``v = w/2`` and ``2 alpha``, same level. The pair's Hertz contact

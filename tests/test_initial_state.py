@@ -42,6 +42,7 @@ def test_zero_state_is_the_disk_at_rest_bit_for_bit(modes, backend):
         np.testing.assert_array_equal(x.final_Q, y.final_Q)
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_compiled_and_numpy_agree_on_a_vibrating_disk(modes):
     Q, P = _random_state(modes, 0.1, 0.5, seed=1)
     a = collide(modes, 0.1, 500, backend="compiled", initial=(Q, P))
@@ -96,6 +97,7 @@ def test_bad_initial_state_is_refused_in_one_line(modes):
         collide(modes, 0.1, 500, initial=np.zeros(N))
 
 
+@pytest.mark.slow  # 9 s of the default run (stop 79: the default run under 10 min)
 def test_a_vibrating_disk_that_leaves_slowly_is_not_cut_off():
     """A thermal member of this batch leaves about 18 times slower than it came (epsilon 0.054):
     the time bound of a disk at rest (201 R/c) stopped it before the vibrating disk's bound."""

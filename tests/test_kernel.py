@@ -51,6 +51,7 @@ def test_batch_matches_numpy_path_member_by_member():
         _assert_same(a, b)
 
 
+@pytest.mark.slow  # 7 s of the default run (stop 79: the default run under 10 min)
 def test_member_does_not_depend_on_its_batch():
     # Each member has its own step, so a stored point is the same however a sweep batched it.
     modes = get_modes(0.33, count=100)

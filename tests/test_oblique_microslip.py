@@ -171,6 +171,7 @@ def test_energy_balance(rim20, mu, degrees):
     assert out.friction_work > 0.0 and out.wall_energy < 1e-11
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_converges_in_kappa(rim20):
     """Partial slip (45 degrees, mu = 0.5): beta 0.3404, 0.3263, 0.3201, 0.3173 at kappa = 16, 64,
     256, 1024 (measured): the changes 0.014, 0.0061, 0.0028 fall by about 2.2 per factor 4 (as
@@ -185,6 +186,7 @@ def test_converges_in_kappa(rim20):
     assert all(abs(r.energy_balance) < 1e-5 for r in runs)
 
 
+@pytest.mark.slow  # 6 s of the default run (stop 79: the default run under 10 min)
 def test_symmetries(rim20):
     """y -> -y gives the same beta and normal coefficient and the opposite spin (to rounding);
     a head-on impact with friction leaves no tangential motion and no spin, yet friction works

@@ -217,6 +217,7 @@ def test_converges_in_the_tolerance_and_the_nodes(rim20):
     assert abs(fine.beta - ref.beta) < 1e-9
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_regularised_friction_approaches_the_switch():
     """F_t = -mu F_n v_s / sqrt(v_s^2 + eta^2) never sticks; at eta = 1e-3 v its beta is
     1.3e-4 below the exact switch's (measured; the test allows 1e-3): the creep of the

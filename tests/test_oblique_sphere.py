@@ -161,6 +161,7 @@ def test_rigid_sphere_limit(cap20):
     assert 0.0 < rolls[1] < 1e-3
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_mirror_image(cap20_m1):
     """v_t -> -v_t: the same beta and normal coefficient, the opposite spin (the rings' nodes
     are symmetric about the plane phi = +-pi/2; measured 5e-15)."""

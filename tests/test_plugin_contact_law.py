@@ -83,6 +83,7 @@ def _route(r, speeds, radius=1e-3):
 # -- the sphere's curve ---------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # 6 s of the default run (stop 79: the default run under 10 min)
 def test_the_curve_is_rayleighs_estimate_of_the_route():
     # G at the contact time of a sphere on the wall at v is the route's Duhamel sum there (the
     # wall law's low-speed points): from v = 1e-8 c to the route's x_lo (v = 0.15 c).

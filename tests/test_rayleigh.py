@@ -132,6 +132,7 @@ def test_cli_json_and_errors():
     assert isinstance(bad.exception, InputError)
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_the_drive_of_many_modes_is_built_in_blocks(monkeypatch):
     """Issue 30: the cosine table of the drive grew like N^(3/2) (150000 disk modes took 24 GB).
     20000 frequencies up to 300 c/R at v = 0.01 need about 12000 quadrature nodes: a 1.9 GB

@@ -352,6 +352,7 @@ def test_a_law_point_by_the_residual_route_meets_the_shipped_law():
     assert point.mode_err.max() < point.energy_loss_err
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_the_stored_study_draws_and_holds_what_the_docs_say(tmp_path):
     """The stored convergence study (``reproduction/data/residual_study.json``, this package's
     own earlier output: a regression record, not a reference) draws its three figures, and its

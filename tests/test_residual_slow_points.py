@@ -50,6 +50,7 @@ def test_where_they_pass_they_lie_within_half_a_combined_error_of_the_finite_ele
     assert max(abs(p["fem"]["sigma_shipped"]) for p in fem) > 1.5
 
 
+@pytest.mark.slow  # 11 s of the default run (stop 79: the default run under 10 min)
 def test_the_cheapest_stored_point_is_what_the_route_computes_today():
     """``nu = 0.33``, ``v = 0.0137`` (about 5 s): the same value and error."""
     (stored,) = [p for p in DOC["points"] if p["nu"] == 0.33 and p["v"] == 0.0137]

@@ -80,6 +80,7 @@ def test_the_model_is_time_reversible(modes):
     assert abs(back[0]) < 1e-6 * r.max_compression
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_the_loss_converges_in_the_cut(modes):
     """At v = 1e-6 the change of the loss from one cut to the next (a factor sqrt(2)) falls, from
     Omega = 7.07 on, like a power of the cut between -4.5 and -2 (measured: -3.0; the dropped

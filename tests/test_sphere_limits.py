@@ -129,6 +129,7 @@ def test_sphere_defaults_differ_in_the_body_the_walls_and_the_mode_counts():
     assert sphere.n_modes == (1600, 3200, 6400, 12800)
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_epsilon_at_extrapolates_a_sphere(tmp_path):
     settings = SweepSettings(velocities=(0.1,), n_modes=(100, 200, 400), geometry="sphere")
     r = epsilon_at(0.3, 0.1, settings=settings, store=tmp_path / "s.sqlite", progress=False)
@@ -203,6 +204,7 @@ def test_cli_refuses_disk_only_options_for_a_sphere(cache, capsys, args, message
     assert err.startswith("error: ") and message in err and err.count("\n") == 1
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_the_convergence_figure_measures_what_it_draws(tmp_path):
     from restitution.limits.order import local_exponents, power_law_fit
     from restitution.reproduction.figures import sphere_convergence

@@ -59,6 +59,7 @@ def test_class_index_counts_within_order_and_class():
     assert _class_index(n, radial, omega).tolist() == [0, 0, 1, 1, 0, 1]
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_contact_means_agree_with_the_kernels_own(study):
     """Two routes to the package's Table 1: the kernel averages every step over ``x0 > -1``;
     the study integrates the recorded history (every 0.005 R/c, edges interpolated)."""

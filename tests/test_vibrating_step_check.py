@@ -67,6 +67,7 @@ def test_zero_excitation_on_the_command_line_is_the_plain_collision(cli):
     assert drift == collide(get_modes(0.33, count=N), V, ALPHA, step_judge="energy").epsilon
 
 
+@pytest.mark.slow  # 4 s of the default run (stop 79: the default run under 10 min)
 def test_thermal_epsilon_converges_under_the_step_check():
     """The judge holds epsilon's Richardson error to energy_tol / 2 (docs/numerics.md)."""
     modes = get_modes(0.33, count=10)

@@ -113,6 +113,7 @@ def test_time_reversal_makes_epsilon_above_one(modes, at_rest):
     assert back.mode_energy_after.sum() < 1e-12 * back.mode_energy_before.sum()
 
 
+@pytest.mark.slow  # 5 s of the default run (stop 79: the default run under 10 min)
 def test_time_reversal_of_a_thermal_collision(modes):
     Q0, P0 = thermal_state(modes, temperature_for(modes, V, 2.0), 11)
     fwd = collide(modes, V, ALPHA, initial=(Q0, P0), energy_tol=1e-10)
