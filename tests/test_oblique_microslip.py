@@ -67,11 +67,11 @@ def test_jacobians_are_the_positions_derivatives(kind, rim20, sphere20):
     Q = 1e-3 * rng.standard_normal(len(body))
     x0, rot, cutoff = -1.0, 0.1, -0.2
     idx, weight, X, Yr, dXdQ, dYdQ = nodes.jacobians(x0, rot, Q, 0.0, cutoff)
-    if kind == "sphere":  # the cap's place computes the positions on its own (the rim's reuses
-        # jacobians: for the disk the direct formula below is the independent check)
-        placed = nodes.place(x0, rot, Q, np.zeros(len(body)), 0.0, cutoff)
-        np.testing.assert_allclose(placed[1], X, rtol=0, atol=1e-15)
-        np.testing.assert_allclose(placed[2], Yr, rtol=0, atol=1e-15)
+    # each body's place (the one-state route) computes the positions on its own; for the disk
+    # the direct formula below is a third
+    placed = nodes.place(x0, rot, Q, np.zeros(len(body)), 0.0, cutoff)
+    np.testing.assert_allclose(placed[1], X, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(placed[2], Yr, rtol=0, atol=1e-15)
     h = 1e-4
     for k in rng.choice(len(body), size=5, replace=False):
         step = np.zeros(len(body))
@@ -89,6 +89,44 @@ def test_jacobians_are_the_positions_derivatives(kind, rim20, sphere20):
         ur, up = nodes.Ur[idx] @ Q, nodes.Up[idx] @ Q
         X_direct = x0 + (1 + ur) * np.cos(phi + rot) - up * np.sin(phi + rot)
         np.testing.assert_allclose(X, X_direct, rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("kind", ["disk", "sphere"])
+def test_the_unformed_jacobians_products_are_the_formed_matrices(kind, rim20, sphere20):
+    """The microslip route never forms dX/dQ and dY/dQ (restitution.bodies.node_jacobian): its
+    products with Q'', Qd, the nodal forces and its row norms against the same products of the
+    formed matrices (``jacobians``), and of the rows ``Ur``, ``Up`` or ``D1``, ``D2`` turned
+    here by hand. The sums run in another order, so they agree to rounding: at most 1e-13 of
+    the largest term (measured 2e-16 to 2.1e-15, the norms' cancellation the largest, on this
+    machine, 4 Dec 2026)."""
+    body = rim20 if kind == "disk" else cap_modes(sphere20, azimuthal=1)
+    nodes = body.wall_nodes(200.0)
+    rng = np.random.default_rng(11)
+    N = len(body)
+    Q, Qd, v = (1e-3 * rng.standard_normal(N) for _ in range(3))
+    x0, rot, cutoff = -1.0, 0.3, -0.2
+    idx, _, X, Yr, eta, J = nodes.jacobian(x0, rot, Q, Qd, 0.0, cutoff)
+    _, _, X2, Yr2, dXdQ, dYdQ = nodes.jacobians(x0, rot, Q, 0.0, cutoff)
+    assert np.array_equal(X, X2) and np.array_equal(Yr, Yr2)
+    # the formed matrices against the body's own rows turned by hand
+    ang = nodes.phi[idx] + rot if kind == "disk" else np.full(idx.size, rot)
+    U1, U2 = (nodes.Ur, nodes.Up) if kind == "disk" else (nodes.D1, nodes.D2)
+    c, s = np.cos(ang)[:, None], np.sin(ang)[:, None]
+    np.testing.assert_array_equal(dXdQ, U1[idx] * c - U2[idx] * s)
+    np.testing.assert_array_equal(dYdQ, U1[idx] * s + U2[idx] * c)
+
+    def close(a, b):
+        assert np.max(np.abs(a - b)) <= 1e-13 * np.max(np.abs(b))
+
+    close(eta, dYdQ @ Qd)
+    close(J.dY(v), dYdQ @ v)
+    for got, want in zip(J.apply(np.stack([v, Qd], axis=1)), (dXdQ, dYdQ), strict=True):
+        close(got, want @ np.stack([v, Qd], axis=1))
+    cx, cy = rng.random(idx.size), rng.standard_normal(idx.size)
+    close(J.pull(cx, cy), cx @ dXdQ + cy @ dYdQ)
+    nX, nY = J.norms()
+    close(nX, np.einsum("ij,ij->i", dXdQ, dXdQ))
+    close(nY, np.einsum("ij,ij->i", dYdQ, dYdQ))
 
 
 # -- the acceptance checks of issue 63 ---------------------------------------------------------

@@ -146,11 +146,17 @@ class WallNodes(Protocol):
         ``e`` and their fractions ``p = e / sum(e)``."""
         ...
 
-    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
-        """The nodes of :meth:`place` with their identity and the full Jacobians, for friction
+    def jacobian(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
+        """The nodes of :meth:`place` with their identity and their Jacobians, for friction
         point by point (:mod:`restitution.dynamics.oblique_microslip`): ``None`` or ``(index,
-        weight, X, Y - y0, dX/dQ, dY/dQ)``, ``index`` (M,) into the node grid (a node keeps
-        its index from step to step), the Jacobians (M, N)."""
+        weight, X, Y - y0, eta, J)``, ``index`` (M,) into the node grid (a node keeps its index
+        from step to step), ``eta = dY/dQ @ Qd`` (M,) and ``J`` a
+        :class:`~restitution.bodies.node_jacobian.NodeJacobian` (the Jacobians unformed)."""
+        ...
+
+    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+        """:meth:`jacobian` at ``Qd = 0`` with the Jacobians formed, (M, N) each: ``None`` or
+        ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)`` (for checks)."""
         ...
 
 

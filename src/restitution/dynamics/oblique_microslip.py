@@ -174,12 +174,14 @@ def microslip_collision(
 
 
 # Wall time of a run over its planned steps times one timed evaluation of the active nodes'
-# Jacobians and their products at the compression v t_c / pi (microslip_work): median 1.11 of
-# 20 runs (disk at 40, 160, 320 modes, alpha = 2000, v = 0.005, five angles; 20 modes at alpha
-# = 100, 500 and v = 0.005-0.2; the sphere's orders 0, 1 of 20 modes), range 0.88 to 4.8 (the
-# slow end: 20 modes at v = 0.005, alpha = 500, where the per-step overhead outweighs the
-# timed products); OPENBLAS_NUM_THREADS=1, this 2-core machine, 3 Dec 2026.
-_STEP_OVER_TIMING = 1.11
+# Jacobians and their products at the compression v t_c / pi (microslip_work): median 1.30 of
+# 11 runs (disk at 40, 160, 320 modes, alpha = 2000, v = 0.005, tan(theta)/mu = 0.3 and 2; 20
+# modes at alpha = 100, 500 and v = 0.005-0.2; the sphere's orders 0, 1 of 20 modes and all its
+# orders at psi = 0.25), range 0.96 to 4.83 (the slow end: the disk's 20 modes, where the
+# per-step overhead outweighs the timed products); OPENBLAS_NUM_THREADS=1, this 2-core machine
+# beside one other run, 4 Dec 2026, with the Jacobians unformed (stop 80; with them formed:
+# median 1.11 of 20 runs, range 0.88 to 4.8, 3 Dec 2026).
+_STEP_OVER_TIMING = 1.30
 _WORK_SPREAD = 4.5
 
 
@@ -222,12 +224,11 @@ def microslip_work(
     active = 0
     for _ in range(repeats):
         start = time.perf_counter()
-        placed = G.nodes.jacobians(x0, 0.0, Q, 0.0, -NEGLIGIBLE / alpha)
+        placed = G.nodes.jacobian(x0, 0.0, Q, Q, 0.0, -NEGLIGIBLE / alpha)
         if placed is not None:
-            _, _, X, Yr, dXdQ, dYdQ = placed
+            _, _, X, Yr, _, J = placed
             e = np.exp(alpha * X)
-            _ = (e @ dXdQ + e @ dYdQ, dYdQ @ Q)
-            _ = np.einsum("ij,ij->i", dXdQ, dXdQ) + np.einsum("ij,ij->i", dYdQ, dYdQ)
+            _ = (J.pull(-e, e), J.dY(Q), J.norms())
             active = X.size
         best = min(best, time.perf_counter() - start)
     memory = 8.0 * (8 * max(active, 1) * max(G.N, 1) + 4 * len(G.nodes))
@@ -238,10 +239,11 @@ def _ceiling(G, kappa: float) -> float:
     """``max_j (|a_j|^2 + kappa |b_j|^2)`` over the nodes within ``_PLAN_REACH`` of the wall
     at rest, times ``_PLAN_MARGIN``: with the wall force ``sum e_j = alpha V <= alpha E0`` it
     bounds the stiffness term (module docs) of the whole run."""
-    placed = G.nodes.jacobians(-1.0, 0.0, np.zeros(G.N), 0.0, -_PLAN_REACH)
-    _, _, X, Yr, dXdQ, dYdQ = placed
-    a2 = 1.0 / G.m + Yr**2 / G.inertia + np.einsum("ij,ij->i", dXdQ, dXdQ) / G.m
-    b2 = 1.0 / G.m + (X + 1.0) ** 2 / G.inertia + np.einsum("ij,ij->i", dYdQ, dYdQ) / G.m
+    rest = np.zeros(G.N)
+    _, _, X, Yr, _, J = G.nodes.jacobian(-1.0, 0.0, rest, rest, 0.0, -_PLAN_REACH)
+    nX, nY = J.norms()
+    a2 = 1.0 / G.m + Yr**2 / G.inertia + nX / G.m
+    b2 = 1.0 / G.m + (X + 1.0) ** 2 / G.inertia + nY / G.m
     return _PLAN_MARGIN * float(np.max(a2 + kappa * b2))
 
 
@@ -263,38 +265,42 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
     vx, vy, om = v_n, v_t, -w0
     tang = np.zeros(len(nodes))  # t_j of every node (zero off the active set)
 
-    def place(x0, th, Q):
-        """``(index, X - x0, Y - y0, dX/dQ, dY/dQ, e)`` of the active nodes, or ``None``."""
-        placed = nodes.jacobians(x0, th, Q, float(np.abs(Q) @ G.reach_k), cutoff)
+    def place(x0, th, Q, Qd):
+        """``(index, X - x0, Y - y0, J, e, dY/dQ @ Qd)`` of the active nodes (``J`` their
+        :class:`~restitution.bodies.node_jacobian.NodeJacobian`), or ``None``: one pass."""
+        placed = nodes.jacobian(x0, th, Q, Qd, float(np.abs(Q) @ G.reach_k), cutoff)
         if placed is None:
             return None
-        idx, weight, X, Yr, dXdQ, dYdQ = placed
-        return idx, X - x0, Yr, dXdQ, dYdQ, weight * np.exp(alpha * X)
-
-    def slip(pl, vy, om, Qd):
-        """``Y_j'`` of the active nodes."""
-        return vy + om * pl[1] + pl[4] @ Qd
+        idx, weight, X, Yr, eta, J = placed
+        return idx, X - x0, Yr, J, weight * np.exp(alpha * X), eta
 
     def accel(pl, Q, ft):
-        """``(ax, ay, theta'', Q'')`` and the stiffness bound (module docs)."""
+        """``(ax, ay, theta'', Q'')`` and the stiffness bound (module docs): one pass."""
         if pl is None:
             return 0.0, 0.0, 0.0, -w2 * Q, 0.0
-        _, Xr, Yr, dXdQ, dYdQ, e = pl
+        _, Xr, Yr, J, e, _ = pl
         ath = (float(e @ Yr) + float(ft @ Xr)) / I
-        aQ = -w2 * Q + (ft @ dYdQ - e @ dXdQ) / m
-        a2 = 1.0 / m + Yr**2 / I + np.einsum("ij,ij->i", dXdQ, dXdQ) / m
-        b2 = 1.0 / m + Xr**2 / I + np.einsum("ij,ij->i", dYdQ, dYdQ) / m
+        aQ = -w2 * Q + J.pull(-e, ft) / m
+        nX, nY = J.norms()
+        a2 = 1.0 / m + Yr**2 / I + nX / m
+        b2 = 1.0 / m + Xr**2 / I + nY / m
         bound = alpha * float(e @ (a2 + kappa * b2))
         return -float(e.sum()) / m, float(ft.sum()) / m, ath, aQ, bound
 
     def moments(pl, ft):
         """``sum t_j (R - (X_j - x0))`` and ``sum e_j (Y_j - y0)``: the two corrections."""
-        return (0.0, 0.0) if pl is None else (float(ft @ (1.0 - pl[1])), float(pl[5] @ pl[2]))
+        return (0.0, 0.0) if pl is None else (float(ft @ (1.0 - pl[1])), float(pl[4] @ pl[2]))
 
-    pl = place(x0, th, Q)
+    # The slip s_j = vy + om (X_j - x0) + dY_j/dQ @ Qd is linear in Qd: with the nodes placed
+    # (dY/dQ @ Qd from the placing pass) and dY/dQ @ Q'' after each force (one pass), every
+    # kick's slip follows without another pass over the modes.
+    pl = place(x0, th, Q, Qd)
     ft = np.zeros(0 if pl is None else pl[0].size)
     ax, ay, ath, aQ, bound = accel(pl, Q, ft)
-    s_cur = None if pl is None else slip(pl, vy, om, Qd)
+    s_cur = yQd = yaQ = None
+    if pl is not None:
+        yQd, yaQ = pl[5], pl[3].dY(aQ)  # dY/dQ @ Qd and @ Q''
+        s_cur = vy + om * pl[1] + yQd
     work = lever_int = tau_int = 0.0  # friction's work on the grain (<= 0), the two moments
     t, steps, bound_max = 0.0, 0, bound
     while True:
@@ -307,19 +313,19 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
         Qd = Qd + 0.5 * dt * aQ
         lev, tau = moments(pl, ft)
         if pl is not None:
-            s_half = slip(pl, vy, om, Qd)
+            s_half = vy + om * pl[1] + (yQd + 0.5 * dt * yaQ)
             work += 0.25 * dt * float(ft @ (s_cur + s_half))
         # drift, then the nodes' friction: elastic predictor and return to the bound
         x0, th, Q = x0 + dt * vx, th + dt * om, Q + dt * Qd
-        pl = place(x0, th, Q)
+        pl = place(x0, th, Q, Qd)
         if pl is None:
             tang[:] = 0.0
             ft = np.zeros(0)
         else:
-            idx, e = pl[0], pl[5]
+            idx, e, yQd = pl[0], pl[4], pl[5]
             prev = tang[idx]
             tang[:] = 0.0
-            s_half = slip(pl, vy, om, Qd)
+            s_half = vy + om * pl[1] + yQd
             cap = mu * e
             ft = np.clip(prev - kappa * alpha * e * s_half * dt, -cap, cap)
             tang[idx] = ft
@@ -331,14 +337,16 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
         vx, vy, om = vx + 0.5 * dt * ax, vy + 0.5 * dt * ay, om + 0.5 * dt * ath
         Qd = Qd + 0.5 * dt * aQ
         if pl is not None:
-            s_cur = slip(pl, vy, om, Qd)
+            yaQ = pl[3].dY(aQ)
+            yQd = yQd + 0.5 * dt * yaQ
+            s_cur = vy + om * pl[1] + yQd
             work += 0.25 * dt * float(ft @ (s_half + s_cur))
         lev2, tau2 = moments(pl, ft)
         lever_int += 0.5 * dt * (lev + lev2)
         tau_int += 0.5 * dt * (tau + tau2)
         t += dt
         steps += 1
-        V = 0.0 if pl is None else float(pl[5].sum()) / alpha
+        V = 0.0 if pl is None else float(pl[4].sum()) / alpha
         h = 0.5 * m * (vx**2 + vy**2 + float(Qd @ Qd + w2 @ (Q * Q))) + 0.5 * I * om**2 + V
         if not math.isfinite(h):
             raise _Unstable(_REPLAN * limit)

@@ -30,6 +30,7 @@ frequencies, the mass and the moment of inertia.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import ClassVar
@@ -40,6 +41,7 @@ from scipy.special import jn_zeros
 from restitution.bodies.disk import contact
 from restitution.bodies.disk.modes import ModeSet
 from restitution.bodies.disk.surface import default_n_phi
+from restitution.bodies.node_jacobian import NodeJacobian, row_products
 from restitution.errors import InputError
 
 __all__ = ["FAMILIES", "Rim", "RimNodes", "rim_modes", "torsional_frequencies"]
@@ -134,8 +136,7 @@ class Rim:
         return RimNodes(
             phi=phi,
             weight=2.0 * math.pi / M,
-            Ur=np.ascontiguousarray(Ur),
-            Up=np.ascontiguousarray(Up),
+            U=np.ascontiguousarray(np.stack([Ur, Up], axis=1)),
             reach=np.abs(np.asarray(self.C, float)) + np.abs(np.asarray(self.S, float)),
         )
 
@@ -159,7 +160,9 @@ _FIELDS = ("family", "n", "l", "omega", "C", "S")
 class RimNodes:
     """The rim's wall nodes for :mod:`restitution.dynamics.oblique`: material angles ``phi``
     (shape (M,)), the weight ``2 pi / M`` of each, the displacements ``Ur``, ``Up`` (shape (M,
-    N)) per unit ``Q`` there and ``reach = |C| + |S|`` (shape (N,)), which bounds them.
+    N)) per unit ``Q`` there (stored interleaved as ``U``, shape (M, 2, N):
+    :mod:`restitution.bodies.node_jacobian`) and ``reach = |C| + |S|`` (shape (N,)), which
+    bounds them.
 
     A node at angle ``phi`` of a disk turned by ``Theta`` sits at ``X = x0 + (1 + u_r)
     cos(phi + Theta) - u_phi sin(phi + Theta)``, ``Y = y0 + (1 + u_r) sin(phi + Theta) + u_phi
@@ -168,48 +171,82 @@ class RimNodes:
 
     phi: np.ndarray
     weight: float
-    Ur: np.ndarray
-    Up: np.ndarray
+    U: np.ndarray
     reach: np.ndarray
 
     def __len__(self) -> int:
         return int(self.phi.size)
 
+    @property
+    def Ur(self) -> np.ndarray:
+        """Radial displacement per unit ``Q``, shape (M, N) (a view of ``U``)."""
+        return self.U[:, 0, :]
+
+    @property
+    def Up(self) -> np.ndarray:
+        """Tangential displacement per unit ``Q``, shape (M, N) (a view of ``U``)."""
+        return self.U[:, 1, :]
+
+    @functools.cached_property
+    def _rows(self) -> np.ndarray:
+        return row_products(self.U)
+
     def start_integral(self, alpha: float) -> float:
         """``sum_j w exp(alpha (cos phi_j - 1))``: the undeformed rim's wall integral, ``R``."""
         return self.weight * np.sum(np.exp(alpha * (np.cos(self.phi) - 1.0)))
 
+    def _active(self, x0, rotation, reach: float, cutoff: float):
+        """``(act, cos, sin)``: the nodes with ``x0 + cos(phi + Theta) + reach > cutoff`` and
+        their turned angle's cosine and sine; ``None`` if there are none."""
+        ang = self.phi + rotation
+        c = np.cos(ang)
+        act = np.nonzero(x0 + c + reach > cutoff)[0]
+        return None if act.size == 0 else (act, c[act], np.sin(ang[act]))
+
     def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
         """The nodes that may touch (``x0 + cos(phi + Theta) + reach > cutoff``), placed:
         ``None`` or ``(weight, X, Y - y0, xi, eta, project)``
-        (:class:`restitution.dynamics.oblique.WallNodes`)."""
-        placed = self.jacobians(x0, rotation, Q, reach, cutoff)
-        if placed is None:
+        (:class:`restitution.dynamics.oblique.WallNodes`). The Jacobians are formed, as the
+        one-state route has always summed them."""
+        active = self._active(x0, rotation, reach, cutoff)
+        if active is None:
             return None
-        _, _, X, Yr, dXdQ, dYdQ = placed
+        act, c, s = active
+        Ur, Up = self.Ur[act], self.Up[act]
+        ur, up = Ur @ Q, Up @ Q
+        X = x0 + (1.0 + ur) * c - up * s
+        Yr = (1.0 + ur) * s + up * c
+        dXdQ = Ur * c[:, None] - Up * s[:, None]
+        dYdQ = Ur * s[:, None] + Up * c[:, None]
 
         def project(e, p):
             return e @ dXdQ, p @ dYdQ
 
         return self.weight, X, Yr, dXdQ @ Qd, dYdQ @ Qd, project
 
-    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+    def jacobian(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
         """The nodes that may touch with their identity and their position's derivatives in
-        the modal coordinates: ``None`` or ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)``
-        (index shape (M,) into the whole grid, the matrices (M, N)), for friction point by
-        point (:mod:`restitution.dynamics.oblique_microslip`)."""
-        ang = self.phi + rotation
-        c = np.cos(ang)
-        act = np.nonzero(x0 + c + reach > cutoff)[0]
-        if act.size == 0:
+        the modal coordinates: ``None`` or ``(index, weight, X, Y - y0, eta, J)`` (index shape
+        (M,) into the whole grid, ``eta = dY/dQ @ Qd``, ``J`` a
+        :class:`~restitution.bodies.node_jacobian.NodeJacobian` with each node's own turn
+        ``phi + Theta``), for friction point by point
+        (:mod:`restitution.dynamics.oblique_microslip`)."""
+        active = self._active(x0, rotation, reach, cutoff)
+        if active is None:
             return None
-        c, s = c[act], np.sin(ang[act])
-        Ur, Up = self.Ur[act], self.Up[act]
-        ur, up = Ur @ Q, Up @ Q
+        act, c, s = active
+        J = NodeJacobian(self.U[act], c, s, self._rows[:, act])
+        P = (J.flat() @ Q).reshape(-1, 2)
+        ur, up = P[:, 0], P[:, 1]
         X = x0 + (1.0 + ur) * c - up * s
         Yr = (1.0 + ur) * s + up * c
-        dXdQ = Ur * c[:, None] - Up * s[:, None]
-        return act, self.weight, X, Yr, dXdQ, Ur * s[:, None] + Up * c[:, None]
+        return act, self.weight, X, Yr, J.dY(Qd), J
+
+    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+        """:meth:`jacobian` at rest (``Qd = 0``) with the Jacobians formed: ``None`` or
+        ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)`` (the matrices (M, N); for checks)."""
+        placed = self.jacobian(x0, rotation, Q, np.zeros_like(Q), reach, cutoff)
+        return None if placed is None else (*placed[:4], *placed[5].formed())
 
 
 def torsional_frequencies(nu: float, omega_max: float) -> np.ndarray:

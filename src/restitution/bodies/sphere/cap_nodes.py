@@ -29,11 +29,13 @@ are in increasing ``theta``, so the active ones are a prefix and their nodes a s
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from restitution.bodies.node_jacobian import NodeJacobian, row_products
 from restitution.bodies.sphere import surface
 from restitution.errors import InputError
 
@@ -54,8 +56,9 @@ class CapNodes:
         Node weights, ``R^2``, ring by ring.
     c, s : numpy.ndarray, shape (K * azimuths,)
         Rest position along ``e1`` and ``e2``.
-    D1, D2 : numpy.ndarray, shape (K * azimuths, N)
-        Displacement along ``e1`` and ``e2`` per unit ``Q``.
+    D : numpy.ndarray, shape (K * azimuths, 2, N)
+        Displacement along ``e1`` and ``e2`` per unit ``Q`` (:attr:`D1`, :attr:`D2`),
+        interleaved node by node (:mod:`restitution.bodies.node_jacobian`).
     reach : numpy.ndarray, shape (N,)
         ``max_j |D1| + |D2|``: bounds the displacement along the wall's normal at any rotation.
     """
@@ -65,12 +68,25 @@ class CapNodes:
     weight: np.ndarray
     c: np.ndarray
     s: np.ndarray
-    D1: np.ndarray
-    D2: np.ndarray
+    D: np.ndarray
     reach: np.ndarray
 
     def __len__(self) -> int:
         return int(self.weight.size)
+
+    @property
+    def D1(self) -> np.ndarray:
+        """Displacement along ``e1`` per unit ``Q``, shape (K * azimuths, N) (a view)."""
+        return self.D[:, 0, :]
+
+    @property
+    def D2(self) -> np.ndarray:
+        """Displacement along ``e2`` per unit ``Q``, shape (K * azimuths, N) (a view)."""
+        return self.D[:, 1, :]
+
+    @functools.cached_property
+    def _rows(self) -> np.ndarray:
+        return row_products(self.D)
 
     def start_integral(self, alpha: float) -> float:
         """``sum_j w_j exp(alpha (c_j - 1))``: the undeformed sphere's wall integral, ``R^2``."""
@@ -96,45 +112,57 @@ class CapNodes:
     def place(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
         """The nodes that may touch, placed (module docs): ``None`` if no ring can reach
         ``x = cutoff``, else ``(weight, X, Y - y0, xi, eta, project)`` of the active nodes
-        (:class:`restitution.dynamics.oblique.WallNodes`). Each matrix is read twice: once
-        for positions and velocities, once for the projection of the forces."""
+        (:class:`restitution.dynamics.oblique.WallNodes`). The active rows ``D`` (both
+        directions interleaved) are read three times: for the positions, the velocities and
+        the projection of the forces."""
         j = self._active(x0, rotation, reach, cutoff)
         if j == 0:
             return None
-        D1, D2 = self.D1[:j], self.D2[:j]
-        QQ = np.stack([Q, Qd], axis=1)
-        A1, A2 = D1 @ QQ, D2 @ QQ
-        P1 = self.c[:j] + A1[:, 0]
-        P2 = self.s[:j] + A2[:, 0]
+        D = self.D[:j]
+        flat = D.reshape(2 * j, -1)
+        P, V = (flat @ Q).reshape(j, 2), (flat @ Qd).reshape(j, 2)  # two passes: see jacobian
+        P1 = self.c[:j] + P[:, 0]
+        P2 = self.s[:j] + P[:, 1]
         ct, st = math.cos(rotation), math.sin(rotation)
         X = x0 + P1 * ct - P2 * st
         Yr = P1 * st + P2 * ct
         self._check_edge(j, X, rotation, cutoff)
-        xi = A1[:, 1] * ct - A2[:, 1] * st
-        eta = A1[:, 1] * st + A2[:, 1] * ct
+        xi = V[:, 0] * ct - V[:, 1] * st
+        eta = V[:, 0] * st + V[:, 1] * ct
 
         def project(e, p):
-            f1, f2 = e @ D1, e @ D2
+            f1, f2 = (e @ D.reshape(j, -1)).reshape(2, -1)
             return f1 * ct - f2 * st, (f1 * st + f2 * ct) / float(e.sum())
 
         return self.weight[:j], X, Yr, xi, eta, project
 
-    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+    def jacobian(self, x0, rotation, Q, Qd, reach: float, cutoff: float):
         """The nodes that may touch with their identity and their position's derivatives in
-        the modal coordinates: ``None`` or ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)``, as
-        :meth:`restitution.bodies.disk.rim.RimNodes.jacobians` (friction point by point along
-        the plane of incidence)."""
+        the modal coordinates: ``None`` or ``(index, weight, X, Y - y0, eta, J)``, ``eta =
+        dY/dQ @ Qd`` and ``J`` a :class:`~restitution.bodies.node_jacobian.NodeJacobian`
+        (one turn for the whole cap; the active rings a view), as
+        :meth:`restitution.bodies.disk.rim.RimNodes.jacobian` (friction point by point along
+        the plane of incidence). Two matrix-vector passes over the active rings' displacements
+        (one for ``Q``, one for ``Qd``: OpenBLAS took longer for one product with both as
+        columns, docs/oblique.md)."""
         j = self._active(x0, rotation, reach, cutoff)
         if j == 0:
             return None
-        D1, D2 = self.D1[:j], self.D2[:j]
-        P1 = self.c[:j] + D1 @ Q
-        P2 = self.s[:j] + D2 @ Q
         ct, st = math.cos(rotation), math.sin(rotation)
+        J = NodeJacobian(self.D[:j], ct, st, self._rows[:, :j])
+        P = (J.flat() @ Q).reshape(j, 2)
+        P1 = self.c[:j] + P[:, 0]
+        P2 = self.s[:j] + P[:, 1]
         X = x0 + P1 * ct - P2 * st
         self._check_edge(j, X, rotation, cutoff)
-        dXdQ, dYdQ = D1 * ct - D2 * st, D1 * st + D2 * ct
-        return np.arange(j), self.weight[:j], X, P1 * st + P2 * ct, dXdQ, dYdQ
+        eta = J.dY(Qd)
+        return np.arange(j), self.weight[:j], X, P1 * st + P2 * ct, eta, J
+
+    def jacobians(self, x0, rotation, Q, reach: float, cutoff: float):
+        """:meth:`jacobian` at rest (``Qd = 0``) with the Jacobians formed: ``None`` or
+        ``(index, weight, X, Y - y0, dX/dQ, dY/dQ)`` (for checks)."""
+        placed = self.jacobian(x0, rotation, Q, np.zeros_like(Q), reach, cutoff)
+        return None if placed is None else (*placed[:4], *placed[5].formed())
 
 
 def cap_nodes(cap, alpha: float, n_nodes: int | None = None) -> CapNodes:
@@ -157,7 +185,6 @@ def cap_nodes(cap, alpha: float, n_nodes: int | None = None) -> CapNodes:
         weight=np.repeat(ring_weight / A, A),
         c=np.cos(th),
         s=np.sin(th) * np.cos(ph),
-        D1=np.ascontiguousarray(d1),
-        D2=np.ascontiguousarray(d2),
+        D=np.ascontiguousarray(np.stack([d1, d2], axis=1)),
         reach=reach,
     )
