@@ -267,7 +267,8 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
 
     def place(x0, th, Q, Qd):
         """``(index, X - x0, Y - y0, J, e, dY/dQ @ Qd)`` of the active nodes (``J`` their
-        :class:`~restitution.bodies.node_jacobian.NodeJacobian`), or ``None``: one pass."""
+        :class:`~restitution.bodies.node_jacobian.NodeJacobian`), or ``None``: two passes (``Q``,
+        ``Qd``)."""
         placed = nodes.jacobian(x0, th, Q, Qd, float(np.abs(Q) @ G.reach_k), cutoff)
         if placed is None:
             return None
