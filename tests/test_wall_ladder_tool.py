@@ -38,11 +38,13 @@ def test_modal_points_are_the_laws_modal_points_up_to_the_speed(tool):
 def test_an_interrupted_run_keeps_every_point_the_file_held(tool, tmp_path, monkeypatch):
     """A file with two kept points and one to compute between them (in the file's order): the
     run is interrupted in that point (``KeyboardInterrupt`` in its computation), after writing
-    the first kept point; the file still holds both, as they were."""
+    the first kept point; the file still holds both, as they were. The two points are the
+    stored ladder's first two with today's code version: the tool keeps only points of its own
+    version, and any edit of the disk's solver changes it (the stored file's may be older; stop
+    80's edit of the wall nodes made it so)."""
     doc = json.loads(LADDER.read_text())
     version = tool._version("disk", False)
-    kept = [p for p in doc["points"] if p["code_version"] == version][:2]
-    assert len(kept) == 2
+    kept = [{**p, "code_version": version} for p in doc["points"][:2]]
     out = tmp_path / "ladder.json"
     out.write_text(json.dumps({**doc, "points": kept}))
     assert [(p["nu"], p["v"]) for p in kept] == [(0.2, 1e-4), (0.2, 2e-4)]
