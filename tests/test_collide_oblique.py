@@ -294,3 +294,52 @@ def test_suspect_regime_is_a_status_with_advice(cli, monkeypatch):
 
 def test_doctests():
     assert doctest.testmod(oblique_cost).failed == 0
+
+
+def test_beyond_the_memory_is_refused_before_the_nodes_are_made(cli, monkeypatch):
+    """The wall nodes' rows (nodes by modes of both symmetries) are estimated from their counts
+    and refused, in one line naming --modes and the numbers, before any node is made (the
+    estimates of the time make them); here with the memory made 1 MiB."""
+    from restitution.bodies.sphere.cap import SphereCap
+
+    monkeypatch.setattr(SphereCap, "wall_nodes", _never)
+    monkeypatch.setattr(oblique_microslip, "microslip_collision", _never)
+    monkeypatch.setattr(budget, "available_memory", lambda: 2.0**20)
+    code, _, err = cli("collide", "--geometry", "sphere", "--angle", "30", "--friction", "0.5",
+                       "--v", "0.05", "--modes", "20", "--friction-model", "microslip")  # fmt: skip
+    one_line_error(code, err, "--modes 20", "of memory", "146 modes of both symmetries on the",
+                   "ask for fewer")  # fmt: skip
+
+
+@pytest.mark.parametrize("geometry, count, alpha", [("sphere", 20, 500.0), ("disk", 80, 2000.0)])
+def test_the_nodes_memory_bounds_their_build(geometry, count, alpha):
+    """``wall_node_memory`` (known before the nodes are made) bounds the build's peak that
+    tracemalloc measures, within 25 % (measured 2.43 against 2.40 and 3.53 against 3.33 times
+    the node-by-mode array), and the nodes are as many as ``wall_node_count`` said; the rows are
+    the displacements of every node, made in blocks (bit for bit those of one call)."""
+    import tracemalloc
+
+    import numpy as np
+
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.kinds import body_kind
+
+    nu = 0.3 if geometry == "sphere" else 0.25
+    body = body_kind(geometry).oblique_body(get_modes(nu, count=count, geometry=geometry))
+    tracemalloc.start()
+    try:
+        nodes = body.wall_nodes(alpha)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert len(nodes) == body.wall_node_count(alpha)
+    estimate = body.wall_node_memory(alpha)
+    assert peak <= estimate <= 1.25 * peak
+    rows = nodes.D if geometry == "sphere" else nodes.U
+    if geometry == "sphere":
+        th = np.repeat(nodes.theta, nodes.azimuths)
+        ph = np.tile(2.0 * math.pi * np.arange(nodes.azimuths) / nodes.azimuths, nodes.theta.size)
+        whole = body.displacement(th, ph)[:2]
+    else:
+        whole = body.displacement(nodes.phi)
+    assert np.array_equal(rows, np.stack(whole, axis=1))

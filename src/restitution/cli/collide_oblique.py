@@ -205,6 +205,14 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
     rim = body_kind(req.geometry).oblique_body(modes)
     microslip = req.friction_model == MICROSLIP
+    nodes = rim.wall_node_count(req.alpha)
+    budget.check_memory_total(  # before the estimates below, which make the nodes
+        "--modes",
+        req.modes,
+        rim.wall_node_memory(req.alpha),
+        f"the {len(rim)} modes of both symmetries on the wall's {nodes} nodes",
+        lambda _limit: "ask for fewer modes",
+    )
     if microslip:
         settings = MicroslipSettings(kappa=req.kappa)
         work = microslip_work(rim, req.v, req.v_tangential, req.alpha, settings=settings)

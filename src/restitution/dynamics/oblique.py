@@ -185,6 +185,14 @@ class RimBody(Protocol):
         body's own kind: rim nodes, rings)."""
         ...
 
+    def wall_node_count(self, alpha: float, n_nodes: int | None = None) -> int:
+        """How many nodes :meth:`wall_nodes` makes, known before they are made."""
+        ...
+
+    def wall_node_memory(self, alpha: float, n_nodes: int | None = None) -> float:
+        """Bytes that making and keeping :meth:`wall_nodes` takes (its peak), known before."""
+        ...
+
     def contact_time_estimate(self, v):
         """Quasistatic contact time at normal speed ``v``, ``R / c``."""
         ...

@@ -151,7 +151,10 @@ def oblique_work(body, v_normal: float, alpha: float) -> ObliqueWork:
         + _WIDTH_EXP * math.log(compression + NEGLIGIBLE / alpha)
         + _STIFF_EXP * math.log(alpha * v_normal)
     )
-    memory = 8.0 * (_NODE_ARRAYS * nodes * n + _STORED_STEPS * (8 + 2 * n))
+    memory = max(
+        8.0 * (_NODE_ARRAYS * nodes * n + _STORED_STEPS * (8 + 2 * n)),
+        float(body.wall_node_memory(alpha)),
+    )
     return ObliqueWork(n, nodes, math.exp(log_s), memory)
 
 
@@ -177,7 +180,10 @@ def timed_work(body, v_normal: float, alpha: float, repeats: int = 5) -> Oblique
             placed[5](e, e / max(float(np.sum(e)), 1e-300))
         best = min(best, time.perf_counter() - start)
     count = len(nodes)
-    memory = 8.0 * (4 * count * max(n, 1) + _STORED_STEPS * (8 + 2 * n))
+    memory = max(
+        8.0 * (4 * count * max(n, 1) + _STORED_STEPS * (8 + 2 * n)),
+        float(body.wall_node_memory(alpha)),
+    )
     return ObliqueWork(n, count, _CAP_EVALUATIONS * best, memory, _CAP_SPREAD)
 
 

@@ -231,7 +231,10 @@ def microslip_work(
             _ = (J.pull(-e, e), J.dY(Q), J.norms())
             active = X.size
         best = min(best, time.perf_counter() - start)
-    memory = 8.0 * (8 * max(active, 1) * max(G.N, 1) + 4 * len(G.nodes))
+    # the nodes' build is the peak; a step adds products over the active rows only
+    memory = float(body.wall_node_memory(alpha, n_nodes)) + 8.0 * (
+        4 * max(active, 1) * max(G.N, 1) + 4 * len(G.nodes)
+    )
     return ObliqueWork(G.N, len(G.nodes), steps * _STEP_OVER_TIMING * best, memory, _WORK_SPREAD)
 
 
