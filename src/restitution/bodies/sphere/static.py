@@ -24,7 +24,23 @@ the inertial body force that balances it and the rigid translation taken out::
 
 The modal sums obey ``K_l = 2 pi sum [C, S] [C N_0, S N_1] / (m omega^2)`` over the modes of
 order ``l``, with ``N_0 = 2 / (2l + 1)`` and ``N_1 = l (l + 1) N_0`` the norms of ``P_l`` and
-``dP_l/dtheta`` on ``[-1, 1]``: the tests check both routes against each other.
+``dP_l/dtheta`` on ``[-1, 1]``: the tests check both routes against each other. The same
+``K_l`` holds for the spheroidal fields of every azimuthal order ``m`` (the radial equations
+depend on ``l`` alone; ``Y_lm`` and its surface gradient in place of ``P_l`` and
+``dP_l/dtheta``).
+
+**Toroidal, per order** (:func:`toroidal_static_compliance`). A shear traction ``t = c r_hat x
+grad_1 Y`` moves the surface by ``w r_hat x grad_1 Y`` with ``w = T_l c``. The regular static
+field is ``W = A r^l``, whose shear ``mu (W' - W / r)`` is ``mu (l - 1) A`` at ``r = 1``::
+
+    T_l = 1 / (mu (l - 1)) = 2 (1 + nu) / (l - 1)        (l >= 2)
+
+``l = 1`` is a torque about a diameter: the free modes answer it with the inertial body force
+``-rho alpha x r`` of the angular acceleration ``alpha = M / I`` (``W = c r^3``,
+``10 mu c = -alpha``) and the rigid rotation taken out (``W`` orthogonal to ``r``:
+``int W r^3 dr = 0``), which leaves ``T_1 = 2 (1 + nu) / 7``. The modal sums obey
+``T_l = (4 pi l (l + 1) / (2 l + 1)) sum T_n^2 / (m omega_n^2)`` over the toroidal modes of
+order ``l`` (surface amplitude ``T_n = W(1)``): a test.
 
 **The residual on the surface nodes** (:func:`residual_flexibility`). Along the impact axis a
 mode of order ``l`` moves the surface by ``b_l(theta) = [mu P_l(mu), l (P_(l-1)(mu) - mu
@@ -61,6 +77,7 @@ __all__ = [
     "hat_projections",
     "residual_flexibility",
     "static_compliance",
+    "toroidal_static_compliance",
 ]
 
 ORDERS_PER_SPACING = 48.0
@@ -95,6 +112,20 @@ def static_compliance(orders, nu: float) -> np.ndarray:
     out[one, 1, 0] = -0.4 * (1.0 - 2.0 * nu)
     out[one, 1, 1] = 0.4 * (3.0 - nu)
     return out
+
+
+def toroidal_static_compliance(orders, nu: float) -> np.ndarray:
+    """``T_l`` of the module docstring for every order ``l >= 1``, shape (len(orders),);
+    ``E = R = 1``.
+
+    >>> [round(float(t), 12) for t in toroidal_static_compliance([1, 2, 5], 0.3)]
+    [0.371428571429, 2.6, 0.65]
+    """
+    l = np.asarray(orders, dtype=float)
+    if l.ndim != 1 or np.any(l < 1) or np.any(l != np.round(l)):
+        raise InputError("toroidal orders must be a one-dimensional array of integers >= 1")
+    shear = 1.0 / (2.0 * (1.0 + nu))
+    return np.where(l == 1, 1.0 / (7.0 * shear), 1.0 / (shear * np.maximum(l - 1.0, 1.0)))
 
 
 def _modal_weights(l_top: int, nu: float) -> np.ndarray:
