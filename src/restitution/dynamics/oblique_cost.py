@@ -142,7 +142,7 @@ def oblique_work(body, v_normal: float, alpha: float) -> ObliqueWork:
     if not hasattr(body, "node_spacing"):
         return timed_work(body, v_normal, alpha)
     n = len(body)
-    nodes = int(round(2.0 * math.pi / float(body.node_spacing(alpha))))
+    nodes = int(body.wall_node_count(alpha))
     compression = v_normal * float(body.contact_time_estimate(v_normal)) / math.pi
     log_s = (
         _LOG_C
