@@ -198,3 +198,23 @@ def test_refusals_come_before_any_run(cli):
         InputError, match=r"more than the 1 h .*angles of these speeds fit.*--force"
     ):
         oblique_fit(**STEEL, shape="cylinder", friction=MU, speeds=(0.01,))
+
+
+def test_more_modes_than_the_memory_holds_are_refused_before_the_nodes(cli, monkeypatch):
+    """``--modes 2000`` of the sphere needs about 209 GiB for its wall nodes' rows (109446
+    modes of both symmetries on 125536 nodes; measured, stop 81): refused in one line before
+    any node is made, where it died of a NumPy MemoryError; here with the memory made 1 MiB
+    and 20 modes, which the nodes' estimate also exceeds."""
+    import restitution.budget as budget
+    from restitution.bodies.sphere.cap import SphereCap
+
+    def never(*_args, **_kwargs):
+        raise AssertionError("the nodes were made")
+
+    monkeypatch.setattr(SphereCap, "wall_nodes", never)
+    monkeypatch.setattr(budget, "available_memory", lambda: 2.0**20)
+    code, _, err = cli("oblique-fit", "--E", "210e9", "--nu", "0.3", "--rho", "7850",
+                       "--shape", "sphere", "--friction", "0.3", "--angle", "30", "60",
+                       "--modes", "20")  # fmt: skip
+    assert code == 2 and len(err.strip().splitlines()) == 1, err
+    assert "--modes 20 needs about" in err and "ask for fewer modes" in err

@@ -46,6 +46,7 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
 
+from restitution import budget
 from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import body_kind
 from restitution.dynamics.oblique import oblique_collision
@@ -281,6 +282,16 @@ def _plan(r, modes: int | None) -> _Plan:
         plans.append((w, v, alpha))
     bodies = {n: kind.oblique_body(get_modes(nu, count=n, geometry=kind.geometry))
               for n in (modes // 2, modes)}  # fmt: skip
+    top = bodies[modes]
+    for _, _, alpha in plans:  # before the estimates below, which make the nodes
+        budget.check_memory_total(
+            "--modes",
+            modes,
+            top.wall_node_memory(alpha),
+            f"the {len(top)} modes of both symmetries on the wall's "
+            f"{top.wall_node_count(alpha)} nodes",
+            lambda _limit: "ask for fewer modes",
+        )
     microslip = r.oblique_friction_model == MICROSLIP
     settings = MicroslipSettings(kappa=r.oblique_kappa) if microslip else None
 
