@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy.optimize import curve_fit
 
 from restitution.bodies.sphere.cap import cap_modes
 from restitution.bodies.sphere.contact_compliance import (
@@ -21,6 +22,7 @@ from restitution.bodies.sphere.modes import compute_sphere_modes
 from restitution.bodies.sphere.static import toroidal_static_compliance
 from restitution.bodies.sphere.toroidal import toroidal_modes
 from restitution.errors import InputError
+from restitution.quasistatic.oblique import stiffness_ratio
 
 NU = 0.3
 
@@ -53,27 +55,30 @@ def test_toroidal_static_compliance_refuses_order_zero():
 def test_continuum_compliance_tends_to_the_half_space():
     """As the contact shrinks the sphere's compliance tends to the half-space's: Hertz's
     pressure departs like ``a`` (measured -0.62 %, -1.33 %, -2.81 % at ``a = 0.01, 0.02, 0.04``:
-    order 1.09), Mindlin's stick traction like ``a ln(1/a)`` (+2.04 %, +3.39 %, +5.31 %: 0.443,
-    0.434, 0.413 times ``a ln(1/a)``). A wrong factor anywhere would leave a constant."""
+    order 1.09), the flat punch's likewise (-0.81 %, -1.67 %, -3.48 %: order 1.05), Mindlin's
+    stick traction like ``a ln(1/a)`` (+2.04 %, +3.39 %, +5.31 %: 0.443, 0.434, 0.413 times
+    ``a ln(1/a)``). A wrong factor anywhere would leave a constant."""
     radii = np.array([0.01, 0.02, 0.04])
     dev = {
         load: np.array([continuum_compliance(a, NU, load) / half_space_compliance(a, NU, load)
                         for a in radii]) - 1.0
-        for load in LOADS[:2]
+        for load in ("pressure", "stick", "punch")
     }  # fmt: skip
-    order = np.polyfit(np.log(radii), np.log(-dev["pressure"]), 1)[0]
-    assert np.all(dev["pressure"] < 0) and 0.95 < order < 1.2
+    for load in ("pressure", "punch"):
+        order = np.polyfit(np.log(radii), np.log(-dev[load]), 1)[0]
+        assert np.all(dev[load] < 0) and 0.95 < order < 1.2, load
+        assert abs(dev[load][0]) < 0.01, load
     scaled = dev["stick"] / (radii * np.log(1.0 / radii))
     assert np.all(dev["stick"] > 0) and np.ptp(scaled) < 0.1 * scaled.max()
-    assert abs(dev["pressure"][0]) < 0.01 and dev["stick"][0] < 0.025
+    assert dev["stick"][0] < 0.025
 
 
 def test_continuum_compliance_converges_in_its_orders():
     """Doubling the orders (and the quadrature with them) moves the smooth loads by 1.5e-9 and
-    1.2e-9 and the stick traction, whose terms fall like ``l^-2``, by 1.8e-4 (measured at
-    ``a = 0.15``)."""
+    1.2e-9 and the stick traction and the punch, whose terms fall like ``l^-2``, by 1.8e-4 and
+    2.3e-4 (measured at ``a = 0.15``)."""
     a = 0.15
-    for load, tol in zip(LOADS, (1e-7, 4e-4, 1e-7), strict=True):
+    for load, tol in zip(LOADS, (1e-7, 4e-4, 1e-7, 4e-4), strict=True):
         base = continuum_compliance(a, NU, load)
         finer = continuum_compliance(a, NU, load, l_top=2 * int(math.ceil(ORDERS_PER_RADIUS / a)))
         assert abs(finer - base) < tol * base, load
@@ -82,9 +87,9 @@ def test_continuum_compliance_converges_in_its_orders():
 def test_the_modes_are_partial_sums_of_the_continuum():
     """Every mode stores ``f^2 / (2 m omega^2) > 0``, so the truncated body's compliance is
     below the continuum's and rises with the modes (measured at ``a = 0.15``: pressure 0.51,
-    0.68, 0.80, 0.86 of it at 20, 40, 80, 160 axisymmetric modes); the modes of azimuthal
-    order above 1 carry no generalised force (the full cap gives the ``m <= 1`` cap's sums to
-    1e-12)."""
+    0.68, 0.80, 0.86 of it at 20, 40, 80, 160 axisymmetric modes, punch 0.56, 0.69, 0.75,
+    0.81); the modes of azimuthal order above 1 carry no generalised force (the full cap gives
+    the ``m <= 1`` cap's sums to 1e-12)."""
     a = 0.15
     full = {load: continuum_compliance(a, NU, load) for load in LOADS}
     last = dict.fromkeys(LOADS, 0.0)
@@ -104,22 +109,28 @@ def test_the_modes_are_partial_sums_of_the_continuum():
 
 def test_the_modes_converge_to_the_continuum():
     """Two routes that share only the radial shapes' closed forms: the modal sums' deficits
-    ``1 - C_N / C`` at 320, 640 and 1280 axisymmetric modes (``a = 0.15``; measured 0.100,
-    0.071, 0.049 for the pressure, 0.154, 0.116, 0.088 stick, 0.128, 0.089, 0.062 slip: like
-    ``N^-0.5`` and ``N^-0.4``) extrapolate by Aitken's process to a limit of the deficit within
-    3.5e-3 of zero (measured -3.4e-3, -2.4e-3, +3.5e-3). A continuum off by a per cent would
-    leave that per cent."""
+    ``1 - C_N / C`` at 320, 640, 1280 and 2560 axisymmetric modes (``a = 0.15``; measured
+    0.100, 0.071, 0.049, 0.035 for the pressure, 0.154, 0.116, 0.088, 0.065 stick, 0.128,
+    0.089, 0.062, 0.043 slip, 0.143, 0.106, 0.079, 0.059 punch: like ``N^-0.4`` to ``N^-0.54``)
+    fitted by ``d_inf + c N^-p`` leave a limit ``d_inf`` within 0.01 of zero (measured -5.6e-4,
+    -6.8e-3, +2.6e-3, -2.3e-4; their fitted standard errors 1.3e-3, 2.0e-3, 3.9e-4, 4.1e-3).
+    A continuum off by a per cent would leave that per cent. (Aitken's process on three of the
+    counts, used before, scatters by about 0.01 with the counts chosen: the stick's limit is
+    -2.4e-3 from 320-1280 and -1.15e-2 from 640-2560.)"""
     a = 0.15
+    counts = np.array([320.0, 640.0, 1280.0, 2560.0])
     full = {load: continuum_compliance(a, NU, load) for load in LOADS}
     deficit = {load: [] for load in LOADS}
-    for n in (320, 640, 1280):
-        cap = cap_modes(compute_sphere_modes(NU, count=n), azimuthal=1)
+    for n in counts:
+        cap = cap_modes(compute_sphere_modes(NU, count=int(n)), azimuthal=1)
         for load in LOADS:
             deficit[load].append(1.0 - modal_compliance(cap, a, load) / full[load])
-    for load, (d1, d2, d3) in deficit.items():
-        assert d1 > d2 > d3 > 0.0, load
-        limit = (d1 * d3 - d2 * d2) / (d1 + d3 - 2.0 * d2)
-        assert abs(limit) < 0.01, (load, limit)
+    for load, d in deficit.items():
+        assert np.all(np.diff(d) < 0.0) and d[-1] > 0.0, load
+        (limit, _, power), _ = curve_fit(
+            lambda n, d_inf, c, p: d_inf + c * n**-p, counts, d, p0=(0.0, 1.0, 0.5)
+        )
+        assert abs(limit) < 0.01 and 0.3 < power < 0.7, (load, limit, power)
 
 
 def test_bad_input_is_refused():
@@ -129,3 +140,13 @@ def test_bad_input_is_refused():
         continuum_compliance(1.5, NU, "stick")
     with pytest.raises(InputError, match="not given"):
         half_space_compliance(0.1, NU, "slip")
+
+
+def test_the_punch_gives_the_stiffness_ratio_of_the_half_space():
+    """The punch's and the stick traction's half-space compliances are ``1 / k_n`` and
+    ``1 / k_t``, so their ratio is Maw, Barber and Fawcett's ``chi = 2 (1 - nu) / (2 - nu)``
+    (restitution.quasistatic.oblique.stiffness_ratio), at every ``a`` and ``nu``."""
+    for nu in (0.0, 0.3, 0.45):
+        for a in (0.05, 0.3):
+            ratio = half_space_compliance(a, nu, "punch") / half_space_compliance(a, nu, "stick")
+            assert ratio == pytest.approx(stiffness_ratio(nu), rel=1e-14)

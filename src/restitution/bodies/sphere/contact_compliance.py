@@ -19,12 +19,19 @@ disk of radius ``a``; per unit projected area, ``r`` the distance from the axis)
 
 * ``"pressure"``: Hertz's ``p = 3 / (2 pi a^2) sqrt(1 - r^2 / a^2)``, along ``-e1``;
 * ``"stick"``: Mindlin's full-stick traction ``q = 1 / (2 pi a sqrt(a^2 - r^2))``, along ``e2``;
-* ``"slip"``: the pressure's shape along ``e2`` (the gross-slip traction ``mu p``).
+* ``"slip"``: the pressure's shape along ``e2`` (the gross-slip traction ``mu p``);
+* ``"punch"``: the stick traction's shape along ``-e1``, the flat punch's pressure
+  ``1 / (2 pi a sqrt(a^2 - r^2))``. It is the increment of Hertz's pressure when the
+  compression grows at a fixed contact radius, so its compliance is the contact's incremental
+  normal one, ``1 / k_n``, as the stick traction's is ``1 / k_t``: their ratio is the
+  stiffness ratio ``chi = k_t / k_n`` of Maw, Barber and Fawcett's theory
+  (:mod:`restitution.quasistatic.oblique`).
 
 **Compliance** ``C = int t . u dA`` for unit force: twice the strain energy, the work-conjugate
 mean displacement. On the half-space (``a -> 0``) ``C a`` tends to ``3 (1 - nu^2) / 5`` for the
-pressure (its mean ``4/5`` of Hertz's approach ``3 / (4 E* a)``) and to ``(2 - nu) (1 + nu) /
-4`` for the stick traction (Mindlin's uniform displacement ``(2 - nu) / (8 G a)``).
+pressure (its mean ``4/5`` of Hertz's approach ``3 / (4 E* a)``), to ``(2 - nu) (1 + nu) /
+4`` for the stick traction (Mindlin's uniform displacement ``(2 - nu) / (8 G a)``) and to
+``(1 - nu^2) / 2`` for the punch (its uniform displacement ``1 / (2 E* a)``).
 
 **Continuum, per order.** With ``x = cos theta``, ``s = sin theta`` and ``t`` the load per
 unit surface area (``x`` times the one per projected area), the pressure's traction ``(t_r,
@@ -53,10 +60,11 @@ from restitution.errors import InputError
 
 __all__ = ["LOADS", "continuum_compliance", "half_space_compliance", "modal_compliance"]
 
-LOADS = ("pressure", "stick", "slip")
+LOADS = ("pressure", "stick", "slip", "punch")
 """The loads of the module docstring."""
 
-_TANGENTIAL = frozenset(LOADS[1:])
+_TANGENTIAL = frozenset(LOADS[1:3])
+_SINGULAR = frozenset(LOADS[1::2])  # the flat punch's shape, 1 / sqrt(a^2 - r^2)
 
 ORDERS_PER_RADIUS = 800.0
 """:func:`continuum_compliance` sums the orders to ``ORDERS_PER_RADIUS / a``. The smooth loads'
@@ -84,7 +92,7 @@ def _quadrature(a: float, load: str, points: int) -> tuple[np.ndarray, np.ndarra
     w = 0.25 * math.pi * w
     r = a * np.sin(sigma)
     # (load per projected area) r dr / d sigma: smooth in sigma for both shapes
-    if load == LOADS[1]:
+    if load in _SINGULAR:
         weight = np.sin(sigma) / (2.0 * math.pi)
     else:
         weight = 3.0 / (2.0 * math.pi) * np.sin(sigma) * np.cos(sigma) ** 2
@@ -92,8 +100,8 @@ def _quadrature(a: float, load: str, points: int) -> tuple[np.ndarray, np.ndarra
 
 
 def half_space_compliance(a: float, nu: float, load: str) -> float:
-    """The half-space's compliance of the module docstring (``a -> 0``), ``pressure`` and
-    ``stick`` only.
+    """The half-space's compliance of the module docstring (``a -> 0``), all loads but
+    ``slip``.
 
     >>> round(half_space_compliance(0.5, 0.3, "stick"), 12)
     1.105
@@ -103,6 +111,8 @@ def half_space_compliance(a: float, nu: float, load: str) -> float:
         return 0.6 * (1.0 - nu * nu) / a
     if load == LOADS[1]:
         return (2.0 - nu) * (1.0 + nu) / (4.0 * a)
+    if load == LOADS[3]:
+        return 0.5 * (1.0 - nu * nu) / a
     raise InputError("the half-space's slip compliance is not given; use continuum_compliance")
 
 
