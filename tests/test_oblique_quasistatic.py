@@ -231,6 +231,22 @@ def test_beta_depends_on_psi_only(model, tol):
 
 
 @pytest.mark.parametrize("model", MODELS)
+def test_beta_depends_on_chi_only_through_psi_and_k_chi(model):
+    """Scaling the tangential spring's stiffness by ``chi`` and its slip bound by ``1 / chi``
+    leaves ``beta`` a function of ``psi`` and ``K chi`` alone (docs/oblique.md uses it to read
+    law (b) at another ``chi`` through ``inertia_factor``): ``nu = 0.3`` with ``K = 7/2`` and
+    ``nu = 0`` (``chi = 1``) with ``K = 7/2 x 0.8235`` at one ``psi`` give one ``beta``
+    (measured at most 1.2e-15 apart for the microslip law, 6.2e-14 for the no-microslip law's
+    DOP853, at ``psi = 0.25`` and 2.5)."""
+    kw = {"springs": 200} if model == MICROSLIP else {}
+    chi0 = stiffness_ratio(0.0)
+    for psi in (0.25, 2.5):
+        ref = beta_of_psi([psi], NU, model=model, **kw)[0]
+        other = beta_of_psi([psi], 0.0, inertia_factor=3.5 * CHI / chi0, model=model, **kw)[0]
+        assert_allclose(other, ref, atol=1e-9)
+
+
+@pytest.mark.parametrize("model", MODELS)
 def test_angular_momentum_about_the_contact_point_is_kept(model):
     """The normal force acts through the centre and T at the contact point: ``I omega + m R v_t``
     is kept, ``I = m R^2 / (K - 1)``."""
