@@ -46,6 +46,12 @@ and the toroidal ``r_hat x grad_1 (N P_l^1 sin(phi))`` (``a_l, b_l, c_l``)::
 (``P = N P_l^1``, ``P' = dP/dtheta``, ``dOmega_theta = s dtheta``, ``|Y|^2 = 4 pi / (2 l +
 1)``), and ``C = sum_l |Y|^2 (a U + l (l + 1) (b W + c w))`` with ``[U, W] = K_l [a, b]`` and
 ``w = T_l c``. The quadrature runs in ``r = a sin(sigma)``, which makes both loads smooth.
+
+**Annuli.** :func:`annulus_flexibility` takes the same sums between the piecewise-constant
+tractions of annuli of the projected plane, normal or tangential (in line): the flexibility
+of a contact problem solved on the sphere itself rather than with the half-space's traction
+shapes (tools/sphere_partial_slip.py). :func:`half_space_annulus_flexibility` is its
+closed form on the half-space.
 """
 
 from __future__ import annotations
@@ -53,12 +59,20 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.special import roots_legendre
+from scipy.special import hyp2f1, roots_legendre
 
 from restitution.bodies.sphere.static import static_compliance, toroidal_static_compliance
 from restitution.errors import InputError
 
-__all__ = ["LOADS", "continuum_compliance", "half_space_compliance", "modal_compliance"]
+__all__ = [
+    "DIRECTIONS",
+    "LOADS",
+    "annulus_flexibility",
+    "continuum_compliance",
+    "half_space_annulus_flexibility",
+    "half_space_compliance",
+    "modal_compliance",
+]
 
 LOADS = ("pressure", "stick", "slip", "punch")
 """The loads of the module docstring."""
@@ -68,10 +82,11 @@ _SINGULAR = frozenset(LOADS[1::2])  # the flat punch's shape, 1 / sqrt(a^2 - r^2
 
 ORDERS_PER_RADIUS = 800.0
 """:func:`continuum_compliance` sums the orders to ``ORDERS_PER_RADIUS / a``. The smooth loads'
-terms fall fast (doubling the cut moves them by 1.5e-9); the stick traction's fall like
-``l^-2`` (its edge singularity), so its tail beyond the cut is about 3.6e-4 of the sum, which
-it underestimates by that much (doubling the cut moves it by 1.8e-4 at ``a = 0.15`` and 1.9e-4
-at ``a = 0.3``: half the tail)."""
+terms fall fast (doubling the cut moves them by 1.5e-9); the stick traction's and the punch's
+fall like ``l^-2`` (their edge singularity), so their tails beyond the cut are about 3.6e-4 and
+4.6e-4 of the sums, which they underestimate by that much (doubling the cut moves the stick's
+by 1.8e-4 at ``a = 0.15`` and 1.9e-4 at ``a = 0.3``, the punch's by 2.3e-4: half the tail).
+The annuli of :func:`annulus_flexibility` jump at their edges and converge the same way."""
 
 
 def _check(a: float, load: str) -> float:
@@ -116,6 +131,61 @@ def half_space_compliance(a: float, nu: float, load: str) -> float:
     raise InputError("the half-space's slip compliance is not given; use continuum_compliance")
 
 
+def _coefficients(
+    theta: np.ndarray, w: np.ndarray, l_top: int, tangential: bool
+) -> tuple[np.ndarray, ...]:
+    """The loads' coefficients of every order (module docstring): ``(A, B)`` of the normal
+    loads or ``(a, b, c)`` of the tangential ones, each of shape ``(l_top + 1, loads)``, for
+    loads given by their weights ``w`` (shape ``(loads, len(theta))``) at the polar angles
+    ``theta``."""
+    x, s = np.cos(theta), np.sin(theta)
+    proj = np.zeros((l_top + 1, 3, w.shape[0]))
+    # normal:     int t (-x P_l),  int t (-s^2 P_l')
+    # tangential: int t s P_l^1,   int t (x dP_l^1 + P_l^1/s),   -int t (dP_l^1 + x P_l^1/s)
+    # with P_l^1 = s P_l', P_l^1 / s = P_l', dP_l^1/dtheta = l (l + 1) P_l - x P_l' (the
+    # Legendre equation), so the last is -l (l + 1) int t P_l
+    wx, ws2, wxx = w * x, w * s * s, w * x * x
+    p_prev, p = np.zeros_like(x), np.ones_like(x)  # P_(l-1), P_l
+    d_prev, d = np.zeros_like(x), np.zeros_like(x)  # their x-derivatives
+    for l in range(l_top + 1):
+        if tangential:
+            ll = l * (l + 1.0)
+            proj[l, 0], proj[l, 2] = ws2 @ d, -ll * (w @ p)
+            proj[l, 1] = ll * (wx @ p) - wxx @ d + w @ d
+        else:
+            proj[l, 0], proj[l, 1] = -(wx @ p), -(ws2 @ d)
+        p_prev, p = p, ((2 * l + 1) * x * p - l * p_prev) / (l + 1)
+        d_prev, d = d, (d_prev + (2 * l + 1) * p_prev if l else np.ones_like(x))
+    orders = np.arange(l_top + 1, dtype=float)
+    ll = (orders * (orders + 1.0))[:, None]
+    norm = (4.0 * math.pi / (2.0 * orders + 1.0))[:, None]
+    safe = np.where(ll > 0, ll, 1.0)
+    if not tangential:
+        return 2.0 * math.pi * proj[:, 0] / norm, 2.0 * math.pi * proj[:, 1] / (safe * norm)
+    n1 = np.sqrt(2.0 / safe) * (ll > 0)
+    tang = math.pi * n1 / (safe * norm)
+    return math.pi * n1 * proj[:, 0] / norm, tang * proj[:, 1], tang * proj[:, 2]
+
+
+def _bilinear(coefficients: tuple[np.ndarray, ...], nu: float) -> np.ndarray:
+    """``int t_i . u(t_j) dA`` for every pair of the loads of ``coefficients``
+    (:func:`_coefficients`): ``sum_l |Y|^2 (a_i U_j + l (l + 1) (b_i W_j + c_i w_j))``."""
+    l_top = coefficients[0].shape[0] - 1
+    orders = np.arange(l_top + 1, dtype=float)
+    ll = orders * (orders + 1.0)
+    norm = 4.0 * math.pi / (2.0 * orders + 1.0)
+    K = static_compliance(orders, nu)
+    a, b = coefficients[:2]
+    U = K[:, 0, 0, None] * a + K[:, 0, 1, None] * b
+    W = K[:, 1, 0, None] * a + K[:, 1, 1, None] * b
+    out = (a * norm[:, None]).T @ U + (b * (norm * ll)[:, None]).T @ W
+    if len(coefficients) == 3:
+        c = coefficients[2]
+        T = np.r_[0.0, toroidal_static_compliance(orders[1:], nu)]
+        out += (c * (norm * ll * T)[:, None]).T @ c
+    return out
+
+
 def continuum_compliance(
     a: float, nu: float, load: str, *, l_top: int | None = None, points: int | None = None
 ) -> float:
@@ -128,43 +198,80 @@ def continuum_compliance(
     if points is None:
         points = max(64, int(16 * l_top * math.asin(a) / (2.0 * math.pi)) + 1)
     theta, w = _quadrature(a, load, int(points))
-    x, s = np.cos(theta), np.sin(theta)
-    tangential = load in _TANGENTIAL
-    # per order, the projections' integrals (module docstring) before the norms
-    proj = np.zeros((l_top + 1, 3))
-    # normal:     int t (-x P_l),  int t (-s^2 P_l')
-    # tangential: int t s P_l^1,   int t (x dP_l^1 + P_l^1/s),   -int t (dP_l^1 + x P_l^1/s)
-    # with P_l^1 = s P_l', P_l^1 / s = P_l', dP_l^1/dtheta = l (l + 1) P_l - x P_l' (the
-    # Legendre equation), so the last is -l (l + 1) int t P_l
-    wx, ws2, wxx = w * x, w * s * s, w * x * x
-    p_prev, p = np.zeros_like(x), np.ones_like(x)  # P_(l-1), P_l
-    d_prev, d = np.zeros_like(x), np.zeros_like(x)  # their x-derivatives
-    for l in range(l_top + 1):
-        if tangential:
-            ll = l * (l + 1.0)
-            proj[l] = (ws2 @ d, ll * (wx @ p) - wxx @ d + w @ d, -ll * (w @ p))
-        else:
-            proj[l] = (-(wx @ p), -(ws2 @ d), 0.0)
-        p_prev, p = p, ((2 * l + 1) * x * p - l * p_prev) / (l + 1)
-        d_prev, d = d, (d_prev + (2 * l + 1) * p_prev if l else np.ones_like(x))
-    orders = np.arange(l_top + 1, dtype=float)
-    ll = orders * (orders + 1.0)
-    norm = 4.0 * math.pi / (2.0 * orders + 1.0)
-    K = static_compliance(orders, nu)
-    if not tangential:
-        A = 2.0 * math.pi * proj[:, 0] / norm
-        B = 2.0 * math.pi * np.divide(proj[:, 1], ll * norm, out=np.zeros(l_top + 1), where=ll > 0)
-        U = K[:, 0, 0] * A + K[:, 0, 1] * B
-        W = K[:, 1, 0] * A + K[:, 1, 1] * B
-        return float(np.sum(norm * (A * U + ll * B * W)))
-    n1 = np.sqrt(np.divide(2.0, ll, out=np.zeros(l_top + 1), where=ll > 0))
-    T = np.r_[0.0, toroidal_static_compliance(orders[1:], nu)]
-    a_l = math.pi * n1 * proj[:, 0] / norm
-    tang = np.divide(math.pi * n1, ll * norm, out=np.zeros(l_top + 1), where=ll > 0)
-    b_l, c_l = tang * proj[:, 1], tang * proj[:, 2]
-    U = K[:, 0, 0] * a_l + K[:, 0, 1] * b_l
-    W = K[:, 1, 0] * a_l + K[:, 1, 1] * b_l
-    return float(np.sum(norm * (a_l * U + ll * (b_l * W + c_l * T * c_l))))
+    coefficients = _coefficients(theta, w[None, :], int(l_top), load in _TANGENTIAL)
+    return float(_bilinear(coefficients, nu)[0, 0])
+
+
+DIRECTIONS = ("normal", "tangential")
+"""The annuli's loads in :func:`annulus_flexibility`: along ``-e1`` (a pressure) or ``e2``."""
+
+
+def _annuli(edges, direction: str) -> np.ndarray:
+    if direction not in DIRECTIONS:
+        raise InputError(f"direction must be one of {', '.join(DIRECTIONS)}, got {direction!r}")
+    edges = np.asarray(edges, dtype=float)
+    if edges.ndim != 1 or edges.size < 2 or edges[0] < 0.0 or edges[-1] >= 1.0:
+        raise InputError("edges must be at least two radii in [0, 1) (R)")
+    if np.any(np.diff(edges) <= 0.0):
+        raise InputError("edges must increase")
+    return edges
+
+
+def annulus_flexibility(
+    edges, nu: float, direction: str, *, l_top: int | None = None, points: int | None = None
+) -> np.ndarray:
+    """The Galerkin flexibility of the annuli ``edges[i] <= r < edges[i + 1]`` of the
+    projected contact plane on the elastic sphere: ``G[i, j] = int_i u . e dA``, the
+    displacement along ``e`` (``-e1`` or ``e2`` by ``direction``) summed over annulus ``i``
+    (per projected area) under the unit traction per projected area along ``e`` on annulus
+    ``j``. Symmetric; ``q @ G @ q`` is ``C`` of the module docstring for the piecewise-constant
+    traction ``q`` (so twice its strain energy).
+
+    Summed to order ``l_top`` (default ``ORDERS_PER_RADIUS / edges[-1]``), with ``points``
+    Gauss nodes in ``r`` on each annulus (default 12 plus one per radian of the highest
+    order's phase across it). A piecewise-constant traction jumps at every edge, so the terms
+    fall like the stick traction's.
+    """
+    edges = _annuli(edges, direction)
+    if l_top is None:
+        l_top = int(math.ceil(ORDERS_PER_RADIUS / edges[-1]))
+    width = np.diff(edges)
+    if points is None:
+        points = 12 + int(math.ceil(l_top * width.max()))
+    t, w = roots_legendre(int(points))
+    r = edges[:-1, None] + 0.5 * width[:, None] * (t + 1.0)  # (annuli, points)
+    weight = 0.5 * width[:, None] * w * r  # unit load per projected area, r dr
+    n = width.size
+    loads = np.zeros((n, r.size))
+    for i in range(n):
+        loads[i, i * r.shape[1] : (i + 1) * r.shape[1]] = weight[i]
+    theta = np.arcsin(r.ravel())
+    G = _bilinear(_coefficients(theta, loads, int(l_top), direction == DIRECTIONS[1]), nu)
+    return 0.5 * (G + G.T)
+
+
+def half_space_annulus_flexibility(edges, nu: float, direction: str) -> np.ndarray:
+    """:func:`annulus_flexibility` on the half-space, in closed form.
+
+    The normal displacement's transform is ``2 p(k) / (E* k)``, and for the in-line
+    traction the displacement along it, averaged over the ring, is ``(2 - nu) / (2 (1 -
+    nu))`` times that (Cerruti's). An annulus's transform is ``[r J1(k r) / k]`` between its
+    edges, and ``int J1(k r) J1(k s) dk / k^2 = (s / 2) 2F1(1/2, -1/2; 2; s^2 / r^2)`` for
+    ``s <= r`` (Weber and Schafheitlin), so ``G = (4 pi / E*) sum +- r s I(r, s)`` over the
+    pairs of edges.
+    """
+    edges = _annuli(edges, direction)
+    hi = np.maximum.outer(edges, edges)
+    lo = np.minimum.outer(edges, edges)
+    ratio = np.divide(lo, hi, out=np.zeros_like(hi), where=hi > 0)
+    pair = np.outer(edges, edges) * 0.5 * lo * hyp2f1(0.5, -0.5, 2.0, ratio * ratio)
+    diff = np.zeros((edges.size - 1, edges.size))
+    idx = np.arange(edges.size - 1)
+    diff[idx, idx], diff[idx, idx + 1] = -1.0, 1.0
+    G = 4.0 * math.pi * (1.0 - nu * nu) * (diff @ pair @ diff.T)
+    if direction == DIRECTIONS[1]:
+        G *= (2.0 - nu) / (2.0 * (1.0 - nu))
+    return G
 
 
 def modal_compliance(cap, a: float, load: str, *, points: int = 200) -> float:
