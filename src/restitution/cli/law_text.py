@@ -260,11 +260,20 @@ def oblique_lines(a) -> list[str]:
             )
         if p.beta_quasistatic is not None:
             ours = " (this route's low-speed limit, in beta's error)"
+            finite = p.beta_microslip_finite
             one, micro = ("", ours) if r.oblique_kappa is not None else (ours, "")
+            if finite is not None:
+                micro = ""
             lines.append(
                 f"{'':>9} quasistatic Hertz-Mindlin at this impact: beta = "
                 f"{p.beta_quasistatic:.5f} with one stick/slip state{one}, "
                 f"{p.beta_microslip:.5f} with microslip{micro}"
+                + (
+                    ""
+                    if finite is None
+                    else f" (on a half-space); {finite:.5f} with "
+                    f"microslip on the finite sphere's own flexibility{ours}"
+                )  # fmt: skip
             )
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
