@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 OUT    ?= paper-output
 
-.PHONY: setup paper paper-quick law law-sphere law-pair law-sphere-pair damping-figure plastic-figure sphere-figures test test-slow lint bench clean
+.PHONY: setup paper paper-quick law law-sphere law-pair law-sphere-pair damping-figure plastic-figure oblique-sphere-figure sphere-figures test test-slow lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -68,6 +68,11 @@ damping-figure: $(STAMP)
 # A steel ball's plastic, viscous and wave losses on one pulse (docs/plasticity.md; a minute).
 plastic-figure: $(STAMP)
 	$(BIN)/python -m restitution.reproduction.figures.plastic_mechanisms --figures docs/figures
+
+# A steel ball's beta on its own flexibility against Maw, Barber and Fawcett's laws on the
+# half-space (docs/oblique.md, "The finite sphere's own partial slip"; a minute).
+oblique-sphere-figure: $(STAMP)
+	$(BIN)/python -m restitution.reproduction.figures.sphere_partial_slip --figures docs/figures
 
 # The sphere's convergence in the number of modes (docs/spheres.md), through the result store.
 sphere-figures: $(STAMP)

@@ -107,3 +107,22 @@ def test_the_tool_runs():
         env={"PYTHONPATH": str(root / "src"), "OPENBLAS_NUM_THREADS": "1"},
     )  # fmt: skip
     assert "| 0.005 | 10 | 0.3 | -0.1672 |" in out.stdout
+
+
+def test_the_figure_s_curves(tmp_path):
+    """docs/figures/sphere_partial_slip.png on a small grid (20 annuli): laws (a) and (b) are
+    oblique_impact's; in gross slip (``X = 8``, ``psi = 6.6``) all three give the impulse
+    ratio; in partial slip the finite sphere is above law (b), more so at the faster speed,
+    and its distance from law (b) falls with the contact radius."""
+    from restitution.reproduction.figures import sphere_partial_slip as figure
+
+    c = figure.compute([0.3, 8.0], (0.1, 10.0), (0.1, 10.0), annuli=20)
+    v0 = 1.0 / figure.STEEL_C_M_S
+    assert c.law_b[0] == oblique_impact(v0, 0.3 * 0.3 * v0, 0.3, NU).beta
+    exact = float(gross_slip_beta(8.0 * stiffness_ratio(NU), NU))
+    for beta in (c.law_a[1], c.law_b[1], *c.finite[:, 1]):
+        assert beta == pytest.approx(exact, abs=1e-6)
+    assert c.law_b[0] < c.finite[0, 0] < c.finite[1, 0]
+    assert np.all(c.gap > 0.0) and np.all(np.diff(c.gap, axis=1) > 0.0)
+    figure.plot(c, tmp_path / "f.png")
+    assert (tmp_path / "f.png").stat().st_size > 10_000
