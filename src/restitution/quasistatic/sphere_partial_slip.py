@@ -64,6 +64,7 @@ __all__ = [
     "REACH",
     "AnnularContact",
     "PartialSlipImpact",
+    "box_qp",
     "partial_slip_impact",
     "partial_slip_seconds",
 ]
@@ -137,7 +138,7 @@ class AnnularContact:
         return nnls(self._chol.T, rhs)[0]
 
 
-def _box_qp(H: np.ndarray, c: np.ndarray, bound: np.ndarray, stick: np.ndarray,
+def box_qp(H: np.ndarray, c: np.ndarray, bound: np.ndarray, stick: np.ndarray,
             sign: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
     """``min Q.H.Q / 2 + Q.c`` with ``|Q| <= bound``, from the guess ``stick`` (the others at
     ``sign * bound``). Returns ``Q`` and the final set and signs."""
@@ -189,7 +190,7 @@ def run(contact: AnnularContact, v: float, v_tangential: float, mu: float, nu: f
         if not bound.any():
             anchor, Q = np.full(n, s_new), np.zeros(n)  # out of contact: every annulus free
         else:
-            Q, stick, sign = _box_qp(contact.Ht, s_new - anchor, bound, stick, sign)
+            Q, stick, sign = box_qp(contact.Ht, s_new - anchor, bound, stick, sign)
             anchor = s_new + contact.Ht @ Q  # unchanged where it sticks
         force_new, T_new = float(P.sum()), float(Q.sum())
         vd -= 0.5 * dt * (force + force_new) / SPHERE_MASS
