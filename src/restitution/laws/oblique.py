@@ -30,11 +30,10 @@ on the half-space); for ``--friction-model microslip``, friction at every wall n
 :func:`restitution.dynamics.oblique_microslip.microslip_collision`, also
 ``beta_microslip_finite``, the microslip on the finite body's own flexibility
 (:data:`FINITE_BODY`; the sphere's departs from law (b) at order 0.7-0.9 in the contact
-radius ``a``: 0.388 against
-0.316 for a steel ball at 1 m/s and 30 degrees, ``mu = 0.3``). ``beta``'s error then also
-holds, in quadrature, the distance from the route's own low-speed limit (``beta_quasistatic``
-for one stick/slip state; ``beta_microslip_finite``, or ``beta_microslip`` without it, for
-microslip), as
+radius ``a``: 0.388 against 0.316 for a steel ball at 1 m/s and 30 degrees, ``mu = 0.3``).
+``beta``'s error then also holds, in quadrature, the distance from the route's own low-speed
+limit (``beta_quasistatic`` for one stick/slip state; ``beta_microslip_finite``, or
+``beta_microslip`` without it, for microslip), as
 ``epsilon_normal``'s holds the head-on law's: one doubling of the modes understates how far 40
 modes are from that limit (the ball at 1 m/s: within one such change at 1 of 5 angles,
 docs/oblique.md). Above the quasistatic regime the distance also holds the impact's dynamics: an
