@@ -49,12 +49,12 @@ def test_the_sphere_converges_and_slides_as_the_impulse_ratio_says():
     and 2000 steps: 2.5e-3 here) is below 5e-3; at ``tan(theta)/mu = 6`` the contact slides
     throughout and ``beta = -1 + 2 K chi / psi`` (measured within 1e-9)."""
     v = 0.005
-    b80, _ = run(_contact(v, "sphere", 80), v, 0.3 * MU * v, MU, NU, 8000)
+    b80, _ = run(_contact(v, "finite", 80), v, 0.3 * MU * v, MU, NU, 8000)
     out = partial_slip_impact(v, 0.3 * MU * v, MU, NU)
     assert out.beta == pytest.approx(b80, abs=1e-3) and out.beta_change < 5e-3
     assert out.epsilon_normal == pytest.approx(1.0, abs=1e-6)
     exact = float(gross_slip_beta(6.0 * stiffness_ratio(NU), NU))
-    assert run(_contact(v, "sphere"), v, 6.0 * MU * v, MU, NU, 4000)[0] == pytest.approx(
+    assert run(_contact(v, "finite"), v, 6.0 * MU * v, MU, NU, 4000)[0] == pytest.approx(
         exact, abs=1e-6
     )
 
@@ -67,7 +67,7 @@ def test_the_sphere_tends_to_law_b_as_the_contact_shrinks():
     law (b) at every speed."""
     gap = []
     for v in (0.005, 0.001, 2e-4, 4e-5):
-        beta, _ = run(_contact(v, "sphere"), v, 0.3 * MU * v, MU, NU, 4000)
+        beta, _ = run(_contact(v, "finite"), v, 0.3 * MU * v, MU, NU, 4000)
         gap.append(beta - oblique_impact(v, 0.3 * MU * v, MU, NU).beta)
     gap = np.array(gap)
     order = np.log(gap[:-1] / gap[1:]) / math.log(5.0**0.4)

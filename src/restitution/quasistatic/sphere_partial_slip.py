@@ -69,8 +69,9 @@ __all__ = [
     "partial_slip_seconds",
 ]
 
-BODIES = ("sphere", "half-space")
-"""The flexibilities of :meth:`AnnularContact.build`."""
+BODIES = ("finite", "half-space")
+"""The flexibilities of :meth:`AnnularContact.build`: the finite sphere's own (every order
+summed) or the half-space's (closed form)."""
 
 REACH = 1.25
 """The annuli reach this many times Hertz's largest contact radius (the sphere's, stiffer
