@@ -45,7 +45,7 @@ from restitution.bodies.sphere.cap import cap_modes
 from restitution.bodies.sphere.contact_compliance import annulus_flexibility
 from restitution.bodies.sphere.modes import compute_sphere_modes
 from restitution.quasistatic.hertz_sphere import CONTACT_TIME_CONSTANT, SPHERE_MASS
-from restitution.quasistatic.sphere_partial_slip import REACH, box_qp, hertz_peak
+from restitution.quasistatic.sphere_partial_slip import REACH, box_qp, hertz_peak, mean_height
 
 NU, MU, V, KAPPA = 0.3, 0.5, 0.005, 64.0
 _K = 3.5  # 1 + m R^2 / I of the solid sphere
@@ -74,8 +74,7 @@ class ModalContact:
     def __init__(self, edges: np.ndarray, Hn: np.ndarray, alpha: float) -> None:
         self.edges, self.Hn, self.alpha = edges, Hn, alpha
         self.area = math.pi * np.diff(edges**2)
-        r2 = edges**2
-        self.h = np.diff(math.pi * r2 + 2.0 * math.pi / 3.0 * (1.0 - r2) ** 1.5) / self.area
+        self.h = mean_height(edges)
         self._P = np.zeros(edges.size - 1)
 
     def normal(self, delta: float) -> np.ndarray:

@@ -65,6 +65,7 @@ __all__ = [
     "AnnularContact",
     "PartialSlipImpact",
     "box_qp",
+    "mean_height",
     "partial_slip_impact",
     "partial_slip_seconds",
 ]
@@ -87,6 +88,16 @@ def partial_slip_seconds(v: float, nu: float) -> float:
     runs at ``a`` = 0.017-0.106 (1.2-4.6 s, within 0.2 s; one core of the development
     machine, 5 Dec 2026)."""
     return 0.56 + 0.068 / math.sqrt(hertz_peak(v, nu))
+
+
+def mean_height(edges: np.ndarray, parabola: bool = False) -> np.ndarray:
+    """Each annulus's mean height above the sphere's lowest point, ``int h dA / A``: ``h = 1 -
+    sqrt(1 - r^2)`` (the sphere's own) or ``r^2 / 2`` (Hertz's parabola)."""
+    r2 = np.asarray(edges, dtype=float) ** 2
+    area = math.pi * np.diff(r2)
+    if parabola:
+        return np.diff(math.pi * r2 * r2 / 4.0) / area
+    return np.diff(math.pi * r2 + 2.0 * math.pi / 3.0 * (1.0 - r2) ** 1.5) / area
 
 
 def hertz_peak(v: float, nu: float) -> float:
@@ -122,11 +133,7 @@ class AnnularContact:
 
     def __post_init__(self) -> None:
         self.area = math.pi * np.diff(self.edges**2)
-        r2 = self.edges**2
-        if self.parabola:  # int h dA over each annulus, over its area
-            self.h = np.diff(math.pi * r2 * r2 / 4.0) / self.area
-        else:
-            self.h = np.diff(math.pi * r2 + 2.0 * math.pi / 3.0 * (1.0 - r2) ** 1.5) / self.area
+        self.h = mean_height(self.edges, self.parabola)
         self._chol = np.linalg.cholesky(self.Hn)  # Hn = L L^T
 
     def normal(self, delta: float) -> np.ndarray:
