@@ -189,17 +189,32 @@ def test_converges_in_the_wall_nodes(cap20):
 
 
 @pytest.mark.slow
-def test_low_speed_against_maw_barber_fawcett(cap20):
-    """At v = 0.005, alpha = 500, beta(tan(theta) / mu) of the modal sphere against the
-    quasistatic no-microslip law (restitution.quasistatic.oblique with Mindlin's chi = 2 (1 -
-    nu) / (2 - nu), K = 7/2: docs/oblique.md's table), as this model has one stick/slip state:
-    the shape agrees (beta near -1 at small psi, reversed between, the gross-slip line), the
-    differences are 0.10 and 0.028 in partial slip and 0.009 in gross slip (measured; the last
-    the lever at mu = 0.5). Not a converged error: docs/oblique.md ("The sphere", low speed)."""
+def test_low_speed_against_maw_barber_fawcett_and_the_route_s_own_twin(cap20, cap20_m1):
+    """At v = 0.005, alpha = 500, beta(tan(theta) / mu) of the modal sphere (one stick/slip
+    state) against its own quasistatic twin: the same contact (traction spread like the
+    pressure) on the same 20 modes' flexibility and wall, without the modes' inertia
+    (tools/sphere_modal_partial_slip.py --one-state, 60 annuli: -0.832 and +0.063 at
+    tan(theta)/mu = 0.3 and 2, measured 0.020 and 0.047 from the modal route); in gross slip
+    (8) the impulse ratio's line, 0.009 off (measured; the lever at mu = 0.5). Maw, Barber and
+    Fawcett's law (a) (-0.954, +0.138, -0.125) is not this route's limit
+    (docs/oblique.md, "The one-state route's own limit is not law (a)": the one-state contact
+    on the rigid wall's finite sphere is -0.048 at 0.3); on this soft wall the modal values sit
+    near it by the wall's and the truncation's effects, which the twin holds."""
+    import importlib
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+    try:
+        twin = importlib.import_module("sphere_modal_partial_slip")
+    finally:
+        sys.path.pop(0)
     v, mu = 0.005, 0.5
+    assert (twin.V, twin.MU, twin.NU) == (v, mu, NU)
     chi = stiffness_ratio(NU)
     ratio = np.array([0.3, 2.0, 8.0])  # tan(theta) / mu
     modal = np.array([oblique_collision(cap20, v, r * mu * v, mu, 500.0).beta for r in ratio])
-    quasistatic = beta_of_psi(ratio * chi, NU, inertia_factor=K, model="no-microslip")
-    assert modal[0] < -0.8 and modal[1] > 0.05 and modal[2] < -0.1
-    assert np.all(np.abs(modal - quasistatic) <= [0.11, 0.03, 0.01]), modal - quasistatic
+    statics = [twin.impact(cap20_m1, 500.0, 64.0, r, one_state=True)[0] for r in ratio[:2]]
+    assert np.all(np.abs(modal[:2] - statics) <= [0.04, 0.07]), modal[:2] - statics
+    gross = beta_of_psi(ratio[2:] * chi, NU, inertia_factor=K, model="no-microslip")
+    assert abs(modal[2] - gross[0]) <= 0.01 and modal[0] < -0.8 and modal[1] > 0.05

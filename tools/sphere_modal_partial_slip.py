@@ -29,7 +29,10 @@ Usage (from the project's root, with its venv)::
         --modes 80 160 --alpha 500 8000
 
 (``--modes 0 --alpha 8000 16000 32000 64000 128000``: the continuum's, docs/oblique.md's
-table; about 30 s an impact.)
+table; about 30 s an impact.) ``--one-state`` gives the twin of the one-state route instead
+(:func:`restitution.dynamics.oblique.oblique_collision`: one stick/slip state spread like the
+pressure, :class:`~restitution.quasistatic.sphere_one_state.OneStateFriction`, no springs),
+docs/oblique.md ("The one-state route's own limit").
 """
 
 from __future__ import annotations
@@ -45,6 +48,7 @@ from restitution.bodies.sphere.cap import cap_modes
 from restitution.bodies.sphere.contact_compliance import annulus_flexibility
 from restitution.bodies.sphere.modes import compute_sphere_modes
 from restitution.quasistatic.hertz_sphere import CONTACT_TIME_CONSTANT, SPHERE_MASS
+from restitution.quasistatic.sphere_one_state import OneStateFriction
 from restitution.quasistatic.sphere_partial_slip import REACH, box_qp, hertz_peak, mean_height
 
 NU, MU, V, KAPPA = 0.3, 0.5, 0.005, 64.0
@@ -112,9 +116,11 @@ class ModalContact:
 
 
 def impact(cap, alpha: float, kappa: float, tan_over_mu: float, *, annuli: int = 60,
-           steps: int = 6000) -> tuple[float, float]:  # fmt: skip
+           steps: int = 6000, one_state: bool = False) -> tuple[float, float]:  # fmt: skip
     """``beta`` and ``epsilon_normal`` of the truncated sphere's quasistatic impact (``cap``
-    ``None``: the continuous sphere's, every order summed)."""
+    ``None``: the continuous sphere's, every order summed); ``one_state``: with the one-state
+    route's friction (:class:`~restitution.quasistatic.sphere_one_state.OneStateFriction`,
+    no springs: ``kappa`` unused) instead of microslip."""
     radius = REACH * math.sqrt(hertz_peak(V, NU))
     edges = np.linspace(0.0, radius, annuli + 1)
     area = math.pi * np.diff(edges**2)
@@ -135,21 +141,25 @@ def impact(cap, alpha: float, kappa: float, tan_over_mu: float, *, annuli: int =
     anchor, Q = np.zeros(n), np.zeros(n)
     stick, sign = np.zeros(n, bool), -np.ones(n)
     kick = _K / SPHERE_MASS
+    one = OneStateFriction(Ht) if one_state else None
     for _ in range(4 * steps):
         delta_new = delta + dt * vd - 0.5 * dt * dt * force / SPHERE_MASS
         s_new = s + dt * vc + 0.5 * dt * dt * kick * T
         P = contact.normal(delta_new)
         live = P > 1e-14 * max(P.max(), 1e-300)
         Q = np.zeros(n)
-        if live.any():
+        if one is not None:
+            Q = one.step(P, s, s_new, MU) * P / max(P.sum(), 1e-300)
+        elif live.any():
             i = np.flatnonzero(live)
             H = Ht[np.ix_(i, i)] + np.diag(1.0 / (kappa * alpha * P[i]))
             Qi, st, sg = box_qp(H, s_new - anchor[i], MU * P[i], stick[i], sign[i])
             Q[i], stick[i], sign[i] = Qi, st, sg
             anchor[i] = s_new + H @ Qi  # unchanged where it sticks (its spring included)
-        free = ~live
-        anchor[free] = s_new + (Ht @ Q)[free]
-        stick[free] = False
+        if one is None:
+            free = ~live
+            anchor[free] = s_new + (Ht @ Q)[free]
+            stick[free] = False
         force_new, T_new = float(P.sum()), float(Q.sum())
         vd -= 0.5 * dt * (force + force_new) / SPHERE_MASS
         vc += 0.5 * dt * kick * (T + T_new)
@@ -168,6 +178,8 @@ def main() -> None:
     parser.add_argument("--tan-over-mu", type=float, default=0.3)
     parser.add_argument("--annuli", type=int, default=60)
     parser.add_argument("--steps", type=int, default=6000)
+    parser.add_argument("--one-state", action="store_true",
+                        help="the one-state route's friction instead of microslip")  # fmt: skip
     args = parser.parse_args()
     print("| modes | alpha | kappa | beta | epsilon_normal | s |")
     print("|---|---|---|---|---|---|")
@@ -176,7 +188,7 @@ def main() -> None:
         for alpha in args.alpha:
             start = time.perf_counter()
             beta, eps = impact(cap, alpha, args.kappa, args.tan_over_mu, annuli=args.annuli,
-                               steps=args.steps)  # fmt: skip
+                               steps=args.steps, one_state=args.one_state)  # fmt: skip
             print(f"| {n} | {alpha:g} | {args.kappa:g} | {beta:.4f} | {eps:.6f} | "
                   f"{time.perf_counter() - start:.0f} |", flush=True)  # fmt: skip
 

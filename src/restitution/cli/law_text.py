@@ -259,22 +259,12 @@ def oblique_lines(a) -> list[str]:
                 f"({p.head_on_law_status}): read epsilon_normal against it"
             )
         if p.beta_quasistatic is not None:
-            ours = " (this route's low-speed limit, in beta's error)"
-            finite = p.beta_microslip_finite
-            one, micro = ("", ours) if r.oblique_kappa is not None else (ours, "")
-            if finite is not None:
-                micro = ""
             lines.append(
-                f"{'':>9} quasistatic Hertz-Mindlin at this impact: beta = "
-                f"{p.beta_quasistatic:.5f} with one stick/slip state{one}, "
-                f"{p.beta_microslip:.5f} with microslip{micro}"
-                + (
-                    ""
-                    if finite is None
-                    else f" (on a half-space); {finite:.5f} with "
-                    f"microslip on the finite sphere's own flexibility{ours}"
-                )  # fmt: skip
+                f"{'':>9} quasistatic Hertz-Mindlin at this impact (on a half-space): beta = "
+                f"{p.beta_quasistatic:.5f} with one stick/slip state (law (a), the DEM codes'), "
+                f"{p.beta_microslip:.5f} with microslip (law (b))"
             )
+            lines.append(_route_limit_line(p, r.oblique_kappa is not None))
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
         lines.append(
@@ -284,3 +274,19 @@ def oblique_lines(a) -> list[str]:
             f"{sum(p.wall_time_s for p in a.points):.1f} s"
         )
     return lines
+
+
+def _route_limit_line(p, microslip: bool) -> str:
+    """The oblique route's own low-speed limit under a point (the one in ``beta``'s error)."""
+    friction = "microslip" if microslip else "one stick/slip state spread like the pressure"
+    finite = p.beta_microslip_finite if microslip else p.beta_one_state_finite
+    half_space = p.beta_microslip if microslip else p.beta_one_state
+    if finite is None:
+        return (
+            f"{'':>9} this route's low-speed limit (in beta's error): beta = {half_space:.5f}, "
+            f"{friction} on a half-space"
+        )
+    return (
+        f"{'':>9} this route's low-speed limit (in beta's error): beta = {finite:.5f}, "
+        f"{friction} on the finite sphere's own flexibility ({half_space:.5f} on a half-space)"
+    )

@@ -23,21 +23,25 @@ one wall is ten times further from the head-on limit than from half its modes.
 
 Where the kind names its quasistatic oblique theory (:attr:`~restitution.bodies.kinds.BodyKind.
 oblique_quasistatic`, the sphere's Hertz-Mindlin, :data:`QUASISTATIC`), each point also carries
-that theory's ``beta`` at its speeds: ``beta_quasistatic`` without microslip (one stick/slip state
-for the contact, Maw, Barber and Fawcett's law (a): the modal model's own limit at low speed) and
-``beta_microslip`` with Mindlin's microslip (law (b), what a continuum's local friction gives
-on the half-space); for ``--friction-model microslip``, friction at every wall node by
-:func:`restitution.dynamics.oblique_microslip.microslip_collision`, also
-``beta_microslip_finite``, the microslip on the finite body's own flexibility
-(:data:`FINITE_BODY`; the sphere's departs from law (b) at order 0.7-0.9 in the contact
-radius ``a``: 0.388 against 0.316 for a steel ball at 1 m/s and 30 degrees, ``mu = 0.3``).
-``beta``'s error then also holds, in quadrature, the distance from the route's own low-speed
-limit (``beta_quasistatic`` for one stick/slip state; ``beta_microslip_finite``, or
-``beta_microslip`` without it, for microslip), as
-``epsilon_normal``'s holds the head-on law's: one doubling of the modes understates how far 40
-modes are from that limit (the ball at 1 m/s: within one such change at 1 of 5 angles,
-docs/oblique.md). Above the quasistatic regime the distance also holds the impact's dynamics: an
-upper estimate there.
+that theory's ``beta`` at its speeds, on the half-space: ``beta_quasistatic`` without microslip
+(Maw, Barber and Fawcett's law (a), the DEM codes' Hertz-Mindlin), ``beta_microslip`` with
+Mindlin's microslip (law (b), what a continuum's local friction gives) and ``beta_one_state``
+with the modal one-state route's own contact (one stick/slip state whose traction is spread like
+the pressure: :mod:`restitution.quasistatic.sphere_one_state`; not law (a), whose traction is
+Mindlin's: -0.488 against -0.954 at ``tan(theta)/mu = 0.3``). Beside them, the route's own
+friction on the finite body's flexibility (:data:`FINITE_BODY`): ``beta_one_state_finite`` for
+one stick/slip state, ``beta_microslip_finite`` for ``--friction-model microslip`` (friction at
+every wall node by :func:`restitution.dynamics.oblique_microslip.microslip_collision`). Both
+depart from their half-space values at order 0.7-0.9 in the contact radius ``a``: for a steel
+ball at 1 m/s and 30 degrees, ``mu = 0.3``, 0.343 against 0.266 (one state) and 0.388 against
+0.316 (microslip). ``beta``'s error then also holds, in quadrature, the distance from the
+route's own low-speed limit (:meth:`_Limits.route`: the finite body's, or beyond its reach the
+half-space's), as ``epsilon_normal``'s holds the head-on law's: one doubling of the modes
+understates how far 40 modes are from that limit (docs/oblique.md, "The one-state route's own
+limit": at ``v = 0.005 c``, ``tan(theta)/mu = 0.3``, the wall ``alpha = 80 / delta_max`` alone
+keeps the continuum's one-state ``beta`` 0.17 below the rigid wall's, and 20-80 modes keep
+their quasistatic twin 0.33-0.51 below the continuum's). Above the quasistatic regime the
+distance also holds the impact's dynamics: an upper estimate there.
 
 A kind without an oblique route, or one whose kind says why ``law`` does not serve it
 (:attr:`~restitution.bodies.kinds.BodyKind.oblique_law`), is refused where the request is built
@@ -66,6 +70,11 @@ from restitution.errors import InputError
 from restitution.laws.units import BODIES
 from restitution.quasistatic.oblique import MODELS as QUASISTATIC_MODELS
 from restitution.quasistatic.oblique import oblique_impact as quasistatic_impact
+from restitution.quasistatic.sphere_one_state import (
+    one_state_half_space,
+    one_state_impact,
+    one_state_seconds,
+)
 from restitution.quasistatic.sphere_partial_slip import partial_slip_impact, partial_slip_seconds
 from restitution.status import Status
 
@@ -129,13 +138,18 @@ class ObliquePoint:
     wall_time_s : float
         Both runs, s.
     beta_quasistatic, beta_microslip : float or None
-        The kind's quasistatic oblique theory at this impact (module docs): without microslip
-        (the one-state route's low-speed limit, in its ``beta_error``) and with it (on the
-        half-space: law (b)); ``None`` where the kind has none, or at angle 0.
-    beta_microslip_finite : float or None
-        For the microslip route, the same impact with microslip on the finite body's own
-        flexibility (:data:`FINITE_BODY`: that route's low-speed limit, in its
-        ``beta_error``); ``None`` for the one-state route, or where the kind has none.
+        The kind's quasistatic oblique theory at this impact on the half-space (module docs):
+        without microslip (law (a), the DEM codes' Hertz-Mindlin) and with it (law (b));
+        ``None`` where the kind has none, or at angle 0.
+    beta_one_state : float or None
+        The same with one stick/slip state whose traction is spread like the pressure, the
+        modal one-state route's own contact, on the half-space
+        (:func:`restitution.quasistatic.sphere_one_state.one_state_half_space`).
+    beta_microslip_finite, beta_one_state_finite : float or None
+        The route's friction (microslip, or one state) on the finite body's own flexibility
+        (:data:`FINITE_BODY`): that route's low-speed limit, in its ``beta_error``; ``None``
+        for the other route, or where the kind has none. Beyond the finite body's reach the
+        error takes the half-space's (``beta_microslip``, ``beta_one_state``).
     """
 
     speed_m_s: float
@@ -164,6 +178,8 @@ class ObliquePoint:
     beta_quasistatic: float | None = None
     beta_microslip: float | None = None
     beta_microslip_finite: float | None = None
+    beta_one_state: float | None = None
+    beta_one_state_finite: float | None = None
 
     @property
     def epsilon(self) -> float:
@@ -317,9 +333,9 @@ def _plan(r, modes: int | None) -> _Plan:
         return oblique_collision(b, v, v * tan, r.friction, a)
 
     seconds = sum(work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
-    if microslip and kind.oblique_quasistatic in FINITE_BODY_SECONDS:
+    if kind.oblique_quasistatic in FINITE_BODY_SECONDS and tan != 0.0 and r.friction:
         estimate = FINITE_BODY_SECONDS[kind.oblique_quasistatic]
-        seconds += sum(estimate(v, nu) for _, v, _ in plans)
+        seconds += sum(estimate(v, nu, microslip) for _, v, _ in plans)
     how = (
         "planned Verlet steps times one timed step; measured runs took 0.88-4.8 times it"
         if microslip
@@ -378,64 +394,103 @@ def oblique_answer(
                          1.0 + body.mass / body.inertia)  # fmt: skip
 
 
-def _hertz_mindlin(v: float, v_tangential: float, mu: float, nu: float) -> tuple[float, float]:
+def _hertz_mindlin(v: float, v_tangential: float, mu: float, nu: float):
     """``beta`` of Hertz-Mindlin's quasistatic oblique impact of the solid sphere on the rigid
     wall (:func:`restitution.quasistatic.oblique.oblique_impact`, ``K = 7/2``), without and with
-    microslip: about 0.01 s and 0.13 s."""
-    return tuple(
+    microslip (about 0.01 s and 0.13 s), and of the one-state contact spread like the pressure
+    on the half-space (:func:`restitution.quasistatic.sphere_one_state.one_state_half_space`,
+    about 0.01 s)."""
+    laws = tuple(
         float(quasistatic_impact(v, v_tangential, mu, nu, model=model).beta)
         for model in QUASISTATIC_MODELS
     )
+    one_state = -1.0 if mu == 0.0 else one_state_half_space(v, v_tangential, mu, nu)[0]
+    return (*laws, one_state)
 
 
-def _finite_sphere(v: float, v_tangential: float, mu: float, nu: float) -> float:
-    """``beta`` of the finite sphere's own quasistatic partial slip
-    (:func:`restitution.quasistatic.sphere_partial_slip.partial_slip_impact`): about 1-5 s."""
+def _finite_sphere(v: float, v_tangential: float, mu: float, nu: float, microslip: bool) -> float:
+    """``beta`` of the finite sphere's own quasistatic impact with the route's friction: with
+    microslip (:func:`restitution.quasistatic.sphere_partial_slip.partial_slip_impact`, about
+    1-5 s) or with one state spread like the pressure
+    (:func:`restitution.quasistatic.sphere_one_state.one_state_impact`, about 1-4 s)."""
     if mu == 0.0:
         return -1.0  # no tangential force: the contact point keeps its velocity
-    return float(partial_slip_impact(v, v_tangential, mu, nu).beta)
+    impact = partial_slip_impact if microslip else one_state_impact
+    return float(impact(v, v_tangential, mu, nu).beta)
 
 
-QUASISTATIC: dict[str, Callable[[float, float, float, float], tuple[float, float]]] = {
+def _finite_sphere_seconds(v: float, nu: float, microslip: bool) -> float:
+    """The estimated seconds of :func:`_finite_sphere`."""
+    return partial_slip_seconds(v, nu) if microslip else one_state_seconds(v, nu)
+
+
+QUASISTATIC: dict[str, Callable[[float, float, float, float], tuple[float, float, float]]] = {
     "hertz-mindlin": _hertz_mindlin,
 }
 """A kind's quasistatic oblique theory by its name (:attr:`~restitution.bodies.kinds.BodyKind.
-oblique_quasistatic`): ``(v, v_tangential, mu, nu) -> (beta without, beta with microslip)``,
+oblique_quasistatic`): ``(v, v_tangential, mu, nu) -> (beta without microslip (law (a)),
+with microslip (law (b)), with one state spread like the pressure)``, all on the half-space,
 speeds in the kind's ``c``."""
 
-FINITE_BODY: dict[str, Callable[[float, float, float, float], float]] = {
+FINITE_BODY: dict[str, Callable[[float, float, float, float, bool], float]] = {
     "hertz-mindlin": _finite_sphere,
 }
-"""Beside a kind's quasistatic theory, the same impact with microslip on the finite body's own
-surface flexibility instead of the half-space's (``(v, v_tangential, mu, nu) -> beta``): the
-microslip route's low-speed limit, where the theory's is only its limit as the contact
-shrinks (docs/oblique.md, "The finite sphere's own partial slip")."""
+"""Beside a kind's quasistatic theory, the same impact on the finite body's own surface
+flexibility instead of the half-space's, with the route's friction (``(v, v_tangential, mu, nu,
+microslip) -> beta``): the route's low-speed limit, where the half-space's is only its limit as
+the contact shrinks (docs/oblique.md, "The finite sphere's own partial slip", "The one-state
+route's own limit")."""
 
-FINITE_BODY_SECONDS: dict[str, Callable[[float, float], float]] = {
-    "hertz-mindlin": partial_slip_seconds,
+FINITE_BODY_SECONDS: dict[str, Callable[[float, float, bool], float]] = {
+    "hertz-mindlin": _finite_sphere_seconds,
 }
-"""The estimated seconds of :data:`FINITE_BODY`'s answer at ``(v, nu)``."""
+"""The estimated seconds of :data:`FINITE_BODY`'s answer at ``(v, nu, microslip)``."""
+
+
+@dataclass(frozen=True)
+class _Limits:
+    """The quasistatic ``beta`` of one impact (:func:`_quasistatic_betas`); ``None`` where
+    none applies."""
+
+    law_a: float | None = None
+    law_b: float | None = None
+    one_state: float | None = None
+    finite: float | None = None
+
+    def route(self, microslip: bool) -> float | None:
+        """The route's own low-speed limit: its friction on the finite body or, beyond that
+        body's reach, on the half-space (law (b) for microslip; the one-state contact spread
+        like the pressure, not law (a), for one stick/slip state)."""
+        if self.finite is not None:
+            return self.finite
+        return self.law_b if microslip else self.one_state
 
 
 def _quasistatic_betas(kind, v: float, v_tangential: float, mu: float, nu: float,
-                       microslip: bool = False):  # fmt: skip
-    """The kind's quasistatic ``beta`` at this impact: without and with microslip and, for the
-    microslip route, with microslip on the finite body (:data:`FINITE_BODY`); ``None`` for
-    each that does not apply: no theory, no tangential motion (angle 0), or a speed beyond the
-    theory's reach (Hertz's ``delta << R``: the sphere's refuses ``v > 0.529 c``, far inside
+                       microslip: bool = False) -> _Limits:  # fmt: skip
+    """The kind's quasistatic ``beta`` at this impact (:class:`_Limits`): on the half-space,
+    without and with microslip and with one state spread like the pressure, and on the finite
+    body with the route's friction (:data:`FINITE_BODY`); ``None`` for each that does not
+    apply: no theory, no tangential motion (angle 0), or a speed beyond the theory's reach
+    (Hertz's ``delta << R``: the sphere's refuses ``v > 0.529 c``, far inside
     ``large-deformation``; the finite sphere's annuli refuse ``v > 0.233 c`` at ``nu =
     0.3``). ``beta``'s error is then the change from half the modes alone."""
     if kind.oblique_quasistatic is None or v_tangential == 0.0:
-        return None, None, None
+        return _Limits()
     try:
-        one, micro = QUASISTATIC[kind.oblique_quasistatic](v, v_tangential, mu, nu)
+        law_a, law_b, one_state = QUASISTATIC[kind.oblique_quasistatic](v, v_tangential, mu, nu)
     except InputError:
-        return None, None, None
-    finite = FINITE_BODY.get(kind.oblique_quasistatic) if microslip else None
+        return _Limits()
+    limits = _Limits(law_a, law_b, one_state)
+    finite = FINITE_BODY.get(kind.oblique_quasistatic)
     try:
-        return one, micro, None if finite is None else finite(v, v_tangential, mu, nu)
+        return (
+            limits
+            if finite is None
+            else _Limits(law_a, law_b, one_state, finite(v, v_tangential, mu, nu, microslip))
+        )
     except InputError:
-        return one, micro, None
+        return limits
 
 
 def _beta_error(fine, coarse, quasistatic: float | None) -> float | None:
@@ -466,7 +521,7 @@ def _normal_error(fine, coarse, law_point) -> float:
 
 def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits, microslip) -> ObliquePoint:
     """One speed's answer; ``beta``'s error holds the distance from the route's own quasistatic
-    limit: law (a) for one stick/slip state, law (b) for friction at every node."""
+    limit (:meth:`_Limits.route`)."""
     fine, coarse = runs[modes], runs[modes // 2]
     c = grain.c_m_s
     spin, spin_err = fine.spin * c, abs(fine.spin - coarse.spin) * c
@@ -487,7 +542,7 @@ def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits, microsli
         epsilon_normal=fine.epsilon_normal,
         epsilon_normal_error=_normal_error(fine, coarse, law_point),
         beta=beta,
-        beta_error=_beta_error(fine, coarse, _route_limit(limits, microslip)),
+        beta_error=_beta_error(fine, coarse, limits.route(microslip)),
         spin_R_m_s=spin,
         spin_R_m_s_error=spin_err,
         spin_rad_s=None if rad is None else spin * rad,
@@ -502,16 +557,9 @@ def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits, microsli
         status=status,
         advice=advice,
         wall_time_s=wall,
-        beta_quasistatic=limits[0],
-        beta_microslip=limits[1],
-        beta_microslip_finite=limits[2],
+        beta_quasistatic=limits.law_a,
+        beta_microslip=limits.law_b,
+        beta_one_state=limits.one_state,
+        beta_microslip_finite=limits.finite if microslip else None,
+        beta_one_state_finite=None if microslip else limits.finite,
     )
-
-
-def _route_limit(limits, microslip: bool) -> float | None:
-    """The route's own low-speed limit among the quasistatic ``beta`` of
-    :func:`_quasistatic_betas`: law (a) for one stick/slip state; for friction at every node
-    the finite body's partial slip, or law (b) where there is none."""
-    if not microslip:
-        return limits[0]
-    return limits[1] if limits[2] is None else limits[2]

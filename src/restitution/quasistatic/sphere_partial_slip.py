@@ -62,9 +62,13 @@ from restitution.quasistatic.hertz_sphere import CONTACT_TIME_CONSTANT, SPHERE_M
 __all__ = [
     "BODIES",
     "REACH",
+    "INERTIA_FACTOR",
     "AnnularContact",
+    "Microslip",
     "PartialSlipImpact",
+    "annular_impact",
     "box_qp",
+    "checked_impact",
     "mean_height",
     "partial_slip_impact",
     "partial_slip_seconds",
@@ -79,7 +83,8 @@ REACH = 1.25
 normally, is smaller); an impact whose outermost annulus presses is refused."""
 
 _MAX_REACH = 0.9  # R: beyond this the annuli wrap too far round the sphere for its flat wall
-_INERTIA_FACTOR = 3.5  # K = 1 + m R^2 / I of the solid sphere
+INERTIA_FACTOR = 3.5
+"""``K = 1 + m R^2 / I`` of the solid sphere."""
 
 
 def partial_slip_seconds(v: float, nu: float) -> float:
@@ -173,18 +178,42 @@ def box_qp(H: np.ndarray, c: np.ndarray, bound: np.ndarray, stick: np.ndarray,
     return Q, stick, np.where(stick, sign, np.sign(Q))
 
 
+class Microslip:
+    """Friction point by point on the annuli (module docs): each annulus sticks to its point of
+    the wall, ``anchor``, or slips to a new one; the forces from :func:`box_qp`, warm-started
+    from the step before."""
+
+    def __init__(self, Ht: np.ndarray) -> None:
+        n = Ht.shape[0]
+        self.Ht = Ht
+        self.anchor = np.zeros(n)
+        self.stick, self.sign = np.zeros(n, bool), -np.ones(n)
+
+    def step(self, P: np.ndarray, s_old: float, s_new: float, mu: float) -> float:
+        """The tangential force after the contact point moved rigidly from ``s_old`` to
+        ``s_new``, with the annuli's normal forces ``P`` at the step's end."""
+        bound = mu * P
+        if not bound.any():
+            self.anchor = np.full(P.size, s_new)  # out of contact: every annulus free
+            return 0.0
+        Q, self.stick, self.sign = box_qp(self.Ht, s_new - self.anchor, bound, self.stick,
+                                          self.sign)  # fmt: skip
+        self.anchor = s_new + self.Ht @ Q  # unchanged where it sticks
+        return float(Q.sum())
+
+
 def run(contact: AnnularContact, v: float, v_tangential: float, mu: float, nu: float,
-        steps: int) -> tuple[float, float]:  # fmt: skip
+        steps: int, friction=Microslip) -> tuple[float, float]:  # fmt: skip
     """``beta`` and ``epsilon_normal`` of one impact on ``contact``, ``steps`` per Hertz
-    contact time."""
+    contact time; ``friction(Ht)`` makes the tangential law (``step(P, s_old, s_new, mu) ->
+    force``): :class:`Microslip` or
+    :class:`~restitution.quasistatic.sphere_one_state.OneStateFriction`."""
     dm = hertz_peak(v, nu)
     dt = CONTACT_TIME_CONSTANT * dm / v / steps
-    n = contact.edges.size - 1
-    kick = _INERTIA_FACTOR / SPHERE_MASS
+    kick = INERTIA_FACTOR / SPHERE_MASS
+    law = friction(contact.Ht)
     delta, vd, force = 0.0, v, 0.0
     s, vc, T = 0.0, v_tangential, 0.0
-    anchor, Q = np.zeros(n), np.zeros(n)
-    stick, sign = np.zeros(n, bool), -np.ones(n)
     for step in range(3 * steps):
         delta_new = delta + dt * vd - 0.5 * dt * dt * force / SPHERE_MASS
         s_new = s + dt * vc + 0.5 * dt * dt * kick * T
@@ -194,13 +223,7 @@ def run(contact: AnnularContact, v: float, v_tangential: float, mu: float, nu: f
                 f"the contact reached the outermost annulus (r = {contact.edges[-1]:.4g} R); "
                 "widen the annuli"
             )
-        bound = mu * P
-        if not bound.any():
-            anchor, Q = np.full(n, s_new), np.zeros(n)  # out of contact: every annulus free
-        else:
-            Q, stick, sign = box_qp(contact.Ht, s_new - anchor, bound, stick, sign)
-            anchor = s_new + contact.Ht @ Q  # unchanged where it sticks
-        force_new, T_new = float(P.sum()), float(Q.sum())
+        force_new, T_new = float(P.sum()), law.step(P, s, s_new, mu)
         vd -= 0.5 * dt * (force + force_new) / SPHERE_MASS
         vc += 0.5 * dt * kick * (T + T_new)
         delta, s, force, T = delta_new, s_new, force_new, T_new
@@ -254,12 +277,27 @@ def partial_slip_impact(v_normal: float, v_tangential: float, mu: float, nu: flo
         Annuli across the contact's reach and steps per Hertz contact time (about 1 s at the
         defaults; the change from half of each is ``beta_change``).
     """
+    v, vt, mu, nu = checked_impact(v_normal, v_tangential, mu, nu)
+    return annular_impact(run, v, vt, mu, nu, annuli=annuli, steps=steps)
+
+
+def checked_impact(v_normal, v_tangential, mu, nu) -> tuple[float, float, float, float]:
+    """The impact's speeds (``c``, both ``> 0``), friction coefficient (``> 0``) and Poisson
+    number, checked."""
     nu = SPHERE.check_nu(nu)
     v = real(v_normal, "v_normal", "> 0 (c)")
     vt = real(v_tangential, "v_tangential", "> 0 (c)")
     mu = real(mu, "mu", "> 0")
     if not (v > 0.0 and vt > 0.0 and 0.0 < mu < math.inf):
         raise InputError(f"pass v_normal > 0, v_tangential > 0 and mu > 0; got {v}, {vt}, {mu}")
+    return v, vt, mu, nu
+
+
+def annular_impact(impact, v: float, vt: float, mu: float, nu: float, *, annuli: int,
+                   steps: int) -> PartialSlipImpact:  # fmt: skip
+    """The answer of ``impact(contact, v, vt, mu, nu, steps) -> (beta, epsilon_normal)`` on
+    the finite sphere's annuli at ``annuli`` and ``steps``, with its change from half of each
+    (checked inputs; the annuli's reach is checked here)."""
     if not (is_integer(annuli) and is_integer(steps) and annuli >= 10 and steps >= 400):
         raise InputError(f"annuli >= 10 and steps >= 400 must be integers, got {annuli}, {steps}")
     a_hertz = math.sqrt(hertz_peak(v, nu))
@@ -273,10 +311,10 @@ def partial_slip_impact(v_normal: float, v_tangential: float, mu: float, nu: flo
     out = []
     for n, k in ((int(annuli), int(steps)), (int(annuli) // 2, int(steps) // 2)):
         contact = AnnularContact.build(REACH * a_hertz, nu, annuli=n)
-        out.append(run(contact, v, vt, mu, nu, k))
+        out.append(impact(contact, v, vt, mu, nu, k))
     (beta, eps), (coarse, _) = out
     vc_after = -beta * vt
-    vt_after = vt + (vc_after - vt) / _INERTIA_FACTOR  # J / m = (dv_c) / K
+    vt_after = vt + (vc_after - vt) / INERTIA_FACTOR  # J / m = (dv_c) / K
     return PartialSlipImpact(
         beta=beta,
         beta_change=abs(beta - coarse),
