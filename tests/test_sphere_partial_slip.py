@@ -14,6 +14,7 @@ import pytest
 
 from restitution.errors import InputError
 from restitution.quasistatic.oblique import gross_slip_beta, oblique_impact, stiffness_ratio
+from restitution.quasistatic.sphere_one_state import one_state_half_space
 from restitution.quasistatic.sphere_partial_slip import (
     REACH,
     AnnularContact,
@@ -113,7 +114,8 @@ def test_the_figure_s_curves(tmp_path):
     """docs/figures/sphere_partial_slip.png on a small grid (20 annuli): laws (a) and (b) are
     oblique_impact's; in gross slip (``X = 8``, ``psi = 6.6``) all three give the impulse
     ratio; in partial slip the finite sphere is above law (b), more so at the faster speed,
-    and its distance from law (b) falls with the contact radius."""
+    and its distance from law (b) falls with the contact radius; the same holds for the one-state
+    contact against its closed-form half-space law (bottom row)."""
     from restitution.reproduction.figures import sphere_partial_slip as figure
 
     c = figure.compute([0.3, 8.0], (0.1, 10.0), (0.1, 10.0), annuli=20)
@@ -124,5 +126,10 @@ def test_the_figure_s_curves(tmp_path):
         assert beta == pytest.approx(exact, abs=1e-6)
     assert c.law_b[0] < c.finite[0, 0] < c.finite[1, 0]
     assert np.all(c.gap > 0.0) and np.all(np.diff(c.gap, axis=1) > 0.0)
+    assert c.one_state[0] == one_state_half_space(v0, 0.3 * 0.3 * v0, 0.3, NU)[0]
+    for beta in (c.one_state[1], *c.finite_one_state[:, 1]):
+        assert beta == pytest.approx(exact, abs=1e-6)
+    assert c.one_state[0] < c.finite_one_state[0, 0] < c.finite_one_state[1, 0]
+    assert np.all(c.gap_one_state > 0.0) and np.all(np.diff(c.gap_one_state, axis=1) > 0.0)
     figure.plot(c, tmp_path / "f.png")
     assert (tmp_path / "f.png").stat().st_size > 10_000
