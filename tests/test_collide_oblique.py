@@ -20,7 +20,7 @@ import pytest
 from _cli_checks import one_line_error
 
 import restitution.budget as budget
-from restitution.dynamics import oblique, oblique_cost, oblique_microslip
+from restitution.dynamics import oblique, oblique_cost, oblique_microslip, oblique_residual
 from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
 
 FAST = ("--v", "0.05", "--alpha", "100", "--modes", "20")
@@ -147,11 +147,17 @@ def test_microslip_is_the_python_route_with_its_settings(cli):
           "-1"), ["--kappa"]),
         (("--friction-model", "microslip",), ["--friction-model", "no effect", "--angle"]),
         (("--kappa", "16",), ["--kappa", "no effect", "--angle"]),
+        (("--angle", "30", "--friction", "0.5", "--friction-model", "residual"),
+         ["--friction-model residual", "the sphere has and the disk has not yet"]),
+        (("--geometry", "sphere", "--nu", "0.3", "--angle", "30", "--friction", "0.5",
+          "--friction-model", "residual", "--kappa", "16"),
+         ["--kappa", "no effect with --friction-model residual"]),
     ],
 )  # fmt: skip
 def test_refusals_are_one_line(cli, monkeypatch, args, words):
     monkeypatch.setattr(oblique, "oblique_collision", _never)
     monkeypatch.setattr(oblique_microslip, "microslip_collision", _never)
+    monkeypatch.setattr(oblique_residual, "residual_collision", _never)
     base = () if "--v" in args else ("--v", "0.05")
     code, _, err = cli("collide", *base, *args)
     one_line_error(code, err, *words)
@@ -209,6 +215,25 @@ def test_sphere_gross_sliding_is_the_impulse_ratio(cli):
         d["lever_correction"] + d["normal_torque_correction"], abs=1e-12
     )
     assert abs(d["energy_balance"]) < 1e-9
+
+
+def test_sphere_residual_is_the_python_route(cli):
+    """``--friction-model residual``: the JSON is residual_collision's result for the same cap
+    (every azimuthal order; the same code path: equal to rounding), one phase, Verlet steps."""
+    from restitution.bodies.cache import get_modes
+    from restitution.bodies.sphere.cap import cap_modes
+
+    args = ("--geometry", "sphere", "--nu", "0.3", "--angle", "45", "--friction", "0.5",
+            "--v", "0.01", "--alpha", "300", "--modes", "6")  # fmt: skip
+    d = _json(cli, *args, "--friction-model", "residual")
+    assert d["inputs"]["friction_model"] == "residual" and d["inputs"]["kappa"] is None
+    assert d["step_kind"] == "Verlet"
+    assert d["phases"] == [{"phase": oblique_residual.RESIDUAL, "t": 0.0}]
+    cap = cap_modes(get_modes(0.3, count=6, geometry="sphere"))
+    direct = oblique_residual.residual_collision(cap, 0.01, 0.01, 0.5, 300.0)
+    assert d["beta"] == pytest.approx(direct.beta, abs=1e-12)
+    assert d["epsilon_normal"] == pytest.approx(direct.epsilon_normal, abs=1e-12)
+    assert abs(d["energy_balance"]) < 1e-6 and d["friction_work"] > 0
 
 
 def test_sphere_default_modes_and_its_estimate():

@@ -31,7 +31,7 @@ Usage (from the project's root, with its venv)::
 (``--modes 0 --alpha 8000 16000 32000 64000 128000``: the continuum's, docs/oblique.md's
 table; about 30 s an impact.) ``--one-state`` gives the twin of the one-state route instead
 (:func:`restitution.dynamics.oblique.oblique_collision`: one stick/slip state spread like the
-pressure, :class:`~restitution.quasistatic.sphere_one_state.OneStateFriction`, no springs),
+pressure, :class:`~restitution.dynamics.one_state.OneStateFriction`, no springs),
 docs/oblique.md ("The one-state route's own limit").
 """
 
@@ -42,33 +42,19 @@ import math
 import time
 
 import numpy as np
-from scipy.special import roots_legendre
 
 from restitution.bodies.sphere.cap import cap_modes
-from restitution.bodies.sphere.contact_compliance import annulus_flexibility
+from restitution.bodies.sphere.contact_compliance import (
+    annulus_flexibility,
+    modal_annulus_flexibility,
+)
 from restitution.bodies.sphere.modes import compute_sphere_modes
+from restitution.dynamics.one_state import OneStateFriction
 from restitution.quasistatic.hertz_sphere import CONTACT_TIME_CONSTANT, SPHERE_MASS
-from restitution.quasistatic.sphere_one_state import OneStateFriction
 from restitution.quasistatic.sphere_partial_slip import REACH, box_qp, hertz_peak, mean_height
 
 NU, MU, V, KAPPA = 0.3, 0.5, 0.005, 64.0
 _K = 3.5  # 1 + m R^2 / I of the solid sphere
-
-
-def modal_flexibility(cap, edges: np.ndarray, tangential: bool, *, points: int = 16,
-                      azimuths: int = 8) -> np.ndarray:  # fmt: skip
-    """``G`` between the annuli ``edges`` from the modes of ``cap`` (module docs)."""
-    part = cap.take(cap.m == int(tangential))
-    t, w = roots_legendre(points)
-    width = np.diff(edges)
-    r = edges[:-1, None] + 0.5 * width[:, None] * (t + 1.0)  # (annuli, points)
-    weight = 0.5 * width[:, None] * w * r * (2.0 * math.pi / azimuths)  # r dr dphi
-    phi = 2.0 * math.pi * np.arange(azimuths) / azimuths
-    theta = np.repeat(np.arcsin(r.ravel()), azimuths)
-    d1, d2, _ = part.displacement(theta, np.tile(phi, r.size))
-    shape = (d2 if tangential else -d1).reshape(r.shape[0], r.shape[1] * azimuths, len(part))
-    f = np.einsum("ip,ipk->ik", np.repeat(weight, azimuths, axis=1), shape)
-    return (f / (part.mass * part.omega**2)) @ f.T
 
 
 class ModalContact:
@@ -119,7 +105,7 @@ def impact(cap, alpha: float, kappa: float, tan_over_mu: float, *, annuli: int =
            steps: int = 6000, one_state: bool = False) -> tuple[float, float]:  # fmt: skip
     """``beta`` and ``epsilon_normal`` of the truncated sphere's quasistatic impact (``cap``
     ``None``: the continuous sphere's, every order summed); ``one_state``: with the one-state
-    route's friction (:class:`~restitution.quasistatic.sphere_one_state.OneStateFriction`,
+    route's friction (:class:`~restitution.dynamics.one_state.OneStateFriction`,
     no springs: ``kappa`` unused) instead of microslip."""
     radius = REACH * math.sqrt(hertz_peak(V, NU))
     edges = np.linspace(0.0, radius, annuli + 1)
@@ -128,8 +114,8 @@ def impact(cap, alpha: float, kappa: float, tan_over_mu: float, *, annuli: int =
     if cap is None:  # the continuum's flexibility
         Hn, Ht = (annulus_flexibility(edges, NU, d) / scale for d in ("normal", "tangential"))
     else:
-        Hn = modal_flexibility(cap, edges, False) / scale
-        Ht = modal_flexibility(cap, edges, True) / scale
+        Hn, Ht = (modal_annulus_flexibility(cap, edges, d) / scale
+                  for d in ("normal", "tangential"))  # fmt: skip
     contact = ModalContact(edges, Hn, alpha)
     vt = tan_over_mu * MU * V
     dm = hertz_peak(V, NU)

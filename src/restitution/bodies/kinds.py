@@ -253,6 +253,10 @@ class BodyKind:
         :data:`restitution.laws.oblique.QUASISTATIC`'s keys: the sphere's ``"hertz-mindlin"``),
         served beside ``law --angle``'s ``beta``; ``None``: none is clean (the disk, whose
         tangential compliance has no Mindlin constant, docs/oblique.md).
+    oblique_residual : bool
+        Whether this kind's oblique body knows the static flexibility of the modes it drops at
+        its contact (``contact_residual``), so that ``collide --angle --friction-model
+        residual`` (:func:`restitution.dynamics.oblique_residual.residual_collision`) takes it.
     """
 
     geometry: str
@@ -293,6 +297,7 @@ class BodyKind:
     oblique_law: str | None = None
     oblique_law_modes: int | None = None
     oblique_quasistatic: str | None = None
+    oblique_residual: bool = False
 
     @property
     def name(self) -> str:

@@ -291,11 +291,13 @@ def _vibrating() -> str:
 @click.option(
     "--friction-model",
     "friction_model",
-    type=click.Choice(["stick-slip", "microslip"]),
+    type=click.Choice(["stick-slip", "microslip", "residual"]),
     default=None,
     help="With --angle: stick-slip (default): one stick/slip state for the whole contact, "
     "DOP853 phase by phase; microslip: Coulomb's law at every wall node (Mindlin's annulus of "
-    "microslip), regularised by a tangential spring --kappa, Verlet steps (docs/oblique.md).",
+    "microslip), regularised by a tangential spring --kappa, Verlet steps; residual (the "
+    "sphere): one stick/slip state with the dropped modes following the contact statically, "
+    "normal and tangential, Verlet steps (docs/oblique.md).",
 )
 @click.option(
     "--kappa",

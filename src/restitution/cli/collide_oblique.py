@@ -2,10 +2,13 @@
 friction.
 
 A thin layer over :func:`restitution.dynamics.oblique.oblique_collision` (one stick/slip state,
-the default ``--friction-model stick-slip``) and
+the default ``--friction-model stick-slip``),
 :func:`restitution.dynamics.oblique_microslip.microslip_collision` (``--friction-model
-microslip``: friction at every wall node, ``--kappa``) (docs/oblique.md, "The modal oblique
-collision", "Microslip in the modal route" and "The sphere"): the options become one
+microslip``: friction at every wall node, ``--kappa``) and
+:func:`restitution.dynamics.oblique_residual.residual_collision` (``--friction-model
+residual``: one state, the dropped modes' static residual; the kinds whose ``oblique_residual``
+is set) (docs/oblique.md, "The modal oblique collision", "Microslip in the modal route", "The
+sphere" and "A static residual for the one-state route"): the options become one
 :class:`ObliqueRequest`, where every refusal is made before a mode is computed; then the
 body's modes of both symmetries are built (the disk's rim, the sphere's cap), the work
 estimated, told on stderr and refused beyond the bound of one run, the collision run, and one
@@ -43,6 +46,7 @@ from restitution.cli.report import Report, emit, rich_text
 from restitution.dynamics.oblique import FRICTION_MODELS
 from restitution.dynamics.oblique_cost import check_reach
 from restitution.dynamics.oblique_microslip import MICROSLIP, MicroslipSettings
+from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
 from restitution.errors import InputError
 from restitution.status import Status
 
@@ -111,7 +115,8 @@ class ObliqueRequest:
     force : bool
         Run beyond the time bound of one run.
     friction_model : str
-        ``"stick-slip"`` (one state for the contact) or ``"microslip"`` (every wall node).
+        ``"stick-slip"`` (one state for the contact), ``"microslip"`` (every wall node) or
+        ``"residual"`` (one state, the dropped modes' static residual).
     kappa : float or None
         The microslip route's tangential spring over the normal stiffness; ``None`` with
         stick-slip.
@@ -182,13 +187,20 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
     nu_body = body_nu(p["nu"], p["plane"], geometry)
     check_mode_request(nu_body, modes, None, geometry)
     model = p.get("friction_model") or STICK_SLIP
+    if model == RESIDUAL_CHOICE and not body_kind(geometry).oblique_residual:
+        served = [k.geometry for k in kinds().values() if k.oblique_residual]
+        raise InputError(
+            f"--friction-model residual needs the dropped modes' static flexibility at the "
+            f"contact, which the {', '.join(served)} has and the {geometry} has not yet; use "
+            "--friction-model stick-slip or microslip"
+        )
     kappa = p.get("kappa")
     if model == MICROSLIP:
         kappa = positive_finite("--kappa", DEFAULT_KAPPA if kappa is None else kappa)
     elif kappa is not None:
         raise InputError(
-            "--kappa has no effect with --friction-model stick-slip (one exact stick/slip "
-            "switch); add --friction-model microslip for friction at every wall node"
+            f"--kappa has no effect with --friction-model {model} (one stick/slip state); add "
+            "--friction-model microslip for friction at every wall node"
         )
     return ObliqueRequest(geometry, p["nu"], p["plane"], nu_body, v, float(angle), float(mu),
                           alpha, int(modes), bool(p["force"]), model, kappa)  # fmt: skip
@@ -199,12 +211,14 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     from restitution.dynamics.oblique import oblique_collision
     from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
     from restitution.dynamics.oblique_microslip import microslip_collision, microslip_work
+    from restitution.dynamics.oblique_residual import residual_collision, residual_work
     from restitution.dynamics.run import CollisionError
 
     req = oblique_request(ctx, angle, mu)
     modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
     rim = body_kind(req.geometry).oblique_body(modes)
     microslip = req.friction_model == MICROSLIP
+    residual = req.friction_model == RESIDUAL_CHOICE
     nodes = rim.wall_node_count(req.alpha)
     budget.check_memory_total(  # before the estimates below, which make the nodes
         "--modes",
@@ -217,6 +231,9 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         settings = MicroslipSettings(kappa=req.kappa)
         work = microslip_work(rim, req.v, req.v_tangential, req.alpha, settings=settings)
         route = f"Verlet steps with friction at each of {work.nodes} wall nodes"
+    elif residual:
+        work = residual_work(rim, req.v, req.v_tangential, req.alpha)
+        route = f"Verlet steps with the dropped modes' residual on {work.nodes} wall nodes"
     else:
         work = oblique_work(rim, req.v, req.alpha)
         route = f"DOP853 phase by phase on {work.nodes} nodes"
@@ -247,13 +264,15 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
             result = microslip_collision(
                 rim, req.v, req.v_tangential, req.mu, req.alpha, settings=settings
             )
+        elif residual:
+            result = residual_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
         else:
             result = oblique_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
     except CollisionError as exc:
         raise CollisionError(
             f"{exc} (rtol and the step are arguments of restitution.dynamics.oblique."
-            "oblique_collision and oblique_microslip.microslip_collision, not options of the "
-            "command)"
+            "oblique_collision, oblique_microslip.microslip_collision and "
+            "oblique_residual.residual_collision, not options of the command)"
         ) from exc
     wall = time.perf_counter() - start
     status, advice = stretched(Status.OK, None, req.v, LINEAR_SPEED, result)
@@ -284,7 +303,7 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         "phases": [{"phase": name, "t": t} for name, t in result.phases],
         "t_end": result.t_end,
         "steps": result.steps,
-        "step_kind": "Verlet" if microslip else "DOP853",
+        "step_kind": "Verlet" if microslip or residual else "DOP853",
         "rim_modes": len(rim),
         "estimated_time_s": work.seconds,
         "wall_time_s": wall,
@@ -333,11 +352,13 @@ def _mode_rows(rim, result) -> list[dict]:
 def _model_text(req) -> str:
     if req.friction_model == MICROSLIP:
         return f"microslip at every wall node, kappa = {req.kappa:g}"
+    if req.friction_model == RESIDUAL_CHOICE:
+        return "one stick/slip state, the dropped modes' static residual"
     return "one stick/slip state"
 
 
 def _text(req, result, n_rim, wall, status, advice) -> str:
-    steps = "Verlet" if req.friction_model == MICROSLIP else "DOP853"
+    steps = "DOP853" if req.friction_model == STICK_SLIP else "Verlet"
 
     def draw(console):
         beta = "undefined at angle 0" if math.isnan(result.beta) else f"{result.beta:.6f}"
@@ -345,6 +366,8 @@ def _text(req, result, n_rim, wall, status, advice) -> str:
         more = f" and {len(result.phases) - 6} more" if len(result.phases) > 6 else ""
         if req.friction_model == MICROSLIP:
             contact = "each wall node sticks or slips on its own"
+        elif req.friction_model == RESIDUAL_CHOICE:
+            contact = "one state, its stick force carried by the residual's compliance"
         else:
             contact = f"{len(result.phases)} phases ({phases}{more}; R/c)"
         console.print(

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 
+from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
 from restitution.laws.partners.base import partner_of
 from restitution.status import Status
 
@@ -221,6 +222,8 @@ def _uninformative_part(note: str) -> str:
 def _friction_text(r) -> str:
     if r.oblique_kappa is not None:
         return f"microslip at every wall node, kappa = {r.oblique_kappa:g}"
+    if r.oblique_friction_model == RESIDUAL_CHOICE:
+        return "one stick/slip state for the contact, the dropped modes' static residual"
     return "one stick/slip state for the contact"
 
 

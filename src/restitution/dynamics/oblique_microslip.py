@@ -67,6 +67,16 @@ from restitution.dynamics.oblique import (
     collision_result,
 )
 from restitution.dynamics.oblique_cost import ObliqueWork
+from restitution.dynamics.oblique_verlet import (
+    PILOT,
+    REPLAN,
+    Unstable,
+    approach_time,
+    check_step_settings,
+    planned_step,
+    run_planned,
+    stiffness_ceiling,
+)
 from restitution.dynamics.run import CollisionError
 from restitution.errors import InputError, real
 
@@ -75,11 +85,7 @@ __all__ = ["MICROSLIP", "MicroslipSettings", "microslip_collision", "microslip_w
 MICROSLIP = "microslip"
 """The friction model's name in :class:`~restitution.dynamics.oblique.ObliqueCollision`."""
 
-_REPLAN = 1.5
 _RETRIES = 8
-_PLAN_REACH = 0.5  # nodes within this of the wall at rest plan the step (60 degrees about the pole)
-_PLAN_MARGIN = 1.2
-_PILOT = 0.1  # first plan, of the ceiling: the wall energy's peak is a small part of E0
 
 
 @dataclass(frozen=True)
@@ -106,19 +112,7 @@ class MicroslipSettings:
         k = real(self.kappa, "kappa", "> 0 (try 16-1024)")
         if not (math.isfinite(k) and k > 0.0):
             raise InputError(f"kappa must be a finite number > 0 (try 16-1024), got {k}")
-        s = real(self.step_safety, "step_safety", "in (0, 1)")
-        if not 0.0 < s < 1.0:
-            raise InputError(f"step_safety must lie in (0, 1), got {s}")
-        if int(self.max_steps) < 1:
-            raise InputError(f"max_steps must be at least 1, got {self.max_steps}")
-
-
-class _Unstable(Exception):
-    """The stiffness bound exceeded the plan: repeat with a smaller step."""
-
-    def __init__(self, bound: float):
-        super().__init__(bound)
-        self.bound = bound
+        check_step_settings(self.step_safety, self.max_steps)
 
 
 def microslip_collision(
@@ -160,16 +154,13 @@ def microslip_collision(
         raise InputError(f"pass a finite rotation (radians), got {rot}")
     G = Grain(body, alpha, n_nodes)
     e0 = 0.5 * G.m * (v_n**2 + v_t**2) + 0.5 * G.inertia * w0**2
-    ceiling = _ceiling(G, float(s.kappa)) * alpha * alpha * e0
-    plan = _PILOT * ceiling
-    t_max = 4.0 * _approach(G, v_n) + 20.0 * float(body.contact_time_estimate(v_n))
-    for _ in range(_RETRIES):
-        try:
-            return _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max)
-        except _Unstable as exc:
-            plan = max(ceiling, _REPLAN * exc.bound) if plan < ceiling else _REPLAN * exc.bound
-    raise CollisionError(
-        f"the Verlet step did not settle after {_RETRIES} plans; lower kappa or soften the wall"
+    ceiling = stiffness_ceiling(G, float(s.kappa)) * alpha * alpha * e0
+    t_max = 4.0 * approach_time(G, v_n) + 20.0 * float(body.contact_time_estimate(v_n))
+    return run_planned(
+        lambda plan: _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max),
+        ceiling,
+        _RETRIES,
+        "lower kappa or soften the wall",
     )
 
 
@@ -183,11 +174,6 @@ def microslip_collision(
 # median 1.11 of 20 runs, range 0.88 to 4.8, 3 Dec 2026).
 _STEP_OVER_TIMING = 1.30
 _WORK_SPREAD = 4.5
-
-
-def _approach(G, v_n: float) -> float:
-    """Time to cross the wall's tail from the start to the undeformed contact, ``R / c``."""
-    return (-1.0 - G.start_position(0.5 * G.m * v_n**2)) / v_n
 
 
 def microslip_work(
@@ -212,12 +198,10 @@ def microslip_work(
     v_n, v_t, w0 = float(v_normal), float(v_tangential), float(spin)
     G = Grain(body, alpha, n_nodes)
     e0 = 0.5 * G.m * (v_n**2 + v_t**2) + 0.5 * G.inertia * w0**2
-    limit = (float(G.w2.max()) if G.N else 0.0) + _PILOT * _ceiling(
-        G, float(s.kappa)
-    ) * alpha * alpha * e0
-    dt = s.step_safety * 2.0 / math.sqrt(limit)
+    plan = PILOT * stiffness_ceiling(G, float(s.kappa)) * alpha * alpha * e0
+    dt = planned_step(s.step_safety, float(G.w2.max()) if G.N else 0.0, plan)
     t_c = float(body.contact_time_estimate(v_n))
-    steps = (2.0 * _approach(G, v_n) + t_c) / dt
+    steps = (2.0 * approach_time(G, v_n) + t_c) / dt
     x0 = -1.0 + v_n * t_c / math.pi
     Q = np.zeros(G.N)
     best = math.inf
@@ -238,25 +222,13 @@ def microslip_work(
     return ObliqueWork(G.N, len(G.nodes), steps * _STEP_OVER_TIMING * best, memory, _WORK_SPREAD)
 
 
-def _ceiling(G, kappa: float) -> float:
-    """``max_j (|a_j|^2 + kappa |b_j|^2)`` over the nodes within ``_PLAN_REACH`` of the wall
-    at rest, times ``_PLAN_MARGIN``: with the wall force ``sum e_j = alpha V <= alpha E0`` it
-    bounds the stiffness term (module docs) of the whole run."""
-    rest = np.zeros(G.N)
-    _, _, X, Yr, _, J = G.nodes.jacobian(-1.0, 0.0, rest, rest, 0.0, -_PLAN_REACH)
-    nX, nY = J.norms()
-    a2 = 1.0 / G.m + Yr**2 / G.inertia + nX / G.m
-    b2 = 1.0 / G.m + (X + 1.0) ** 2 / G.inertia + nY / G.m
-    return _PLAN_MARGIN * float(np.max(a2 + kappa * b2))
-
-
 def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollision:
     N, m, I = G.N, G.m, G.inertia
     nodes, kappa, w2 = G.nodes, float(s.kappa), G.w2
     cutoff = -NEGLIGIBLE / alpha
     wmax2 = float(w2.max()) if N else 0.0
     limit = wmax2 + plan
-    dt = s.step_safety * 2.0 / math.sqrt(limit)
+    dt = planned_step(s.step_safety, wmax2, plan)
     if t_max / dt > s.max_steps:
         raise InputError(
             f"the microslip run would take up to {t_max / dt:.3g} Verlet steps (dt = {dt:.3g} "
@@ -336,7 +308,7 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
         ax, ay, ath, aQ, bound = accel(pl, Q, ft)
         bound_max = max(bound_max, bound)
         if wmax2 + bound > limit:
-            raise _Unstable(bound)
+            raise Unstable(bound)
         # second half kick
         vx, vy, om = vx + 0.5 * dt * ax, vy + 0.5 * dt * ay, om + 0.5 * dt * ath
         Qd = Qd + 0.5 * dt * aQ
@@ -353,7 +325,7 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
         V = 0.0 if pl is None else float(pl[4].sum()) / alpha
         h = 0.5 * m * (vx**2 + vy**2 + float(Qd @ Qd + w2 @ (Q * Q))) + 0.5 * I * om**2 + V
         if not math.isfinite(h):
-            raise _Unstable(_REPLAN * limit)
+            raise Unstable(REPLAN * limit)
         if vx >= 0.0:
             continue
         y = np.concatenate(([x0, th], Q, [vx, vy, om], Qd))

@@ -46,13 +46,15 @@ MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 ROUTES = ("modal", "residual")
 
 
-def friction_models() -> tuple[str, str]:
+def friction_models() -> tuple[str, str, str]:
     """``--friction-model``'s choices, the default first: the oblique routes' names
-    (:mod:`restitution.dynamics.oblique`, :mod:`restitution.dynamics.oblique_microslip`)."""
+    (:mod:`restitution.dynamics.oblique`, :mod:`restitution.dynamics.oblique_microslip`,
+    :mod:`restitution.dynamics.oblique_residual`)."""
     from restitution.dynamics.oblique import FRICTION_MODELS
     from restitution.dynamics.oblique_microslip import MICROSLIP
+    from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
 
-    return FRICTION_MODELS[0], MICROSLIP
+    return FRICTION_MODELS[0], MICROSLIP, RESIDUAL_CHOICE
 
 
 """``--route`` of ``--compute``: the modal production or the static residual
@@ -266,7 +268,9 @@ class LawRequest:
             "With --angle: 'stick-slip' (default; one stick/slip state for the whole contact, "
             "DOP853 phase by phase) or 'microslip' (Coulomb's law at every wall node, "
             "Mindlin's annulus of microslip, regularised by --kappa; Verlet steps; closer to "
-            "the finite elements in partial slip, docs/oblique.md).",
+            "the finite elements in partial slip) or 'residual' (the sphere: one stick/slip "
+            "state with the dropped modes following the contact statically, normal and "
+            "tangential; Verlet steps; beta settled in the modes, docs/oblique.md).",
             "choice",
             choices=lambda: list(friction_models()),
         ),

@@ -119,8 +119,9 @@ def _check_oblique(r) -> None:
 
     if r.kappa is not None and r.friction_model != MICROSLIP:
         raise InputError(
-            "--kappa has no effect with --friction-model stick-slip (one exact stick/slip "
-            "switch); add --friction-model microslip for friction at every wall node"
+            f"--kappa has no effect with --friction-model {r.friction_model or 'stick-slip'} "
+            "(one stick/slip state); add --friction-model microslip for friction at every "
+            "wall node"
         )
     for f in fields(r):
         if f.name in OBLIQUE_FIELDS or f.name == "extra":
@@ -152,6 +153,15 @@ def _check_oblique(r) -> None:
             f"oblique impacts (--angle) of the {r.shape} are not served by law yet ({why}); "
             f"--shape {' or '.join(shapes)} have one, or leave out --angle and --friction for "
             f"the {r.shape}'s head-on law"
+        )
+    from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
+
+    if r.friction_model == RESIDUAL_CHOICE and not kind.oblique_residual:
+        shapes = [s for s, name in BODIES.items() if body_kind(name).oblique_residual]
+        raise InputError(
+            f"--friction-model residual needs the dropped modes' static flexibility at the "
+            f"contact, which the {r.shape}'s route has not yet (--shape {' or '.join(shapes)} "
+            "has it); use --friction-model stick-slip or microslip"
         )
 
 

@@ -54,6 +54,7 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from restitution.dynamics.one_state import OneStateFriction
 from restitution.errors import RestitutionError
 from restitution.quasistatic.hertz_sphere import CONTACT_TIME_CONSTANT, SPHERE_MASS
 from restitution.quasistatic.sphere_partial_slip import (
@@ -140,37 +141,6 @@ def one_state_half_space(v_normal: float, v_tangential: float, mu: float, nu: fl
             y[2] = sign * mu * force(y[0]) / max(y[0], 0.0) ** 0.25
             sign = 0.0
     raise RestitutionError(f"more than {_MAX_PHASES} stick/slip phases")
-
-
-class OneStateFriction:
-    """The one-state contact's tangential force, step by step, on annuli with the flexibility
-    ``Ht`` between tangential forces and mean displacements (module docs): the discrete stick
-    condition, clipped to Coulomb's bound."""
-
-    def __init__(self, Ht: np.ndarray) -> None:
-        self.Ht = Ht
-        self.force = 0.0
-        self._p: np.ndarray | None = None
-        self._Hp: np.ndarray | None = None
-
-    def step(self, P: np.ndarray, s_old: float, s_new: float, mu: float) -> float:
-        """The force after the contact point moved rigidly from ``s_old`` to ``s_new``, with
-        the annuli's normal forces ``P`` at the step's end."""
-        ds = s_new - s_old
-        total = float(P.sum())
-        if total <= 0.0:
-            self.force, self._p, self._Hp = 0.0, None, None
-            return 0.0
-        p = P / total
-        Hp = self.Ht @ p
-        if self._p is None:
-            F = -ds / (p @ Hp)
-        else:
-            pbar = 0.5 * (p + self._p)
-            F = (self.force * (pbar @ self._Hp) - ds) / (pbar @ Hp)
-        self.force = min(max(float(F), -mu * total), mu * total)
-        self._p, self._Hp = p, Hp
-        return self.force
 
 
 def one_state_run(contact: AnnularContact, v: float, v_tangential: float, mu: float, nu: float,

@@ -207,7 +207,7 @@ def run(contact: AnnularContact, v: float, v_tangential: float, mu: float, nu: f
     """``beta`` and ``epsilon_normal`` of one impact on ``contact``, ``steps`` per Hertz
     contact time; ``friction(Ht)`` makes the tangential law (``step(P, s_old, s_new, mu) ->
     force``): :class:`Microslip` or
-    :class:`~restitution.quasistatic.sphere_one_state.OneStateFriction`."""
+    :class:`~restitution.dynamics.one_state.OneStateFriction`."""
     dm = hertz_peak(v, nu)
     dt = CONTACT_TIME_CONSTANT * dm / v / steps
     kick = INERTIA_FACTOR / SPHERE_MASS

@@ -174,6 +174,14 @@ class SphereCap:
 
         return cap_nodes(self, float(alpha), n_nodes)
 
+    def contact_residual(self, nodes, reach: float):
+        """The static flexibility of the modes this cap drops, on hats of the projected radius
+        about the contact axis out to ``reach`` (``R``) over its wall ``nodes``
+        (:class:`restitution.bodies.sphere.contact_residual.ContactResidual`)."""
+        from restitution.bodies.sphere.contact_residual import contact_residual
+
+        return contact_residual(self, nodes, reach)
+
     def mode_labels(self) -> list[dict]:
         """One dict per mode: ``family`` (a name of :data:`FAMILIES`), ``n``, ``l``, ``m``."""
         return [

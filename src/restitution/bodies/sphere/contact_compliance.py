@@ -71,6 +71,7 @@ __all__ = [
     "continuum_compliance",
     "half_space_annulus_flexibility",
     "half_space_compliance",
+    "modal_annulus_flexibility",
     "modal_compliance",
 ]
 
@@ -272,6 +273,29 @@ def half_space_annulus_flexibility(edges, nu: float, direction: str) -> np.ndarr
     if direction == DIRECTIONS[1]:
         G *= (2.0 - nu) / (2.0 * (1.0 - nu))
     return G
+
+
+def modal_annulus_flexibility(cap, edges, direction: str, *, points: int = 16,
+                              azimuths: int = 8) -> np.ndarray:  # fmt: skip
+    """:func:`annulus_flexibility` in the modes of ``cap`` (a
+    :class:`~restitution.bodies.sphere.cap.SphereCap`): ``G[i, j] = sum_k f_ki f_kj / (m
+    omega_k^2)``, ``f_ki`` the mode's displacement along the load summed over annulus ``i``
+    (per projected area; ``points`` Gauss nodes in ``r`` and ``azimuths`` in ``phi``, exact
+    for the products of the first orders). Only the modes of azimuthal order 0 (``normal``)
+    or 1 (``tangential``) carry a force of these loads; the others are left out exactly."""
+    edges = _annuli(edges, direction)
+    tangential = direction == DIRECTIONS[1]
+    part = cap.take(cap.m == int(tangential))
+    t, w = roots_legendre(int(points))
+    width = np.diff(edges)
+    r = edges[:-1, None] + 0.5 * width[:, None] * (t + 1.0)  # (annuli, points)
+    weight = 0.5 * width[:, None] * w * r * (2.0 * math.pi / azimuths)  # r dr dphi
+    phi = 2.0 * math.pi * np.arange(azimuths) / azimuths
+    theta = np.repeat(np.arcsin(r.ravel()), azimuths)
+    d1, d2, _ = part.displacement(theta, np.tile(phi, r.size))
+    shape = (d2 if tangential else -d1).reshape(r.shape[0], r.shape[1] * azimuths, len(part))
+    f = np.einsum("ip,ipk->ik", np.repeat(weight, azimuths, axis=1), shape)
+    return (f / (part.mass * part.omega**2)) @ f.T
 
 
 def modal_compliance(cap, a: float, load: str, *, points: int = 200) -> float:

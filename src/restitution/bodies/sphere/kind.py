@@ -163,6 +163,9 @@ KIND = register(
         # Its low-speed limit: Hertz-Mindlin without microslip (Maw, Barber and Fawcett's law
         # (a), quasistatic/oblique.py), which 10-40 modes approach (docs/oblique.md).
         oblique_quasistatic="hertz-mindlin",
+        # The cap's dropped modes' static residual on hats about the contact axis
+        # (bodies/sphere/contact_residual.py): collide --angle --friction-model residual.
+        oblique_residual=True,
     )
 )
 """The elastic sphere (docs/spheres.md)."""

@@ -1,0 +1,128 @@
+"""The exponential wall on a body whose dropped modes follow the load statically, on hats of the
+projected radius about the contact axis (issue 63; the oblique route's counterpart of
+:mod:`restitution.dynamics.residual`).
+
+Units: ``E = rho = R = 1``; forces in ``E R^2``, displacements in ``R``.
+
+**The model.** Hat ``i`` (:class:`~restitution.bodies.sphere.contact_residual.ContactResidual`)
+carries the load ``P_i = sum_j phi_i(rho_j) e_j`` of the wall nodes on it and moves them along
+the wall's normal by ``U_i``; node ``j`` at its kept position ``X_j`` (the rigid motion and the
+kept modes) sits at ``X_j + sum_i phi_i(rho_j) U_i`` and feels ``e_j = w_j exp(alpha (X_j +
+phi_j . U))``. The dropped modes' equilibrium is ``U = -H P`` (``H`` their flexibility between
+the hats), the minimum over ``U`` of the wall's energy plus theirs::
+
+    V_eff = min_U [ sum_j w_j exp(alpha (X_j + phi_j . U)) / alpha + U . H^-1 . U / 2 ]
+          = sum_j e_j / alpha + P . H . P / 2                       (at U = -H P)
+
+so by the envelope theorem the forces on the kept coordinates are the wall's ``e_j`` on the kept
+positions, as without the residual, plus the hats' own motion: ``phi_j`` depends on the body's
+rotation through ``rho_j``, a torque ``-sum_j e_j (dU/drho)_j drho_j/dTheta``
+(:meth:`HatWall.solve` returns each node's slope ``dU/drho``).
+
+**The solve.** Newton's method on ``U + H P(U) = 0`` (Jacobian ``I + alpha H B``, ``B = Phi
+diag(e) Phi^T`` tridiagonal), damped so that the largest miss ``alpha |U + H P|`` falls,
+warm-started from the last solve, to ``alpha |U + H P| < 1e-11`` (each hat's log-force).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from restitution.dynamics.run import CollisionError
+
+__all__ = ["HatWall"]
+
+_TOL = 1e-11  # alpha |U + H P|: each hat's miss in log-force
+_ITERATIONS = 100
+_EXP_CAP = 200.0  # a trial step's exponent is capped: its products stay finite, and it is rejected
+
+
+class HatWall:
+    """The wall's forces with the residual ``H`` on hats peaking at ``radii`` (``K + 1``; the
+    last hat falls to zero at ``radii[K]``), hardness ``alpha`` (module docs)."""
+
+    def __init__(self, H: np.ndarray, radii: np.ndarray, alpha: float) -> None:
+        self.H, self.alpha = np.asarray(H, float), float(alpha)
+        self.K = self.H.shape[0]
+        self.radii = np.asarray(radii, float)[: self.K + 1]
+        self.U = np.zeros(self.K)
+        self.P = np.zeros(self.K)
+        self.iterations = 0
+        self.beyond = 0.0
+        """The largest share of the wall force met on nodes beyond the hats (no residual)."""
+
+    def _hats(self, rho: np.ndarray):
+        """Each node's lower hat ``k`` (``K``: beyond them), its weights ``lo`` on ``k`` and
+        ``hi`` on ``k + 1``, and ``d(hi)/drho``."""
+        r, K = self.radii, self.K
+        k = np.clip(np.searchsorted(r, rho, side="right") - 1, 0, K)
+        inside = rho < r[0]
+        width = r[np.minimum(k + 1, K)] - r[k]
+        width = np.where(width > 0.0, width, 1.0)
+        out = inside | (k >= K)
+        f = np.where(out, 0.0, (rho - r[k]) / width)
+        df = np.where(out, 0.0, 1.0 / width)
+        lo = np.where(k < K, 1.0 - f, 0.0)
+        hi = np.where(k + 1 < K, f, 0.0)
+        return k, lo, hi, df
+
+    def solve(self, log_e: np.ndarray, rho: np.ndarray):
+        """Node forces ``e``, hat loads ``P`` (a copy) and each node's ``dU/drho`` from the
+        nodes' ``log(w_j) + alpha X_j`` at their kept positions and their radii ``rho``."""
+        a, K, H = self.alpha, self.K, self.H
+        k, lo, hi, df = self._hats(rho)
+        size = K + 2
+
+        def state(U):
+            Up = np.r_[U, 0.0, 0.0]
+            e = np.exp(np.minimum(log_e + a * (lo * Up[k] + hi * Up[k + 1]), _EXP_CAP))
+            P = (np.bincount(k, lo * e, size) + np.bincount(k + 1, hi * e, size))[:K]
+            return e, P
+
+        U = self.U
+        e, P = state(U)
+        miss = U + H @ P
+        diagonal = np.arange(K)
+        for _ in range(_ITERATIONS):
+            self.iterations += 1
+            worst = a * float(np.max(np.abs(miss)))
+            if worst < _TOL:
+                break
+            d = (np.bincount(k, lo * lo * e, size) + np.bincount(k + 1, hi * hi * e, size))[:K]
+            off = np.bincount(k, lo * hi * e, size)[: K - 1]
+            HB = H * d[None, :]  # H @ B for the tridiagonal B, column by column
+            HB[:, 1:] += H[:, :-1] * off[None, :]
+            HB[:, :-1] += H[:, 1:] * off[None, :]
+            HB *= a
+            HB[diagonal, diagonal] += 1.0
+            step = -np.linalg.solve(HB, miss)
+            lam = 1.0
+            while True:
+                trial = U + lam * step
+                e_t, P_t = state(trial)
+                miss_t = trial + H @ P_t
+                if a * float(np.max(np.abs(miss_t))) < worst:
+                    break
+                lam *= 0.5
+                if lam < 1e-6:
+                    raise CollisionError(
+                        "the residual's wall solve stalled (no step lowers its miss "
+                        f"{worst:.3g}); soften the wall or lower the speed"
+                    )
+            U, e, P, miss = trial, e_t, P_t, miss_t
+        else:
+            raise CollisionError(
+                "the residual's wall solve did not converge in "
+                f"{_ITERATIONS} Newton steps; soften the wall or lower the speed"
+            )
+        self.U, self.P = U, P
+        Up = np.r_[U, 0.0, 0.0]
+        slope = np.where(k < K, df * (Up[k + 1] - Up[k]), 0.0)
+        total = float(e.sum())
+        if total > 0.0:
+            self.beyond = max(self.beyond, float(e[k >= K].sum()) / total)
+        return e, P.copy(), slope
+
+    def energy(self, e: np.ndarray) -> float:
+        """The condensed wall energy ``sum e / alpha + P . H . P / 2`` of the last solve."""
+        return float(e.sum()) / self.alpha + 0.5 * float(self.P @ self.H @ self.P)

@@ -1,0 +1,389 @@
+"""Oblique impact of a vibrating grain with one Coulomb contact and a static residual for the
+modes it drops, normal and tangential (issue 63; docs/oblique.md, "A static residual for the
+one-state route").
+
+Units as :mod:`restitution.dynamics.oblique`: ``E = rho = R = 1`` of the grain, speeds in
+``c``, spins in ``c / R``, times in ``R / c``, energies reported as fractions of the initial
+kinetic energy ``E0``.
+
+**Why.** :func:`~restitution.dynamics.oblique.oblique_collision` moves ``N`` modes against the
+wall. Its truncated body is too stiff at the contact, normally and tangentially, so its
+``beta`` at low speed lies far from the one-state contact's own limit (0.33-0.51 at 20-80
+modes, ``v = 0.005``), and on hard walls its rigid stick constraint chatters (48-154 phases).
+The dropped modes follow the load statically; keeping their flexibility instead of their
+motion brings the route to its quasistatic twin at 20 modes (docs/oblique.md).
+
+**The model.** The body, wall, coordinates and one Coulomb contact of
+:func:`~restitution.dynamics.oblique.oblique_collision`, with the body's
+:meth:`contact_residual` (the sphere's
+:class:`~restitution.bodies.sphere.contact_residual.ContactResidual`: hats of the projected
+radius about the contact axis):
+
+* **normal:** the wall's forces on the nodes displaced by the residual
+  (:class:`~restitution.dynamics.contact.residual_hats.HatWall`), which act on the kept
+  coordinates as without it, plus the torque of the hats' motion;
+* **tangential:** the contact's force ``F`` spread on the hats like the pressure, ``F p``
+  (``p = P / F_n``), moves them in line by ``H_t F p``, so the pressure-weighted slip is
+  ``v_s = v_kept + p . d(H_t F p)/dt = v_kept + F' C + F C' / 2`` (``C = p . H_t . p``; the
+  power ``F v_s`` is then the kept motion's ``F v_kept`` plus the rate of the residual's
+  energy ``F^2 C / 2``). Stick holds ``v_s = 0``, slip holds ``|F| = mu F_n``:
+  :class:`~restitution.dynamics.one_state.OneStateFriction` per step (the discrete
+  stick condition over the step's kept slip, clipped to Coulomb's bound). The stick force is a
+  state, not the rigid constraint's: no events and no chatter.
+
+**Integrator.** Velocity Verlet at a fixed step (second order; symplectic without friction),
+the friction force after the drift from the half-step velocities, as
+:mod:`restitution.dynamics.oblique_microslip`. The step is the smaller of ``step_safety * 2 /
+omega_max`` (the kept modes and the wall's stiffness on the kept positions, a bound: the
+residual only softens the contact; planned at a tenth of its ceiling and repeated at the
+ceiling if met) and the Hertz contact time over ``steps_per_contact``.
+
+**Energy.** ``E0 = kinetic + modes + V_eff + W_kept`` to the integration error (``V_eff`` the
+condensed wall energy, ``W_kept = -int F v_kept dt``), reported as ``energy_balance``;
+friction's dissipation ``W_kept - F^2 C / 2`` may not fall (checked every step, refused beyond
+:data:`GAIN_TOL`); after the contact it is the friction work.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+from restitution.dynamics.contact.exponential import NEGLIGIBLE, STOP_LOG
+from restitution.dynamics.contact.residual_hats import HatWall
+from restitution.dynamics.oblique import Grain, ObliqueCollision, RimBody, _check, collision_result
+from restitution.dynamics.oblique_cost import ObliqueWork
+from restitution.dynamics.oblique_verlet import (
+    PILOT,
+    REPLAN,
+    Unstable,
+    approach_time,
+    check_step_settings,
+    planned_step,
+    run_planned,
+    stiffness_ceiling,
+)
+from restitution.dynamics.one_state import OneStateFriction
+from restitution.dynamics.run import CollisionError
+from restitution.errors import InputError, real
+
+__all__ = [
+    "GAIN_TOL",
+    "RESIDUAL",
+    "RESIDUAL_CHOICE",
+    "ResidualBody",
+    "ResidualSettings",
+    "residual_collision",
+    "residual_work",
+]
+
+RESIDUAL = "one-state residual"
+"""The friction model's name in :class:`~restitution.dynamics.oblique.ObliqueCollision`."""
+
+RESIDUAL_CHOICE = "residual"
+"""The route's name among ``--friction-model``'s choices (``collide --angle``, ``law
+--angle``)."""
+
+GAIN_TOL = 1e-6
+"""Friction's dissipation may fall by at most this much of ``E0`` in a run (the integration's
+error; measured up to 2.3e-7)."""
+
+_RETRIES = 6
+_REACH_MARGIN = 2.0  # the hats reach twice Hertz's compression plus the wall's negligible tail
+_BEYOND_TOL = 1e-9  # a wall force beyond the hats larger than this share is refused
+
+
+@runtime_checkable
+class ResidualBody(RimBody, Protocol):
+    """A :class:`~restitution.dynamics.oblique.RimBody` that knows the static flexibility of
+    the modes it drops at its contact (the sphere's
+    :class:`~restitution.bodies.sphere.cap.SphereCap`)."""
+
+    nu: float
+
+    def contact_residual(self, nodes, reach: float):
+        """Hats (``radii``, ``normal``, ``tangential``, ``radius(count, rotation)``) out to
+        the projected radius ``reach`` over the wall ``nodes``."""
+        ...
+
+
+@dataclass(frozen=True)
+class ResidualSettings:
+    """Numerical settings of :func:`residual_collision`.
+
+    Attributes
+    ----------
+    steps_per_contact : int
+        The step is at most the Hertz contact time over this (4000 and 8000 agree to 1e-4 in
+        ``beta``, docs/oblique.md).
+    step_safety : float
+        Fraction of the stability bound ``2 / omega_max``.
+    max_steps : int
+        Refuse a run planned beyond this many steps.
+    """
+
+    steps_per_contact: int = 4000
+    step_safety: float = 0.5
+    max_steps: int = 5_000_000
+
+    def __post_init__(self):
+        if not (isinstance(self.steps_per_contact, int) and self.steps_per_contact >= 100):
+            raise InputError(
+                f"steps_per_contact must be an integer >= 100, got {self.steps_per_contact!r}"
+            )
+        check_step_settings(self.step_safety, self.max_steps)
+
+
+def _residual_body(body) -> ResidualBody:
+    if not isinstance(body, ResidualBody):
+        raise InputError(
+            f"the static residual needs a body that knows its dropped modes' flexibility at the "
+            f"contact (the sphere's cap_modes(...)); {type(body).__name__} does not: use "
+            "oblique_collision without the residual"
+        )
+    return body
+
+
+def _reach(body, v_n: float, alpha: float) -> float:
+    """The hats' projected radius: ``sqrt(2 (2 delta + NEGLIGIBLE / alpha))``, ``delta``
+    Hertz's largest compression from the contact time estimate (``t_c = 2.9433 delta / v``)."""
+    delta = float(body.contact_time_estimate(v_n)) * v_n / 2.9433
+    return math.sqrt(2.0 * (_REACH_MARGIN * delta + NEGLIGIBLE / alpha))
+
+
+def residual_collision(
+    body: RimBody,
+    v_normal: float,
+    v_tangential: float,
+    mu: float,
+    alpha: float,
+    *,
+    spin: float = 0.0,
+    rotation: float = 0.0,
+    settings: ResidualSettings | None = None,
+    n_nodes: int | None = None,
+) -> ObliqueCollision:
+    """One oblique collision with one Coulomb contact and the dropped modes' static residual
+    (module docs).
+
+    Parameters as :func:`restitution.dynamics.oblique.oblique_collision`; ``body`` must know
+    its residual (:class:`ResidualBody`: the sphere's cap); ``settings`` the step
+    (:class:`ResidualSettings`). The result's ``friction`` is ``"one-state residual"``,
+    ``regularisation`` ``None``, ``phases`` one entry and ``steps`` the Verlet steps.
+
+    Examples
+    --------
+    >>> from restitution.bodies.sphere.cap import cap_modes
+    >>> from restitution.bodies.sphere.modes import compute_sphere_modes
+    >>> cap = cap_modes(compute_sphere_modes(0.3, count=6), azimuthal=1)
+    >>> out = residual_collision(cap, 0.01, 0.01, 0.5, 300.0)
+    >>> round(out.epsilon_normal, 4), round(out.beta, 3), abs(out.energy_balance) < 1e-5
+    (0.9998, 0.342, True)
+    """
+    s = settings if settings is not None else ResidualSettings()
+    if not isinstance(s, ResidualSettings):
+        raise InputError(f"settings must be ResidualSettings, got {type(s).__name__}")
+    v_n, v_t, w0, mu, alpha = _check(
+        body, v_normal, v_tangential, mu, alpha, spin, "stick-slip", None, 1e-10
+    )
+    body = _residual_body(body)
+    rot = real(rotation, "rotation", "(radians)")
+    if not math.isfinite(rot):
+        raise InputError(f"pass a finite rotation (radians), got {rot}")
+    G = Grain(body, alpha, n_nodes)
+    hats = body.contact_residual(G.nodes, _reach(body, v_n, alpha))
+    e0 = 0.5 * G.m * (v_n**2 + v_t**2) + 0.5 * G.inertia * w0**2
+    ceiling = stiffness_ceiling(G) * alpha * alpha * e0
+    t_c = float(body.contact_time_estimate(v_n))
+    t_max = 4.0 * approach_time(G, v_n) + 20.0 * t_c
+    inputs = (v_n, v_t, w0, mu, alpha, rot)
+    return run_planned(
+        lambda plan: _run(G, hats, s, inputs, e0, plan, t_c, t_max),
+        ceiling,
+        _RETRIES,
+        "soften the wall",
+    )
+
+
+def _step(G, s: ResidualSettings, plan: float, t_c: float) -> float:
+    wmax2 = float(G.w2.max()) if G.N else 0.0
+    return min(planned_step(s.step_safety, wmax2, plan), t_c / s.steps_per_contact)
+
+
+class _Contact:
+    """The wall, the hats and the friction of one run: the forces at a placed state."""
+
+    def __init__(self, G, hats, alpha: float) -> None:
+        self.G, self.hats, self.alpha = G, hats, alpha
+        self.wall = HatWall(hats.normal, hats.radii, alpha)
+        self.cutoff = -NEGLIGIBLE / alpha
+
+    def place(self, x0, th, Q, Qd):
+        G = self.G
+        placed = G.nodes.jacobian(x0, th, Q, Qd, float(np.abs(Q) @ G.reach_k), self.cutoff)
+        if placed is None:
+            return None
+        idx, weight, X, Yr, eta, J = placed
+        rho, drho = self.hats.radius(idx.size, th)
+        e, P, slope = self.wall.solve(np.log(weight) + self.alpha * X, rho)
+        Fn = float(e.sum())
+        if Fn <= 0.0:
+            return None
+        p = e / Fn
+        if self.wall.beyond > _BEYOND_TOL:
+            raise CollisionError(
+                f"the contact reached beyond the residual's hats ({self.wall.beyond:.2g} of the "
+                "wall force): lower the speed or harden the wall"
+            )
+        torque = -float(e @ (slope * drho))  # the hats' own motion as the body turns
+        return {"e": e, "P": P, "Fn": Fn, "p": p, "lever": float(p @ (X - x0)), "Yr": Yr,
+                "J": J, "peta": float(p @ eta), "hat_torque": torque}  # fmt: skip
+
+
+def _run(G, hats, s, inputs, e0, plan, t_c, t_max) -> ObliqueCollision:
+    v_n, v_t, w0, mu, alpha, rot = inputs
+    N, m, I, w2 = G.N, G.m, G.inertia, G.w2
+    wmax2 = float(w2.max()) if N else 0.0
+    limit = wmax2 + plan
+    dt = _step(G, s, plan, t_c)
+    if t_max / dt > s.max_steps:
+        raise InputError(
+            f"the residual run would take up to {t_max / dt:.3g} Verlet steps (dt = {dt:.3g} "
+            f"R/c over {t_max:.3g} R/c), more than max_steps = {s.max_steps}: lower "
+            "steps_per_contact or the modes, or soften the wall"
+        )
+    contact = _Contact(G, hats, alpha)
+    friction = OneStateFriction(hats.tangential)
+    x0, th = G.start_position(0.5 * m * v_n**2), rot
+    Q, Qd = np.zeros(N), np.zeros(N)
+    vx, vy, om = v_n, v_t, -w0
+
+    def accel(pl, Q, F):
+        if pl is None:
+            return 0.0, 0.0, 0.0, -w2 * Q, 0.0
+        ath = (float(pl["e"] @ pl["Yr"]) + pl["hat_torque"] + F * pl["lever"]) / I
+        aQ = -w2 * Q + pl["J"].pull(-pl["e"], F * pl["p"]) / m
+        nX, _ = pl["J"].norms()
+        bound = alpha * float(pl["e"] @ (1.0 / m + pl["Yr"] ** 2 / I + nX / m))
+        return -pl["Fn"] / m, F / m, ath, aQ, bound
+
+    def slip(pl, vy, om, Qd):
+        return vy + om * pl["lever"] + float(pl["p"] @ pl["J"].dY(Qd))
+
+    pl = contact.place(x0, th, Q, Qd)
+    F = 0.0
+    ax, ay, ath, aQ, _ = accel(pl, Q, F)
+    s_cur = None if pl is None else vy + om * pl["lever"] + pl["peta"]
+    work = lever_int = tau_int = 0.0  # friction's work on the kept motion, the two moments
+    t, steps, gain, top = 0.0, 0, 0.0, 0.0
+    while True:
+        if t > t_max:
+            raise CollisionError(
+                f"the grain did not leave the wall within t = {t_max:.3g} R/c; check v and alpha"
+            )
+        vx, vy, om = vx + 0.5 * dt * ax, vy + 0.5 * dt * ay, om + 0.5 * dt * ath
+        Qd = Qd + 0.5 * dt * aQ
+        lev = 0.0 if pl is None else F * (1.0 - pl["lever"])
+        tau = 0.0 if pl is None else float(pl["e"] @ pl["Yr"]) + pl["hat_torque"]
+        if pl is not None:
+            work += 0.25 * dt * F * (s_cur + slip(pl, vy, om, Qd))
+        x0, th, Q = x0 + dt * vx, th + dt * om, Q + dt * Qd
+        pl = contact.place(x0, th, Q, Qd)
+        if pl is None:
+            F = friction.step(np.zeros(1), 0.0, 0.0, mu)
+        else:
+            s_half = vy + om * pl["lever"] + pl["peta"]
+            F = friction.step(pl["P"], 0.0, s_half * dt, mu)
+        ax, ay, ath, aQ, bound = accel(pl, Q, F)
+        if wmax2 + bound > limit:
+            raise Unstable(bound)
+        vx, vy, om = vx + 0.5 * dt * ax, vy + 0.5 * dt * ay, om + 0.5 * dt * ath
+        Qd = Qd + 0.5 * dt * aQ
+        spring = V = 0.0
+        if pl is not None:
+            s_cur = slip(pl, vy, om, Qd)
+            work += 0.25 * dt * F * (s_half + s_cur)
+            pr = pl["P"] / pl["Fn"]
+            spring = 0.5 * F * F * float(pr @ hats.tangential @ pr)
+            V = contact.wall.energy(pl["e"])
+            lever_int += 0.5 * dt * (lev + F * (1.0 - pl["lever"]))
+            tau_int += 0.5 * dt * (tau + float(pl["e"] @ pl["Yr"]) + pl["hat_torque"])
+        else:
+            lever_int += 0.5 * dt * lev
+            tau_int += 0.5 * dt * tau
+        dissipated = -work - spring
+        gain, top = max(gain, top - dissipated), max(top, dissipated)
+        t += dt
+        steps += 1
+        if not math.isfinite(vx + vy + om + float(Qd @ Qd)):
+            raise Unstable(REPLAN * limit)
+        if vx >= 0.0:
+            continue
+        y = np.concatenate(([x0, th], Q, [vx, vy, om], Qd))
+        if -(x0 + 1.0 + G.free_reach(y)) > STOP_LOG / alpha:
+            break
+    if gain > GAIN_TOL * e0:
+        raise CollisionError(
+            f"friction's dissipation fell by {gain / e0:.2g} E0 during the run (more than "
+            f"{GAIN_TOL:g}): raise steps_per_contact"
+        )
+    inputs_out = (v_n, v_t, w0, mu, alpha, RESIDUAL, None)
+    return collision_result(G, (Q, vx, vy, om, Qd), V, (-work, lever_int, tau_int), e0,
+                            v_t - w0, inputs_out, ((RESIDUAL, 0.0),), t, steps, None)  # fmt: skip
+
+
+# Wall time of a run over its planned steps times one timed force evaluation (the nodes placed a
+# step apart, the hats' solve warm, the products): 2.1, 2.6, 4.6 and 3.4 in four runs (rigid at
+# alpha = 500, 20 modes at 2000 and 8000, 40 at 8000; v = 0.005, tan(theta)/mu = 0.3; one core
+# of this 2-core machine, 5 Dec 2026): the solve takes more Newton steps in the run's stick and
+# slip than in the timed evaluation.
+_STEP_OVER_TIMING = 3.0
+_WORK_SPREAD = 1.6
+
+
+def residual_work(
+    body: RimBody,
+    v_normal: float,
+    v_tangential: float,
+    alpha: float,
+    *,
+    spin: float = 0.0,
+    settings: ResidualSettings | None = None,
+    n_nodes: int | None = None,
+    repeats: int = 4,
+) -> ObliqueWork:
+    """The estimated time and memory of :func:`residual_collision` before it starts: its
+    planned steps (approach, contact and departure) times one force evaluation at the
+    compression ``v t_c / pi``, timed here (best of ``repeats``), times a measured factor;
+    ``spread`` the measured ratio's range either way. Builds the residual (a few seconds)."""
+    import time
+
+    s = settings if settings is not None else ResidualSettings()
+    v_n, v_t, w0 = float(v_normal), float(v_tangential), float(spin)
+    body = _residual_body(body)
+    G = Grain(body, alpha, n_nodes)
+    e0 = 0.5 * G.m * (v_n**2 + v_t**2) + 0.5 * G.inertia * w0**2
+    t_c = float(body.contact_time_estimate(v_n))
+    dt = _step(G, s, PILOT * stiffness_ceiling(G) * alpha * alpha * e0, t_c)
+    steps = (2.0 * approach_time(G, v_n) + t_c) / dt
+    hats = body.contact_residual(G.nodes, _reach(body, v_n, alpha))
+    x0 = -1.0 + v_n * t_c / math.pi
+    Q = np.zeros(G.N)
+    contact = _Contact(G, hats, alpha)
+    for x in np.linspace(-1.0, x0, 41):  # warm, as the run's solves start from the step before
+        contact.place(x, 0.0, Q, Q)
+    best = math.inf
+    for i in range(repeats):  # a step apart, as the run's: its solve has a step to make
+        start = time.perf_counter()
+        pl = contact.place(x0 + (i % 2) * v_n * dt, 0.0, Q, Q)
+        if pl is not None:
+            _ = (pl["J"].pull(-pl["e"], pl["p"]), pl["J"].norms(), pl["J"].dY(Q))
+        best = min(best, time.perf_counter() - start)
+    K = len(hats)
+    memory = float(body.wall_node_memory(alpha, n_nodes)) + 8.0 * (
+        6 * K * K + 4 * len(G.nodes) + 4 * len(G.nodes) * max(G.N, 1) // 8
+    )
+    return ObliqueWork(G.N, len(G.nodes), steps * _STEP_OVER_TIMING * best, memory, _WORK_SPREAD)
