@@ -270,6 +270,8 @@ def oblique_lines(a) -> list[str]:
             lines.append(_route_limit_line(p, r.oblique_kappa is not None))
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
+        if r.oblique_friction_model == RESIDUAL_CHOICE:
+            walls += " and twice each, extrapolated to the rigid wall"
         lines.append(
             f"spin in {spin_unit}, positive in the rolling sense; friction work as a fraction "
             f"of the kinetic energy before; {a.points[0].modes} modes; walls alpha = {walls} "

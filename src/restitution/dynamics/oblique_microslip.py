@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from restitution.dynamics.contact.exponential import NEGLIGIBLE, STOP_LOG
+from restitution.dynamics.contact.exponential import NEGLIGIBLE
 from restitution.dynamics.oblique import (
     Grain,
     ObliqueCollision,
@@ -73,6 +73,7 @@ from restitution.dynamics.oblique_verlet import (
     Unstable,
     approach_time,
     check_step_settings,
+    left_the_wall,
     planned_step,
     run_planned,
     stiffness_ceiling,
@@ -326,10 +327,7 @@ def _run(G, s, v_n, v_t, w0, mu, alpha, rot, e0, plan, t_max) -> ObliqueCollisio
         h = 0.5 * m * (vx**2 + vy**2 + float(Qd @ Qd + w2 @ (Q * Q))) + 0.5 * I * om**2 + V
         if not math.isfinite(h):
             raise Unstable(REPLAN * limit)
-        if vx >= 0.0:
-            continue
-        y = np.concatenate(([x0, th], Q, [vx, vy, om], Qd))
-        if -(x0 + 1.0 + G.free_reach(y)) > STOP_LOG / alpha:
+        if left_the_wall(G, x0, th, Q, vx, vy, om, Qd, alpha):
             break
     inputs = (v_n, v_t, w0, mu, alpha, MICROSLIP, kappa)
     return collision_result(G, (Q, vx, vy, om, Qd), V, (-work, lever_int, tau_int), e0,

@@ -24,6 +24,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from restitution.dynamics.contact.exponential import STOP_LOG
 from restitution.dynamics.run import CollisionError
 from restitution.errors import InputError, real
 
@@ -33,6 +34,8 @@ __all__ = [
     "Unstable",
     "approach_time",
     "check_step_settings",
+    "left_the_wall",
+    "planned_step",
     "run_planned",
     "stiffness_ceiling",
 ]
@@ -90,6 +93,15 @@ def run_planned(run: Callable[[float], object], ceiling: float, retries: int, ad
         except Unstable as exc:
             plan = max(ceiling, REPLAN * exc.bound) if plan < ceiling else REPLAN * exc.bound
     raise CollisionError(f"the Verlet step did not settle after {retries} plans; {advice}")
+
+
+def left_the_wall(G, x0, th, Q, vx, vy, om, Qd, alpha: float) -> bool:
+    """Whether the grain moves away (``vx < 0``) and even its free vibration cannot bring a node
+    within ``STOP_LOG / alpha`` of the wall (the oblique routes' stop)."""
+    if vx >= 0.0:
+        return False
+    y = np.concatenate(([x0, th], Q, [vx, vy, om], Qd))
+    return -(x0 + 1.0 + G.free_reach(y)) > STOP_LOG / alpha
 
 
 def planned_step(step_safety: float, wmax2: float, plan: float) -> float:
