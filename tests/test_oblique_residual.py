@@ -150,7 +150,7 @@ def test_the_rigid_wall_extrapolation_reaches_the_finite_sphere():
     wall (:func:`restitution.quasistatic.sphere_one_state.one_state_impact`, annuli: another
     code; measured -0.2536 against -0.2478), where the softer wall alone is 0.154 away. 30 s."""
     from restitution.bodies.sphere.surface import max_compression_estimate
-    from restitution.laws.oblique import wall_extrapolated
+    from restitution.dynamics.friction.residual import wall_extrapolated
     from restitution.quasistatic.sphere_one_state import one_state_impact
 
     v, mu = 1.9334e-4, 0.3

@@ -43,6 +43,24 @@ plane_option = click.option(
 )
 
 
+class LiveChoice(click.Choice):
+    """A choice whose allowed values are read when the command runs, from a callable (the
+    kinds, partners or routes registered then: one registered in its own module is
+    offered)."""
+
+    def __init__(self, choices_of) -> None:
+        self._choices_of = choices_of
+        super().__init__(list(choices_of()))
+
+    @property
+    def choices(self):
+        return tuple(self._choices_of())
+
+    @choices.setter
+    def choices(self, value) -> None:
+        """Ignored: the callable gives them."""
+
+
 class PathOption(click.Path):
     """``click.Path`` that refuses an empty path (issue 47: ``--out ''`` wrote into the working
     directory); ``.`` names the working directory."""

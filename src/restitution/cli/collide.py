@@ -17,6 +17,7 @@ from restitution.cli._common import (
     EXIT_FAILED_POINTS,
     EXIT_NOT_CONVERGED,
     LINEAR_SPEED,
+    LiveChoice,
     PathOption,
     body_nu,
     force_option,
@@ -44,6 +45,7 @@ from restitution.cli.report import (
     output_format,
     rich_text,
 )
+from restitution.dynamics.friction import friction_names, routes_help
 from restitution.errors import InputError
 from restitution.status import Status
 
@@ -291,13 +293,9 @@ def _vibrating() -> str:
 @click.option(
     "--friction-model",
     "friction_model",
-    type=click.Choice(["stick-slip", "microslip", "residual"]),
+    type=LiveChoice(friction_names),
     default=None,
-    help="With --angle: stick-slip (default): one stick/slip state for the whole contact, "
-    "DOP853 phase by phase; microslip: Coulomb's law at every wall node (Mindlin's annulus of "
-    "microslip), regularised by a tangential spring --kappa, Verlet steps; residual (the "
-    "sphere): one stick/slip state with the dropped modes following the contact statically, "
-    "normal and tangential, Verlet steps (docs/oblique.md).",
+    help=f"With --angle: {routes_help()} (docs/oblique.md).",
 )
 @click.option(
     "--kappa",

@@ -43,15 +43,15 @@ from restitution.cli._common import (
     stretched,
 )
 from restitution.cli.report import Report, emit, rich_text
-from restitution.dynamics.oblique import FRICTION_MODELS
+from restitution.dynamics.friction import default_friction_route, friction_route, refuse_kappa
 from restitution.dynamics.oblique_cost import check_reach
-from restitution.dynamics.oblique_microslip import MICROSLIP, MicroslipSettings
-from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
+from restitution.dynamics.oblique_microslip import MicroslipSettings
 from restitution.errors import InputError
 from restitution.status import Status
 
-STICK_SLIP = FRICTION_MODELS[0]
-"""``--friction-model``'s default: one stick/slip state for the contact."""
+STICK_SLIP = default_friction_route().name
+"""``--friction-model``'s default (the registered routes' first: one stick/slip state for the
+contact)."""
 DEFAULT_KAPPA = MicroslipSettings().kappa
 """``--kappa``'s default (the finite-element judge's)."""
 
@@ -115,11 +115,12 @@ class ObliqueRequest:
     force : bool
         Run beyond the time bound of one run.
     friction_model : str
-        ``"stick-slip"`` (one state for the contact), ``"microslip"`` (every wall node) or
-        ``"residual"`` (one state, the dropped modes' static residual).
+        The friction route's name (:mod:`restitution.dynamics.friction`): ``"stick-slip"``
+        (one state for the contact), ``"microslip"`` (every wall node), ``"residual"`` (one
+        state, the dropped modes' static residual), ...
     kappa : float or None
-        The microslip route's tangential spring over the normal stiffness; ``None`` with
-        stick-slip.
+        The tangential spring over the normal stiffness of a route that takes it (microslip);
+        ``None`` with the others.
     """
 
     geometry: str
@@ -134,6 +135,11 @@ class ObliqueRequest:
     force: bool = False
     friction_model: str = STICK_SLIP
     kappa: float | None = None
+
+    @property
+    def route(self):
+        """The friction route (:mod:`restitution.dynamics.friction`)."""
+        return friction_route(self.friction_model)
 
     @property
     def v_tangential(self) -> float:
@@ -186,39 +192,24 @@ def oblique_request(ctx, angle: float | None, mu: float | None) -> ObliqueReques
         raise InputError(f"--modes must be at least 1, got {modes}")
     nu_body = body_nu(p["nu"], p["plane"], geometry)
     check_mode_request(nu_body, modes, None, geometry)
-    model = p.get("friction_model") or STICK_SLIP
-    if model == RESIDUAL_CHOICE and not body_kind(geometry).oblique_residual:
-        served = [k.geometry for k in kinds().values() if k.oblique_residual]
-        raise InputError(
-            f"--friction-model residual needs the dropped modes' static flexibility at the "
-            f"contact, which the {', '.join(served)} has and the {geometry} has not yet; use "
-            "--friction-model stick-slip or microslip"
-        )
+    route = friction_route(p.get("friction_model"), body_kind(geometry))
     kappa = p.get("kappa")
-    if model == MICROSLIP:
+    refuse_kappa(route, kappa)
+    if route.takes_kappa:
         kappa = positive_finite("--kappa", DEFAULT_KAPPA if kappa is None else kappa)
-    elif kappa is not None:
-        raise InputError(
-            f"--kappa has no effect with --friction-model {model} (one stick/slip state); add "
-            "--friction-model microslip for friction at every wall node"
-        )
     return ObliqueRequest(geometry, p["nu"], p["plane"], nu_body, v, float(angle), float(mu),
-                          alpha, int(modes), bool(p["force"]), model, kappa)  # fmt: skip
+                          alpha, int(modes), bool(p["force"]), route.name, kappa)  # fmt: skip
 
 
 def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     """``collide --angle DEG --friction MU``: the request, the work, the run, the report."""
-    from restitution.dynamics.oblique import oblique_collision
-    from restitution.dynamics.oblique_cost import SUSPECT, oblique_work, suspect_advice
-    from restitution.dynamics.oblique_microslip import microslip_collision, microslip_work
-    from restitution.dynamics.oblique_residual import residual_collision, residual_work
+    from restitution.dynamics.oblique_cost import SUSPECT, suspect_advice
     from restitution.dynamics.run import CollisionError
 
     req = oblique_request(ctx, angle, mu)
     modes = get_modes(req.nu_body, count=req.modes, geometry=req.geometry)
     rim = body_kind(req.geometry).oblique_body(modes)
-    microslip = req.friction_model == MICROSLIP
-    residual = req.friction_model == RESIDUAL_CHOICE
+    route = req.route
     nodes = rim.wall_node_count(req.alpha)
     budget.check_memory_total(  # before the estimates below, which make the nodes
         "--modes",
@@ -227,16 +218,7 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         f"the {len(rim)} modes of both symmetries on the wall's {nodes} nodes",
         lambda _limit: "ask for fewer modes",
     )
-    if microslip:
-        settings = MicroslipSettings(kappa=req.kappa)
-        work = microslip_work(rim, req.v, req.v_tangential, req.alpha, settings=settings)
-        route = f"Verlet steps with friction at each of {work.nodes} wall nodes"
-    elif residual:
-        work = residual_work(rim, req.v, req.v_tangential, req.alpha)
-        route = f"Verlet steps with the dropped modes' residual on {work.nodes} wall nodes"
-    else:
-        work = oblique_work(rim, req.v, req.alpha)
-        route = f"DOP853 phase by phase on {work.nodes} nodes"
+    work = route.work(rim, req.v, req.v_tangential, req.alpha, req.kappa)
     budget.check_memory_total(
         "--modes",
         req.modes,
@@ -248,7 +230,7 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         "--modes",
         req.modes,
         work.seconds,
-        f"{route}, {len(rim)} modes of both symmetries; measured runs took up to "
+        f"{route.plan(work)}, {len(rim)} modes of both symmetries; measured runs took up to "
         f"{work.spread:g} times the estimate",
         lambda limit: f"about {work.modes_within(limit, req.modes)} modes fit",
         force=req.force,
@@ -260,19 +242,11 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
     )
     start = time.perf_counter()
     try:
-        if microslip:
-            result = microslip_collision(
-                rim, req.v, req.v_tangential, req.mu, req.alpha, settings=settings
-            )
-        elif residual:
-            result = residual_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
-        else:
-            result = oblique_collision(rim, req.v, req.v_tangential, req.mu, req.alpha)
+        result = route.collision(rim, req.v, req.v_tangential, req.mu, req.alpha, req.kappa)
     except CollisionError as exc:
         raise CollisionError(
-            f"{exc} (rtol and the step are arguments of restitution.dynamics.oblique."
-            "oblique_collision, oblique_microslip.microslip_collision and "
-            "oblique_residual.residual_collision, not options of the command)"
+            f"{exc} (rtol and the step are arguments of the {route.name} route's collision "
+            "function, restitution.dynamics.friction, not options of the command)"
         ) from exc
     wall = time.perf_counter() - start
     status, advice = stretched(Status.OK, None, req.v, LINEAR_SPEED, result)
@@ -303,7 +277,7 @@ def collide_oblique(ctx, angle, mu, fmt: str, strict: bool) -> None:
         "phases": [{"phase": name, "t": t} for name, t in result.phases],
         "t_end": result.t_end,
         "steps": result.steps,
-        "step_kind": "Verlet" if microslip or residual else "DOP853",
+        "step_kind": route.integrator,
         "rim_modes": len(rim),
         "estimated_time_s": work.seconds,
         "wall_time_s": wall,
@@ -349,41 +323,26 @@ def _mode_rows(rim, result) -> list[dict]:
     ]
 
 
-def _model_text(req) -> str:
-    if req.friction_model == MICROSLIP:
-        return f"microslip at every wall node, kappa = {req.kappa:g}"
-    if req.friction_model == RESIDUAL_CHOICE:
-        return "one stick/slip state, the dropped modes' static residual"
-    return "one stick/slip state"
-
-
 def _text(req, result, n_rim, wall, status, advice) -> str:
-    steps = "DOP853" if req.friction_model == STICK_SLIP else "Verlet"
+    route = req.route
 
     def draw(console):
         beta = "undefined at angle 0" if math.isnan(result.beta) else f"{result.beta:.6f}"
-        phases = ", ".join(f"{name} at {t:.4g}" for name, t in result.phases[:6])
-        more = f" and {len(result.phases) - 6} more" if len(result.phases) > 6 else ""
-        if req.friction_model == MICROSLIP:
-            contact = "each wall node sticks or slips on its own"
-        elif req.friction_model == RESIDUAL_CHOICE:
-            contact = "one state, its stick force carried by the residual's compliance"
-        else:
-            contact = f"{len(result.phases)} phases ({phases}{more}; R/c)"
+        contact = route.contact(result)
         console.print(
             f"[bold]epsilon_normal = {result.epsilon_normal:.8f}  beta = {beta}  "
             f"spin after = {result.spin:.6g} c/R[/bold]\n"
             f"oblique impact of the {req.geometry}, nu = {req.nu_body:g}: v = {req.v:g} c "
             f"normal, {req.v_tangential:.6g} c tangential ({req.angle:g} degrees from the "
-            f"normal), friction mu = {req.mu:g} ({_model_text(req)}), alpha = {req.alpha:g}, "
-            f"{req.modes} modes "
+            f"normal), friction mu = {req.mu:g} ({route.describe(req.kappa)}), "
+            f"alpha = {req.alpha:g}, {req.modes} modes "
             f"({n_rim} of both symmetries)\n"
             f"after (fractions of E0): translation {result.translation_energy:.6g}, rotation "
             f"{result.rotation_energy:.6g}, left in the modes {result.vibration_energy:.6g}, "
             f"friction work {result.friction_work:.6g}; energy balance "
             f"{result.energy_balance:.2e}\n"
-            f"contact: {contact}, stop at {result.t_end:.4g} R/c, {result.steps} {steps} "
-            f"steps, {wall:.2f} s"
+            f"contact: {contact}, stop at {result.t_end:.4g} R/c, {result.steps} "
+            f"{route.integrator} steps, {wall:.2f} s"
         )
         if status != Status.OK:
             console.print(f"[yellow]status {status}: {advice}[/yellow]")

@@ -18,6 +18,7 @@ import click
 from restitution.atomic import writing
 from restitution.cli._common import (
     EXIT_FAILED_POINTS,
+    LiveChoice,
     PathOption,
     check_figure_file,
     note,
@@ -41,21 +42,9 @@ _TYPES = {
 }
 
 
-class _LiveChoice(click.Choice):
-    """A choice whose allowed values are read when the command runs, from a callable (the
-    partner kinds registered then: a kind registered in its own module is offered)."""
-
-    def __init__(self, choices_of) -> None:
-        self._choices_of = choices_of
-        super().__init__(list(choices_of()))
-
-    @property
-    def choices(self):
-        return tuple(self._choices_of())
-
-    @choices.setter
-    def choices(self, value) -> None:
-        """Ignored: the callable gives them."""
+def _help(text) -> str:
+    """A field's help: its text, or the text its callable gives (a registry's sentences)."""
+    return text() if callable(text) else text
 
 
 def _request_options(func):
@@ -67,10 +56,10 @@ def _request_options(func):
             continue
         kwargs = dict(_TYPES.get(meta["type"], {}))
         if meta["type"] == "choice":
-            kwargs = dict(type=_LiveChoice(meta["choices"]))
+            kwargs = dict(type=LiveChoice(meta["choices"]))
         required = f.default is MISSING and f.default_factory is MISSING
         names = (meta["option"], *meta.get("aliases", ()))
-        func = click.option(*names, f.name, required=required, help=meta["help"],
+        func = click.option(*names, f.name, required=required, help=_help(meta["help"]),
                             **kwargs)(func)  # fmt: skip
     return func
 

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import math
 
-from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
 from restitution.laws.partners.base import partner_of
 from restitution.status import Status
 
@@ -219,14 +218,6 @@ def _uninformative_part(note: str) -> str:
     return note
 
 
-def _friction_text(r) -> str:
-    if r.oblique_kappa is not None:
-        return f"microslip at every wall node, kappa = {r.oblique_kappa:g}"
-    if r.oblique_friction_model == RESIDUAL_CHOICE:
-        return "one stick/slip state for the contact, the dropped modes' static residual"
-    return "one stick/slip state for the contact"
-
-
 def oblique_lines(a) -> list[str]:
     """The oblique answer (:class:`restitution.laws.oblique.ObliqueAnswer`) for people: the
     grain and the impact, a row per speed with each number's change from half the modes."""
@@ -234,10 +225,10 @@ def oblique_lines(a) -> list[str]:
     lines = [
         r.grain.describe(),
         f"oblique impact on the rigid wall: {r.angle:g} degrees from the normal, friction mu = "
-        f"{r.friction:g} ({_friction_text(r)}); each speed is the normal one (tangential: w "
-        "tan(angle)), no spin before; modal oblique route (docs/oblique.md), +- the change "
-        "from half the modes (with the distance from the limits shown below each row, where "
-        "shown)",
+        f"{r.friction:g} ({r.oblique_route.describe(r.oblique_kappa)}); each speed is the "
+        "normal one (tangential: w tan(angle)), no spin before; modal oblique route "
+        "(docs/oblique.md), +- the change from half the modes (with the distance from the "
+        "limits shown below each row, where shown)",
     ]
     spin_unit = "rad/s" if r.radius is not None else "m/s (omega R; --radius gives rad/s)"
     lines.append(
@@ -267,11 +258,13 @@ def oblique_lines(a) -> list[str]:
                 f"{p.beta_quasistatic:.5f} with one stick/slip state (law (a), the DEM codes'), "
                 f"{p.beta_microslip:.5f} with microslip (law (b))"
             )
-            lines.append(_route_limit_line(p, r.oblique_kappa is not None))
+            lines.append(_route_limit_line(p, r.oblique_route.every_node))
     if a.points:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
-        if r.oblique_friction_model == RESIDUAL_CHOICE:
-            walls += " and twice each, extrapolated to the rigid wall"
+        extra = r.oblique_route.law_walls[1:]
+        if extra:
+            walls += (f" and {' and '.join(f'{f:g}' for f in extra)} times each, extrapolated "
+                      "to the rigid wall")  # fmt: skip
         lines.append(
             f"spin in {spin_unit}, positive in the rolling sense; friction work as a fraction "
             f"of the kinetic energy before; {a.points[0].modes} modes; walls alpha = {walls} "

@@ -16,9 +16,17 @@ from pathlib import Path
 
 import click
 
-from restitution.cli._common import PathOption, check_figure_file, note, quiet, quiet_option
+from restitution.cli._common import (
+    LiveChoice,
+    PathOption,
+    check_figure_file,
+    note,
+    quiet,
+    quiet_option,
+)
 from restitution.cli.epsilon import _ListCommand
 from restitution.cli.report import Report, emit, format_options, output_format, rich_text
+from restitution.dynamics.friction import friction_names
 from restitution.laws.units import SHAPES
 
 __all__ = ["oblique_fit"]
@@ -26,12 +34,6 @@ __all__ = ["oblique_fit"]
 
 class _Lists(_ListCommand):
     list_options = ("--angle", "--speed")
-
-
-def _friction_models() -> list[str]:
-    from restitution.laws.request import friction_models
-
-    return list(friction_models())
 
 
 @click.command(name="oblique-fit", cls=_Lists)
@@ -56,7 +58,7 @@ def _friction_models() -> list[str]:
 @click.option("--modes", type=int, default=None,
               help="Modes of each run (the error is the change from half as many). Default: "
               "law --angle's (160 for a cylinder or thin disk, 40 for a sphere).")  # fmt: skip
-@click.option("--friction-model", type=click.Choice(_friction_models()), default=None,
+@click.option("--friction-model", type=LiveChoice(friction_names), default=None,
               help="As `law --friction-model` (default stick-slip).")  # fmt: skip
 @click.option(
     "--kappa",

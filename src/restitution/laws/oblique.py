@@ -66,19 +66,7 @@ from dataclasses import asdict, dataclass
 from restitution import budget
 from restitution.bodies.cache import get_modes
 from restitution.bodies.kinds import body_kind
-from restitution.dynamics.oblique import oblique_collision
-from restitution.dynamics.oblique_cost import check_reach, oblique_work, suspect_advice
-from restitution.dynamics.oblique_microslip import (
-    MICROSLIP,
-    MicroslipSettings,
-    microslip_collision,
-    microslip_work,
-)
-from restitution.dynamics.oblique_residual import (
-    RESIDUAL_CHOICE,
-    residual_collision,
-    residual_work,
-)
+from restitution.dynamics.oblique_cost import check_reach, suspect_advice
 from restitution.errors import InputError
 from restitution.laws.units import BODIES
 from restitution.quasistatic.oblique import MODELS as QUASISTATIC_MODELS
@@ -111,18 +99,6 @@ is its :attr:`~restitution.bodies.kinds.BodyKind.oblique_law_modes` (:func:`law_
 LARGE_SPEED = 0.3
 """Above this normal speed (``c``) linear elasticity is stretched: status ``large-deformation``
 (as ``collide``)."""
-
-_NOT_EXTRAPOLATED = (
-    "one mode count on one wall, not extrapolated to N, alpha -> infinity: the error is the "
-    "change from half the modes; beta in partial slip still moves with the modes "
-    "(docs/oblique.md)"
-)
-_WALL_EXTRAPOLATED = (
-    "one mode count with the dropped modes' static residual, extrapolated to the rigid wall from "
-    "alpha and 2 alpha (order 1 in 1/alpha), not to N -> infinity: the error is the change "
-    "from half the modes and, for beta, the distance from the route's quasistatic limit "
-    "(docs/oblique.md)"
-)
 
 
 @dataclass(frozen=True)
@@ -291,8 +267,8 @@ def law_modes(kind) -> int:
 @dataclass(frozen=True, eq=False)
 class _Plan:
     """What :func:`oblique_answer` runs: the kind, the body's ``nu``, ``tan(angle)``, the
-    modes, the speeds ``(w, v, alpha)``, the bodies of both mode counts, whether friction acts
-    at every node, ``run(body, v, alpha)``, and the estimated seconds with how they were
+    modes, the speeds ``(w, v, alpha)``, the bodies of both mode counts, the friction route
+    (:mod:`restitution.dynamics.friction`), and the estimated seconds with how they were
     estimated."""
 
     kind: object
@@ -301,11 +277,15 @@ class _Plan:
     modes: int
     speeds: list
     bodies: dict
-    microslip: bool
-    run: Callable
+    route: object
     seconds: float
     how: str
-    residual: bool = False
+
+    def run(self, body, v: float, alpha: float, request):
+        """The route's law run of ``body`` at ``(v, alpha)`` (its walls, extrapolated where it
+        has two)."""
+        return self.route.law_collision(body, v, v * self.tan, request.friction, alpha,
+                                        request.oblique_kappa)  # fmt: skip
 
 
 def _plan(r, modes: int | None) -> _Plan:
@@ -339,83 +319,13 @@ def _plan(r, modes: int | None) -> _Plan:
             f"{top.wall_node_count(alpha)} nodes",
             lambda _limit: "ask for fewer modes",
         )
-    microslip = r.oblique_friction_model == MICROSLIP
-    residual = r.oblique_friction_model == RESIDUAL_CHOICE
-    settings = MicroslipSettings(kappa=r.oblique_kappa) if microslip else None
-
-    def work(b, v, a):
-        if microslip:
-            return microslip_work(b, v, v * tan, a, settings=settings)
-        if residual:  # both walls of the extrapolation (wall_extrapolated)
-            return _Sum(residual_work(b, v, v * tan, a), residual_work(b, v, v * tan, 2.0 * a))
-        return oblique_work(b, v, a)
-
-    def run(b, v, a):
-        if microslip:
-            return microslip_collision(b, v, v * tan, r.friction, a, settings=settings)
-        if residual:
-            return wall_extrapolated(
-                residual_collision(b, v, v * tan, r.friction, a),
-                residual_collision(b, v, v * tan, r.friction, 2.0 * a),
-            )
-        return oblique_collision(b, v, v * tan, r.friction, a)
-
-    seconds = sum(work(b, v, a).seconds for b in bodies.values() for _, v, a in plans)
+    route = r.oblique_route
+    seconds = sum(route.law_work(b, v, v * tan, a, r.oblique_kappa).seconds
+                  for b in bodies.values() for _, v, a in plans)  # fmt: skip
     if kind.oblique_quasistatic in FINITE_BODY_SECONDS and tan != 0.0 and r.friction:
         estimate = FINITE_BODY_SECONDS[kind.oblique_quasistatic]
-        seconds += sum(estimate(v, nu, microslip) for _, v, _ in plans)
-    if microslip:
-        how = "planned Verlet steps times one timed step; measured runs took 0.88-4.8 times it"
-    elif residual:
-        how = (
-            "two walls (alpha and 2 alpha) each: planned Verlet steps times one timed force "
-            "evaluation times 1.65 (measured 1.56-1.77)"
-        )
-    else:
-        how = (
-            "measured on softer walls, alpha <= 1000-4000; on the harder walls of slow impacts "
-            "it overestimates: steel at 1 m/s took a fifth to a half of it, docs/oblique.md"
-        )
-    return _Plan(kind, nu, tan, modes, plans, bodies, microslip, run, seconds, how, residual)
-
-
-@dataclass(frozen=True)
-class _Sum:
-    """Two runs' estimated work as one (the residual route's two walls)."""
-
-    first: object
-    second: object
-
-    @property
-    def seconds(self) -> float:
-        return float(self.first.seconds + self.second.seconds)
-
-
-WALL_FIELDS = ("beta", "v_tangential", "spin", "contact_velocity", "friction_work")
-"""The results the residual route extrapolates to the rigid wall (:func:`wall_extrapolated`): the
-tangential ones. ``epsilon_normal`` is the harder wall's: the route's hats couple the spin to
-the normal motion by about 1e-5 (docs/oblique.md), which the extrapolation would triple, and
-the normal coefficient's own approach to the rigid wall is the head-on law's, served beside it
-and counted in its error."""
-
-
-def wall_extrapolated(soft, hard):
-    """The residual route's results on the walls ``alpha`` (``soft``) and ``2 alpha``
-    (``hard``) extrapolated to the rigid wall, ``2 hard - soft`` in each of
-    :data:`WALL_FIELDS` (the rest, ``epsilon_normal`` and the energies, are ``hard``'s; the
-    energy balance the larger of the two).
-
-    The one-state ``beta`` approaches the rigid wall at order 1 in ``1 / alpha``: the steel
-    ball's rigid-sphere residual at 1 m/s, ``alpha delta_max`` = 80, 160, 320, stands 0.154,
-    0.080, 0.041 below its quasistatic limit at ``tan(theta)/mu = 0.5`` and 0.035, 0.017, 0.008
-    at 1.92 (ratios 0.47-0.52 per doubling), and the extrapolation from 80 and 160 lands 0.006
-    and 0.001 from that limit (docs/oblique.md, "A static residual for the one-state
-    route")."""
-    from dataclasses import replace
-
-    values = {f: 2.0 * getattr(hard, f) - getattr(soft, f) for f in WALL_FIELDS}
-    balance = max(abs(soft.energy_balance), abs(hard.energy_balance))
-    return replace(hard, **values, energy_balance=math.copysign(balance, hard.energy_balance))
+        seconds += sum(estimate(v, nu, route.every_node) for _, v, _ in plans)
+    return _Plan(kind, nu, tan, modes, plans, bodies, route, seconds, route.law_how)
 
 
 def oblique_seconds(request, modes: int | None = None) -> tuple[float, str]:
@@ -457,11 +367,11 @@ def oblique_answer(
         start = time.perf_counter()
         # The overflowing trial steps of these hard walls are handled (and silenced) by
         # oblique_collision; the accepted run balances its energy to ~1e-11 (energy_balance).
-        runs = {n: plan.run(b, v, alpha) for n, b in bodies.items()}
+        runs = {n: plan.run(b, v, alpha, r) for n, b in bodies.items()}
         wall = time.perf_counter() - start
-        limits = _quasistatic_betas(kind, v, v * tan, r.friction, nu, plan.microslip)
+        limits = _quasistatic_betas(kind, v, v * tan, r.friction, nu, plan.route.every_node)
         points.append(_point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits,
-                             plan.microslip, plan.residual))  # fmt: skip
+                             plan.route))  # fmt: skip
     body = bodies[modes]
     return ObliqueAnswer(r, r.shape, nu, grain.c_m_s, tuple(points),
                          1.0 + body.mass / body.inertia)  # fmt: skip
@@ -592,19 +502,17 @@ def _normal_error(fine, coarse, law_point) -> float:
     return math.sqrt(change**2 + gap**2 + float(law_point.epsilon_err or 0.0) ** 2)
 
 
-def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits, microslip,
-           residual=False) -> ObliquePoint:  # fmt: skip
-    """One speed's answer; ``beta``'s error holds the distance from the route's own quasistatic
-    limit (:meth:`_Limits.route`)."""
+def _point(r, grain, w, v, alpha, runs, modes, wall, law_point, limits,
+           route) -> ObliquePoint:  # fmt: skip
+    """One speed's answer; ``beta``'s error holds the distance from the friction ``route``'s
+    own quasistatic limit (:meth:`_Limits.route`)."""
+    microslip = route.every_node
     fine, coarse = runs[modes], runs[modes // 2]
     c = grain.c_m_s
     spin, spin_err = fine.spin * c, abs(fine.spin - coarse.spin) * c
     rad = None if r.radius is None else 1.0 / r.radius
     beta = None if math.isnan(fine.beta) else fine.beta
-    status, advice = (
-        Status.COMPUTED_NOT_ASYMPTOTIC,
-        (_WALL_EXTRAPOLATED if residual else _NOT_EXTRAPOLATED),
-    )
+    status, advice = Status.COMPUTED_NOT_ASYMPTOTIC, route.law_advice
     suspect = suspect_advice(modes, alpha, r.friction)
     if v > LARGE_SPEED:
         status, advice = Status.LARGE_DEFORMATION, Status.LARGE_DEFORMATION.advice

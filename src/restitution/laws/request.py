@@ -46,15 +46,19 @@ MEASURED_FIXES = ("relaxation-time", "limiting-pressure", "both")
 ROUTES = ("modal", "residual")
 
 
-def friction_models() -> tuple[str, str, str]:
-    """``--friction-model``'s choices, the default first: the oblique routes' names
-    (:mod:`restitution.dynamics.oblique`, :mod:`restitution.dynamics.oblique_microslip`,
-    :mod:`restitution.dynamics.oblique_residual`)."""
-    from restitution.dynamics.oblique import FRICTION_MODELS
-    from restitution.dynamics.oblique_microslip import MICROSLIP
-    from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
+def friction_models() -> tuple[str, ...]:
+    """``--friction-model``'s choices, the default first: the registered friction routes'
+    names (:mod:`restitution.dynamics.friction`)."""
+    from restitution.dynamics.friction import friction_names
 
-    return FRICTION_MODELS[0], MICROSLIP, RESIDUAL_CHOICE
+    return friction_names()
+
+
+def _friction_help() -> str:
+    """``--friction-model``'s help, from the registered routes' own sentences."""
+    from restitution.dynamics.friction import routes_help
+
+    return f"With --angle: {routes_help()}."
 
 
 """``--route`` of ``--compute``: the modal production or the static residual
@@ -265,12 +269,7 @@ class LawRequest:
         default=None,
         metadata=option(
             "--friction-model",
-            "With --angle: 'stick-slip' (default; one stick/slip state for the whole contact, "
-            "DOP853 phase by phase) or 'microslip' (Coulomb's law at every wall node, "
-            "Mindlin's annulus of microslip, regularised by --kappa; Verlet steps; closer to "
-            "the finite elements in partial slip) or 'residual' (the sphere: one stick/slip "
-            "state with the dropped modes following the contact statically, normal and "
-            "tangential; Verlet steps; beta settled in the modes, docs/oblique.md).",
+            _friction_help,
             "choice",
             choices=lambda: list(friction_models()),
         ),
@@ -481,9 +480,21 @@ class LawRequest:
         return self.friction_model or friction_models()[0]
 
     @property
+    def oblique_route(self):
+        """With ``angle``: the friction route (:mod:`restitution.dynamics.friction`) of
+        :attr:`oblique_friction_model`; else ``None``."""
+        if self.angle is None:
+            return None
+        from restitution.dynamics.friction import friction_route
+
+        return friction_route(self.oblique_friction_model)
+
+    @property
     def oblique_kappa(self) -> float | None:
-        """With ``angle`` and the microslip model: ``kappa`` or its default; else ``None``."""
-        if self.oblique_friction_model != friction_models()[1]:
+        """With ``angle`` and a route that takes ``kappa`` (microslip): ``kappa`` or its
+        default; else ``None``."""
+        route = self.oblique_route
+        if route is None or not route.takes_kappa:
             return None
         from restitution.dynamics.oblique_microslip import MicroslipSettings
 

@@ -115,14 +115,10 @@ def _check_oblique(r) -> None:
             "--angle needs --friction MU (Coulomb's coefficient, 0 frictionless): an oblique "
             "impact is both"
         )
-    from restitution.dynamics.oblique_microslip import MICROSLIP
+    from restitution.dynamics.friction import friction_route, friction_routes, refuse_kappa
 
-    if r.kappa is not None and r.friction_model != MICROSLIP:
-        raise InputError(
-            f"--kappa has no effect with --friction-model {r.friction_model or 'stick-slip'} "
-            "(one stick/slip state); add --friction-model microslip for friction at every "
-            "wall node"
-        )
+    route = friction_route(r.friction_model)
+    refuse_kappa(route, r.kappa)
     for f in fields(r):
         if f.name in OBLIQUE_FIELDS or f.name == "extra":
             continue
@@ -154,14 +150,12 @@ def _check_oblique(r) -> None:
             f"--shape {' or '.join(shapes)} have one, or leave out --angle and --friction for "
             f"the {r.shape}'s head-on law"
         )
-    from restitution.dynamics.oblique_residual import RESIDUAL_CHOICE
-
-    if r.friction_model == RESIDUAL_CHOICE and not kind.oblique_residual:
-        shapes = [s for s, name in BODIES.items() if body_kind(name).oblique_residual]
+    if not route.serves(kind):
+        shapes = [s for s, name in BODIES.items() if route.serves(body_kind(name))]
         raise InputError(
-            f"--friction-model residual needs the dropped modes' static flexibility at the "
-            f"contact, which the {r.shape}'s route has not yet (--shape {' or '.join(shapes)} "
-            "has it); use --friction-model stick-slip or microslip"
+            f"--friction-model {route.name} needs {route.needs}, which the {r.shape}'s route "
+            f"has not yet (--shape {' or '.join(shapes)} has it); use --friction-model "
+            f"{' or '.join(o.name for o in friction_routes() if o.serves(kind))}"
         )
 
 

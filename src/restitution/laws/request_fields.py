@@ -53,7 +53,8 @@ def option(
     """Field metadata: the command-line option ``name`` of a field, its ``help``, its kind
     ``type`` (:data:`KINDS`) and, for a number, its ``unit`` (``""``: dimensionless) and whether
     it must be ``positive``; ``extra`` holds ``choices`` (a callable giving the allowed strings)
-    and ``aliases``."""
+    and ``aliases``. ``help`` may be a callable giving it (from a registry read when the command
+    line is built)."""
     if type not in KINDS:
         raise ValueError(f"unknown option kind {type!r}; one of {KINDS}")
     return {"option": name, "help": help, "type": type, "unit": unit, "positive": positive,
