@@ -106,7 +106,8 @@ def test_a_registered_route_reaches_collide(cli, toy):
     code, _, err = cli("collide", "--angle", "30", "--friction", "0.5", "--friction-model",
                        toy.name, "--v", "0.05", "--alpha", "100", "--modes", "20")  # fmt: skip
     one_line_error(code, err, f"--friction-model {toy.name}", "a test's toy kind",
-                   "the sphere has and the disk has not yet", "stick-slip or microslip")  # fmt: skip
+                   "the sphere has and the disk has not yet",
+                   "stick-slip or microslip")  # fmt: skip
 
 
 def test_a_registered_route_reaches_the_law(toy):

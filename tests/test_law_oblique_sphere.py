@@ -275,8 +275,8 @@ def test_the_ball_with_the_residual_is_near_its_own_limit(cli):
 def test_the_wall_extrapolation_is_linear_in_the_tangential_results():
     """``wall_extrapolated``: ``2 hard - soft`` in beta, the spin, the tangential speeds and the
     friction work; ``epsilon_normal`` and the rest the harder wall's; the larger energy miss."""
-    from restitution.dynamics.oblique import ObliqueCollision
     from restitution.dynamics.friction.residual import WALL_FIELDS, wall_extrapolated
+    from restitution.dynamics.oblique import ObliqueCollision
 
     base = dict.fromkeys(f.name for f in dataclasses.fields(ObliqueCollision))
     soft = ObliqueCollision(

@@ -161,3 +161,25 @@ def test_the_rigid_wall_extrapolation_reaches_the_finite_sphere():
     limit = one_state_impact(v, vt, mu, NU).beta
     assert abs(wall_extrapolated(soft, hard).beta - limit) < 0.01
     assert abs(soft.beta - limit) > 0.1
+
+
+def test_a_falling_dissipation_halves_the_step(monkeypatch):
+    """A run whose friction dissipation falls by more than GAIN_TOL at 4000 steps per contact
+    time (1.1e-6 E0: 4 modes, v = 0.02, alpha = 300, 30 degrees, mu = 0.3, measured stop 86) is
+    repeated at 8000 and gives that run's answer; refused, naming the steps, when no doubling
+    is allowed."""
+    from restitution.bodies.cache import get_modes
+    from restitution.dynamics import oblique_residual as route
+    from restitution.dynamics.run import CollisionError
+
+    cap = cap_modes(get_modes(0.3, count=4, geometry="sphere"))
+    args = (cap, 0.02, 0.02 * math.tan(math.radians(30.0)), 0.3, 300.0)
+    out = route.residual_collision(*args)
+    at_8000 = route.residual_collision(
+        *args, settings=route.ResidualSettings(steps_per_contact=8000)
+    )
+    assert out.steps == at_8000.steps and out.beta == at_8000.beta
+    assert abs(out.energy_balance) < 1e-6
+    monkeypatch.setattr(route, "_GAIN_RETRIES", 0)
+    with pytest.raises(CollisionError, match="at 4000 steps per contact time"):
+        route.residual_collision(*args)
