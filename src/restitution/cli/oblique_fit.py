@@ -59,7 +59,8 @@ class _Lists(_ListCommand):
               help="Modes of each run (the error is the change from half as many). Default: "
               "law --angle's (160 for a cylinder or thin disk, 40 for a sphere).")  # fmt: skip
 @click.option("--friction-model", type=LiveChoice(friction_names), default=None,
-              help="As `law --friction-model` (default stick-slip).")  # fmt: skip
+              help="As `law --friction-model` (default: law's for the shape: stick-slip for a "
+              "cylinder or thin disk, residual for a sphere).")  # fmt: skip
 @click.option(
     "--kappa",
     type=float,

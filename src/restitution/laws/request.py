@@ -474,10 +474,16 @@ class LawRequest:
 
     @property
     def oblique_friction_model(self) -> str | None:
-        """With ``angle``: ``friction_model`` or its default (``"stick-slip"``); else ``None``."""
+        """With ``angle``: ``friction_model`` or the law's default route for this grain's kind
+        (:func:`restitution.dynamics.friction.law_default`: the residual route for the sphere,
+        stick-slip for the disk); else ``None``."""
         if self.angle is None:
             return None
-        return self.friction_model or friction_models()[0]
+        if self.friction_model is not None:
+            return self.friction_model
+        from restitution.dynamics.friction import law_default
+
+        return law_default(body_kind(BODIES[self.shape])).name
 
     @property
     def oblique_route(self):

@@ -117,8 +117,9 @@ def _check_oblique(r) -> None:
         )
     from restitution.dynamics.friction import friction_route, friction_routes, refuse_kappa
 
-    route = friction_route(r.friction_model)
-    refuse_kappa(route, r.kappa)
+    route = friction_route(r.friction_model) if r.friction_model else None
+    if route is not None:
+        refuse_kappa(route, r.kappa)
     for f in fields(r):
         if f.name in OBLIQUE_FIELDS or f.name == "extra":
             continue
@@ -150,6 +151,11 @@ def _check_oblique(r) -> None:
             f"--shape {' or '.join(shapes)} have one, or leave out --angle and --friction for "
             f"the {r.shape}'s head-on law"
         )
+    if route is None:
+        from restitution.dynamics.friction import law_default
+
+        route = law_default(kind)
+        refuse_kappa(route, r.kappa)
     if not route.serves(kind):
         shapes = [s for s, name in BODIES.items() if route.serves(body_kind(name))]
         raise InputError(

@@ -8,8 +8,9 @@ A **friction route** (:class:`FrictionRoute`) takes a grain's modes (the kind's
 ``oblique_body``), the normal and tangential speeds, ``mu`` and the wall, and returns an
 :class:`~restitution.dynamics.oblique.ObliqueCollision`. Each declares
 
-* its ``name`` (``--friction-model``'s word), ``help`` (the option's sentence on it) and
-  ``order`` (the lowest is the default),
+* its ``name`` (``--friction-model``'s word), ``help`` (the option's sentence on it),
+  ``order`` (the lowest is the default) and ``law_rank`` (the lowest that serves a kind is
+  ``law --angle``'s default for it: the law is served by its best route),
 * whether it serves a body kind (:meth:`FrictionRoute.serves`) and, where not, what it
   ``needs`` (the refusal's words),
 * whether friction acts at every wall node (``every_node``: its low-speed limit is microslip's,
@@ -40,6 +41,7 @@ __all__ = [
     "friction_route",
     "friction_names",
     "friction_routes",
+    "law_default",
     "refuse_kappa",
     "routes_help",
     "register_friction_route",
@@ -58,7 +60,11 @@ class FrictionRoute(Protocol):
     """What it is, in the option's help: one sentence."""
 
     order: int
-    """Its place among the choices; the lowest is the default."""
+    """Its place among the choices; the lowest is the default (``collide --angle``'s)."""
+
+    law_rank: int
+    """Its place among the routes that serve a kind when ``law --angle`` names none: the
+    lowest that serves the kind is the law's default for it (:func:`law_default`)."""
 
     integrator: str
     """The steps it takes, in words (``"DOP853"``, ``"Verlet"``)."""
@@ -131,7 +137,7 @@ def register_friction_route(route: FrictionRoute) -> FrictionRoute:
     if not isinstance(route, FrictionRoute):
         raise TypeError(
             f"{route!r} does not implement the FrictionRoute protocol (name, help, order, "
-            "integrator, every_node, takes_kappa, needs, law_walls, law_how, law_advice, "
+            "law_rank, integrator, every_node, takes_kappa, needs, law_walls, law_how, law_advice, "
             "serves, describe, contact, work, plan, collision, law_work, law_collision)"
         )
     _ROUTES[route.name] = route
@@ -154,8 +160,31 @@ def friction_names() -> tuple[str, ...]:
 
 
 def routes_help() -> str:
-    """``--friction-model``'s help: each route's name and sentence, the default first."""
-    return "; or ".join(f"'{r.name}' ({r.help})" for r in friction_routes())
+    """``--friction-model``'s help: each route's name and sentence, the default first, with the
+    kinds it serves where not every kind, and where it is the default (``collide``'s; ``law``'s
+    for the kinds of :func:`law_default`)."""
+    from restitution.bodies.kinds import kinds
+
+    oblique = [k for k in kinds().values() if k.oblique_body is not None]
+    parts = []
+    for r in friction_routes():
+        served = [k.geometry for k in oblique if r.serves(k)]
+        only = "" if len(served) == len(oblique) else f"the {' and the '.join(served)}: "
+        where = ["collide's default"] if r is default_friction_route() else []
+        law_kinds = [k.geometry for k in oblique if law_default(k) is r]
+        if law_kinds:
+            where.append(f"law's default for the {' and the '.join(law_kinds)}")
+        parts.append(f"'{r.name}' ({only}{r.help}{'; ' if where else ''}{', '.join(where)})")
+    return "; or ".join(parts)
+
+
+def law_default(kind) -> FrictionRoute:
+    """The route ``law --angle`` takes for the body kind ``kind`` when none is named: the
+    lowest ``law_rank`` among the routes that serve it."""
+    serving = [r for r in friction_routes() if r.serves(kind)]
+    if not serving:
+        raise InputError(f"no friction route serves the {kind.geometry}")
+    return min(serving, key=lambda r: (r.law_rank, r.order, r.name))
 
 
 def default_friction_route() -> FrictionRoute:

@@ -26,6 +26,7 @@ class Microslip:
         "--kappa; Verlet steps; closer to the finite elements in partial slip"
     )
     order: int = 1
+    law_rank: int = 2
     integrator: str = "Verlet"
     every_node: bool = True
     takes_kappa: bool = True

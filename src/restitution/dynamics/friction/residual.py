@@ -50,11 +50,12 @@ class Residual:
 
     name: str = RESIDUAL_CHOICE
     help: str = (
-        "the sphere: one stick/slip state with the dropped modes following the contact "
-        "statically, normal and tangential; Verlet steps; beta settled in the modes, "
-        "docs/oblique.md"
+        "one stick/slip state with the dropped modes following the contact statically, "
+        "normal and tangential, which law --angle extrapolates to the rigid wall; Verlet "
+        "steps; beta settled in the modes, docs/oblique.md"
     )
     order: int = 2
+    law_rank: int = 0
     integrator: str = "Verlet"
     every_node: bool = False
     takes_kappa: bool = False

@@ -23,8 +23,9 @@ class StickSlip:
     oblique_collision` at its defaults, ``rtol = 1e-10``)."""
 
     name: str = STICK_SLIP
-    help: str = "one stick/slip state for the whole contact, DOP853 phase by phase (the default)"
+    help: str = "one stick/slip state for the whole contact, DOP853 phase by phase"
     order: int = 0
+    law_rank: int = 1
     integrator: str = "DOP853"
     every_node: bool = False
     takes_kappa: bool = False
