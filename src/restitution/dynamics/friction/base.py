@@ -36,6 +36,7 @@ from restitution.errors import InputError
 
 __all__ = [
     "ONE_WALL",
+    "OneWallLaw",
     "FrictionRoute",
     "default_friction_route",
     "friction_route",
@@ -128,6 +129,21 @@ ONE_WALL = (
     "(docs/oblique.md)"
 )
 """The ``law_advice`` of a route that ``law --angle`` runs on one wall."""
+
+
+class OneWallLaw:
+    """A route's law runs as its own runs: ``law --angle`` takes :meth:`collision` on the law's
+    wall alone (``law_walls = (1.0,)``, advice :data:`ONE_WALL`). Mixed into a route."""
+
+    law_walls: tuple[float, ...] = (1.0,)
+    law_advice: str = ONE_WALL
+
+    def law_work(self, body, v_normal, v_tangential, alpha, kappa):
+        return self.work(body, v_normal, v_tangential, alpha, kappa)
+
+    def law_collision(self, body, v_normal, v_tangential, mu, alpha, kappa):
+        return self.collision(body, v_normal, v_tangential, mu, alpha, kappa)
+
 
 _ROUTES: dict[str, FrictionRoute] = {}
 

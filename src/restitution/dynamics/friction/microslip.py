@@ -8,14 +8,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from restitution.dynamics.friction.base import ONE_WALL, register_friction_route
+from restitution.dynamics.friction.base import OneWallLaw, register_friction_route
 from restitution.dynamics.oblique_microslip import MICROSLIP, MicroslipSettings
 
 __all__ = ["Microslip"]
 
 
 @dataclass(frozen=True)
-class Microslip:
+class Microslip(OneWallLaw):
     """Friction at every wall node (:func:`~restitution.dynamics.oblique_microslip.
     microslip_collision` with :class:`~restitution.dynamics.oblique_microslip.
     MicroslipSettings` of the given ``kappa``)."""
@@ -31,9 +31,7 @@ class Microslip:
     every_node: bool = True
     takes_kappa: bool = True
     needs: str = ""
-    law_walls: tuple[float, ...] = (1.0,)
     law_how: str = "planned Verlet steps times one timed step; measured runs took 0.88-4.8 times it"
-    law_advice: str = ONE_WALL
 
     def serves(self, kind) -> bool:
         return kind.oblique_body is not None
@@ -57,12 +55,6 @@ class Microslip:
 
         return microslip_collision(body, v_normal, v_tangential, mu, alpha,
                                    settings=_settings(kappa))  # fmt: skip
-
-    def law_work(self, body, v_normal, v_tangential, alpha, kappa):
-        return self.work(body, v_normal, v_tangential, alpha, kappa)
-
-    def law_collision(self, body, v_normal, v_tangential, mu, alpha, kappa):
-        return self.collision(body, v_normal, v_tangential, mu, alpha, kappa)
 
 
 def _kappa(kappa: float | None) -> float:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from restitution.dynamics.friction.base import ONE_WALL, register_friction_route
+from restitution.dynamics.friction.base import OneWallLaw, register_friction_route
 from restitution.dynamics.oblique import FRICTION_MODELS
 
 __all__ = ["STICK_SLIP", "StickSlip"]
@@ -18,7 +18,7 @@ STICK_SLIP = FRICTION_MODELS[0]
 
 
 @dataclass(frozen=True)
-class StickSlip:
+class StickSlip(OneWallLaw):
     """One stick/slip state for the contact (:func:`~restitution.dynamics.oblique.
     oblique_collision` at its defaults, ``rtol = 1e-10``)."""
 
@@ -30,12 +30,10 @@ class StickSlip:
     every_node: bool = False
     takes_kappa: bool = False
     needs: str = ""
-    law_walls: tuple[float, ...] = (1.0,)
     law_how: str = (
         "measured on softer walls, alpha <= 1000-4000; on the harder walls of slow impacts "
         "it overestimates: steel at 1 m/s took a fifth to a half of it, docs/oblique.md"
     )
-    law_advice: str = ONE_WALL
 
     def serves(self, kind) -> bool:
         return kind.oblique_body is not None
@@ -60,12 +58,6 @@ class StickSlip:
         from restitution.dynamics.oblique import oblique_collision
 
         return oblique_collision(body, v_normal, v_tangential, mu, alpha)
-
-    def law_work(self, body, v_normal, v_tangential, alpha, kappa):
-        return self.work(body, v_normal, v_tangential, alpha, kappa)
-
-    def law_collision(self, body, v_normal, v_tangential, mu, alpha, kappa):
-        return self.collision(body, v_normal, v_tangential, mu, alpha, kappa)
 
 
 register_friction_route(StickSlip())
