@@ -178,6 +178,7 @@ def test_text_and_csv_reports_of_the_ball(cli, monkeypatch):
     assert ("this route's low-speed limit (in beta's error): beta = 0.34347, one stick/slip state "
             "spread like the pressure on the finite sphere's own flexibility (0.26640 on a "
             "half-space)") in out  # fmt: skip
+    assert "and 2 alpha each, extrapolated to the rigid wall" in out  # the law's default route
     assert "warning" not in err.lower()
     code, out, err = cli("law", *BALL_ARGS, "--speed", "1", "--angle", "30", "--friction",
                          "0.3", "--format", "csv")  # fmt: skip

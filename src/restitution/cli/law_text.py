@@ -263,7 +263,7 @@ def oblique_lines(a) -> list[str]:
         walls = ", ".join(f"{p.alpha:.4g}" for p in a.points)
         extra = r.oblique_route.law_walls[1:]
         if extra:
-            walls += (f" and {' and '.join(f'{f:g}' for f in extra)} times each, extrapolated "
+            walls += (f" and {' and '.join(f'{f:g} alpha' for f in extra)} each, extrapolated "
                       "to the rigid wall")  # fmt: skip
         lines.append(
             f"spin in {spin_unit}, positive in the rolling sense; friction work as a fraction "
