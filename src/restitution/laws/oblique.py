@@ -268,8 +268,8 @@ def law_modes(kind) -> int:
 class _Plan:
     """What :func:`oblique_answer` runs: the kind, the body's ``nu``, ``tan(angle)``, the
     modes, the speeds ``(w, v, alpha)``, the bodies of both mode counts, the friction route
-    (:mod:`restitution.dynamics.friction`), and the estimated seconds with how they were
-    estimated."""
+    (:mod:`restitution.dynamics.friction`), and the estimated seconds (:attr:`how` they were
+    estimated: the route's words)."""
 
     kind: object
     nu: float
@@ -279,7 +279,11 @@ class _Plan:
     bodies: dict
     route: object
     seconds: float
-    how: str
+
+    @property
+    def how(self) -> str:
+        """How :attr:`seconds` were estimated: the route's words."""
+        return self.route.law_how
 
     def run(self, body, v: float, alpha: float, request):
         """The route's law run of ``body`` at ``(v, alpha)`` (its walls, extrapolated where it
@@ -325,7 +329,7 @@ def _plan(r, modes: int | None) -> _Plan:
     if kind.oblique_quasistatic in FINITE_BODY_SECONDS and tan != 0.0 and r.friction:
         estimate = FINITE_BODY_SECONDS[kind.oblique_quasistatic]
         seconds += sum(estimate(v, nu, route.every_node) for _, v, _ in plans)
-    return _Plan(kind, nu, tan, modes, plans, bodies, route, seconds, route.law_how)
+    return _Plan(kind, nu, tan, modes, plans, bodies, route, seconds)
 
 
 def oblique_seconds(request, modes: int | None = None) -> tuple[float, str]:
