@@ -284,7 +284,9 @@ def _route_limit_line(p, microslip: bool) -> str:
             f"{'':>9} this route's low-speed limit (in beta's error): beta = {half_space:.5f}, "
             f"{friction} on a half-space"
         )
+    coupling = "" if microslip else " with Dundurs' coupling"
     return (
         f"{'':>9} this route's low-speed limit (in beta's error): beta = {finite:.5f}, "
-        f"{friction} on the finite sphere's own flexibility ({half_space:.5f} on a half-space)"
+        f"{friction} on the finite sphere's own flexibility{coupling} ({half_space:.5f} on a "
+        "half-space)"
     )

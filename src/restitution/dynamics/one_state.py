@@ -36,6 +36,12 @@ class OneStateFriction:
         self._p: np.ndarray | None = None
         self._Hp: np.ndarray | None = None
 
+    def flexibility(self, P: np.ndarray) -> np.ndarray:
+        """The in-line flexibility at the annuli's normal forces ``P``: ``Ht`` (a subclass may
+        make it depend on the contact, as
+        :class:`~restitution.quasistatic.sphere_coupling.TiltedOneStateFriction`)."""
+        return self.Ht
+
     def step(self, P: np.ndarray, s_old: float, s_new: float, mu: float) -> float:
         """The force after the contact point moved rigidly from ``s_old`` to ``s_new``, with
         the annuli's normal forces ``P`` at the step's end."""
@@ -45,7 +51,7 @@ class OneStateFriction:
             self.force, self._p, self._Hp = 0.0, None, None
             return 0.0
         p = P / total
-        Hp = self.Ht @ p
+        Hp = self.flexibility(P) @ p
         if self._p is None:
             F = -ds / (p @ Hp)
         else:

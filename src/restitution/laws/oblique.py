@@ -21,27 +21,32 @@ point's status is at best
 holds its distance from the head-on law at the speed (:func:`_normal_error`): one mode count on
 one wall is ten times further from the head-on limit than from half its modes.
 
-Where the kind names its quasistatic oblique theory (:attr:`~restitution.bodies.kinds.BodyKind.
-oblique_quasistatic`, the sphere's Hertz-Mindlin, :data:`QUASISTATIC`), each point also carries
-that theory's ``beta`` at its speeds, on the half-space: ``beta_quasistatic`` without microslip
-(Maw, Barber and Fawcett's law (a), the DEM codes' Hertz-Mindlin), ``beta_microslip`` with
-Mindlin's microslip (law (b), what a continuum's local friction gives) and ``beta_one_state``
-with the modal one-state route's own contact (one stick/slip state whose traction is spread like
-the pressure: :mod:`restitution.quasistatic.sphere_one_state`; not law (a), whose traction is
-Mindlin's: -0.488 against -0.954 at ``tan(theta)/mu = 0.3``). Beside them, the route's own
-friction on the finite body's flexibility (:data:`FINITE_BODY`): ``beta_one_state_finite`` for
-one stick/slip state, ``beta_microslip_finite`` for ``--friction-model microslip`` (friction at
-every wall node by :func:`restitution.dynamics.oblique_microslip.microslip_collision`). Both
-depart from their half-space values at order 0.7-0.9 in the contact radius ``a``: for a steel
-ball at 1 m/s and 30 degrees, ``mu = 0.3``, 0.343 against 0.266 (one state) and 0.388 against
-0.316 (microslip). ``beta``'s error then also holds, in quadrature, the distance from the
-route's own low-speed limit (:meth:`_Limits.route`: the finite body's, or beyond its reach the
-half-space's), as ``epsilon_normal``'s holds the head-on law's: one doubling of the modes
-understates how far 40 modes are from that limit (docs/oblique.md, "The one-state route's own
-limit": at ``v = 0.005 c``, ``tan(theta)/mu = 0.3``, the wall ``alpha = 80 / delta_max`` alone
-keeps the continuum's one-state ``beta`` 0.17 below the rigid wall's, and 20-80 modes keep
-their quasistatic twin 0.33-0.51 below the continuum's). Above the quasistatic regime the
-distance also holds the impact's dynamics: an upper estimate there.
+Where the kind names its quasistatic oblique theory
+(:attr:`~restitution.bodies.kinds.BodyKind.oblique_quasistatic`, the sphere's Hertz-Mindlin,
+:data:`QUASISTATIC`), each point also carries that theory's ``beta`` at its speeds, on the
+half-space: ``beta_quasistatic`` without microslip (Maw, Barber and Fawcett's law (a), the DEM
+codes' Hertz-Mindlin), ``beta_microslip`` with Mindlin's microslip (law (b), what a continuum's
+local friction gives) and ``beta_one_state`` with the modal one-state route's own contact (one
+stick/slip state whose traction is spread like the pressure:
+:mod:`restitution.quasistatic.sphere_one_state`; not law (a), whose traction is Mindlin's:
+-0.488 against -0.954 at ``tan(theta)/mu = 0.3``). Beside them, the route's own friction on the
+finite body's flexibility (:data:`FINITE_BODY`): ``beta_one_state_finite`` for one stick/slip
+state, ``beta_microslip_finite`` for ``--friction-model microslip`` (friction at every wall node
+by :func:`restitution.dynamics.oblique_microslip.microslip_collision`). Both depart from their
+half-space values at order 0.7-0.9 in the contact radius ``a``: for a steel ball at 1 m/s and 30
+degrees, ``mu = 0.3``, 0.343 against 0.266 (one state) and 0.388 against 0.316 (microslip). The
+one-state limit on the finite sphere holds Dundurs' coupling (the in-line traction tilts the
+contact, the wall holds it flat: :mod:`restitution.quasistatic.sphere_coupling`), which every
+converged route has and the half-space theories leave out: 0.323 for that ball, 0.020 below the
+uncoupled 0.343 (docs/oblique.md, "Dundurs' coupling"); the microslip limit is still uncoupled.
+``beta``'s error then also holds, in quadrature, the distance from the route's own low-speed
+limit (:meth:`_Limits.route`: the finite body's, or beyond its reach the half-space's), as
+``epsilon_normal``'s holds the head-on law's: one doubling of the modes understates how far 40
+modes are from that limit (docs/oblique.md, "The one-state route's own limit": at ``v = 0.005
+c``, ``tan(theta)/mu = 0.3``, the wall ``alpha = 80 / delta_max`` alone keeps the continuum's
+one-state ``beta`` 0.17 below the rigid wall's, and 20-80 modes keep their quasistatic twin
+0.33-0.51 below the continuum's). Above the quasistatic regime the distance also holds the
+impact's dynamics: an upper estimate there.
 
 ``--friction-model residual`` (the kinds whose ``oblique_residual`` is set: the sphere) runs
 :func:`restitution.dynamics.oblique_residual.residual_collision` instead: the same one-state
@@ -71,11 +76,11 @@ from restitution.errors import InputError
 from restitution.laws.units import BODIES
 from restitution.quasistatic.oblique import MODELS as QUASISTATIC_MODELS
 from restitution.quasistatic.oblique import oblique_impact as quasistatic_impact
-from restitution.quasistatic.sphere_one_state import (
-    one_state_half_space,
-    one_state_impact,
-    one_state_seconds,
+from restitution.quasistatic.sphere_coupling import (
+    coupled_one_state_impact,
+    coupled_one_state_seconds,
 )
+from restitution.quasistatic.sphere_one_state import one_state_half_space
 from restitution.quasistatic.sphere_partial_slip import partial_slip_impact, partial_slip_seconds
 from restitution.status import Status
 
@@ -142,7 +147,8 @@ class ObliquePoint:
         (:func:`restitution.quasistatic.sphere_one_state.one_state_half_space`).
     beta_microslip_finite, beta_one_state_finite : float or None
         The route's friction (microslip, or one state) on the finite body's own flexibility
-        (:data:`FINITE_BODY`): that route's low-speed limit, in its ``beta_error``; ``None``
+        (:data:`FINITE_BODY`; one state with Dundurs' coupling, microslip without): that
+        route's low-speed limit, in its ``beta_error``; ``None``
         for the other route, or where the kind has none. Beyond the finite body's reach the
         error takes the half-space's (``beta_microslip``, ``beta_one_state``).
     """
@@ -398,17 +404,18 @@ def _hertz_mindlin(v: float, v_tangential: float, mu: float, nu: float):
 def _finite_sphere(v: float, v_tangential: float, mu: float, nu: float, microslip: bool) -> float:
     """``beta`` of the finite sphere's own quasistatic impact with the route's friction: with
     microslip (:func:`restitution.quasistatic.sphere_partial_slip.partial_slip_impact`, about
-    1-5 s) or with one state spread like the pressure
-    (:func:`restitution.quasistatic.sphere_one_state.one_state_impact`, about 1-4 s)."""
+    1-5 s, without Dundurs' coupling) or with one state spread like the pressure and Dundurs'
+    coupling (:func:`restitution.quasistatic.sphere_coupling.coupled_one_state_impact`, about
+    1-9 s)."""
     if mu == 0.0:
         return -1.0  # no tangential force: the contact point keeps its velocity
-    impact = partial_slip_impact if microslip else one_state_impact
+    impact = partial_slip_impact if microslip else coupled_one_state_impact
     return float(impact(v, v_tangential, mu, nu).beta)
 
 
 def _finite_sphere_seconds(v: float, nu: float, microslip: bool) -> float:
     """The estimated seconds of :func:`_finite_sphere`."""
-    return partial_slip_seconds(v, nu) if microslip else one_state_seconds(v, nu)
+    return partial_slip_seconds(v, nu) if microslip else coupled_one_state_seconds(v, nu)
 
 
 QUASISTATIC: dict[str, Callable[[float, float, float, float], tuple[float, float, float]]] = {

@@ -68,10 +68,12 @@ __all__ = [
     "DIRECTIONS",
     "LOADS",
     "annulus_flexibility",
+    "annulus_tilt_flexibility",
     "continuum_compliance",
     "half_space_annulus_flexibility",
     "half_space_compliance",
     "modal_annulus_flexibility",
+    "modal_annulus_tilt_flexibility",
     "modal_compliance",
 ]
 
@@ -133,23 +135,33 @@ def half_space_compliance(a: float, nu: float, load: str) -> float:
 
 
 def _coefficients(
-    theta: np.ndarray, w: np.ndarray, l_top: int, tangential: bool
+    theta: np.ndarray, w: np.ndarray, l_top: int, kind: str
 ) -> tuple[np.ndarray, ...]:
     """The loads' coefficients of every order (module docstring): ``(A, B)`` of the normal
-    loads or ``(a, b, c)`` of the tangential ones, each of shape ``(l_top + 1, loads)``, for
-    loads given by their weights ``w`` (shape ``(loads, len(theta))``) at the polar angles
-    ``theta``."""
+    loads (``kind`` ``"normal"``) or ``(a, b, c)`` of the tangential ones (``"tangential"``)
+    and of the tilting ones along ``-e1`` times ``cos(phi)`` (``"tilt"``), each of shape
+    ``(l_top + 1, loads)``, for loads given by their weights ``w`` (shape ``(loads,
+    len(theta))``) at the polar angles ``theta``."""
     x, s = np.cos(theta), np.sin(theta)
     proj = np.zeros((l_top + 1, 3, w.shape[0]))
     # normal:     int t (-x P_l),  int t (-s^2 P_l')
     # tangential: int t s P_l^1,   int t (x dP_l^1 + P_l^1/s),   -int t (dP_l^1 + x P_l^1/s)
+    # tilt:       -int t x P_l^1,  int t s dP_l^1,               -int t P_l^1
     # with P_l^1 = s P_l', P_l^1 / s = P_l', dP_l^1/dtheta = l (l + 1) P_l - x P_l' (the
-    # Legendre equation), so the last is -l (l + 1) int t P_l
+    # Legendre equation), so the tangential third is -l (l + 1) int t P_l
+    if kind not in ("normal", "tangential", "tilt"):
+        raise InputError(f"kind must be normal, tangential or tilt, got {kind!r}")
+    tangential = kind != "normal"
     wx, ws2, wxx = w * x, w * s * s, w * x * x
+    ws, wxs = w * s, w * x * s
     p_prev, p = np.zeros_like(x), np.ones_like(x)  # P_(l-1), P_l
     d_prev, d = np.zeros_like(x), np.zeros_like(x)  # their x-derivatives
     for l in range(l_top + 1):
-        if tangential:
+        if kind == "tilt":
+            ll = l * (l + 1.0)
+            proj[l, 0], proj[l, 2] = -(wxs @ d), -(ws @ d)
+            proj[l, 1] = ll * (ws @ p) - wxs @ d
+        elif tangential:
             ll = l * (l + 1.0)
             proj[l, 0], proj[l, 2] = ws2 @ d, -ll * (w @ p)
             proj[l, 1] = ll * (wx @ p) - wxx @ d + w @ d
@@ -168,9 +180,14 @@ def _coefficients(
     return math.pi * n1 * proj[:, 0] / norm, tang * proj[:, 1], tang * proj[:, 2]
 
 
-def _bilinear(coefficients: tuple[np.ndarray, ...], nu: float) -> np.ndarray:
-    """``int t_i . u(t_j) dA`` for every pair of the loads of ``coefficients``
-    (:func:`_coefficients`): ``sum_l |Y|^2 (a_i U_j + l (l + 1) (b_i W_j + c_i w_j))``."""
+def _bilinear(
+    coefficients: tuple[np.ndarray, ...], nu: float, loads: tuple[np.ndarray, ...] | None = None
+) -> np.ndarray:
+    """``int t_i . u(t_j) dA`` for every pair of the loads ``t_i`` of ``coefficients`` and
+    ``t_j`` of ``loads`` (default the same; :func:`_coefficients`, of one azimuthal order):
+    ``sum_l |Y|^2 (a_i U_j + l (l + 1) (b_i W_j + c_i w_j))``."""
+    first = coefficients
+    coefficients = first if loads is None else loads
     l_top = coefficients[0].shape[0] - 1
     orders = np.arange(l_top + 1, dtype=float)
     ll = orders * (orders + 1.0)
@@ -179,11 +196,10 @@ def _bilinear(coefficients: tuple[np.ndarray, ...], nu: float) -> np.ndarray:
     a, b = coefficients[:2]
     U = K[:, 0, 0, None] * a + K[:, 0, 1, None] * b
     W = K[:, 1, 0, None] * a + K[:, 1, 1, None] * b
-    out = (a * norm[:, None]).T @ U + (b * (norm * ll)[:, None]).T @ W
+    out = (first[0] * norm[:, None]).T @ U + (first[1] * (norm * ll)[:, None]).T @ W
     if len(coefficients) == 3:
-        c = coefficients[2]
         T = np.r_[0.0, toroidal_static_compliance(orders[1:], nu)]
-        out += (c * (norm * ll * T)[:, None]).T @ c
+        out += (first[2] * (norm * ll * T)[:, None]).T @ coefficients[2]
     return out
 
 
@@ -199,7 +215,8 @@ def continuum_compliance(
     if points is None:
         points = max(64, int(16 * l_top * math.asin(a) / (2.0 * math.pi)) + 1)
     theta, w = _quadrature(a, load, int(points))
-    coefficients = _coefficients(theta, w[None, :], int(l_top), load in _TANGENTIAL)
+    kind = "tangential" if load in _TANGENTIAL else "normal"
+    coefficients = _coefficients(theta, w[None, :], int(l_top), kind)
     return float(_bilinear(coefficients, nu)[0, 0])
 
 
@@ -234,6 +251,14 @@ def annulus_flexibility(
     fall like the stick traction's.
     """
     edges = _annuli(edges, direction)
+    theta, loads, l_top = _annulus_loads(edges, l_top, points)
+    G = _bilinear(_coefficients(theta, loads, l_top, direction), nu)
+    return 0.5 * (G + G.T)
+
+
+def _annulus_loads(edges: np.ndarray, l_top: int | None, points: int | None):
+    """The polar angles, the annuli's unit loads per projected area (weights ``r dr``, shape
+    ``(annuli, nodes)``) and the highest order, at :func:`annulus_flexibility`'s defaults."""
     if l_top is None:
         l_top = int(math.ceil(ORDERS_PER_RADIUS / edges[-1]))
     width = np.diff(edges)
@@ -246,9 +271,30 @@ def annulus_flexibility(
     loads = np.zeros((n, r.size))
     for i in range(n):
         loads[i, i * r.shape[1] : (i + 1) * r.shape[1]] = weight[i]
-    theta = np.arcsin(r.ravel())
-    G = _bilinear(_coefficients(theta, loads, int(l_top), direction == DIRECTIONS[1]), nu)
-    return 0.5 * (G + G.T)
+    return np.arcsin(r.ravel()), loads, int(l_top)
+
+
+def annulus_tilt_flexibility(
+    edges, nu: float, *, l_top: int | None = None, points: int | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """The annuli's order-1 normal flexibility and its coupling to the in-line traction on the
+    elastic sphere (Dundurs' coupling; docs/oblique.md, "Dundurs' coupling"), as
+    :func:`annulus_flexibility`:
+
+    * ``tilt[i, j] = int_i (u . (-e1)) cos(phi) dA`` under the traction ``cos(phi)`` per
+      projected area along ``-e1`` on annulus ``j`` (a pressure tilting the contact);
+    * ``cross[i, j]``, the same measure under the unit in-line traction (``e2``) on annulus
+      ``j``; by Betti's theorem also ``int_j u . e2 dA`` under annulus ``i``'s tilting
+      pressure.
+
+    ``phi`` is measured about the pole ``e1`` from ``e2``. ``tilt`` is symmetric; ``cross``
+    vanishes with the half-space's ``1 - 2 nu``.
+    """
+    edges = _annuli(edges, DIRECTIONS[0])
+    theta, loads, l_top = _annulus_loads(edges, l_top, points)
+    tilt = _coefficients(theta, loads, l_top, "tilt")
+    G = _bilinear(tilt, nu)
+    return 0.5 * (G + G.T), _bilinear(tilt, nu, _coefficients(theta, loads, l_top, "tangential"))
 
 
 def half_space_annulus_flexibility(edges, nu: float, direction: str) -> np.ndarray:
@@ -296,6 +342,26 @@ def modal_annulus_flexibility(cap, edges, direction: str, *, points: int = 16,
     shape = (d2 if tangential else -d1).reshape(r.shape[0], r.shape[1] * azimuths, len(part))
     f = np.einsum("ip,ipk->ik", np.repeat(weight, azimuths, axis=1), shape)
     return (f / (part.mass * part.omega**2)) @ f.T
+
+
+def modal_annulus_tilt_flexibility(cap, edges, *, points: int = 16,
+                                   azimuths: int = 8) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
+    """:func:`annulus_tilt_flexibility` in the modes of ``cap`` (their azimuthal order 1, the
+    only ones these loads move), as :func:`modal_annulus_flexibility`."""
+    edges = _annuli(edges, DIRECTIONS[0])
+    part = cap.take(cap.m == 1)
+    t, w = roots_legendre(int(points))
+    width = np.diff(edges)
+    r = edges[:-1, None] + 0.5 * width[:, None] * (t + 1.0)  # (annuli, points)
+    weight = 0.5 * width[:, None] * w * r * (2.0 * math.pi / azimuths)  # r dr dphi
+    phi = np.tile(2.0 * math.pi * np.arange(azimuths) / azimuths, r.size)
+    d1, d2, _ = part.displacement(np.repeat(np.arcsin(r.ravel()), azimuths), phi)
+    weights = np.repeat(weight, azimuths, axis=1)
+    shape = (r.shape[0], r.shape[1] * azimuths, len(part))
+    f_tilt = np.einsum("ip,ipk->ik", weights * np.cos(phi).reshape(shape[:2]), -d1.reshape(shape))
+    f_line = np.einsum("ip,ipk->ik", weights, d2.reshape(shape))
+    scaled = f_tilt / (part.mass * part.omega**2)
+    return scaled @ f_tilt.T, scaled @ f_line.T
 
 
 def modal_compliance(cap, a: float, load: str, *, points: int = 200) -> float:

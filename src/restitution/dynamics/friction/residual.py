@@ -69,8 +69,9 @@ class Residual:
         "one mode count with the dropped modes' static residual, extrapolated to the rigid "
         "wall from alpha and 2 alpha (order 1 in 1/alpha), not to N -> infinity: the error is "
         "the change from half the modes and, for beta, the distance from the route's "
-        "quasistatic limit; twice the modes moved the steel ball's beta by 0.2-1.5 and "
-        "epsilon_normal by 0-2.4 of these errors, away from the limit (docs/oblique.md)"
+        "quasistatic limit with Dundurs' coupling, which the kept modes hold a growing share "
+        "of and the residual none (twice the modes moved the steel ball's beta towards it, "
+        "by 0.2-1.5 of the change from half the modes alone; docs/oblique.md)"
     )
 
     def serves(self, kind) -> bool:
