@@ -50,11 +50,11 @@ impact's dynamics: an upper estimate there.
 
 ``--friction-model residual`` (the kinds whose ``oblique_residual`` is set: the sphere) runs
 :func:`restitution.dynamics.oblique_residual.residual_collision` instead: the same one-state
-contact with the dropped modes' static residual, normal and tangential, whose ``beta`` settles
-in the modes (the steel ball above: 0.30781 at 40 modes, 1.5e-3 from 20, 0.036 below its
-limit on this wall; the route without the residual 0.17855) and whose ``epsilon_normal``
-carries a coupling of the spin of about 1e-5 (docs/oblique.md, "A static residual for the
-one-state route"); its limit is the one-state one.
+contact with the dropped modes' static residual, normal, tangential and (since stop 87) the
+tilt of Dundurs' coupling; the sphere's default (the steel ball above at 1 m/s: 0.32609 +-
+0.0025 against the coupled limit 0.32366; the stick-slip route on one wall 0.17855;
+docs/oblique.md, "A static residual for the one-state route", "Dundurs' coupling"); its
+limit is the one-state one with the coupling.
 
 A kind without an oblique route, or one whose kind says why ``law`` does not serve it
 (:attr:`~restitution.bodies.kinds.BodyKind.oblique_law`), is refused where the request is built

@@ -30,9 +30,12 @@ plane between the hats' mid-radii: the continuum's annulus flexibility
 (:func:`~restitution.bodies.sphere.contact_compliance.annulus_flexibility`, the free sphere
 with its inertial relief) less the kept modes' own
 (:func:`~restitution.bodies.sphere.contact_compliance.modal_annulus_flexibility`), divided by
-the annuli's areas: normal (azimuthal order 0) and tangential in line (order 1). The loads of
-one contact have no other order while the pressure is symmetric about the contact axis; the
-kept modes of higher orders stay in the motion.
+the annuli's areas: normal (azimuthal order 0) and tangential in line (order 1); and, for
+Dundurs' coupling (since stop 87), the normal displacement of order 1 under a tilting pressure
+and under the in-line traction
+(:func:`~restitution.bodies.sphere.contact_compliance.annulus_tilt_flexibility`, less the kept
+modes' :func:`~restitution.bodies.sphere.contact_compliance.modal_annulus_tilt_flexibility`).
+The kept modes of higher orders stay in the motion.
 """
 
 from __future__ import annotations
@@ -45,7 +48,9 @@ import numpy as np
 
 from restitution.bodies.sphere.contact_compliance import (
     annulus_flexibility,
+    annulus_tilt_flexibility,
     modal_annulus_flexibility,
+    modal_annulus_tilt_flexibility,
 )
 from restitution.errors import InputError
 
@@ -63,11 +68,19 @@ class ContactResidual:
     normal, tangential : numpy.ndarray, shape (K, K)
         Mean displacement along the wall's normal (inwards) and in line per unit force on each
         hat, symmetric, ``1 / (E R)``.
+    tilt, cross : numpy.ndarray, shape (K, K)
+        Dundurs' coupling (docs/oblique.md): the amplitude of the normal displacement (inwards)
+        ``cos(psi)`` on each hat per unit of a hat's tilting load (its nodes' forces times
+        ``cos(psi)``, ``psi`` the azimuth about the contact axis from the line of the friction
+        force), symmetric; and that amplitude per unit in-line force on a hat (its transpose:
+        the mean in-line displacement per unit tilting load, Betti).
     """
 
     radii: np.ndarray
     normal: np.ndarray
     tangential: np.ndarray
+    tilt: np.ndarray
+    cross: np.ndarray
     _c: np.ndarray
     _s: np.ndarray
     _z: np.ndarray
@@ -83,6 +96,19 @@ class ContactResidual:
         y = c * st + s * ct
         rho = np.sqrt(y * y + z * z)
         return rho, y * (c * ct - s * st) / np.maximum(rho, 1e-300)
+
+    def azimuth(self, count: int, rotation: float) -> tuple[np.ndarray, np.ndarray]:
+        """``cos(psi)`` of the first ``count`` wall nodes about the contact axis (``psi`` from
+        the line of the friction force, ``y / rho``; 0 on the axis) and its derivative in the
+        rotation."""
+        c, s, z = self._c[:count], self._s[:count], self._z[:count]
+        ct, st = math.cos(rotation), math.sin(rotation)
+        y, dy = c * st + s * ct, c * ct - s * st
+        rho2 = y * y + z * z
+        on = rho2 > 1e-24
+        safe = np.where(on, rho2, 1.0)
+        cos = np.where(on, y / np.sqrt(safe), 0.0)
+        return cos, np.where(on, dy * z * z / safe**1.5, 0.0)
 
 
 HAT_SPACING = 2.0
@@ -107,18 +133,22 @@ def contact_residual(cap, nodes, reach: float, *, spacing: float = HAT_SPACING) 
             f"at {math.sin(theta[-1]):.3g} R) or wraps too far round the sphere for the "
             "residual's flat annuli: lower the speed, or harden the wall"
         )
-    normal, tangential = _flexibility(cap, h, count)
+    normal, tangential, tilt, cross = _flexibility(cap, h, count)
     A = int(nodes.azimuths)
     phi = np.tile(2.0 * math.pi * np.arange(A) / A, theta.size)
     z = np.sin(np.repeat(theta, A)) * np.sin(phi)
-    return ContactResidual(radii, normal, tangential, np.asarray(nodes.c), np.asarray(nodes.s), z)
+    return ContactResidual(radii, normal, tangential, tilt, cross, np.asarray(nodes.c),
+                           np.asarray(nodes.s), z)  # fmt: skip
 
 
 @functools.lru_cache(maxsize=8)
-def _flexibility(cap, h: float, count: int) -> tuple[np.ndarray, np.ndarray]:
-    """``H_n``, ``H_t`` of ``count`` hats ``h`` apart (module docs), kept for the last few
-    (caps, spacings): an estimate and its run, or a law's two mode counts, build them once (the
-    continuum's orders run to ``800 / (count h)``: seconds on hard walls)."""
+def _flexibility(cap, h: float, count: int) -> tuple[np.ndarray, ...]:
+    """``H_n``, ``H_t``, the tilt's and the cross's of ``count`` hats ``h`` apart (module
+    docs), kept for the last few (caps, spacings): an estimate and its run, or a law's two mode
+    counts, build them once (the continuum's orders run to ``800 / (count h)``: seconds on hard
+    walls). A tilting load ``q cos(phi)`` on an annulus is the hat load ``q A / 2`` and moves
+    its nodes by ``u cos(phi)`` where ``int u cos(phi)^2 dA = u A / 2``: the tilt's flexibility
+    is ``4 G / (A_i A_j)`` and the cross's ``2 G / (A_i A_j)``."""
     radii = h * np.arange(count + 1)
     edges = np.r_[0.0, 0.5 * (radii[:-2] + radii[1:-1]), 0.5 * (radii[-2] + radii[-1])]
     area = math.pi * np.diff(edges**2)
@@ -129,6 +159,11 @@ def _flexibility(cap, h: float, count: int) -> tuple[np.ndarray, np.ndarray]:
         if len(cap):
             G = G - modal_annulus_flexibility(cap, edges, direction)
         out.append(G / scale)
+    tilt, cross = annulus_tilt_flexibility(edges, cap.nu)
+    if len(cap):
+        kept_tilt, kept_cross = modal_annulus_tilt_flexibility(cap, edges)
+        tilt, cross = tilt - kept_tilt, cross - kept_cross
+    out += [4.0 * tilt / scale, 2.0 * cross / scale]
     for H in out:
         H.setflags(write=False)
-    return out[0], out[1]
+    return tuple(out)

@@ -30,7 +30,7 @@ import numpy as np
 
 from restitution.dynamics.run import CollisionError
 
-__all__ = ["HatWall"]
+__all__ = ["HatWall", "TiltedHatWall"]
 
 _TOL = 1e-11  # alpha |U + H P|: each hat's miss in log-force
 _ITERATIONS = 100
@@ -126,3 +126,91 @@ class HatWall:
     def energy(self, e: np.ndarray) -> float:
         """The condensed wall energy ``sum e / alpha + P . H . P / 2`` of the last solve."""
         return float(e.sum()) / self.alpha + 0.5 * float(self.P @ self.H @ self.P)
+
+
+class TiltedHatWall(HatWall):
+    """:class:`HatWall` with Dundurs' coupling (docs/oblique.md, "Dundurs' coupling"): beside
+    the hats' axisymmetric displacement ``U``, a tilting one ``V cos(psi)`` (``psi`` the node's
+    azimuth about the contact axis from the line of the friction force) carrying the tilting
+    loads ``P1 = sum_j phi_j cos(psi_j) e_j``; the in-line forces ``T`` on the hats (the
+    friction spread like the pressure) tilt them too. Equilibrium ``U = -H P``, ``V = -H1 P1 -
+    X T``: the minimum over ``U, V`` of the wall's energy plus ``U . H^-1 . U / 2 + (V + X T) .
+    H1^-1 . (V + X T) / 2``, whose value is ``sum e / alpha + P . H . P / 2 + P1 . H1 . P1 /
+    2`` and whose derivative in ``T`` is ``-X^T P1``. Newton's method on both, damped as
+    :class:`HatWall`'s."""
+
+    def __init__(self, H, radii, alpha: float, tilt, cross) -> None:
+        super().__init__(H, radii, alpha)
+        self.H1, self.X = np.asarray(tilt, float), np.asarray(cross, float)
+        self.V = np.zeros(self.K)
+        self.P1 = np.zeros(self.K)
+
+    def solve_tilted(self, log_e, rho, cos, T):
+        """Node forces ``e``, hat loads ``P`` and ``P1`` (copies), each node's ``dU/drho``, its
+        tilt's ``dV/drho`` and ``V`` at the node, from the nodes' ``log(w_j) + alpha X_j``, radii
+        ``rho``, ``cos(psi)`` and the hats' in-line forces ``T``."""
+        a, K, H, H1 = self.alpha, self.K, self.H, self.H1
+        k, lo, hi, df = self._hats(rho)
+        size = K + 2
+        shift = self.X @ T
+
+        def spread(w):
+            return (np.bincount(k, lo * w, size) + np.bincount(k + 1, hi * w, size))[:K]
+
+        def state(U, V):
+            Up, Vp = np.r_[U, 0.0, 0.0], np.r_[V, 0.0, 0.0]
+            g = lo * (Up[k] + cos * Vp[k]) + hi * (Up[k + 1] + cos * Vp[k + 1])
+            e = np.exp(np.minimum(log_e + a * g, _EXP_CAP))
+            return e, spread(e), spread(cos * e)
+
+        def band(w):
+            d = (np.bincount(k, lo * lo * w, size) + np.bincount(k + 1, hi * hi * w, size))[:K]
+            off = np.bincount(k, lo * hi * w, size)[: K - 1]
+            return np.diag(d) + np.diag(off, 1) + np.diag(off, -1)
+
+        U, V = self.U, self.V
+        e, P, P1 = state(U, V)
+        miss = np.r_[U + H @ P, V + H1 @ P1 + shift]
+        for _ in range(_ITERATIONS):
+            self.iterations += 1
+            worst = a * float(np.max(np.abs(miss)))
+            if worst < _TOL:
+                break
+            B00, B01, B11 = band(e), band(cos * e), band(cos * cos * e)
+            jac = a * np.block([[H @ B00, H @ B01], [H1 @ B01, H1 @ B11]])
+            jac[np.diag_indices(2 * K)] += 1.0
+            step = -np.linalg.solve(jac, miss)
+            lam = 1.0
+            while True:
+                U_t, V_t = U + lam * step[:K], V + lam * step[K:]
+                e_t, P_t, P1_t = state(U_t, V_t)
+                miss_t = np.r_[U_t + H @ P_t, V_t + H1 @ P1_t + shift]
+                if a * float(np.max(np.abs(miss_t))) < worst:
+                    break
+                lam *= 0.5
+                if lam < 1e-6:
+                    raise CollisionError(
+                        "the residual's wall solve stalled (no step lowers its miss "
+                        f"{worst:.3g}); soften the wall or lower the speed"
+                    )
+            U, V, e, P, P1, miss = U_t, V_t, e_t, P_t, P1_t, miss_t
+        else:
+            raise CollisionError(
+                "the residual's wall solve did not converge in "
+                f"{_ITERATIONS} Newton steps; soften the wall or lower the speed"
+            )
+        self.U, self.V, self.P, self.P1 = U, V, P, P1
+        Up, Vp = np.r_[U, 0.0, 0.0], np.r_[V, 0.0, 0.0]
+        inside = k < K
+        slope = np.where(inside, df * (Up[k + 1] - Up[k]), 0.0)
+        tilt_slope = np.where(inside, df * (Vp[k + 1] - Vp[k]), 0.0)
+        tilt_value = lo * Vp[k] + hi * Vp[k + 1]
+        total = float(e.sum())
+        if total > 0.0:
+            self.beyond = max(self.beyond, float(e[k >= K].sum()) / total)
+        return e, P.copy(), P1.copy(), slope, tilt_slope, tilt_value
+
+    def energy(self, e: np.ndarray) -> float:
+        """The condensed wall energy ``sum e / alpha + P . H . P / 2 + P1 . H1 . P1 / 2`` of
+        the last solve."""
+        return super().energy(e) + 0.5 * float(self.P1 @ self.H1 @ self.P1)

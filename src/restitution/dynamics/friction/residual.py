@@ -51,8 +51,9 @@ class Residual:
     name: str = RESIDUAL_CHOICE
     help: str = (
         "one stick/slip state with the dropped modes following the contact statically, "
-        "normal and tangential, which law --angle extrapolates to the rigid wall; Verlet "
-        "steps; beta settled in the modes, docs/oblique.md"
+        "normal, tangential and tilting (Dundurs' coupling), which law --angle extrapolates "
+        "to the rigid wall; Verlet steps; beta within 2e-3 over 20-80 modes at 1 m/s, "
+        "docs/oblique.md"
     )
     order: int = 2
     law_rank: int = 0
@@ -63,22 +64,25 @@ class Residual:
     law_walls: tuple[float, ...] = (1.0, 2.0)
     law_how: str = (
         "two walls (alpha and 2 alpha) each: planned Verlet steps times one timed force "
-        "evaluation times 1.65 (measured 1.56-1.77)"
+        "evaluation times 2.3 (measured 1.91-3.23)"
     )
     law_advice: str = (
         "one mode count with the dropped modes' static residual, extrapolated to the rigid "
         "wall from alpha and 2 alpha (order 1 in 1/alpha), not to N -> infinity: the error is "
         "the change from half the modes and, for beta, the distance from the route's "
-        "quasistatic limit with Dundurs' coupling, which the kept modes hold a growing share "
-        "of and the residual none (twice the modes moved the steel ball's beta towards it, "
-        "by 0.2-1.5 of the change from half the modes alone; docs/oblique.md)"
+        "quasistatic limit with Dundurs' coupling; twice the modes moved the steel ball's "
+        "beta by 0.5-0.8 of this error and epsilon_normal by 0-1.2 of its (1 and 5 m/s, "
+        "docs/oblique.md)"
     )
 
     def serves(self, kind) -> bool:
         return kind.oblique_body is not None and bool(kind.oblique_residual)
 
     def describe(self, kappa: float | None) -> str:
-        return "one stick/slip state for the contact, the dropped modes' static residual"
+        return (
+            "one stick/slip state for the contact, the dropped modes' static residual with "
+            "Dundurs' coupling"
+        )
 
     def contact(self, result) -> str:
         return "one state, its stick force carried by the residual's compliance"
