@@ -37,6 +37,37 @@ _ITERATIONS = 100
 _EXP_CAP = 200.0  # a trial step's exponent is capped: its products stay finite, and it is rejected
 
 
+def _damped_newton(wall, x, residual, jacobian):
+    """Newton's method on ``residual(x) -> (miss, state)`` from ``x`` with ``jacobian(state)``,
+    each step halved until the largest miss ``alpha |miss|`` falls, to ``alpha |miss| < _TOL``
+    (module docs); counts ``wall.iterations`` and returns the solution and its state."""
+    a = wall.alpha
+    miss, state = residual(x)
+    for _ in range(_ITERATIONS):
+        wall.iterations += 1
+        worst = a * float(np.max(np.abs(miss)))
+        if worst < _TOL:
+            return x, state
+        step = -np.linalg.solve(jacobian(state), miss)
+        lam = 1.0
+        while True:
+            trial = x + lam * step
+            miss_t, state_t = residual(trial)
+            if a * float(np.max(np.abs(miss_t))) < worst:
+                break
+            lam *= 0.5
+            if lam < 1e-6:
+                raise CollisionError(
+                    "the residual's wall solve stalled (no step lowers its miss "
+                    f"{worst:.3g}); soften the wall or lower the speed"
+                )
+        x, miss, state = trial, miss_t, state_t
+    raise CollisionError(
+        "the residual's wall solve did not converge in "
+        f"{_ITERATIONS} Newton steps; soften the wall or lower the speed"
+    )
+
+
 class HatWall:
     """The wall's forces with the residual ``H`` on hats peaking at ``radii`` (``K + 1``; the
     last hat falls to zero at ``radii[K]``), hardness ``alpha`` (module docs)."""
@@ -79,15 +110,12 @@ class HatWall:
             P = (np.bincount(k, lo * e, size) + np.bincount(k + 1, hi * e, size))[:K]
             return e, P
 
-        U = self.U
-        e, P = state(U)
-        miss = U + H @ P
-        diagonal = np.arange(K)
-        for _ in range(_ITERATIONS):
-            self.iterations += 1
-            worst = a * float(np.max(np.abs(miss)))
-            if worst < _TOL:
-                break
+        def residual(U):
+            e, P = state(U)
+            return U + H @ P, (e, P)
+
+        def jacobian(st):
+            e = st[0]
             d = (np.bincount(k, lo * lo * e, size) + np.bincount(k + 1, hi * hi * e, size))[:K]
             off = np.bincount(k, lo * hi * e, size)[: K - 1]
             HB = H * d[None, :]  # H @ B for the tridiagonal B, column by column
@@ -95,26 +123,10 @@ class HatWall:
             HB[:, :-1] += H[:, 1:] * off[None, :]
             HB *= a
             HB[diagonal, diagonal] += 1.0
-            step = -np.linalg.solve(HB, miss)
-            lam = 1.0
-            while True:
-                trial = U + lam * step
-                e_t, P_t = state(trial)
-                miss_t = trial + H @ P_t
-                if a * float(np.max(np.abs(miss_t))) < worst:
-                    break
-                lam *= 0.5
-                if lam < 1e-6:
-                    raise CollisionError(
-                        "the residual's wall solve stalled (no step lowers its miss "
-                        f"{worst:.3g}); soften the wall or lower the speed"
-                    )
-            U, e, P, miss = trial, e_t, P_t, miss_t
-        else:
-            raise CollisionError(
-                "the residual's wall solve did not converge in "
-                f"{_ITERATIONS} Newton steps; soften the wall or lower the speed"
-            )
+            return HB
+
+        diagonal = np.arange(K)
+        U, (e, P) = _damped_newton(self, self.U, residual, jacobian)
         self.U, self.P = U, P
         Up = np.r_[U, 0.0, 0.0]
         slope = np.where(k < K, df * (Up[k + 1] - Up[k]), 0.0)
@@ -168,37 +180,20 @@ class TiltedHatWall(HatWall):
             off = np.bincount(k, lo * hi * w, size)[: K - 1]
             return np.diag(d) + np.diag(off, 1) + np.diag(off, -1)
 
-        U, V = self.U, self.V
-        e, P, P1 = state(U, V)
-        miss = np.r_[U + H @ P, V + H1 @ P1 + shift]
-        for _ in range(_ITERATIONS):
-            self.iterations += 1
-            worst = a * float(np.max(np.abs(miss)))
-            if worst < _TOL:
-                break
+        def residual(UV):
+            U, V = UV[:K], UV[K:]
+            e, P, P1 = state(U, V)
+            return np.r_[U + H @ P, V + H1 @ P1 + shift], (e, P, P1)
+
+        def jacobian(st):
+            e = st[0]
             B00, B01, B11 = band(e), band(cos * e), band(cos * cos * e)
             jac = a * np.block([[H @ B00, H @ B01], [H1 @ B01, H1 @ B11]])
             jac[np.diag_indices(2 * K)] += 1.0
-            step = -np.linalg.solve(jac, miss)
-            lam = 1.0
-            while True:
-                U_t, V_t = U + lam * step[:K], V + lam * step[K:]
-                e_t, P_t, P1_t = state(U_t, V_t)
-                miss_t = np.r_[U_t + H @ P_t, V_t + H1 @ P1_t + shift]
-                if a * float(np.max(np.abs(miss_t))) < worst:
-                    break
-                lam *= 0.5
-                if lam < 1e-6:
-                    raise CollisionError(
-                        "the residual's wall solve stalled (no step lowers its miss "
-                        f"{worst:.3g}); soften the wall or lower the speed"
-                    )
-            U, V, e, P, P1, miss = U_t, V_t, e_t, P_t, P1_t, miss_t
-        else:
-            raise CollisionError(
-                "the residual's wall solve did not converge in "
-                f"{_ITERATIONS} Newton steps; soften the wall or lower the speed"
-            )
+            return jac
+
+        UV, (e, P, P1) = _damped_newton(self, np.r_[self.U, self.V], residual, jacobian)
+        U, V = UV[:K], UV[K:]
         self.U, self.V, self.P, self.P1 = U, V, P, P1
         Up, Vp = np.r_[U, 0.0, 0.0], np.r_[V, 0.0, 0.0]
         inside = k < K
