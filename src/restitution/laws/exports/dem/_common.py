@@ -73,6 +73,12 @@ def friction_line(friction: float | None, where: str) -> str:
     return f"friction: mu = {friction:g} as given (--friction), in {where}"
 
 
+RIGID = 1e6
+"""A rigid wall in a code that mixes the two sides' materials (LIGGGHTS's Hertz, YADE's
+Hertz-Mindlin): the wall's own material with this many times the grains' modulus. The mixed
+``1/E* = (1 - nu^2)/E + (1 - nu_w^2)/E_w`` and ``1/G* = (2 - nu)/G + (2 - nu_w)/G_w`` are then
+the rigid wall's ``E / (1 - nu^2)`` and ``G / (2 - nu)`` within about ``1e-6``."""
+
 WALL_NOTE = (
     "this is a grain-on-wall law: where the code takes it per particle type or material it "
     "also acts on grain-grain contacts of those particles, which need the law of two grains "

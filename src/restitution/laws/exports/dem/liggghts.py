@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import (
+    RIGID,
     WALL_NOTE,
     _comment,
     _constants,
@@ -44,18 +45,31 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None =
     moduli = [g.E for g in grains]
     poisson = [g.nu for g in grains]
     on_wall = not partner_of(s).is_grain
-    elastic = wall_of(s.law) if on_wall and n == 1 else None
+    elastic = wall_of(s.law) if on_wall and n == 1 else None  # None: the rigid wall
     wall_lines = []
-    if elastic is not None:  # the wall its own atom type: LIGGGHTS mixes E* of the two types
+    if on_wall and n == 1:  # the wall its own atom type: LIGGGHTS mixes E* and G* of the two
         n = 2
         matrix = matrix * 4
-        moduli.append(float(elastic["modulus_ratio"]) * s.grain.E)
-        poisson.append(float(elastic["nu"]))
+        if elastic is not None:
+            moduli.append(float(elastic["modulus_ratio"]) * s.grain.E)
+            poisson.append(float(elastic["nu"]))
+            what = (
+                f"the elastic wall: atom type 2 (E_w = {moduli[1]:.6g} Pa, nu_w = {poisson[1]:g})"
+            )
+        else:
+            moduli.append(RIGID * s.grain.E)
+            poisson.append(s.grain.nu)
+            what = (
+                f"the rigid wall: atom type 2 with {RIGID:g} times the grains' modulus, so that "
+                "the mixed E* and G* are the rigid wall's E/(1-nu^2) and G/(2-nu) within 1e-6 "
+                "(LIGGGHTS's mixing has no rigid partner; a wall of type 1 would be a half-space "
+                "of the grains' material, its contact about 1.3 times longer)"
+            )
         wall_lines = [
-            f"# the elastic wall: atom type 2 (E_w = {moduli[1]:.6g} Pa, nu_w = {poisson[1]:g}); "
-            "LIGGGHTS's Hertz takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w of the two types, the "
-            "stiffness of ball and wall (the matrix's 1-1 entry is this wall law's constant "
-            "too: grain-grain contacts take the law of two grains)",
+            f"# {what}; LIGGGHTS's Hertz takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w and 1/G* = "
+            "2(2-nu)(1+nu)/E + 2(2-nu_w)(1+nu_w)/E_w of the two types, the stiffness of ball "
+            "and wall (the matrix's 1-1 entry is this wall law's constant too: grain-grain "
+            "contacts take the law of two grains)",
             "fix restitution_wall all wall/gran model hertz tangential history primitive type 2 "
             "zplane 0.0",
         ]

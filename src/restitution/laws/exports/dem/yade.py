@@ -12,6 +12,7 @@ from types import SimpleNamespace
 
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import (
+    RIGID,
     WALL_NOTE,
     _comment,
     _constants,
@@ -30,9 +31,10 @@ from restitution.laws.si_law import SILaw
 
 __all__ = ["TARGET", "yade_time_step", "yade_snippet", "yade_viscoelastic"]
 
-RIGID = 1e6
-"""The wall material's modulus over the grains': ``E*`` then differs from the rigid wall's
-``E / (1 - nu^2)`` by about ``1e-6``."""
+_WALL_GEOMETRY = (
+    "walls: Ig2_Wall_Sphere_ScGeom(hertzian=True) and Ig2_Facet_Sphere_ScGeom(hertzian=True), "
+    "so that R* = R"
+)
 
 
 def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = None) -> str:
@@ -53,15 +55,30 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = Non
             mat(s.grain),
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})",
         ]
-        elastic = wall_of(s.law) if not partner_of(s).is_grain else None
-        if elastic is not None:  # the wall's material: YADE's Hertz takes E* of both
-            wall = SimpleNamespace(E=float(elastic["modulus_ratio"]) * s.grain.E,
-                                   nu=float(elastic["nu"]),
-                                   rho=float(elastic["density_ratio"]) * s.grain.rho)  # fmt: skip
+        if not partner_of(s).is_grain:  # the wall's material: YADE's Hertz-Mindlin mixes both
+            elastic = wall_of(s.law)
+            if elastic is not None:
+                wall = SimpleNamespace(
+                    E=float(elastic["modulus_ratio"]) * s.grain.E,
+                    nu=float(elastic["nu"]),
+                    rho=float(elastic["density_ratio"]) * s.grain.rho,
+                )
+                what = "the elastic wall (E_w, nu_w, rho_w)"
+            else:
+                wall = SimpleNamespace(E=RIGID * s.grain.E, nu=s.grain.nu, rho=s.grain.rho)
+                what = (
+                    f"the rigid wall, nearly: {RIGID:g} times the grains' modulus, so that E* and "
+                    "G* are the rigid wall's E/(1-nu^2) and G/(2-nu) within 1e-6 (a wall of the "
+                    "grains' material would be a half-space of it, its contact about 1.3 times "
+                    "longer)"
+                )
             body[1:1] = [
-                f"wallMat = {mat(wall)}  # the elastic wall (E_w, nu_w, rho_w): give your walls "
-                "material=wallMat; Hertz-Mindlin takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w, "
-                "the stiffness of ball and wall",
+                f"wallMat = {mat(wall)}  # {what}: give your walls material=wallMat; "
+                "Hertz-Mindlin takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w and 1/G* = (2-nu)/G + "
+                "(2-nu_w)/G_w, the stiffness of ball and wall (Ip2_FrictMat_FrictMat_MindlinPhys "
+                "as in YADE's HertzMindlin.cpp today; a version that averages G, (G + G_w)/2, "
+                "would make a stiff wall's shear spring far too stiff: check yours)",
+                f"# {_WALL_GEOMETRY}",
             ]
     else:
         matches = ", ".join(f"(mat{i}, mat{j}, {k.epsilon:.8f})" for (i, j), k in consts.items())
@@ -137,8 +154,7 @@ def yade_viscoelastic(
             mat("wallMat", RIGID * g.E) + "  # the wall, nearly rigid",
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches=({', '.join(matches)}"
             f")), vn={vn!r})",
-            "# walls: Ig2_Wall_Sphere_ScGeom(hertzian=True) and Ig2_Facet_Sphere_ScGeom("
-            "hertzian=True), so that R* = R; use ip2 with Law2_ScGeom_MindlinPhys_Mindlin()",
+            f"# {_WALL_GEOMETRY}; use ip2 with Law2_ScGeom_MindlinPhys_Mindlin()",
             "",
         ]
     )
