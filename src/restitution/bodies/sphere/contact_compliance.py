@@ -134,6 +134,9 @@ def half_space_compliance(a: float, nu: float, load: str) -> float:
     raise InputError("the half-space's slip compliance is not given; use continuum_compliance")
 
 
+_BLOCK = 256  # orders per block of _coefficients' matrix products
+
+
 def _coefficients(
     theta: np.ndarray, w: np.ndarray, l_top: int, kind: str
 ) -> tuple[np.ndarray, ...]:
@@ -154,21 +157,30 @@ def _coefficients(
     tangential = kind != "normal"
     wx, ws2, wxx = w * x, w * s * s, w * x * x
     ws, wxs = w * s, w * x * s
+    # P_l and P_l' of a block of orders by the recurrence, then the products as matrix products
+    # (one pass over the block for all the loads)
+    block = min(l_top + 1, _BLOCK)
+    P, D = np.empty((block, x.size)), np.empty((block, x.size))
     p_prev, p = np.zeros_like(x), np.ones_like(x)  # P_(l-1), P_l
     d_prev, d = np.zeros_like(x), np.zeros_like(x)  # their x-derivatives
-    for l in range(l_top + 1):
+    for first in range(0, l_top + 1, block):
+        rows = min(block, l_top + 1 - first)
+        for i in range(rows):
+            l = first + i
+            P[i], D[i] = p, d
+            p_prev, p = p, ((2 * l + 1) * x * p - l * p_prev) / (l + 1)
+            d_prev, d = d, (d_prev + (2 * l + 1) * p_prev if l else np.ones_like(x))
+        Pb, Db, out = P[:rows], D[:rows], proj[first : first + rows]
+        ll = (np.arange(first, first + rows) * (np.arange(first, first + rows) + 1.0))[:, None]
         if kind == "tilt":
-            ll = l * (l + 1.0)
-            proj[l, 0], proj[l, 2] = -(wxs @ d), -(ws @ d)
-            proj[l, 1] = ll * (ws @ p) - wxs @ d
+            Dxs = Db @ wxs.T
+            out[:, 0], out[:, 2] = -Dxs, -(Db @ ws.T)
+            out[:, 1] = ll * (Pb @ ws.T) - Dxs
         elif tangential:
-            ll = l * (l + 1.0)
-            proj[l, 0], proj[l, 2] = ws2 @ d, -ll * (w @ p)
-            proj[l, 1] = ll * (wx @ p) - wxx @ d + w @ d
+            out[:, 0], out[:, 2] = Db @ ws2.T, -ll * (Pb @ w.T)
+            out[:, 1] = ll * (Pb @ wx.T) - Db @ wxx.T + Db @ w.T
         else:
-            proj[l, 0], proj[l, 1] = -(wx @ p), -(ws2 @ d)
-        p_prev, p = p, ((2 * l + 1) * x * p - l * p_prev) / (l + 1)
-        d_prev, d = d, (d_prev + (2 * l + 1) * p_prev if l else np.ones_like(x))
+            out[:, 0], out[:, 1] = -(Pb @ wx.T), -(Db @ ws2.T)
     orders = np.arange(l_top + 1, dtype=float)
     ll = (orders * (orders + 1.0))[:, None]
     norm = (4.0 * math.pi / (2.0 * orders + 1.0))[:, None]

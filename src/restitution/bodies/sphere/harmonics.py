@@ -20,6 +20,7 @@ all finite at the pole (for ``m = 0`` the middle one is not needed). For ``m = 0
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -33,6 +34,16 @@ def normalisation(l: int, m: int) -> float:
     if m == 0:
         return 1.0
     return math.sqrt(2.0 * math.factorial(l - m) / math.factorial(l + m))
+
+
+@functools.lru_cache(maxsize=4096)
+def _derivative(l: int, j: int) -> np.ndarray:
+    """The Legendre series of ``d^j P_l / dx^j`` (read-only: it is shared)."""
+    coef = np.zeros(l + 1)
+    coef[l] = 1.0
+    series = legendre.legder(coef, j) if j else coef
+    series.setflags(write=False)
+    return series
 
 
 def angular_functions(l: int, m: int, theta) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -49,10 +60,8 @@ def angular_functions(l: int, m: int, theta) -> tuple[np.ndarray, np.ndarray, np
         raise ValueError(f"need 0 <= m <= l, got l = {l}, m = {m}")
     theta = np.asarray(theta, dtype=float)
     x, s = np.cos(theta), np.sin(theta)
-    coef = np.zeros(l + 1)
-    coef[l] = 1.0
-    Dm = legendre.legval(x, legendre.legder(coef, m)) if m else legendre.legval(x, coef)
-    Dm1 = legendre.legval(x, legendre.legder(coef, m + 1)) if m + 1 <= l else np.zeros_like(x)
+    Dm = legendre.legval(x, _derivative(l, m))
+    Dm1 = legendre.legval(x, _derivative(l, m + 1)) if m + 1 <= l else np.zeros_like(x)
     N = normalisation(l, m)
     if m == 0:
         return N * Dm, -N * s * Dm1, np.zeros_like(x)

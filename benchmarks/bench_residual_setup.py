@@ -1,0 +1,137 @@
+"""Benchmark: the sphere's residual route before its first step, the project against its baseline
+(before stop 88).
+
+Every run of the residual route (``law --angle`` on the sphere: two mode counts on two walls,
+each built once for the estimate and once for the run) places the wall's nodes
+(:func:`restitution.bodies.sphere.cap_nodes.cap_nodes`) and builds the hats' flexibilities
+(``cap.contact_residual``, cached for an estimate and its run: the continuum's, from
+:func:`restitution.bodies.sphere.contact_compliance._coefficients`, thousands of Legendre orders
+for every annulus). Two changes of stop 88:
+
+- ``_coefficients`` evaluates ``P_l`` and ``P_l'`` for a block of orders and takes the products
+  with every load as one matrix product per block; the baseline is the former loop, one
+  matrix-vector product per order and load kind, written out below.
+- The nodes' angular functions take the Legendre series of ``d^j P_l / dx^j`` from a cache
+  (``harmonics._derivative``); the baseline differentiates the series at every call (the
+  cache's own undecorated function, ``__wrapped__``).
+
+Runs alternate (baseline, project) ``--repeats`` times on the steel ball's 40-mode wall at 1 m/s
+(``law --angle``'s larger build), check that they agree (the nodes bit for bit; the hats'
+flexibilities to 1e-12 of their largest entry: another order of the sums), and print the
+seconds, the ratio baseline / project as min / median / max, and the load average at the start
+and the end.
+
+Run: PYTHONPATH=src python benchmarks/bench_residual_setup.py [--repeats 3]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import numpy as np  # noqa: E402
+
+from restitution.bodies.cache import get_modes  # noqa: E402
+from restitution.bodies.sphere import contact_compliance, contact_residual, harmonics  # noqa: E402
+from restitution.bodies.sphere.cap import cap_modes  # noqa: E402
+from restitution.bodies.sphere.cap_nodes import cap_nodes  # noqa: E402
+from restitution.dynamics.oblique_residual import _reach  # noqa: E402
+
+V, ALPHA, MODES = 0.0001933, 44956.2, 40  # the steel ball at 1 m/s on law's wall
+
+
+def _former_coefficients(theta, w, l_top, kind):
+    """The baseline: ``_coefficients`` as it was, one matrix-vector product per order."""
+    x, s = np.cos(theta), np.sin(theta)
+    proj = np.zeros((l_top + 1, 3, w.shape[0]))
+    tangential = kind != "normal"
+    wx, ws2, wxx = w * x, w * s * s, w * x * x
+    ws, wxs = w * s, w * x * s
+    p_prev, p = np.zeros_like(x), np.ones_like(x)
+    d_prev, d = np.zeros_like(x), np.zeros_like(x)
+    for l in range(l_top + 1):
+        if kind == "tilt":
+            ll = l * (l + 1.0)
+            proj[l, 0], proj[l, 2] = -(wxs @ d), -(ws @ d)
+            proj[l, 1] = ll * (ws @ p) - wxs @ d
+        elif tangential:
+            ll = l * (l + 1.0)
+            proj[l, 0], proj[l, 2] = ws2 @ d, -ll * (w @ p)
+            proj[l, 1] = ll * (wx @ p) - wxx @ d + w @ d
+        else:
+            proj[l, 0], proj[l, 1] = -(wx @ p), -(ws2 @ d)
+        p_prev, p = p, ((2 * l + 1) * x * p - l * p_prev) / (l + 1)
+        d_prev, d = d, (d_prev + (2 * l + 1) * p_prev if l else np.ones_like(x))
+    orders = np.arange(l_top + 1, dtype=float)
+    ll = (orders * (orders + 1.0))[:, None]
+    norm = (4.0 * math.pi / (2.0 * orders + 1.0))[:, None]
+    safe = np.where(ll > 0, ll, 1.0)
+    if not tangential:
+        return 2.0 * math.pi * proj[:, 0] / norm, 2.0 * math.pi * proj[:, 1] / (safe * norm)
+    n1 = np.sqrt(2.0 / safe) * (ll > 0)
+    tang = math.pi * n1 / (safe * norm)
+    return math.pi * n1 * proj[:, 0] / norm, tang * proj[:, 1], tang * proj[:, 2]
+
+
+def _hats(cap, nodes, coefficients):
+    contact_compliance._coefficients = coefficients
+    contact_residual._flexibility.cache_clear()  # the hats' own cache (an estimate and its run)
+    t = time.perf_counter()
+    hats = cap.contact_residual(nodes, _reach(cap, V, ALPHA))
+    return time.perf_counter() - t, hats
+
+
+def _nodes(cap, derivative):
+    harmonics._derivative = derivative
+    t = time.perf_counter()
+    nodes = cap_nodes(cap, ALPHA)
+    return time.perf_counter() - t, nodes
+
+
+def _ratios(label, base, new):
+    r = np.asarray(base) / np.asarray(new)
+    print(f"{label}: baseline {np.median(base):.2f} s, project {np.median(new):.2f} s (medians); "
+          f"ratio min / median / max {r.min():.2f} / {np.median(r):.2f} / {r.max():.2f} over "
+          f"{r.size} alternating runs")  # fmt: skip
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=3)
+    args = parser.parse_args()
+    print(f"load average at start: {os.getloadavg()}")
+    cap = cap_modes(get_modes(0.3, count=MODES, geometry="sphere"))
+    blocked, cached = contact_compliance._coefficients, harmonics._derivative
+    uncached = cached.__wrapped__
+    node_base, node_new, hat_base, hat_new = [], [], [], []
+    try:
+        for _ in range(args.repeats):
+            cached.cache_clear()
+            t_base, n_base = _nodes(cap, uncached)
+            t_new, nodes = _nodes(cap, cached)
+            assert np.array_equal(n_base.D, nodes.D)
+            node_base.append(t_base)
+            node_new.append(t_new)
+            t_base, h_base = _hats(cap, nodes, _former_coefficients)
+            t_new, hats = _hats(cap, nodes, blocked)
+            for name in ("normal", "tangential", "tilt", "cross"):
+                a, b = getattr(h_base, name), getattr(hats, name)
+                assert np.max(np.abs(a - b)) <= 1e-12 * np.max(np.abs(a)), name
+            hat_base.append(t_base)
+            hat_new.append(t_new)
+    finally:
+        contact_compliance._coefficients, harmonics._derivative = blocked, cached
+    print(f"steel ball, {MODES} modes ({len(cap)} in the cap), alpha = {ALPHA:g}, v = {V:g}: "
+          f"{nodes.D.shape[0]} wall nodes, {len(hats)} hats")  # fmt: skip
+    _ratios("wall nodes (cap_nodes)", node_base, node_new)
+    _ratios("hats' flexibilities (contact_residual)", hat_base, hat_new)
+    print(f"load average at end: {os.getloadavg()}")
+
+
+if __name__ == "__main__":
+    main()
