@@ -37,6 +37,16 @@ _ITERATIONS = 100
 _EXP_CAP = 200.0  # a trial step's exponent is capped: its products stay finite, and it is rejected
 
 
+def _times_band(H: np.ndarray, d: np.ndarray, off: np.ndarray) -> np.ndarray:
+    """``H @ B`` for the symmetric tridiagonal ``B`` of diagonal ``d`` and off-diagonal
+    ``off`` (the hats' ``Phi diag(w) Phi^T``), column by column: ``O(K^2)``, not a dense
+    product."""
+    HB = H * d[None, :]
+    HB[:, 1:] += H[:, :-1] * off[None, :]
+    HB[:, :-1] += H[:, 1:] * off[None, :]
+    return HB
+
+
 def _damped_newton(wall, x, residual, jacobian):
     """Newton's method on ``residual(x) -> (miss, state)`` from ``x`` with ``jacobian(state)``,
     each step halved until the largest miss ``alpha |miss|`` falls, to ``alpha |miss| < _TOL``
@@ -118,9 +128,7 @@ class HatWall:
             e = st[0]
             d = (np.bincount(k, lo * lo * e, size) + np.bincount(k + 1, hi * hi * e, size))[:K]
             off = np.bincount(k, lo * hi * e, size)[: K - 1]
-            HB = H * d[None, :]  # H @ B for the tridiagonal B, column by column
-            HB[:, 1:] += H[:, :-1] * off[None, :]
-            HB[:, :-1] += H[:, 1:] * off[None, :]
+            HB = _times_band(H, d, off)
             HB *= a
             HB[diagonal, diagonal] += 1.0
             return HB
@@ -177,8 +185,7 @@ class TiltedHatWall(HatWall):
 
         def band(w):
             d = (np.bincount(k, lo * lo * w, size) + np.bincount(k + 1, hi * hi * w, size))[:K]
-            off = np.bincount(k, lo * hi * w, size)[: K - 1]
-            return np.diag(d) + np.diag(off, 1) + np.diag(off, -1)
+            return d, np.bincount(k, lo * hi * w, size)[: K - 1]
 
         def residual(UV):
             U, V = UV[:K], UV[K:]
@@ -188,7 +195,10 @@ class TiltedHatWall(HatWall):
         def jacobian(st):
             e = st[0]
             B00, B01, B11 = band(e), band(cos * e), band(cos * cos * e)
-            jac = a * np.block([[H @ B00, H @ B01], [H1 @ B01, H1 @ B11]])
+            jac = np.empty((2 * K, 2 * K))
+            jac[:K, :K], jac[:K, K:] = _times_band(H, *B00), _times_band(H, *B01)
+            jac[K:, :K], jac[K:, K:] = _times_band(H1, *B01), _times_band(H1, *B11)
+            jac *= a
             jac[np.diag_indices(2 * K)] += 1.0
             return jac
 
