@@ -33,7 +33,6 @@ Run: PYTHONPATH=src python benchmarks/bench_residual_setup.py [--repeats 3]
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import time
 
@@ -54,7 +53,8 @@ JACOBIANS = 2000
 
 
 def _former_coefficients(theta, w, l_top, kind):
-    """The baseline: ``_coefficients`` as it was, one matrix-vector product per order."""
+    """The baseline: ``_coefficients``' projections as they were taken, one matrix-vector
+    product per order (the norms after them are the project's)."""
     x, s = np.cos(theta), np.sin(theta)
     proj = np.zeros((l_top + 1, 3, w.shape[0]))
     tangential = kind != "normal"
@@ -75,15 +75,7 @@ def _former_coefficients(theta, w, l_top, kind):
             proj[l, 0], proj[l, 1] = -(wx @ p), -(ws2 @ d)
         p_prev, p = p, ((2 * l + 1) * x * p - l * p_prev) / (l + 1)
         d_prev, d = d, (d_prev + (2 * l + 1) * p_prev if l else np.ones_like(x))
-    orders = np.arange(l_top + 1, dtype=float)
-    ll = (orders * (orders + 1.0))[:, None]
-    norm = (4.0 * math.pi / (2.0 * orders + 1.0))[:, None]
-    safe = np.where(ll > 0, ll, 1.0)
-    if not tangential:
-        return 2.0 * math.pi * proj[:, 0] / norm, 2.0 * math.pi * proj[:, 1] / (safe * norm)
-    n1 = np.sqrt(2.0 / safe) * (ll > 0)
-    tang = math.pi * n1 / (safe * norm)
-    return math.pi * n1 * proj[:, 0] / norm, tang * proj[:, 1], tang * proj[:, 2]
+    return contact_compliance._normalised(proj, tangential)
 
 
 def _hats(cap, nodes, coefficients):

@@ -181,7 +181,13 @@ def _coefficients(
             out[:, 1] = ll * (Pb @ wx.T) - Db @ wxx.T + Db @ w.T
         else:
             out[:, 0], out[:, 1] = -(Pb @ wx.T), -(Db @ ws2.T)
-    orders = np.arange(l_top + 1, dtype=float)
+    return _normalised(proj, tangential)
+
+
+def _normalised(proj: np.ndarray, tangential: bool) -> tuple[np.ndarray, ...]:
+    """:func:`_coefficients` from the loads' projections ``proj`` (shape ``(l_top + 1, 3,
+    loads)``) on ``P_l`` and its derivatives, with the harmonics' norms."""
+    orders = np.arange(proj.shape[0], dtype=float)
     ll = (orders * (orders + 1.0))[:, None]
     norm = (4.0 * math.pi / (2.0 * orders + 1.0))[:, None]
     safe = np.where(ll > 0, ll, 1.0)
