@@ -7,10 +7,13 @@ pair of particle types. SI units, epsilon dimensionless.
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 from restitution.errors import InputError
 from restitution.laws.exports._heading import _header, _law_line
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.type_pairs import SAME_SIZE_NOTE, TWO_MATERIALS_NOTE, TypePairs
+from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.si_law import SILaw
 
 
@@ -78,6 +81,22 @@ RIGID = 1e6
 Hertz-Mindlin): the wall's own material with this many times the grains' modulus. The mixed
 ``1/E* = (1 - nu^2)/E + (1 - nu_w^2)/E_w`` and ``1/G* = (2 - nu)/G + (2 - nu_w)/G_w`` are then
 the rigid wall's ``E / (1 - nu^2)`` and ``G / (2 - nu)`` within about ``1e-6``."""
+
+
+def wall_material(s: SILaw) -> SimpleNamespace:
+    """The wall's own material where a code mixes the two sides' (LIGGGHTS, YADE): ``E``,
+    ``nu``, ``rho`` and ``rigid``; an elastic wall's from its law, the rigid wall's
+    :data:`RIGID` times the grains' modulus with their ``nu`` and ``rho``."""
+    elastic = wall_of(s.law)
+    if elastic is None:
+        return SimpleNamespace(E=RIGID * s.grain.E, nu=s.grain.nu, rho=s.grain.rho, rigid=True)
+    return SimpleNamespace(
+        E=float(elastic["modulus_ratio"]) * s.grain.E,
+        nu=float(elastic["nu"]),
+        rho=float(elastic["density_ratio"]) * s.grain.rho,
+        rigid=False,
+    )
+
 
 WALL_NOTE = (
     "this is a grain-on-wall law: where the code takes it per particle type or material it "

@@ -20,12 +20,12 @@ from restitution.laws.exports.dem._common import (
     friction_line,
     time_step_lines,
     viscoelastic_head,
+    wall_material,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.plastic_native import is_plastic
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
-from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
@@ -45,25 +45,23 @@ def liggghts_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None =
     moduli = [g.E for g in grains]
     poisson = [g.nu for g in grains]
     on_wall = not partner_of(s).is_grain
-    elastic = wall_of(s.law) if on_wall and n == 1 else None  # None: the rigid wall
     wall_lines = []
     if on_wall and n == 1:  # the wall its own atom type: LIGGGHTS mixes E* and G* of the two
         n = 2
         matrix = matrix * 4
-        if elastic is not None:
-            moduli.append(float(elastic["modulus_ratio"]) * s.grain.E)
-            poisson.append(float(elastic["nu"]))
-            what = (
-                f"the elastic wall: atom type 2 (E_w = {moduli[1]:.6g} Pa, nu_w = {poisson[1]:g})"
-            )
-        else:
-            moduli.append(RIGID * s.grain.E)
-            poisson.append(s.grain.nu)
+        wall = wall_material(s)
+        moduli.append(wall.E)
+        poisson.append(wall.nu)
+        if wall.rigid:
             what = (
                 f"the rigid wall: atom type 2 with {RIGID:g} times the grains' modulus, so that "
                 "the mixed E* and G* are the rigid wall's E/(1-nu^2) and G/(2-nu) within 1e-6 "
                 "(LIGGGHTS's mixing has no rigid partner; a wall of type 1 would be a half-space "
                 "of the grains' material, its contact about 1.3 times longer)"
+            )
+        else:
+            what = (
+                f"the elastic wall: atom type 2 (E_w = {moduli[1]:.6g} Pa, nu_w = {poisson[1]:g})"
             )
         wall_lines = [
             f"# {what}; LIGGGHTS's Hertz takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w and 1/G* = "

@@ -8,7 +8,6 @@ Young's modulus (Pa), Poisson number and density (kg/m^3) per material, epsilon 
 from __future__ import annotations
 
 import math
-from types import SimpleNamespace
 
 from restitution.laws.exports.constants import Constant
 from restitution.laws.exports.dem._common import (
@@ -20,12 +19,12 @@ from restitution.laws.exports.dem._common import (
     friction_line,
     time_step_lines,
     viscoelastic_head,
+    wall_material,
 )
 from restitution.laws.exports.dem._registry import DemTarget, register_dem_target
 from restitution.laws.exports.plastic_native import is_plastic, luding_lines
 from restitution.laws.exports.type_pairs import TypePairs
 from restitution.laws.exports.viscoelastic import Viscoelastic
-from restitution.laws.mechanisms.bounds import wall_of
 from restitution.laws.partners.base import partner_of
 from restitution.laws.si_law import SILaw
 
@@ -56,22 +55,16 @@ def yade_snippet(s: SILaw, c: Constant | TypePairs, friction: float | None = Non
             f"ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={consts[1, 1].epsilon:.8f})",
         ]
         if not partner_of(s).is_grain:  # the wall's material: YADE's Hertz-Mindlin mixes both
-            elastic = wall_of(s.law)
-            if elastic is not None:
-                wall = SimpleNamespace(
-                    E=float(elastic["modulus_ratio"]) * s.grain.E,
-                    nu=float(elastic["nu"]),
-                    rho=float(elastic["density_ratio"]) * s.grain.rho,
-                )
-                what = "the elastic wall (E_w, nu_w, rho_w)"
-            else:
-                wall = SimpleNamespace(E=RIGID * s.grain.E, nu=s.grain.nu, rho=s.grain.rho)
+            wall = wall_material(s)
+            if wall.rigid:
                 what = (
                     f"the rigid wall, nearly: {RIGID:g} times the grains' modulus, so that E* and "
                     "G* are the rigid wall's E/(1-nu^2) and G/(2-nu) within 1e-6 (a wall of the "
                     "grains' material would be a half-space of it, its contact about 1.3 times "
                     "longer)"
                 )
+            else:
+                what = "the elastic wall (E_w, nu_w, rho_w)"
             body[1:1] = [
                 f"wallMat = {mat(wall)}  # {what}: give your walls material=wallMat; "
                 "Hertz-Mindlin takes 1/E* = (1-nu^2)/E + (1-nu_w^2)/E_w and 1/G* = (2-nu)/G + "
